@@ -1,0 +1,117 @@
+"""The exceptions taskrunner raises.
+
+Every error the library raises on purpose derives from :class:`TaskrunnerError`, so a
+caller can catch ours without catching a library's ``KeyError`` or ``RuntimeError``::
+
+    TaskrunnerError
+    ├── InputError                  bad input from a file or a caller; names the file:line
+    │   ├── RobotDescriptionError   URDF / xacro / SRDF / MoveIt YAML / robot manifest / cell
+    │   │   └── MissingMeshError    a collision mesh file that does not exist
+    │   └── YamlError               a YAML file that does not parse, or repeats a key
+    ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
+    ├── SceneError                  an invalid scene edit (duplicate object, bad shape)
+    └── PlanningError               no motion could be produced
+        └── IkFailedError           the target pose is unreachable (within limits and tolerance)
+
+Messages follow the form ``'<field>' must be <expectation> (got <value>)`` where it fits,
+and every error raised from a file starts with ``path:line:``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+__all__ = [
+    "IkFailedError",
+    "InputError",
+    "MissingMeshError",
+    "PlanningError",
+    "RobotDescriptionError",
+    "SceneError",
+    "TaskrunnerError",
+    "UnknownNameError",
+    "YamlError",
+]
+
+
+class TaskrunnerError(Exception):
+    """Base class of every error taskrunner raises on purpose."""
+
+
+class InputError(TaskrunnerError):
+    """Bad input. Carries where it came from so that messages point back into the file.
+
+    Args:
+        message: what is wrong, without the location.
+        path: the file the input came from, if any.
+        line: 1-based line in that file, if known.
+    """
+
+    def __init__(self, message: str, path: str | Path | None = None, line: int | None = None):
+        self.reason = message
+        self.path = Path(path) if path is not None else None
+        self.line = line
+        super().__init__(self._format())
+
+    @property
+    def location(self) -> str:
+        """``path:line`` (or ``path``, or an empty string when neither is known)."""
+        if self.path is None:
+            return ""
+        return f"{self.path}:{self.line}" if self.line is not None else str(self.path)
+
+    def _format(self) -> str:
+        loc = self.location
+        return f"{loc}: {self.reason}" if loc else self.reason
+
+
+class RobotDescriptionError(InputError):
+    """A robot description (URDF, xacro, SRDF, MoveIt YAML, manifest or cell) is invalid."""
+
+
+class MissingMeshError(RobotDescriptionError):
+    """A collision mesh referenced by a URDF does not exist."""
+
+
+class YamlError(InputError):
+    """A YAML file does not parse, repeats a key, or has the wrong shape."""
+
+
+class UnknownNameError(TaskrunnerError):
+    """A name (group, joint, link, frame, named pose, object) that the model does not have.
+
+    Args:
+        kind: what was looked up ("group", "joint", ...).
+        name: the name asked for.
+        known: the names that exist, listed in the message to help fix typos.
+    """
+
+    def __init__(self, kind: str, name: str, known: list[str] | tuple[str, ...] = ()):
+        self.kind = kind
+        self.name = name
+        self.known = tuple(known)
+        shown = ", ".join(repr(k) for k in sorted(self.known)[:20])
+        more = "" if len(self.known) <= 20 else f", … ({len(self.known)} in all)"
+        hint = f"; known: {shown}{more}" if self.known else ""
+        super().__init__(f"unknown {kind} {name!r}{hint}")
+
+
+class SceneError(TaskrunnerError):
+    """An invalid change to the planning scene."""
+
+
+class PlanningError(TaskrunnerError):
+    """No motion could be produced for a request."""
+
+
+class IkFailedError(PlanningError):
+    """No joint configuration reaches the target within the limits and the tolerance.
+
+    Attributes:
+        best_error: the smallest residual reached (metres for position, mixed SE3 norm
+            for a full pose), to tell "far out of reach" from "just missed".
+    """
+
+    def __init__(self, message: str, best_error: float | None = None):
+        self.best_error = best_error
+        super().__init__(message)

@@ -1,0 +1,33 @@
+"""Robot descriptions (URDF, xacro, SRDF, MoveIt YAML) and cells, loaded without ROS."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from taskrunner.robot.build import Placement, build_model
+from taskrunner.robot.description import RobotDescription, load_description
+from taskrunner.robot.model import EndEffector, Group, JointInfo, RobotInstance, RobotModel
+from taskrunner.robot.packages import PackageMap
+
+__all__ = [
+    "EndEffector",
+    "Group",
+    "JointInfo",
+    "PackageMap",
+    "Placement",
+    "RobotDescription",
+    "RobotInstance",
+    "RobotModel",
+    "build_model",
+    "load_description",
+    "load_robot",
+]
+
+
+def load_robot(path: str | Path, packages: PackageMap | None = None) -> RobotModel:
+    """Load one robot (manifest, MoveIt config folder, URDF or xacro) as a model.
+
+    The robot's root link is placed at the world origin, with no name prefix.
+    """
+    description = load_description(path, packages)
+    return build_model([Placement(description)], name=description.name)

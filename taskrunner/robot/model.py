@@ -1,0 +1,302 @@
+"""The robot model: one kinematic tree with its joints, groups, named poses and geometry.
+
+A :class:`RobotModel` is what a MoveIt ``RobotModel`` is to a ROS user: built from one or
+more robot descriptions (a cell places several, each with a name prefix), it owns the
+pinocchio model, the collision geometry of the robot links, the planning groups, the
+named poses, the end effectors, the joint limits (URDF overridden by joint_limits.yaml)
+and the pairs of links that are allowed to touch.
+
+Configurations are *state vectors*: one value per 1-DOF joint (revolute, continuous,
+prismatic), in :attr:`RobotModel.joint_names` order, in rad or m. Mimic joints are part
+of the vector and follow their source joint (:meth:`RobotModel.apply_mimic`). Pinocchio's
+own configuration (continuous joints as cos/sin pairs) is produced by
+:meth:`RobotModel.to_pin`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pinocchio as pin
+
+from taskrunner.errors import UnknownNameError
+from taskrunner.robot.moveit_yaml import KinematicsSettings
+from taskrunner.types import JointState
+
+__all__ = ["EndEffector", "Group", "JointInfo", "Mimic", "RobotInstance", "RobotModel"]
+
+
+@dataclass(frozen=True)
+class Mimic:
+    """``value = multiplier * source + offset``."""
+
+    source: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class JointInfo:
+    """One 1-DOF joint of the model.
+
+    Attributes:
+        index: position in the state vector.
+        lower, upper: position limits (rad or m); ±inf for an unbounded continuous joint.
+        max_velocity, max_acceleration: limits (rad/s, rad/s²); inf when not given.
+    """
+
+    name: str
+    type: str
+    index: int
+    lower: float
+    upper: float
+    max_velocity: float
+    max_acceleration: float
+    parent_link: str
+    child_link: str
+    robot: str
+    mimic: Mimic | None = None
+    passive: bool = False
+
+    @property
+    def bounded(self) -> bool:
+        return bool(np.isfinite(self.lower) and np.isfinite(self.upper))
+
+
+@dataclass(frozen=True)
+class Group:
+    """A planning group.
+
+    Attributes:
+        joint_names: the group's active joints (no mimic, passive or fixed joints), in
+            model order; these are the variables a planner moves.
+        joint_indices: their positions in the state vector.
+        base_link: where a chain starts (or the parent of the first joint).
+        tip_link: the frame IK aims by default (chain tip or end-effector parent link);
+            None for groups without one (a gripper's finger joints).
+        kinematics: IK settings from kinematics.yaml, if the group has an entry.
+        end_effector: name of the end effector attached to this group, if any.
+    """
+
+    name: str
+    joint_names: tuple[str, ...]
+    joint_indices: np.ndarray
+    links: tuple[str, ...]
+    base_link: str
+    tip_link: str | None
+    subgroups: tuple[str, ...] = ()
+    kinematics: KinematicsSettings | None = None
+    end_effector: str | None = None
+    robot: str | None = None
+
+    @property
+    def position_only_ik(self) -> bool:
+        return bool(self.kinematics and self.kinematics.position_only_ik)
+
+
+@dataclass(frozen=True)
+class EndEffector:
+    name: str
+    parent_link: str
+    group: str
+    parent_group: str | None
+
+
+@dataclass(frozen=True)
+class RobotInstance:
+    """One robot placed in the model.
+
+    Attributes:
+        name: the instance name ("left", "right", or the robot's own name).
+        prefix: put before every link, joint, group and pose-group name of this robot.
+        base: placement of the robot's root link in the world frame.
+        source: the file it was loaded from.
+        hardware_path: its hardware.yaml (servo calibration), if it has one.
+    """
+
+    name: str
+    prefix: str
+    base: pin.SE3
+    source: Path
+    hardware_path: Path | None = None
+    velocity_scaling: float = 1.0
+    acceleration_scaling: float = 1.0
+
+
+@dataclass
+class RobotModel:
+    """See the module docstring. Built by :func:`taskrunner.robot.build_model`."""
+
+    name: str
+    model: pin.Model
+    collision_model: pin.GeometryModel
+    joints: tuple[JointInfo, ...]
+    groups: dict[str, Group]
+    named_states: dict[str, dict[str, dict[str, float]]]
+    end_effectors: dict[str, EndEffector]
+    disabled_collisions: dict[frozenset[str], str]
+    instances: tuple[RobotInstance, ...]
+    urdf_xml: str
+    warnings: list[str] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.joint_names: tuple[str, ...] = tuple(j.name for j in self.joints)
+        self._joint_by_name = {j.name: j for j in self.joints}
+        self.lower = np.array([j.lower for j in self.joints])
+        self.upper = np.array([j.upper for j in self.joints])
+        self.max_velocity = np.array([j.max_velocity for j in self.joints])
+        self.max_acceleration = np.array([j.max_acceleration for j in self.joints])
+        self.data = self.model.createData()
+        self.link_names: tuple[str, ...] = tuple(
+            f.name for f in self.model.frames if f.type in (pin.BODY,)
+        )
+        # State vector ↔ pinocchio q.
+        simple_q, simple_idx, cont_q, cont_idx = [], [], [], []
+        for joint in self.joints:
+            pin_joint = self.model.joints[self.model.getJointId(joint.name)]
+            if pin_joint.nq == 1:
+                simple_q.append(pin_joint.idx_q)
+                simple_idx.append(joint.index)
+            else:
+                cont_q.append(pin_joint.idx_q)
+                cont_idx.append(joint.index)
+        self._identity_q = (
+            not cont_q and self.model.nq == len(self.joints) and simple_q == list(range(len(simple_q)))
+        )
+        self._simple_q, self._simple_idx = np.array(simple_q, int), np.array(simple_idx, int)
+        self._cont_q, self._cont_idx = np.array(cont_q, int), np.array(cont_idx, int)
+        self._mimic = [
+            (j.index, self._joint_by_name[j.mimic.source].index, j.mimic.multiplier, j.mimic.offset)
+            for j in self.joints
+            if j.mimic is not None
+        ]
+        self.active_indices = np.array(
+            [j.index for j in self.joints if j.mimic is None and not j.passive], int
+        )
+
+    # ----------------------------------------------------------------- lookups
+    @property
+    def nq(self) -> int:
+        """Length of a state vector."""
+        return len(self.joints)
+
+    def joint(self, name: str) -> JointInfo:
+        try:
+            return self._joint_by_name[name]
+        except KeyError:
+            raise UnknownNameError("joint", name, self.joint_names) from None
+
+    def group(self, name: str) -> Group:
+        try:
+            return self.groups[name]
+        except KeyError:
+            raise UnknownNameError("group", name, list(self.groups)) from None
+
+    def frame_id(self, name: str) -> int:
+        """Pinocchio frame index of a link or frame."""
+        if self.model.existFrame(name, pin.BODY):
+            return int(self.model.getFrameId(name, pin.BODY))
+        if self.model.existFrame(name):
+            return int(self.model.getFrameId(name))
+        raise UnknownNameError("link", name, self.link_names)
+
+    def has_link(self, name: str) -> bool:
+        return bool(self.model.existFrame(name))
+
+    def indices(self, joint_names: Iterable[str]) -> np.ndarray:
+        """State-vector positions of ``joint_names``."""
+        return np.array([self.joint(n).index for n in joint_names], dtype=int)
+
+    # ----------------------------------------------------------------- states
+    def default_state(self) -> np.ndarray:
+        """Zero for every joint, moved inside its limits where zero is outside them."""
+        q = np.clip(np.zeros(self.nq), self.lower, self.upper)
+        return self.apply_mimic(q)
+
+    def named_state_names(self, group: str) -> list[str]:
+        self.group(group)
+        return sorted(self.named_states.get(group, {}))
+
+    def named_state(self, group: str, name: str) -> JointState:
+        """The values of named pose ``name`` of ``group`` (the joints it sets)."""
+        states = self.named_states.get(self.group(group).name, {})
+        if name not in states:
+            raise UnknownNameError(f"named pose of group {group!r}", name, list(states))
+        return JointState.from_mapping(states[name])
+
+    def state_with(self, q: np.ndarray, values: Mapping[str, float] | JointState) -> np.ndarray:
+        """A copy of ``q`` with the given joints set (mimic joints then follow)."""
+        out = np.array(q, dtype=float, copy=True)
+        items = values.as_dict().items() if isinstance(values, JointState) else values.items()
+        for name, value in items:
+            out[self.joint(name).index] = float(value)
+        return self.apply_mimic(out)
+
+    def apply_mimic(self, q: np.ndarray) -> np.ndarray:
+        """Set every mimic joint from its source joint, in place; returns ``q``."""
+        for index, source, multiplier, offset in self._mimic:
+            q[index] = multiplier * q[source] + offset
+        return q
+
+    def within_limits(self, q: np.ndarray, tolerance: float = 1e-9) -> bool:
+        return bool(np.all(q >= self.lower - tolerance) and np.all(q <= self.upper + tolerance))
+
+    def limit_violations(self, q: np.ndarray, tolerance: float = 1e-9) -> list[str]:
+        """Human-readable list of joints outside their limits."""
+        out = []
+        for j in self.joints:
+            v = q[j.index]
+            if v < j.lower - tolerance or v > j.upper + tolerance:
+                out.append(f"{j.name!r} = {v:.4f} outside [{j.lower:.4f}, {j.upper:.4f}]")
+        return out
+
+    def random_state(self, rng: np.random.Generator, group: str | None = None,
+                     base: np.ndarray | None = None) -> np.ndarray:
+        """A uniformly random state within limits (continuous joints in [-pi, pi]).
+
+        Only ``group``'s joints are drawn when given; the others keep ``base``
+        (default: :meth:`default_state`).
+        """
+        q = np.array(base if base is not None else self.default_state(), dtype=float)
+        idx = self.group(group).joint_indices if group else self.active_indices
+        lo = np.where(np.isfinite(self.lower[idx]), self.lower[idx], -np.pi)
+        hi = np.where(np.isfinite(self.upper[idx]), self.upper[idx], np.pi)
+        q[idx] = rng.uniform(lo, hi)
+        return self.apply_mimic(q)
+
+    def to_pin(self, q: np.ndarray) -> np.ndarray:
+        """Pinocchio configuration of state vector ``q``."""
+        if self._identity_q:
+            return np.asarray(q, dtype=float)
+        out = np.zeros(self.model.nq)
+        out[self._simple_q] = q[self._simple_idx]
+        if len(self._cont_q):
+            angles = q[self._cont_idx]
+            out[self._cont_q] = np.cos(angles)
+            out[self._cont_q + 1] = np.sin(angles)
+        return out
+
+    def from_pin(self, q_pin: np.ndarray) -> np.ndarray:
+        """State vector of pinocchio configuration ``q_pin``."""
+        if self._identity_q:
+            return np.array(q_pin, dtype=float)
+        out = np.zeros(self.nq)
+        out[self._simple_idx] = q_pin[self._simple_q]
+        if len(self._cont_q):
+            out[self._cont_idx] = np.arctan2(q_pin[self._cont_q + 1], q_pin[self._cont_q])
+        return out
+
+    def velocity_columns(self, joint_names: Sequence[str]) -> np.ndarray:
+        """Columns of a pinocchio Jacobian (tangent indices) for ``joint_names``."""
+        return np.array(
+            [self.model.joints[self.model.getJointId(n)].idx_v for n in joint_names], dtype=int
+        )
+
+    def instance(self, name: str) -> RobotInstance:
+        for inst in self.instances:
+            if inst.name == name:
+                return inst
+        raise UnknownNameError("robot", name, [i.name for i in self.instances])

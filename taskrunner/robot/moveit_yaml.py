@@ -1,0 +1,200 @@
+"""MoveIt's ``kinematics.yaml`` and ``joint_limits.yaml``, read without ROS.
+
+Both accept the plain form the Setup Assistant writes and the ROS 2 parameter form
+(``/**: ros__parameters: robot_description_kinematics: …``). Values are checked for type
+and range here; joint and group names are checked against the model when it is built.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from taskrunner.errors import YamlError
+from taskrunner.yamlfile import LineDict, line_of, load_yaml
+
+__all__ = [
+    "JointLimitOverride",
+    "JointLimitsConfig",
+    "KinematicsSettings",
+    "read_joint_limits_yaml",
+    "read_kinematics_yaml",
+]
+
+
+@dataclass(frozen=True)
+class KinematicsSettings:
+    """IK settings of one group (MoveIt's names in parentheses).
+
+    Attributes:
+        position_only_ik: ignore orientation (``position_only_ik``).
+        timeout: seconds per IK call (``kinematics_solver_timeout``).
+        attempts: random restarts allowed (``kinematics_solver_attempts``).
+        search_resolution: kept for reference (``kinematics_solver_search_resolution``).
+        solver: the plugin named in the file, for reference only.
+        line: where the group's entry starts.
+    """
+
+    position_only_ik: bool = False
+    timeout: float = 0.005
+    attempts: int = 10
+    search_resolution: float = 0.005
+    solver: str = ""
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class JointLimitOverride:
+    """Limits of one joint from joint_limits.yaml; None means "keep the URDF's"."""
+
+    min_position: float | None = None
+    max_position: float | None = None
+    max_velocity: float | None = None
+    max_acceleration: float | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class JointLimitsConfig:
+    """The whole joint_limits.yaml."""
+
+    path: Path | None
+    default_velocity_scaling_factor: float = 1.0
+    default_acceleration_scaling_factor: float = 1.0
+    joints: dict[str, JointLimitOverride] | None = None
+
+
+def _unwrap_ros_parameters(data: Any, inner_key: str) -> Any:
+    """Strip ``/**: ros__parameters: <inner_key>:`` wrappers if present."""
+    if isinstance(data, dict) and len(data) == 1:
+        (only,) = data.values()
+        if isinstance(only, dict) and "ros__parameters" in only:
+            data = only["ros__parameters"]
+            if isinstance(data, dict) and inner_key in data:
+                data = data[inner_key]
+    return data
+
+
+def _number(
+    path: Path, mapping: LineDict, key: str, low: float | None = None, integer: bool = False
+) -> float | None:
+    if key not in mapping:
+        return None
+    value = mapping[key]
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool)
+    if integer:
+        ok = ok and float(value).is_integer()
+    if not ok:
+        kind = "an integer" if integer else "a number"
+        raise YamlError(f"'{key}' must be {kind} (got {value!r})", path, line_of(mapping, key))
+    if low is not None and value < low:
+        raise YamlError(f"'{key}' must be >= {low} (got {value!r})", path, line_of(mapping, key))
+    return float(value)
+
+
+def read_kinematics_yaml(path: str | Path) -> dict[str, KinematicsSettings]:
+    """Read a MoveIt ``kinematics.yaml``: group name → settings.
+
+    Raises:
+        YamlError: bad YAML, a repeated key, or a value of the wrong type.
+    """
+    path = Path(path)
+    data = _unwrap_ros_parameters(load_yaml(path), "robot_description_kinematics")
+    if data is None:
+        return {}
+    if not isinstance(data, dict):
+        raise YamlError("kinematics.yaml must map group names to settings", path, line_of(data))
+    result: dict[str, KinematicsSettings] = {}
+    for group, entry in data.items():
+        if not isinstance(entry, LineDict):
+            raise YamlError(
+                f"group {group!r}: settings must be a mapping (got {entry!r})",
+                path,
+                line_of(data, group),
+            )
+        position_only = entry.get("position_only_ik", False)
+        if not isinstance(position_only, bool):
+            raise YamlError(
+                f"'position_only_ik' must be true or false (got {position_only!r})",
+                path,
+                line_of(entry, "position_only_ik"),
+            )
+        timeout = _number(path, entry, "kinematics_solver_timeout", low=0.0)
+        attempts = _number(path, entry, "kinematics_solver_attempts", low=1, integer=True)
+        resolution = _number(path, entry, "kinematics_solver_search_resolution", low=0.0)
+        result[str(group)] = KinematicsSettings(
+            position_only_ik=position_only,
+            timeout=timeout if timeout is not None else KinematicsSettings.timeout,
+            attempts=int(attempts) if attempts is not None else KinematicsSettings.attempts,
+            search_resolution=(
+                resolution if resolution is not None else KinematicsSettings.search_resolution
+            ),
+            solver=str(entry.get("kinematics_solver", "")),
+            line=line_of(data, group),
+        )
+    return result
+
+
+def read_joint_limits_yaml(path: str | Path) -> JointLimitsConfig:
+    """Read a MoveIt ``joint_limits.yaml``.
+
+    Raises:
+        YamlError: bad YAML, a repeated key, a value of the wrong type, or a
+            ``min_position`` above ``max_position``.
+    """
+    path = Path(path)
+    data = _unwrap_ros_parameters(load_yaml(path), "robot_description_planning")
+    if data is None:
+        return JointLimitsConfig(path, joints={})
+    if not isinstance(data, LineDict):
+        raise YamlError("joint_limits.yaml must be a mapping", path, line_of(data))
+    velocity_scale = _number(path, data, "default_velocity_scaling_factor", low=0.0)
+    acceleration_scale = _number(path, data, "default_acceleration_scaling_factor", low=0.0)
+    for key, value in (
+        ("default_velocity_scaling_factor", velocity_scale),
+        ("default_acceleration_scaling_factor", acceleration_scale),
+    ):
+        if value is not None and not 0.0 < value <= 1.0:
+            raise YamlError(f"'{key}' must be in (0, 1] (got {value})", path, line_of(data, key))
+    joints_node = data.get("joint_limits", {}) or {}
+    if not isinstance(joints_node, LineDict):
+        raise YamlError(
+            "'joint_limits' must map joint names to limits", path, line_of(data, "joint_limits")
+        )
+    joints: dict[str, JointLimitOverride] = {}
+    for joint, entry in joints_node.items():
+        if not isinstance(entry, LineDict):
+            raise YamlError(
+                f"joint {joint!r}: limits must be a mapping (got {entry!r})",
+                path,
+                line_of(joints_node, joint),
+            )
+        has_pos = entry.get("has_position_limits", "min_position" in entry)
+        has_vel = entry.get("has_velocity_limits", "max_velocity" in entry)
+        has_acc = entry.get("has_acceleration_limits", "max_acceleration" in entry)
+        lo = _number(path, entry, "min_position") if has_pos else None
+        hi = _number(path, entry, "max_position") if has_pos else None
+        vel = _number(path, entry, "max_velocity", low=0.0) if has_vel else None
+        acc = _number(path, entry, "max_acceleration", low=0.0) if has_acc else None
+        if lo is not None and hi is not None and lo > hi:
+            raise YamlError(
+                f"joint {joint!r}: 'min_position' ({lo}) is above 'max_position' ({hi})",
+                path,
+                line_of(entry, "min_position"),
+            )
+        if vel == 0.0 or acc == 0.0:
+            # MoveIt configs often write 0 with has_*_limits: false; with true it is a bug.
+            which = "max_velocity" if vel == 0.0 else "max_acceleration"
+            raise YamlError(
+                f"joint {joint!r}: '{which}' must be > 0 when its limit is enabled",
+                path,
+                line_of(entry, which),
+            )
+        joints[str(joint)] = JointLimitOverride(lo, hi, vel, acc, line_of(joints_node, joint))
+    return JointLimitsConfig(
+        path,
+        velocity_scale if velocity_scale is not None else 1.0,
+        acceleration_scale if acceleration_scale is not None else 1.0,
+        joints,
+    )

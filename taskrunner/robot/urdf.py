@@ -1,0 +1,302 @@
+"""Reading URDF and xacro files into a checked, self-contained URDF tree.
+
+What comes out of :func:`read_urdf` is an XML tree that pinocchio can load with no ROS
+around: xacro expanded, ``package://`` and relative mesh paths made absolute, the tags
+pinocchio has no use for (``<ros2_control>``, ``<gazebo>``, ``<transmission>``) removed,
+and the structure checked (unique names, every parent and child link present, one root,
+mimic joints naming a real joint). A missing collision mesh is an error; a missing
+visual-only mesh is a warning and that visual is dropped, since the model stays usable.
+"""
+
+from __future__ import annotations
+
+import copy
+import io
+import logging
+import threading
+import xml.etree.ElementTree as ET
+from contextlib import redirect_stderr, redirect_stdout
+from dataclasses import dataclass
+from pathlib import Path
+
+from taskrunner.errors import MissingMeshError, RobotDescriptionError
+from taskrunner.robot.packages import PackageMap
+from taskrunner.robot.xmldoc import XmlDocument, parse_xml
+
+__all__ = ["UrdfDescription", "expand_xacro", "read_urdf"]
+
+log = logging.getLogger(__name__)
+
+IGNORED_TAGS = ("ros2_control", "gazebo", "transmission")
+MOVABLE_TYPES = ("revolute", "continuous", "prismatic")
+SUPPORTED_TYPES = (*MOVABLE_TYPES, "fixed")
+
+# xacro keeps its state in module globals: one expansion at a time.
+_XACRO_LOCK = threading.Lock()
+
+
+@dataclass
+class UrdfDescription:
+    """A checked URDF: its XML document plus the facts the rest of the loader needs.
+
+    Attributes:
+        doc: the URDF document (mesh paths absolute, ignored tags removed).
+        source: the file it was read from (the xacro file for xacro input).
+        name: the ``<robot name>``.
+        root_link: the one link that is nobody's child.
+        links: link names in file order.
+        joints: joint name → (type, parent link, child link).
+        warnings: what was wrong but left the model usable.
+    """
+
+    doc: XmlDocument
+    source: Path
+    name: str
+    root_link: str
+    links: list[str]
+    joints: dict[str, tuple[str, str, str]]
+    warnings: list[str]
+
+    @property
+    def root(self) -> ET.Element:
+        return self.doc.root
+
+    def to_string(self) -> str:
+        """The URDF as XML text."""
+        return ET.tostring(self.doc.root, encoding="unicode")
+
+
+def expand_xacro(
+    path: str | Path, packages: PackageMap, mappings: dict[str, str] | None = None
+) -> str:
+    """Expand a xacro file to URDF text, resolving ``$(find pkg)`` through ``packages``.
+
+    Args:
+        path: the ``.xacro`` file.
+        packages: where ``$(find pkg)`` looks packages up.
+        mappings: xacro arguments (``name:=value`` on the xacro command line).
+
+    Raises:
+        RobotDescriptionError: xacro reports an error (the message names the file).
+    """
+    import xacro
+    import xacro.substitution_args as substitution_args
+
+    path = Path(path)
+    if not path.is_file():
+        raise RobotDescriptionError("file not found", path)
+
+    def find(pkg: str) -> str:
+        return str(packages.find(pkg))
+
+    with _XACRO_LOCK:
+        saved_find = substitution_args._eval_find
+        substitution_args._eval_find = find
+        chatter = io.StringIO()
+        try:
+            with redirect_stdout(chatter), redirect_stderr(chatter):
+                document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+        except RobotDescriptionError as exc:
+            raise RobotDescriptionError(f"xacro: {exc.reason}", path) from None
+        except Exception as exc:  # xacro raises plain exceptions of many kinds
+            detail = str(exc).strip() or type(exc).__name__
+            where = " ".join(chatter.getvalue().split())
+            if where:
+                detail = f"{detail} ({where})"
+            raise RobotDescriptionError(f"xacro expansion failed: {detail}", path) from None
+        finally:
+            substitution_args._eval_find = saved_find
+            xacro.init_stacks(None)
+    return str(document.toprettyxml(indent="  "))
+
+
+def read_urdf(
+    path: str | Path,
+    packages: PackageMap | None = None,
+    xacro_args: dict[str, str] | None = None,
+) -> UrdfDescription:
+    """Read a URDF (``.urdf``) or xacro (``.xacro``, ``.urdf.xacro``) file and check it.
+
+    Raises:
+        RobotDescriptionError: unreadable, not well-formed, or structurally invalid.
+        MissingMeshError: a collision mesh file does not exist.
+    """
+    path = Path(path)
+    packages = packages or PackageMap()
+    if path.name.endswith(".xacro"):
+        text = expand_xacro(path, packages, xacro_args)
+        doc = parse_xml(text, path)
+        # Lines of the expanded text mean nothing to the user: report elements by name.
+        doc._lines.clear()
+    else:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            raise RobotDescriptionError("file not found", path) from None
+        except (OSError, UnicodeDecodeError) as exc:
+            raise RobotDescriptionError(f"cannot read file: {exc}", path) from None
+        doc = parse_xml(text, path)
+    return check_urdf(doc, path, packages)
+
+
+def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDescription:
+    """Check a parsed URDF document in place (see :func:`read_urdf`)."""
+    root = doc.root
+    if root.tag != "robot":
+        raise doc.error(root, f"root element must be <robot> (got <{root.tag}>)")
+    warnings: list[str] = []
+    for tag in IGNORED_TAGS:
+        for element in root.findall(tag):
+            root.remove(element)
+
+    links: list[str] = []
+    for link in root.findall("link"):
+        name = link.get("name")
+        if not name:
+            raise doc.error(link, "<link> without a name")
+        if name in links:
+            raise doc.error(link, f"duplicate link {name!r}")
+        links.append(name)
+        _resolve_meshes(doc, link, source, packages, warnings)
+    if not links:
+        raise doc.error(root, "URDF has no <link>")
+
+    joints: dict[str, tuple[str, str, str]] = {}
+    children: dict[str, str] = {}
+    for joint in root.findall("joint"):
+        name = joint.get("name")
+        if not name:
+            raise doc.error(joint, "<joint> without a name")
+        if name in joints:
+            raise doc.error(joint, f"duplicate joint {name!r}")
+        jtype = joint.get("type", "")
+        if jtype not in SUPPORTED_TYPES:
+            raise doc.error(
+                joint,
+                f"joint {name!r}: 'type' must be one of {', '.join(SUPPORTED_TYPES)} "
+                f"(got {jtype!r})",
+            )
+        parent_el, child_el = joint.find("parent"), joint.find("child")
+        parent = parent_el.get("link") if parent_el is not None else None
+        child = child_el.get("link") if child_el is not None else None
+        for role, link_name in (("parent", parent), ("child", child)):
+            if not link_name:
+                raise doc.error(joint, f"joint {name!r} has no <{role} link=…>")
+            if link_name not in links:
+                raise doc.error(joint, f"joint {name!r}: {role} link {link_name!r} is not defined")
+        assert parent is not None and child is not None
+        if child in children:
+            raise doc.error(
+                joint, f"link {child!r} is the child of two joints ({children[child]!r}, {name!r})"
+            )
+        children[child] = name
+        if jtype in ("revolute", "prismatic"):
+            limit = joint.find("limit")
+            if limit is None or limit.get("lower") is None or limit.get("upper") is None:
+                raise doc.error(joint, f"joint {name!r} ({jtype}) needs <limit lower= upper=>")
+            lower, upper = float(limit.get("lower", 0)), float(limit.get("upper", 0))
+            if lower > upper:
+                raise doc.error(
+                    joint, f"joint {name!r}: lower limit {lower} is above upper limit {upper}"
+                )
+        joints[name] = (jtype, parent, child)
+
+    for joint in root.findall("joint"):
+        mimic = joint.find("mimic")
+        if mimic is None:
+            continue
+        target = mimic.get("joint")
+        if target not in joints:
+            raise doc.error(
+                joint, f"joint {joint.get('name')!r} mimics {target!r}, which is not a joint"
+            )
+        if joints[target][0] not in MOVABLE_TYPES:
+            raise doc.error(joint, f"joint {joint.get('name')!r} mimics fixed joint {target!r}")
+
+    roots = [link for link in links if link not in children]
+    if len(roots) != 1:
+        raise doc.error(
+            root, f"URDF must form one tree with one root link (roots found: {roots})"
+        )
+    _check_acyclic(doc, joints, roots[0], links)
+    for message in warnings:
+        log.warning("%s", message)
+    return UrdfDescription(
+        doc, source, root.get("name", source.stem), roots[0], links, joints, warnings
+    )
+
+
+def _check_acyclic(
+    doc: XmlDocument, joints: dict[str, tuple[str, str, str]], root: str, links: list[str]
+) -> None:
+    below: dict[str, list[str]] = {}
+    for _, parent, child in joints.values():
+        below.setdefault(parent, []).append(child)
+    seen, stack = {root}, [root]
+    while stack:
+        for child in below.get(stack.pop(), []):
+            if child not in seen:
+                seen.add(child)
+                stack.append(child)
+    unreachable = [link for link in links if link not in seen]
+    if unreachable:
+        raise doc.error(doc.root, f"links not connected to the root {root!r}: {unreachable}")
+
+
+def _resolve_meshes(
+    doc: XmlDocument,
+    link: ET.Element,
+    source: Path,
+    packages: PackageMap,
+    warnings: list[str],
+) -> None:
+    """Make mesh paths absolute; drop visuals whose mesh is missing, fail on collisions."""
+    link_name = link.get("name")
+    for kind in ("collision", "visual"):
+        for element in list(link.findall(kind)):
+            mesh = element.find("geometry/mesh")
+            if mesh is None:
+                continue
+            uri = mesh.get("filename", "")
+            try:
+                resolved = packages.resolve(uri, source.parent)
+            except RobotDescriptionError as exc:
+                if kind == "visual":
+                    warnings.append(f"{source}: link {link_name!r}: visual mesh {uri!r}: {exc}")
+                    link.remove(element)
+                    continue
+                raise doc.error(
+                    element, f"link {link_name!r}: collision mesh {uri!r}: {exc.reason}"
+                ) from None
+            if not resolved.is_file():
+                if kind == "visual":
+                    warnings.append(
+                        f"{source}: link {link_name!r}: visual mesh {uri!r} not found "
+                        f"at {resolved}; visual dropped"
+                    )
+                    link.remove(element)
+                    continue
+                raise MissingMeshError(
+                    f"link {link_name!r}: collision mesh {uri!r} not found (looked at {resolved})",
+                    source,
+                    doc.line(element),
+                )
+            mesh.set("filename", str(resolved))
+
+
+def prefixed_copy(urdf: UrdfDescription, prefix: str) -> ET.Element:
+    """A copy of the URDF tree with ``prefix`` put before every link, joint and material
+    name (and every reference to one), so two copies of one robot can share a model."""
+    root = copy.deepcopy(urdf.root)
+    if not prefix:
+        return root
+    for element in root.iter():
+        if element.tag in ("link", "joint") and element.get("name"):
+            element.set("name", prefix + element.get("name", ""))
+        elif element.tag in ("parent", "child") and element.get("link"):
+            element.set("link", prefix + element.get("link", ""))
+        elif element.tag == "mimic" and element.get("joint"):
+            element.set("joint", prefix + element.get("joint", ""))
+        elif element.tag == "material" and element.get("name"):
+            element.set("name", prefix + element.get("name", ""))
+    return root

@@ -1,0 +1,80 @@
+"""XML parsing that keeps the line of every element, for error messages.
+
+The standard ElementTree parser drops source lines. We drive expat ourselves and keep a
+side table from element to line, so an SRDF or URDF error can say ``robot.srdf:42``.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+from xml.parsers import expat
+
+from taskrunner.errors import RobotDescriptionError
+
+__all__ = ["XmlDocument", "parse_xml", "read_xml"]
+
+
+@dataclass
+class XmlDocument:
+    """A parsed XML document and the line of each of its elements."""
+
+    root: ET.Element
+    path: Path | None
+    _lines: dict[int, int] = field(default_factory=dict, repr=False)
+
+    def line(self, element: ET.Element) -> int | None:
+        """1-based source line of ``element`` (None for elements added after parsing)."""
+        return self._lines.get(id(element))
+
+    def error(self, element: ET.Element | None, message: str) -> RobotDescriptionError:
+        """An error located at ``element`` in this document."""
+        line = self.line(element) if element is not None else None
+        return RobotDescriptionError(message, self.path, line)
+
+
+def parse_xml(text: str, path: str | Path | None = None) -> XmlDocument:
+    """Parse XML text, keeping element lines; ``path`` labels error messages.
+
+    Raises:
+        RobotDescriptionError: the text is not well-formed XML.
+    """
+    builder = ET.TreeBuilder()
+    parser = expat.ParserCreate()
+    lines: dict[int, int] = {}
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        element = builder.start(tag, attrs)
+        lines[id(element)] = parser.CurrentLineNumber
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = builder.end
+    parser.CharacterDataHandler = builder.data
+    label = Path(path) if path is not None else None
+    try:
+        parser.Parse(text, True)
+        root = builder.close()
+    except expat.ExpatError as exc:
+        raise RobotDescriptionError(
+            f"invalid XML: {expat.ErrorString(exc.code)}", label, exc.lineno
+        ) from None
+    except AssertionError:
+        raise RobotDescriptionError("invalid XML: no root element", label) from None
+    return XmlDocument(root, label, lines)
+
+
+def read_xml(path: str | Path) -> XmlDocument:
+    """Read and parse an XML file.
+
+    Raises:
+        RobotDescriptionError: the file is missing, unreadable or not well-formed.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise RobotDescriptionError("file not found", path) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise RobotDescriptionError(f"cannot read file: {exc}", path) from None
+    return parse_xml(text, path)
