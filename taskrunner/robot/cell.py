@@ -1,0 +1,246 @@
+"""Cells: one or more robots placed in a world frame, plus fixed objects.
+
+A cell file (YAML) looks like::
+
+    name: servo_arm_table
+    robots:
+      - name: arm                  # instance name
+        robot: ../servo_arm        # manifest / folder / URDF, relative to this file
+        prefix: ""                 # put before every link, joint and group name
+        base: {xyz: [0, 0, 0.75], rpy: [0, 0, 0]}
+        poses:                     # more named poses, robot's own names
+          arm:
+            PickUp: {"Revolute 1": 1.57, "Revolute 2": -0.6}
+    groups:                        # groups spanning robots
+      both_arms: [left_arm, right_arm]
+    start: {arm: home}             # named pose per group at the start
+    objects:
+      - name: table
+        shape: box
+        size: [0.8, 0.6, 0.75]
+        pose: {xyz: [0.2, 0, 0.375]}
+        touch_links: [base_link]   # links allowed to touch it (the robot stands on it)
+
+The result is a :class:`Cell`: one :class:`~taskrunner.robot.model.RobotModel` with a
+group per robot group (prefixed), the spanning groups, and the fixed objects.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Annotated, Literal
+
+import numpy as np
+import pinocchio as pin
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
+from taskrunner.robot.build import WORLD, Placement, build_model
+from taskrunner.robot.description import load_description
+from taskrunner.robot.model import RobotModel
+from taskrunner.robot.packages import PackageMap
+from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.validation import validate_node
+from taskrunner.yamlfile import LineDict, line_of, load_yaml
+
+__all__ = ["Cell", "CellObject", "load_cell"]
+
+Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class PoseSpec(_Strict):
+    xyz: Vec3 = [0.0, 0.0, 0.0]
+    rpy: Vec3 = [0.0, 0.0, 0.0]
+    frame: str = WORLD
+
+    def se3(self) -> pin.SE3:
+        return pin.SE3(pin.rpy.rpyToMatrix(*self.rpy), np.array(self.xyz, dtype=float))
+
+
+class RobotSpec(_Strict):
+    name: str = Field(min_length=1)
+    robot: str = Field(min_length=1)
+    prefix: str = ""
+    base: PoseSpec = PoseSpec()
+    poses: dict[str, dict[str, dict[str, float]]] = {}
+
+
+class ObjectSpec(_Strict):
+    name: str = Field(min_length=1)
+    shape: Literal["box", "cylinder", "sphere", "mesh"]
+    size: Vec3 | None = None
+    radius: float | None = Field(default=None, gt=0)
+    length: float | None = Field(default=None, gt=0)
+    file: str | None = None
+    scale: Vec3 = [1.0, 1.0, 1.0]
+    pose: PoseSpec = PoseSpec()
+    touch_links: list[str] = []
+
+    @model_validator(mode="after")
+    def _fields_match_shape(self) -> ObjectSpec:
+        needs = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
+                 "mesh": ("file",)}[self.shape]
+        missing = [f for f in needs if getattr(self, f) is None]
+        if missing:
+            raise ValueError(f"a {self.shape} needs {', '.join(repr(m) for m in missing)}")
+        if self.size is not None and min(self.size) <= 0:
+            raise ValueError(f"'size' must be > 0 in every axis (got {self.size})")
+        return self
+
+
+class CellSpec(_Strict):
+    name: str = Field(min_length=1)
+    description: str = ""
+    robots: list[RobotSpec] = Field(min_length=1)
+    groups: dict[str, list[str]] = {}
+    start: dict[str, str] = {}
+    objects: list[ObjectSpec] = []
+
+
+@dataclass(frozen=True)
+class CellObject:
+    """A fixed object of the cell.
+
+    Attributes:
+        pose: placement relative to ``frame`` (a link name or "world").
+        line: where it is declared in the cell file.
+    """
+
+    name: str
+    shape: Shape
+    pose: pin.SE3
+    frame: str = WORLD
+    touch_links: tuple[str, ...] = ()
+    line: int | None = None
+
+
+@dataclass
+class Cell:
+    """Robots placed in a world frame and the fixed objects around them."""
+
+    name: str
+    path: Path | None
+    model: RobotModel
+    objects: tuple[CellObject, ...]
+    start: dict[str, str]
+    description: str = ""
+
+    def start_state(self) -> np.ndarray:
+        """The state the cell starts in: default joint values, then the ``start`` poses."""
+        q = self.model.default_state()
+        for group, pose in self.start.items():
+            q = self.model.state_with(q, self.model.named_state(group, pose))
+        return q
+
+    def object(self, name: str) -> CellObject:
+        for obj in self.objects:
+            if obj.name == name:
+                return obj
+        raise UnknownNameError("object", name, [o.name for o in self.objects])
+
+
+def _shape(spec: ObjectSpec, base_dir: Path, packages: PackageMap) -> Shape:
+    if spec.shape == "box":
+        assert spec.size is not None
+        return Box(tuple(spec.size))  # type: ignore[arg-type]
+    if spec.shape == "cylinder":
+        assert spec.radius is not None and spec.length is not None
+        return Cylinder(spec.radius, spec.length)
+    if spec.shape == "sphere":
+        assert spec.radius is not None
+        return Sphere(spec.radius)
+    assert spec.file is not None
+    return Mesh(packages.resolve(spec.file, base_dir), tuple(spec.scale))  # type: ignore[arg-type]
+
+
+def _resolve_robot(value: str, cell_dir: Path) -> Path:
+    candidates = [cell_dir / value, cell_dir.parent / value]
+    for candidate in candidates:
+        if candidate.exists():
+            return candidate
+    raise FileNotFoundError(", ".join(str(c) for c in candidates))
+
+
+def load_cell(path: str | Path, packages: PackageMap | None = None) -> Cell:
+    """Load a cell file (see the module docstring).
+
+    Raises:
+        YamlError: the file does not match the cell schema (with file:line).
+        RobotDescriptionError: a robot's files are invalid, or names clash.
+    """
+    path = Path(path).resolve()
+    node = load_yaml(path)
+    spec = validate_node(CellSpec, node, path)
+    robots_node = node["robots"]
+    packages = packages or PackageMap(search_roots=[path.parent.parent])
+
+    placements: list[Placement] = []
+    seen: set[str] = set()
+    for i, robot in enumerate(spec.robots):
+        item = robots_node[i]
+        if robot.name in seen:
+            raise YamlError(f"robots[{i}].name: duplicate robot name {robot.name!r}", path,
+                            line_of(item, "name"))
+        seen.add(robot.name)
+        if robot.base.frame != WORLD:
+            raise YamlError(f"robots[{i}].base.frame: a robot base must be given in the "
+                            f"'world' frame (got {robot.base.frame!r})", path,
+                            line_of(item, "base"))
+        try:
+            robot_path = _resolve_robot(robot.robot, path.parent)
+        except FileNotFoundError as exc:
+            raise YamlError(f"robots[{i}].robot: {robot.robot!r} not found (looked at {exc})",
+                            path, line_of(item, "robot")) from None
+        lines: dict[tuple[str, str], tuple[str, int | None]] = {}
+        poses_node = item.get("poses", {}) if isinstance(item, LineDict) else {}
+        for group_name, poses in robot.poses.items():
+            for pose_name in poses:
+                group_node = poses_node.get(group_name, {})
+                lines[(group_name, pose_name)] = (str(path), line_of(group_node, pose_name))
+        placements.append(
+            Placement(load_description(robot_path, packages), robot.name, robot.prefix,
+                      robot.base.se3(), robot.poses, lines)
+        )
+    try:
+        model = build_model(placements, name=spec.name, extra_groups=spec.groups)
+    except RobotDescriptionError as exc:
+        if exc.path is None:  # a problem with the cell's own declarations
+            raise YamlError(exc.reason, path, line_of(node, "groups")) from None
+        raise
+
+    objects = []
+    object_names: set[str] = set()
+    for i, obj in enumerate(spec.objects):
+        item = node["objects"][i]
+        if obj.name in object_names:
+            raise YamlError(f"objects[{i}].name: duplicate object {obj.name!r}", path,
+                            line_of(item, "name"))
+        object_names.add(obj.name)
+        if obj.pose.frame != WORLD and not model.has_link(obj.pose.frame):
+            raise YamlError(f"objects[{i}].pose.frame: unknown frame {obj.pose.frame!r}", path,
+                            line_of(item, "pose"))
+        try:
+            shape = _shape(obj, path.parent, packages)
+        except (RobotDescriptionError, ValueError) as exc:
+            raise YamlError(f"objects[{i}]: {exc}", path, line_of(item)) from None
+        if isinstance(shape, Mesh) and not shape.path.is_file():
+            raise YamlError(f"objects[{i}].file: mesh not found: {shape.path}", path,
+                            line_of(item, "file"))
+        for link in obj.touch_links:
+            if not model.has_link(link):
+                raise YamlError(f"objects[{i}].touch_links: unknown link {link!r}", path,
+                                line_of(item, "touch_links"))
+        objects.append(CellObject(obj.name, shape, obj.pose.se3(), obj.pose.frame,
+                                  tuple(obj.touch_links), line_of(item)))
+
+    for group, pose in spec.start.items():
+        try:
+            model.named_state(group, pose)
+        except UnknownNameError as exc:
+            raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
+    return Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
