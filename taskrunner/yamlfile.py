@@ -61,10 +61,16 @@ class _Loader(yaml.SafeLoader):
 
 
 def _construct_mapping(loader: _Loader, node: yaml.MappingNode) -> LineDict:
+    # flatten_mapping puts the pairs of ``<<: *anchor`` merges before the mapping's own
+    # pairs, ordered so that the later pair wins (YAML merge semantics): merged keys may
+    # be overridden, only the mapping's own keys must not repeat.
+    own_pairs = sum(1 for key_node, _ in node.value if key_node.tag != "tag:yaml.org,2002:merge")
     loader.flatten_mapping(node)
+    merged_pairs = len(node.value) - own_pairs
     result = LineDict()
     result.line = node.start_mark.line + 1
-    for key_node, value_node in node.value:
+    own_keys: set[Any] = set()
+    for index, (key_node, value_node) in enumerate(node.value):
         key = loader.construct_object(key_node, deep=True)
         try:
             hash(key)
@@ -74,13 +80,15 @@ def _construct_mapping(loader: _Loader, node: yaml.MappingNode) -> LineDict:
                 loader.name,
                 key_node.start_mark.line + 1,
             ) from None
-        if key in result:
-            first = result.key_lines[key]
-            raise YamlError(
-                f"duplicate key {key!r} (first defined on line {first})",
-                loader.name,
-                key_node.start_mark.line + 1,
-            )
+        if index >= merged_pairs:
+            if key in own_keys:
+                first = result.key_lines[key]
+                raise YamlError(
+                    f"duplicate key {key!r} (first defined on line {first})",
+                    loader.name,
+                    key_node.start_mark.line + 1,
+                )
+            own_keys.add(key)
         result[key] = loader.construct_object(value_node, deep=True)
         result.key_lines[key] = key_node.start_mark.line + 1
     return result

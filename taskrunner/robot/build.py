@@ -63,7 +63,8 @@ class _Tree:
     joint_elements: dict[str, ET.Element] = field(default_factory=dict)
     parent_of_link: dict[str, tuple[str, str]] = field(default_factory=dict)  # child → (joint, parent)
     links: list[str] = field(default_factory=list)
-    owner: dict[str, str] = field(default_factory=dict)  # link or joint name → instance name
+    # (tag, name) → instance name; URDF allows a link and a joint to share a name.
+    owner: dict[tuple[str, str], str] = field(default_factory=dict)
 
 
 def build_model(
@@ -168,7 +169,7 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
     merged = ET.Element("robot", name=model_name)
     ET.SubElement(merged, "link", name=WORLD)
     tree = _Tree(links=[WORLD])
-    tree.owner[WORLD] = ""
+    tree.owner[("link", WORLD)] = ""
     for p in placements:
         urdf = p.description.urdf
         root = prefixed_copy(urdf, p.prefix)
@@ -198,14 +199,15 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
                 if parent_el is not None and parent_el.get("link") == WORLD:
                     _premultiply_origin(element, p.base)
             if element.tag in ("link", "joint"):
-                if element_name in tree.owner or element_name == WORLD:
-                    other = tree.owner.get(element_name, "the world frame")
+                key = (element.tag, element_name)
+                if key in tree.owner or (element.tag == "link" and element_name == WORLD):
+                    other = tree.owner.get(key, "the world frame")
                     raise RobotDescriptionError(
                         f"{element.tag} {element_name!r} of robot {p.name!r} clashes with "
                         f"{other or 'the world frame'}; give the robots different prefixes",
                         p.description.source,
                     )
-                tree.owner[element_name] = p.name
+                tree.owner[key] = p.name
             if element.tag == "link":
                 tree.links.append(element_name)
             elif element.tag == "joint":
@@ -216,7 +218,7 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
             merged.append(element)
         if shares_world:
             continue
-        if mount_name in tree.owner:
+        if ("joint", mount_name) in tree.owner:
             raise RobotDescriptionError(
                 f"joint {mount_name!r} clashes with another robot's; give the robots "
                 "different prefixes", p.description.source,
@@ -225,7 +227,7 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
         mount.append(_origin(p.base))
         ET.SubElement(mount, "parent", link=WORLD)
         ET.SubElement(mount, "child", link=root_link)
-        tree.owner[mount_name] = p.name
+        tree.owner[("joint", mount_name)] = p.name
         tree.joint_elements[mount_name] = mount
         tree.parent_of_link[root_link] = (mount_name, WORLD)
     return ET.tostring(merged, encoding="unicode"), tree
@@ -259,7 +261,7 @@ def _joint_infos(model: pin.Model, tree: _Tree, placements: Sequence[Placement])
         jtype = element.get("type", "")
         if jtype not in MOVABLE_TYPES:  # pragma: no cover - pinocchio only makes these
             raise RobotDescriptionError(f"joint {name!r}: unsupported type {jtype!r}")
-        instance = tree.owner[name]
+        instance = tree.owner[("joint", name)]
         placement = by_instance[instance]
         limit = element.find("limit")
         lower, upper = -np.inf, np.inf
@@ -344,8 +346,8 @@ def _add_srdf(
     warnings: list[str],
 ) -> None:
     pre = p.prefix
-    own_links = {link for link in tree.links if tree.owner.get(link) == p.name}
-    own_joints = {j for j in tree.joint_elements if tree.owner.get(j) == p.name}
+    own_links = {link for link in tree.links if tree.owner.get(("link", link)) == p.name}
+    own_joints = {j for j in tree.joint_elements if tree.owner.get(("joint", j)) == p.name}
     eef_of_group = {}
     for eef in srdf.end_effectors:
         if pre + eef.parent_link not in own_links:
@@ -461,6 +463,9 @@ def _add_srdf(
             _check_in_limits(joints[full], value, lambda msg: srdf.error(line, msg),
                              f"group_state {state.name!r}")
             values[full] = value
+        if state.name in states.get(group.name, {}):
+            raise srdf.error(state.line, f"group_state {state.name!r} of group "
+                             f"{state.group!r} is defined twice")
         states.setdefault(group.name, {})[state.name] = values
 
     for pair in srdf.disabled_collisions:

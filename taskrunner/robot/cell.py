@@ -196,6 +196,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None) -> Cell:
         except FileNotFoundError as exc:
             raise YamlError(f"robots[{i}].robot: {robot.robot!r} not found (looked at {exc})",
                             path, line_of(item, "robot")) from None
+        robot_dir = robot_path if robot_path.is_dir() else robot_path.parent
+        packages.discover(robot_dir)
         lines: dict[tuple[str, str], tuple[str, int | None]] = {}
         poses_node = item.get("poses", {}) if isinstance(item, LineDict) else {}
         for group_name, poses in robot.poses.items():

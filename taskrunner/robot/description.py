@@ -158,7 +158,14 @@ def _load_moveit_config(folder: Path, packages: PackageMap | None) -> RobotDescr
         entry = config.get(key)
         if not isinstance(entry, dict) or "relative_path" not in entry:
             return None
-        base = packages.find(entry["package"]) if entry.get("package") else folder
+        base = folder
+        if entry.get("package"):
+            try:
+                base = packages.find(str(entry["package"]))
+            except RobotDescriptionError as exc:
+                raise YamlError(
+                    f"'{key}': {exc.reason}", marker, line_of(entry, "package")
+                ) from None
         return base / str(entry["relative_path"])
 
     urdf_path = entry_path("URDF")

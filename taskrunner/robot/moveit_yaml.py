@@ -157,7 +157,9 @@ def read_joint_limits_yaml(path: str | Path) -> JointLimitsConfig:
     ):
         if value is not None and not 0.0 < value <= 1.0:
             raise YamlError(f"'{key}' must be in (0, 1] (got {value})", path, line_of(data, key))
-    joints_node = data.get("joint_limits", {}) or {}
+    joints_node = data.get("joint_limits")
+    if joints_node is None:  # absent or empty: only the scaling factors are set
+        joints_node = LineDict()
     if not isinstance(joints_node, LineDict):
         raise YamlError(
             "'joint_limits' must map joint names to limits", path, line_of(data, "joint_limits")

@@ -196,7 +196,7 @@ def _build(doc: XmlDocument) -> Srdf:
                     line,
                 )
             )
-        elif tag in ("disable_default_collisions", "link_sphere_approximation"):
+        elif tag in ("disable_default_collisions", "link_sphere_approximation", "joint_property"):
             continue  # optional MoveIt extras with no effect on our checks
         else:
             raise doc.error(element, f"unknown SRDF element <{tag}>")

@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import copy
 import io
-import logging
 import threading
 import xml.etree.ElementTree as ET
 from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
 from pathlib import Path
+from xml.parsers import expat
 
 from taskrunner.errors import MissingMeshError, RobotDescriptionError
 from taskrunner.robot.packages import PackageMap
@@ -25,11 +25,24 @@ from taskrunner.robot.xmldoc import XmlDocument, parse_xml
 
 __all__ = ["UrdfDescription", "expand_xacro", "read_urdf"]
 
-log = logging.getLogger(__name__)
-
 IGNORED_TAGS = ("ros2_control", "gazebo", "transmission")
 MOVABLE_TYPES = ("revolute", "continuous", "prismatic")
 SUPPORTED_TYPES = (*MOVABLE_TYPES, "fixed")
+
+# Attributes that must hold numbers (attribute → how many), checked here so that a typo
+# is reported at its file:line instead of as pinocchio's "not a valid URDF model".
+_NUMERIC_ATTRIBUTES = {
+    "origin": {"xyz": 3, "rpy": 3},
+    "axis": {"xyz": 3},
+    "limit": {"lower": 1, "upper": 1, "effort": 1, "velocity": 1},
+    "mimic": {"multiplier": 1, "offset": 1},
+    "box": {"size": 3},
+    "cylinder": {"radius": 1, "length": 1},
+    "sphere": {"radius": 1},
+    "mesh": {"scale": 3},
+    "mass": {"value": 1},
+    "inertia": dict.fromkeys(("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), 1),
+}
 
 # xacro keeps its state in module globals: one expansion at a time.
 _XACRO_LOCK = threading.Lock()
@@ -86,8 +99,14 @@ def expand_xacro(
     if not path.is_file():
         raise RobotDescriptionError("file not found", path)
 
+    lookup_errors: list[RobotDescriptionError] = []
+
     def find(pkg: str) -> str:
-        return str(packages.find(pkg))
+        try:
+            return str(packages.find(pkg))
+        except RobotDescriptionError as exc:
+            lookup_errors.append(exc)
+            raise
 
     with _XACRO_LOCK:
         saved_find = substitution_args._eval_find
@@ -96,14 +115,25 @@ def expand_xacro(
         try:
             with redirect_stdout(chatter), redirect_stderr(chatter):
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
-        except RobotDescriptionError as exc:
-            raise RobotDescriptionError(f"xacro: {exc.reason}", path) from None
         except Exception as exc:  # xacro raises plain exceptions of many kinds
+            # Report the file xacro was reading when it failed (maybe an included one).
+            stack = [f for f in (xacro.filestack or []) if f]
+            where = Path(stack[-1]) if stack else path
+            if lookup_errors:
+                raise RobotDescriptionError(
+                    f"$(find …): {lookup_errors[0].reason}", where
+                ) from None
+            if isinstance(exc, expat.ExpatError):
+                raise RobotDescriptionError(
+                    f"invalid XML: {expat.ErrorString(exc.code)}", where, exc.lineno
+                ) from None
             detail = str(exc).strip() or type(exc).__name__
-            where = " ".join(chatter.getvalue().split())
-            if where:
-                detail = f"{detail} ({where})"
-            raise RobotDescriptionError(f"xacro expansion failed: {detail}", path) from None
+            chatter_text = " ".join(chatter.getvalue().split())
+            if chatter_text:
+                detail = f"{detail} ({chatter_text})"
+            if where != path:
+                detail = f"{detail} (included from {path})"
+            raise RobotDescriptionError(f"xacro expansion failed: {detail}", where) from None
         finally:
             substitution_args._eval_find = saved_find
             xacro.init_stacks(None)
@@ -149,6 +179,7 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
         for element in root.findall(tag):
             root.remove(element)
 
+    _check_numbers(doc)
     links: list[str] = []
     for link in root.findall("link"):
         name = link.get("name")
@@ -219,11 +250,33 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
             root, f"URDF must form one tree with one root link (roots found: {roots})"
         )
     _check_acyclic(doc, joints, roots[0], links)
-    for message in warnings:
-        log.warning("%s", message)
+    # The warnings are logged by build_model (once, with the SRDF's), not here.
     return UrdfDescription(
         doc, source, root.get("name", source.stem), roots[0], links, joints, warnings
     )
+
+
+def _check_numbers(doc: XmlDocument) -> None:
+    """Every numeric attribute (see _NUMERIC_ATTRIBUTES) of a link or joint is a number."""
+    for owner in doc.root:
+        if owner.tag not in ("link", "joint"):
+            continue
+        for element in owner.iter():
+            for attribute, count in _NUMERIC_ATTRIBUTES.get(element.tag, {}).items():
+                value = element.get(attribute)
+                if value is None:
+                    continue
+                try:
+                    numbers = [float(v) for v in value.split()]
+                except ValueError:
+                    numbers = []
+                if len(numbers) != count:
+                    expected = "a number" if count == 1 else f"{count} numbers"
+                    raise doc.error(
+                        element,
+                        f"{owner.tag} {owner.get('name')!r}: <{element.tag}> '{attribute}' "
+                        f"must be {expected} (got {value!r})",
+                    )
 
 
 def _check_acyclic(

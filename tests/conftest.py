@@ -1,0 +1,57 @@
+"""Fixtures shared by every test folder.
+
+The loaded models are session-scoped (loading the meshes of example-robot-data takes
+time): treat them as read-only. A test that needs to change a model, or uses
+``model.data`` in a way that could leak into another test, makes its own
+``model.model.createData()`` or loads a fresh copy with ``load_robot``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from taskrunner.robot import RobotModel, load_robot
+from taskrunner.robot.packages import example_robot_data_dir
+
+REPO_ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="session")
+def repo_root() -> Path:
+    """The repository's top folder (holds ``taskrunner/``, ``robots/``, ``tests/``)."""
+    return REPO_ROOT
+
+
+@pytest.fixture(scope="session")
+def robots_dir(repo_root: Path) -> Path:
+    """``robots/``: the robot folders (servo_arm, panda, ur5) and ``cells/``."""
+    return repo_root / "robots"
+
+
+@pytest.fixture(scope="session")
+def example_robot_data() -> Path:
+    """The share folder of the example-robot-data wheel (its ``robots/`` holds the URDFs)."""
+    folder = example_robot_data_dir()
+    if folder is None:
+        pytest.skip("example-robot-data is not installed (pip install -e .[test])")
+    return folder
+
+
+@pytest.fixture(scope="session")
+def servo_arm_model(robots_dir: Path) -> RobotModel:
+    """robots/servo_arm: 5-DOF hobby-servo arm + 2 finger joints, groups arm / gripper."""
+    return load_robot(robots_dir / "servo_arm")
+
+
+@pytest.fixture(scope="session")
+def panda_model(robots_dir: Path, example_robot_data: Path) -> RobotModel:
+    """robots/panda: Franka Panda (groups arm / hand / arm_and_hand, mimic finger)."""
+    return load_robot(robots_dir / "panda")
+
+
+@pytest.fixture(scope="session")
+def ur5_model(robots_dir: Path, example_robot_data: Path) -> RobotModel:
+    """robots/ur5: UR5 (group manipulator, base_link → tool0, pose home)."""
+    return load_robot(robots_dir / "ur5")

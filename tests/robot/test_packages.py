@@ -1,0 +1,106 @@
+"""taskrunner.robot.packages: package names → folders, without ROS."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from taskrunner.errors import RobotDescriptionError
+from taskrunner.robot import PackageMap
+
+
+def make_package(folder: Path, name: str) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "package.xml").write_text(
+        f'<?xml version="1.0"?>\n<package format="3">\n  <name>{name}</name>\n</package>\n'
+    )
+    return folder.resolve()
+
+
+def test_package_is_found_by_its_package_xml_name_not_its_folder_name(robots_dir):
+    packages = PackageMap(search_roots=[robots_dir])
+    assert packages.find("servo_arm_description") == (robots_dir / "servo_arm").resolve()
+    assert "servo_arm" not in packages.names
+
+
+def test_discovery_descends_into_nested_folders_but_skips_build_trees(tmp_path):
+    nested = make_package(tmp_path / "ws" / "src" / "group" / "deep_pkg", "deep")
+    make_package(tmp_path / "ws" / "build" / "deep_copy", "built")
+    packages = PackageMap(search_roots=[tmp_path / "ws"])
+    assert packages.find("deep") == nested
+    assert "built" not in packages.names
+
+
+def test_explicit_entries_win_over_discovered_packages(tmp_path):
+    make_package(tmp_path / "found", "robot_description")
+    explicit = (tmp_path / "elsewhere").resolve()
+    packages = PackageMap({"robot_description": explicit}, search_roots=[tmp_path])
+    assert packages.find("robot_description") == explicit
+    packages.add("robot_description", tmp_path / "third")
+    assert packages.find("robot_description") == (tmp_path / "third").resolve()
+
+
+def test_unknown_package_error_names_it_and_the_known_ones(tmp_path):
+    packages = PackageMap({"mine": tmp_path})
+    with pytest.raises(RobotDescriptionError) as info:
+        packages.find("their_description")
+    message = str(info.value)
+    assert message.startswith("package 'their_description' not found (known packages: ")
+    assert "mine" in message
+    assert "add its folder to the package map" in message
+
+
+def test_example_robot_data_is_known_under_both_of_its_names(example_robot_data):
+    packages = PackageMap()
+    assert packages.find("example-robot-data") == example_robot_data
+    assert packages.find("example_robot_descriptions") == example_robot_data
+
+
+def test_package_xml_without_name_is_an_error_naming_the_file(tmp_path):
+    folder = tmp_path / "broken"
+    folder.mkdir()
+    (folder / "package.xml").write_text('<package format="3">\n  <version>1</version>\n</package>\n')
+    with pytest.raises(RobotDescriptionError) as info:
+        PackageMap(search_roots=[tmp_path])
+    assert str(info.value) == f"{folder / 'package.xml'}:1: package.xml has no <name>"
+
+
+def test_malformed_package_xml_names_file_and_line(tmp_path):
+    folder = tmp_path / "broken"
+    folder.mkdir()
+    (folder / "package.xml").write_text("<package>\n  <name>x</nam>\n</package>\n")
+    with pytest.raises(RobotDescriptionError) as info:
+        PackageMap(search_roots=[tmp_path])
+    assert str(info.value) == f"{folder / 'package.xml'}:2: invalid XML: mismatched tag"
+
+
+def test_missing_search_root_is_ignored(tmp_path):
+    assert "x" not in PackageMap(search_roots=[tmp_path / "nope"]).names
+
+
+@pytest.mark.parametrize(
+    ("uri", "expected"),
+    [
+        ("package://pkg/meshes/a%20b.stl", "PKG/meshes/a b.stl"),
+        ("file:///abs/mesh.stl", "/abs/mesh.stl"),
+        ("/abs/mesh.stl", "/abs/mesh.stl"),
+        ("../meshes/m.dae", "BASE/../meshes/m.dae"),
+    ],
+    ids=["package", "file-uri", "absolute", "relative"],
+)
+def test_mesh_references_resolve_to_paths(tmp_path, uri, expected):
+    packages = PackageMap({"pkg": tmp_path / "pkg"})
+    resolved = packages.resolve(uri, tmp_path / "base")
+    replaced = expected.replace("PKG", str((tmp_path / "pkg").resolve()))
+    assert resolved == Path(replaced.replace("BASE", str(tmp_path / "base")))
+
+
+def test_unsupported_uri_scheme_is_refused(tmp_path):
+    with pytest.raises(RobotDescriptionError, match=r"unsupported URI scheme in 'http://x/m.stl'"):
+        PackageMap().resolve("http://x/m.stl", tmp_path)
+
+
+def test_package_uri_with_unknown_package_names_it(tmp_path):
+    with pytest.raises(RobotDescriptionError, match=r"package 'nope' not found"):
+        PackageMap().resolve("package://nope/m.stl", tmp_path)
