@@ -6,7 +6,7 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     TaskrunnerError
     ├── InputError                  bad input from a file or a caller; names the file:line
     │   ├── RobotDescriptionError   URDF / xacro / SRDF / MoveIt YAML / robot manifest / cell
-    │   │   └── MissingMeshError    a collision mesh file that does not exist
+    │   │   └── MissingMeshError    a mesh file (robot collision or scene object) that does not exist
     │   └── YamlError               a YAML file that does not parse, or repeats a key
     ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
     ├── SceneError                  an invalid scene edit (duplicate object, bad shape)
@@ -70,7 +70,7 @@ class RobotDescriptionError(InputError):
 
 
 class MissingMeshError(RobotDescriptionError):
-    """A collision mesh referenced by a URDF does not exist."""
+    """A mesh file that does not exist: a URDF collision mesh or a scene object's mesh."""
 
 
 class YamlError(InputError):

@@ -1,0 +1,430 @@
+"""The planning scene: the robot, its current state, objects around it, and what may touch.
+
+A :class:`Scene` plays the part of MoveIt's ``PlanningScene`` for one
+:class:`~taskrunner.robot.RobotModel` (which may hold several robots). It owns
+
+- the current robot state (a state vector, see :mod:`taskrunner.robot.model`), used to
+  place poses given relative to a link and to carry attached objects;
+- world objects, fixed in the world frame, and attached objects, carried by a link and
+  allowed to touch it and the caller's ``touch_links`` (MoveIt's AttachedCollisionObject);
+- the allowed-collision matrix: the robot's SRDF ``disable_collisions`` pairs plus the
+  scene's own allowances (a cube resting on a table: allow ``cube``–``table``).
+
+Collision queries are answered by a :class:`~taskrunner.scene.collision.CollisionChecker`
+built lazily after each edit. A scene is not thread-safe: give each worker thread its own
+:meth:`Scene.copy`, and a worker process a :meth:`Scene.snapshot`.
+"""
+
+from __future__ import annotations
+
+import builtins
+import copy
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+import coal
+import numpy as np
+import pinocchio as pin
+
+from taskrunner.errors import SceneError, UnknownNameError
+from taskrunner.robot import RobotModel
+from taskrunner.scene.allowed import AllowedCollisions
+from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact
+from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
+from taskrunner.scene.objects import SceneObject, SceneSnapshot
+from taskrunner.shapes import Shape
+from taskrunner.types import JointState, Pose
+
+__all__ = ["Scene", "SceneOptions"]
+
+WORLD = "world"
+
+
+@dataclass(frozen=True)
+class SceneOptions:
+    """How a scene models the robot's geometry.
+
+    Attributes:
+        convex_robot_meshes: replace each robot link mesh by its convex hull (GJK on a
+            hull is much faster than on a BVH and gives signed distances; conservative
+            for non-convex link meshes). Scene object meshes always keep their BVH.
+    """
+
+    convex_robot_meshes: bool = True
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.convex_robot_meshes, bool):
+            raise ValueError(
+                f"'convex_robot_meshes' must be a bool (got {self.convex_robot_meshes!r})"
+            )
+
+
+@dataclass(frozen=True)
+class _Entry:
+    """A scene object with its coal geometry (shared between copies, never edited)."""
+
+    object: SceneObject
+    geometry: coal.CollisionGeometry
+
+
+class Scene:
+    """See the module docstring.
+
+    Args:
+        robot: the robot model; its state starts at :meth:`RobotModel.default_state`.
+        options: geometry options.
+    """
+
+    def __init__(self, robot: RobotModel, options: SceneOptions | None = None) -> None:
+        self.robot = robot
+        self.options = options or SceneOptions()
+        self._link_bodies = link_bodies(robot, self.options.convex_robot_meshes)
+        self._link_set = frozenset(robot.link_names)
+        self._meshes = MeshCache()
+        self._entries: dict[str, _Entry] = {}
+        self._allowed = AllowedCollisions(robot.disabled_collisions)
+        self._q = robot.default_state()
+        self._data = robot.model.createData()
+        self._fk_done = False
+        self._checker: CollisionChecker | None = None
+
+    # ----------------------------------------------------------------- copies
+    def copy(self) -> Scene:
+        """An independent scene with the same objects, allowances and state."""
+        other = copy.copy(self)
+        other._entries = dict(self._entries)
+        other._allowed = self._allowed.copy()
+        other._q = self._q.copy()
+        other._data = self.robot.model.createData()
+        other._fk_done = False
+        other._checker = None
+        return other
+
+    def snapshot(self) -> SceneSnapshot:
+        """A plain-data description: objects, poses, attachments, allowances and state."""
+        return SceneSnapshot(
+            robot=self.robot.name,
+            state=JointState(self.robot.joint_names, self._q.copy()),
+            objects=tuple(e.object for e in self._entries.values()),
+            allowed=self._allowed.scene_pairs,
+        )
+
+    @classmethod
+    def from_snapshot(
+        cls, robot: RobotModel, snapshot: SceneSnapshot, options: SceneOptions | None = None
+    ) -> Scene:
+        """Rebuild a scene from :meth:`snapshot` on the same robot model.
+
+        Raises:
+            SceneError: the snapshot was taken on another model.
+            MissingMeshError: a mesh file of an object is gone.
+        """
+        if snapshot.robot != robot.name:
+            raise SceneError(
+                f"snapshot of robot model {snapshot.robot!r} cannot be restored on {robot.name!r}"
+            )
+        scene = cls(robot, options)
+        scene.set_state(snapshot.state)
+        for obj in snapshot.objects:
+            scene._check_new_name(obj.name)
+            if obj.attached_to is not None:
+                scene._check_links([obj.attached_to, *obj.touch_links])
+            scene._entries[obj.name] = _Entry(obj, shape_geometry(obj.shape, scene._meshes))
+        for a, b in snapshot.allowed:
+            scene.allow_collision(a, b)
+        return scene
+
+    # ----------------------------------------------------------------- state
+    @property
+    def state(self) -> np.ndarray:
+        """The current robot state vector (a read-only copy; rad or m)."""
+        q = self._q.copy()
+        q.setflags(write=False)
+        return q
+
+    def set_state(self, q: np.ndarray | JointState | Mapping[str, float]) -> None:
+        """Set the robot state: a full state vector, or some joints by name.
+
+        Mimic joints follow their source joints. Attached objects move with their links.
+
+        Raises:
+            ValueError: a vector of the wrong length or with non-finite values.
+            UnknownNameError: a joint name the model does not have.
+        """
+        if isinstance(q, (JointState, Mapping)):
+            new = self.robot.state_with(self._q, q)
+        else:
+            new = self._as_state(q)
+            self.robot.apply_mimic(new)
+        if not np.all(np.isfinite(new)):
+            raise ValueError(f"'q' must be finite (got {new})")
+        self._q = new
+        self._fk_done = False
+
+    def link_pose(self, link: str) -> Pose:
+        """World pose of a robot link (or any model frame) at the current state."""
+        return Pose.from_se3(self._frame_transform(self.robot.frame_id(link)))
+
+    # ----------------------------------------------------------------- objects
+    @property
+    def object_names(self) -> tuple[str, ...]:
+        """Names of all objects, world and attached, in the order they were added."""
+        return tuple(self._entries)
+
+    @property
+    def objects(self) -> tuple[SceneObject, ...]:
+        return tuple(e.object for e in self._entries.values())
+
+    def __contains__(self, name: builtins.object) -> bool:
+        return name in self._entries
+
+    def object(self, name: str) -> SceneObject:
+        """The object ``name``, its pose in the world or in its link's frame."""
+        return self._entry(name).object
+
+    def object_pose(self, name: str) -> Pose:
+        """World pose of object ``name``'s frame at the current state."""
+        return Pose.from_se3(self._object_transform(self._entry(name).object))
+
+    def attached_objects(self, link: str | None = None) -> tuple[SceneObject, ...]:
+        """Attached objects, all or those carried by ``link``."""
+        return tuple(
+            e.object for e in self._entries.values()
+            if e.object.attached and (link is None or e.object.attached_to == link)
+        )
+
+    def add_object(
+        self,
+        name: str,
+        shape: Shape,
+        pose: Pose,
+        attach_to: str | None = None,
+        touch_links: Iterable[str] = (),
+    ) -> SceneObject:
+        """Add an object.
+
+        Args:
+            name: unique among objects and robot links.
+            shape: its geometry (centred on the object's frame).
+            pose: where its frame is, in any frame: ``world``, a robot link (taken at the
+                current state) or another object.
+            attach_to: a link to attach it to (it then moves with the link); None keeps
+                it fixed in the world.
+            touch_links: links besides ``attach_to`` it may touch while attached.
+
+        Raises:
+            SceneError: the name is taken, or the shape is invalid.
+            UnknownNameError: ``pose.frame``, ``attach_to`` or a touch link is unknown.
+            MissingMeshError: a mesh file does not exist.
+        """
+        self._check_new_name(name)
+        touch = tuple(touch_links)
+        if attach_to is None and touch:
+            raise SceneError(f"'touch_links' need 'attach_to' (object {name!r})")
+        if attach_to is not None:
+            self._check_links([attach_to, *touch])
+        world = self._pose_transform(pose)
+        geometry = shape_geometry(shape, self._meshes)
+        obj = self._placed(name, shape, world, attach_to, touch)
+        self._entries[name] = _Entry(obj, geometry)
+        self._edited()
+        return obj
+
+    def move_object(self, name: str, pose: Pose) -> SceneObject:
+        """Move object ``name`` to ``pose`` (any frame); an attached object stays attached."""
+        entry = self._entry(name)
+        old = entry.object
+        world = self._pose_transform(pose)
+        obj = self._placed(name, old.shape, world, old.attached_to, old.touch_links)
+        self._entries[name] = _Entry(obj, entry.geometry)
+        self._edited()
+        return obj
+
+    def remove_object(self, name: str) -> None:
+        """Remove object ``name`` (world or attached) and the allowances naming it."""
+        self._entry(name)
+        del self._entries[name]
+        self._allowed.forget(name)
+        self._edited()
+
+    def attach_object(self, name: str, link: str, touch_links: Iterable[str] = ()) -> SceneObject:
+        """Attach world object ``name`` to ``link`` where it is now.
+
+        It then moves with the link and may touch ``link`` and ``touch_links`` (e.g. the
+        fingers), but collides with everything else, including the table it was taken from
+        unless the scene allows that pair.
+
+        Raises:
+            UnknownNameError: unknown object or link.
+            SceneError: the object is already attached.
+        """
+        entry = self._entry(name)
+        if entry.object.attached:
+            raise SceneError(
+                f"object {name!r} is already attached to {entry.object.attached_to!r}; "
+                "detach it first"
+            )
+        touch = tuple(touch_links)
+        self._check_links([link, *touch])
+        world = self._object_transform(entry.object)
+        obj = self._placed(name, entry.object.shape, world, link, touch)
+        self._entries[name] = _Entry(obj, entry.geometry)
+        self._edited()
+        return obj
+
+    def detach_object(self, name: str) -> SceneObject:
+        """Detach ``name``: it stays where it is now, as a world object.
+
+        Raises:
+            UnknownNameError: unknown object.
+            SceneError: the object is not attached.
+        """
+        entry = self._entry(name)
+        if not entry.object.attached:
+            raise SceneError(f"object {name!r} is not attached")
+        world = self._object_transform(entry.object)
+        obj = self._placed(name, entry.object.shape, world, None, ())
+        self._entries[name] = _Entry(obj, entry.geometry)
+        self._edited()
+        return obj
+
+    # ----------------------------------------------------------------- allowances
+    def allow_collision(self, a: str, b: str, reason: str = "scene") -> None:
+        """Allow bodies ``a`` and ``b`` (link or object names) to touch."""
+        self._check_body(a)
+        self._check_body(b)
+        self._allowed.allow(a, b, reason)
+        self._edited()
+
+    def disallow_collision(self, a: str, b: str) -> None:
+        """Withdraw a scene allowance between ``a`` and ``b`` (nothing if there is none).
+
+        Raises:
+            SceneError: the pair is allowed by the robot's SRDF or by an attachment,
+                which the scene cannot withdraw.
+        """
+        self._check_body(a)
+        self._check_body(b)
+        if self._allowed.withdraw(a, b, self.attached_objects()):
+            self._edited()
+
+    def collision_allowed(self, a: str, b: str) -> bool:
+        """True if bodies ``a`` and ``b`` may touch (SRDF, attachment or scene allowance)."""
+        self._check_body(a)
+        self._check_body(b)
+        return frozenset((a, b)) in self.allowed_collisions()
+
+    def allowed_collisions(self) -> dict[frozenset[str], str]:
+        """Every allowed body pair and why: SRDF reasons, ``attached`` or the scene's."""
+        return self._allowed.pairs(self.attached_objects())
+
+    # ----------------------------------------------------------------- checks
+    def in_collision(self, q: np.ndarray | None = None) -> bool:
+        """True if state ``q`` (default: the current state) collides, self or world.
+
+        This is the fast call for planners: no validation of ``q`` beyond pinocchio's.
+        """
+        checker = self._checker or self._build()
+        return checker.in_collision(self.robot.to_pin(self._q if q is None else q))
+
+    def is_valid(self, q: np.ndarray | None = None) -> bool:
+        """True if ``q`` is collision-free (joint limits are the planner's bounds, not checked)."""
+        checker = self._checker or self._build()
+        return not checker.in_collision(self.robot.to_pin(self._q if q is None else q))
+
+    def collisions(self, q: np.ndarray | None = None) -> list[Contact]:
+        """The colliding body pairs at ``q`` by name, deepest first (slower; for messages)."""
+        checker = self._checker or self._build()
+        return checker.collisions(self.robot.to_pin(self._as_state(self._q if q is None else q)))
+
+    def min_distance(self, q: np.ndarray | None = None) -> Clearance:
+        """The closest non-allowed body pair at ``q``: ``(distance in m, (a, b))``."""
+        checker = self._checker or self._build()
+        return checker.min_distance(
+            self.robot.to_pin(self._as_state(self._q if q is None else q))
+        )
+
+    @property
+    def checker(self) -> CollisionChecker:
+        """The collision checker for the scene as it is now (rebuilt after edits)."""
+        return self._checker or self._build()
+
+    # ----------------------------------------------------------------- internals
+    def _edited(self) -> None:
+        self._checker = None
+
+    def _build(self) -> CollisionChecker:
+        bodies = list(self._link_bodies)
+        for entry in self._entries.values():
+            geometry = object_geometry(self.robot, entry.object, entry.geometry)
+            bodies.append(Body(entry.object.name, (geometry,), static=not entry.object.attached))
+        self._checker = CollisionChecker(self.robot.model, bodies, self.allowed_collisions())
+        return self._checker
+
+    def _as_state(self, q: np.ndarray | list[float]) -> np.ndarray:
+        array = np.array(q, dtype=float)
+        if array.shape != (self.robot.nq,):
+            raise ValueError(
+                f"'q' must be a state vector of {self.robot.nq} values "
+                f"({', '.join(self.robot.joint_names)}) (got shape {array.shape})"
+            )
+        return array
+
+    def _entry(self, name: str) -> _Entry:
+        try:
+            return self._entries[name]
+        except KeyError:
+            raise UnknownNameError("object", name, list(self._entries)) from None
+
+    def _check_new_name(self, name: str) -> None:
+        if not isinstance(name, str) or not name:
+            raise SceneError(f"'name' must be a non-empty string (got {name!r})")
+        if name in self._entries:
+            raise SceneError(f"object {name!r} already exists; remove it or move it instead")
+        if name == WORLD or self.robot.model.existFrame(name):
+            raise SceneError(f"object name {name!r} is taken by a link or frame of the robot model")
+
+    def _check_links(self, links: Iterable[str]) -> None:
+        for link in links:
+            if link not in self._link_set or link == WORLD:
+                raise UnknownNameError(
+                    "link", link, [n for n in self.robot.link_names if n != WORLD]
+                )
+
+    def _check_body(self, name: str) -> None:
+        if name not in self._entries and (name not in self._link_set or name == WORLD):
+            known = list(self._entries) + [n for n in self.robot.link_names if n != WORLD]
+            raise UnknownNameError("link or object", name, known)
+
+    def _placed(
+        self, name: str, shape: Shape, world: pin.SE3, link: str | None, touch: tuple[str, ...]
+    ) -> SceneObject:
+        """The object at world transform ``world``, expressed in its link frame if attached."""
+        if link is None:
+            return SceneObject(name, shape, Pose.from_se3(world, WORLD))
+        local = self._frame_transform(self.robot.frame_id(link)).actInv(world)
+        return SceneObject(name, shape, Pose.from_se3(local, link), link, touch)
+
+    def _frame_transform(self, frame_id: int) -> pin.SE3:
+        if not self._fk_done:
+            pin.framesForwardKinematics(self.robot.model, self._data, self.robot.to_pin(self._q))
+            self._fk_done = True
+        return pin.SE3(self._data.oMf[frame_id])
+
+    def _object_transform(self, obj: SceneObject) -> pin.SE3:
+        if obj.attached_to is None:
+            return obj.pose.se3
+        return self._frame_transform(self.robot.frame_id(obj.attached_to)) * obj.pose.se3
+
+    def _pose_transform(self, pose: Pose) -> pin.SE3:
+        """World transform of ``pose``, whose frame is the world, a link or an object."""
+        if not isinstance(pose, Pose):
+            raise SceneError(f"'pose' must be a taskrunner.types.Pose (got {type(pose).__name__})")
+        if pose.frame == WORLD:
+            return pose.se3
+        if pose.frame in self._entries:
+            return self._object_transform(self._entries[pose.frame].object) * pose.se3
+        if self.robot.model.existFrame(pose.frame):
+            return self._frame_transform(self.robot.frame_id(pose.frame)) * pose.se3
+        known = [WORLD, *self._entries, *self.robot.link_names]
+        raise UnknownNameError("frame", pose.frame, known)
