@@ -11,7 +11,12 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
     ├── SceneError                  an invalid scene edit (duplicate object, bad shape)
     └── PlanningError               no motion could be produced
-        └── IkFailedError           the target pose is unreachable (within limits and tolerance)
+        ├── IkFailedError           the target pose is unreachable (within limits and tolerance)
+        ├── InvalidStateError       a start or goal outside the joint limits, or not of the group
+        ├── StartInCollisionError   the start state collides (names the pair)
+        ├── GoalInCollisionError    every goal state collides (names the pair)
+        ├── PlanningTimeoutError    no path found within the planning time
+        └── PlanningCancelledError  the caller cancelled the request
 
 Messages follow the form ``'<field>' must be <expectation> (got <value>)`` where it fits,
 and every error raised from a file starts with ``path:line:``.
@@ -22,7 +27,12 @@ from __future__ import annotations
 from pathlib import Path
 
 __all__ = [
+    "GoalInCollisionError",
     "IkFailedError",
+    "InvalidStateError",
+    "PlanningCancelledError",
+    "PlanningTimeoutError",
+    "StartInCollisionError",
     "InputError",
     "MissingMeshError",
     "PlanningError",
@@ -115,3 +125,31 @@ class IkFailedError(PlanningError):
     def __init__(self, message: str, best_error: float | None = None):
         self.best_error = best_error
         super().__init__(message)
+
+
+class InvalidStateError(PlanningError):
+    """A start or goal that cannot be planned for: outside the joint limits, or not of the group."""
+
+
+class _CollisionReported(PlanningError):
+    """A state in collision; ``pairs`` names the colliding bodies (deepest first)."""
+
+    def __init__(self, message: str, pairs: list[tuple[str, str]] | None = None):
+        self.pairs = list(pairs or [])
+        super().__init__(message)
+
+
+class StartInCollisionError(_CollisionReported):
+    """The start state is in collision."""
+
+
+class GoalInCollisionError(_CollisionReported):
+    """Every goal state is in collision."""
+
+
+class PlanningTimeoutError(PlanningError):
+    """The planner found no path within its time (and attempts)."""
+
+
+class PlanningCancelledError(PlanningError):
+    """The request was cancelled before a path was found."""

@@ -1,0 +1,27 @@
+"""Motion planning: OMPL paths, Cartesian paths and toppra timing for a scene's groups."""
+
+from __future__ import annotations
+
+from taskrunner.planning.planner import MotionPlanner
+from taskrunner.planning.request import (
+    PLANNERS,
+    Goal,
+    JointGoal,
+    NamedGoal,
+    PlannerOptions,
+    PlanRequest,
+    PlanResult,
+    PoseGoal,
+)
+
+__all__ = [
+    "PLANNERS",
+    "Goal",
+    "JointGoal",
+    "MotionPlanner",
+    "NamedGoal",
+    "PlanRequest",
+    "PlanResult",
+    "PlannerOptions",
+    "PoseGoal",
+]

@@ -1,0 +1,404 @@
+"""Collision-free joint-space paths with OMPL.
+
+:class:`MotionPlanner` plans a group of a scene's robot model from a start state to one of
+several goals. The group's joints form an OMPL real-vector space bounded by the joint
+limits; every other joint stays where the start state has it. States are checked by the
+scene's collision checker (self, world and attached objects). The path found is
+shortcut, then re-checked at a fine resolution before it is returned; a path that fails
+that check is never returned.
+
+References: Kuffner & LaValle, "RRT-Connect: An Efficient Approach to Single-Query Path
+Planning", ICRA 2000; Şucan, Moll & Kavraki, "The Open Motion Planning Library", 2012.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import replace
+
+import numpy as np
+
+from taskrunner.errors import (
+    GoalInCollisionError,
+    InvalidStateError,
+    PlanningCancelledError,
+    PlanningError,
+    PlanningTimeoutError,
+    StartInCollisionError,
+)
+from taskrunner.kinematics import IkOptions, IkSolver
+from taskrunner.planning.request import (
+    JointGoal,
+    NamedGoal,
+    PlannerOptions,
+    PlanRequest,
+    PlanResult,
+    PoseGoal,
+)
+from taskrunner.robot.model import Group
+from taskrunner.scene import Scene
+from taskrunner.types import JointPath
+
+__all__ = ["MotionPlanner", "interpolate_path", "first_invalid_state"]
+
+_REFINEMENTS = 3
+_OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT",
+               "AORRTC"}
+
+
+def _ompl():  # type: ignore[no-untyped-def]
+    """Import OMPL once, quietly (its import fails silently when broken: pitfall 7)."""
+    from ompl import base as ob
+    from ompl import geometric as og
+    from ompl import util as ou
+
+    ou.setLogLevel(ou.LogLevel.LOG_ERROR)
+    return ob, og, ou
+
+
+def interpolate_path(waypoints: np.ndarray, resolution: float) -> np.ndarray:
+    """Waypoints with points inserted so no joint moves more than ``resolution`` per step."""
+    out = [waypoints[:1]]
+    for a, b in zip(waypoints[:-1], waypoints[1:]):
+        steps = max(1, int(np.ceil(np.max(np.abs(b - a)) / resolution)))
+        t = np.linspace(0.0, 1.0, steps + 1)[1:, None]
+        out.append(a + t * (b - a))
+    return np.vstack(out)
+
+
+def first_invalid_state(
+    is_valid: Callable[[np.ndarray], bool], waypoints: np.ndarray, resolution: float
+) -> np.ndarray | None:
+    """The first state along the path (checked every ``resolution`` rad) that is invalid."""
+    for q in interpolate_path(waypoints, resolution):
+        if not is_valid(q):
+            return q
+    return None
+
+
+class MotionPlanner:
+    """Plans paths for the groups of a scene's robot.
+
+    The planner reads the scene (objects, attachments, allowed collisions, current state)
+    at every request; it keeps IK solvers between requests.
+    """
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self._ik: dict[tuple[str, str | None], IkSolver] = {}
+
+    # ------------------------------------------------------------------ public
+    def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
+        """Plan a path for ``request``.
+
+        Args:
+            request: group, goal(s), optional start state and options.
+            should_stop: polled while planning; returning True cancels the request.
+
+        Raises:
+            UnknownNameError: an unknown group, joint, link or named pose.
+            InvalidStateError: the start or a goal is outside the limits or not of the group.
+            StartInCollisionError, GoalInCollisionError: with the colliding pairs.
+            IkFailedError: no goal pose is reachable.
+            PlanningTimeoutError: no path within the time and attempts.
+            PlanningCancelledError: ``should_stop`` said so.
+        """
+        t_start = time.perf_counter()
+        model = self.scene.robot
+        options = request.options
+        group = model.group(request.group)
+        if len(group.joint_names) == 0:
+            raise InvalidStateError(f"group {group.name!r} has no joints to plan for")
+        start = self._start_state(request, group)
+        candidates = self._goal_states(request, group, start)
+        idx = group.joint_indices
+        for goal_index, q_goal in candidates:
+            if np.max(np.abs(q_goal[idx] - start[idx])) < 1e-9:
+                path = JointPath(group.joint_names, np.vstack([start[idx], q_goal[idx]]))
+                return PlanResult(path, start, q_goal, goal_index, options.planner, 0.0, 0.0,
+                                  time.perf_counter() - t_start, 0)
+        planning_time = simplify_time = 0.0
+        checks = 0
+        for refinement in range(_REFINEMENTS):
+            # A path checked every longest_valid_segment may clip a thin obstacle that the
+            # fine re-check then finds: search again with a finer segment.
+            tried = replace(options, longest_valid_segment=options.longest_valid_segment
+                            / 2**refinement, seed=options.seed + 1000 * refinement)
+            found, seconds, count = self._search(group, start, candidates, tried, should_stop)
+            planning_time += seconds
+            checks += count
+            t_simplify = time.perf_counter()
+            waypoints = self._simplified(group, start, found, tried)
+            simplify_time += time.perf_counter() - t_simplify
+            if waypoints is not None:
+                break
+        else:
+            raise PlanningError(
+                f"every path found for group {group.name!r} collided when re-checked at "
+                f"{options.validation_resolution} rad, down to a planning segment of "
+                f"{options.longest_valid_segment / 2 ** (_REFINEMENTS - 1):g} rad")
+        end = start.copy()
+        end[idx] = waypoints[-1]
+        model.apply_mimic(end)
+        goal_index = min(candidates, key=lambda c: float(np.max(np.abs(c[1][idx] - end[idx]))))[0]
+        return PlanResult(JointPath(group.joint_names, waypoints), start, end, goal_index,
+                          options.planner, planning_time, simplify_time,
+                          time.perf_counter() - t_start, checks)
+
+    # ------------------------------------------------------------------ states
+    def _start_state(self, request: PlanRequest, group: Group) -> np.ndarray:
+        model = self.scene.robot
+        if request.start is None:
+            start = self.scene.state.copy()
+        else:
+            start = np.array(request.start, dtype=float)
+            if start.shape != (model.nq,):
+                raise InvalidStateError(f"'start' must have {model.nq} values, one per joint "
+                                        f"of {model.name!r} (got shape {start.shape})")
+            model.apply_mimic(start)
+        bad = model.limit_violations(start)
+        if bad:
+            raise InvalidStateError("start state outside the joint limits: " + "; ".join(bad))
+        if self.scene.in_collision(start):
+            contacts = self.scene.collisions(start)
+            pairs = [(c.a, c.b) for c in contacts]
+            raise StartInCollisionError(
+                f"start state of group {group.name!r} is in collision: " + _describe(contacts),
+                pairs)
+        return start
+
+    def _goal_states(self, request: PlanRequest, group: Group, start: np.ndarray
+                     ) -> list[tuple[int, np.ndarray]]:
+        """Valid goal states (full vectors) with the index of the goal they satisfy."""
+        model = self.scene.robot
+        valid: list[tuple[int, np.ndarray]] = []
+        rejected: list[tuple[int, np.ndarray]] = []
+        for index, goal in enumerate(request.goals):
+            for q in self._goal_candidates(goal, group, start, request.options):
+                bad = model.limit_violations(q)
+                if bad:
+                    raise InvalidStateError(f"goal {index} outside the joint limits: "
+                                            + "; ".join(bad))
+                (rejected if self.scene.in_collision(q) else valid).append((index, q))
+        if not valid:
+            contacts = self.scene.collisions(rejected[0][1])
+            raise GoalInCollisionError(
+                f"every goal state of group {group.name!r} is in collision ("
+                f"{len(rejected)} checked); first: " + _describe(contacts),
+                [(c.a, c.b) for c in contacts])
+        return valid
+
+    def _goal_candidates(self, goal, group: Group, start: np.ndarray,  # type: ignore[no-untyped-def]
+                         options: PlannerOptions) -> list[np.ndarray]:
+        model = self.scene.robot
+        if isinstance(goal, JointGoal | NamedGoal):
+            values = (goal.values if isinstance(goal, JointGoal)
+                      else model.named_state(group.name, goal.name).as_dict())
+            outside = [n for n in values if n not in group.joint_names]
+            if outside:
+                for name in outside:
+                    model.joint(name)  # UnknownNameError for a joint that does not exist
+                raise InvalidStateError(f"joints {outside} are not active joints of group "
+                                        f"{group.name!r} ({', '.join(group.joint_names)})")
+            return [model.state_with(start, values)]
+        if isinstance(goal, PoseGoal):
+            if goal.pose.frame != "world":
+                raise InvalidStateError(f"pose goals must be in the 'world' frame (got "
+                                        f"{goal.pose.frame!r})")
+            key = (group.name, goal.link)
+            if key not in self._ik:
+                self._ik[key] = IkSolver(model, group.name, frame=goal.link)
+            settings = group.kinematics
+            ik_options = IkOptions(
+                tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
+                num_solutions=options.goal_samples,
+                # Several distinct solutions need more restarts than one does.
+                timeout=max(settings.timeout if settings else 0.0, 0.05),
+                attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
+            )
+            solutions = self._ik[key].solve_all(goal.pose.se3, seed_q=start, options=ik_options)
+            return [s.q for s in solutions]
+        raise TypeError(f"unsupported goal type {type(goal).__name__}")
+
+    # ------------------------------------------------------------------ search
+    def _validity(self, group: Group, start: np.ndarray) -> tuple[Callable[[np.ndarray], bool], list[int]]:
+        """A fast validity check over the group's values, and a call counter."""
+        model = self.scene.robot
+        checker = self.scene.checker
+        q = start.copy()
+        idx = group.joint_indices
+        mimic = any(j.mimic is not None for j in model.joints)
+        to_pin = model.to_pin
+        count = [0]
+
+        def is_valid(values: np.ndarray) -> bool:
+            count[0] += 1
+            q[idx] = values
+            if mimic:
+                model.apply_mimic(q)
+            return not checker.in_collision(to_pin(q))
+
+        return is_valid, count
+
+    def _search(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
+                options: PlannerOptions, should_stop: Callable[[], bool] | None
+                ) -> tuple[np.ndarray, float, int]:
+        ob, og, ou = _ompl()
+        model = self.scene.robot
+        idx = group.joint_indices
+        n = len(idx)
+        is_valid, count = self._validity(group, start)
+        lower = model.lower[idx].copy()
+        upper = model.upper[idx].copy()
+        # Continuous joints: one turn around wherever the start and goals are.
+        ends = np.vstack([start[idx]] + [g[idx] for _, g in goals])
+        lower = np.where(np.isfinite(lower), lower, np.minimum(ends.min(axis=0), -np.pi))
+        upper = np.where(np.isfinite(upper), upper, np.maximum(ends.max(axis=0), np.pi))
+
+        space = ob.RealVectorStateSpace(n)
+        bounds = ob.RealVectorBounds(n)
+        for k in range(n):
+            bounds.setLow(k, float(lower[k]))
+            bounds.setHigh(k, float(upper[k]))
+        space.setBounds(bounds)
+        space.setLongestValidSegmentFraction(
+            min(1.0, options.longest_valid_segment / space.getMaximumExtent()))
+        setup = og.SimpleSetup(space)
+        values = np.empty(n)
+        rng = range(n)
+
+        def ompl_valid(state) -> bool:  # type: ignore[no-untyped-def]
+            for k in rng:
+                values[k] = state[k]
+            return bool(is_valid(values))
+
+        setup.setStateValidityChecker(ompl_valid)
+        start_state = space.allocState()
+        for k in rng:
+            start_state[k] = float(start[idx[k]])
+        setup.setStartState(start_state)
+        si = setup.getSpaceInformation()
+        goal_set = ob.GoalStates(si)
+        for _, q in goals:
+            state = space.allocState()
+            for k in rng:
+                state[k] = float(q[idx[k]])
+            goal_set.addState(state)
+        setup.setGoal(goal_set)
+        if options.planner in _OPTIMIZING:
+            objective = ob.PathLengthOptimizationObjective(si)
+            if not options.refine:
+                objective.setCostThreshold(objective.infiniteCost())
+            setup.setOptimizationObjective(objective)
+
+        planning_time = 0.0
+        cancelled = [False]
+
+        def stop() -> bool:
+            if should_stop is not None and should_stop():
+                cancelled[0] = True
+            return cancelled[0]
+
+        for attempt in range(options.attempts):
+            _seed_ompl(ou, options.seed + attempt)
+            planner = getattr(og, options.planner)(si)
+            setup.setPlanner(planner)
+            setup.setup()
+            ptc = ob.timedPlannerTerminationCondition(options.planning_time)
+            if not (options.refine and options.planner in _OPTIMIZING):
+                ptc = ob.plannerOrTerminationCondition(
+                    ptc, ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()))
+            if should_stop is not None:
+                ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(stop))
+            t0 = time.perf_counter()
+            status = setup.solve(ptc)
+            planning_time += time.perf_counter() - t0
+            if cancelled[0]:
+                raise PlanningCancelledError(f"planning for group {group.name!r} was cancelled")
+            if setup.haveExactSolutionPath() and "EXACT" in status.asString().upper():
+                path = setup.getSolutionPath()
+                # Copy now: the path's states die with the next solve() or clear() (pitfall 1).
+                states = np.array([[path.getState(i)[k] for k in rng]
+                                   for i in range(path.getStateCount())])
+                return states, planning_time, count[0]
+            setup.clear()
+        raise PlanningTimeoutError(
+            f"no path for group {group.name!r} found by {options.planner} in "
+            f"{options.attempts} attempt(s) of {options.planning_time:g} s")
+
+    def _simplified(self, group: Group, start: np.ndarray, waypoints: np.ndarray,
+                    options: PlannerOptions) -> np.ndarray | None:
+        """Shortcut the path, then re-check it finely; fall back to the raw path if needed.
+        None when both collide at the fine resolution."""
+        is_valid, _ = self._validity(group, start)
+        candidates = []
+        if options.simplify and len(waypoints) > 2:
+            candidates.append(_shortcut(is_valid, waypoints, options, options.seed))
+        candidates.append(waypoints)
+        for candidate in candidates:
+            if first_invalid_state(is_valid, candidate, options.validation_resolution) is None:
+                return candidate
+        return None
+
+
+def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.ndarray,
+                   resolution: float) -> bool:
+    steps = max(1, int(np.ceil(np.max(np.abs(b - a)) / resolution)))
+    # Check the middle first: a blocked shortcut is usually blocked there.
+    order = np.argsort(np.abs(np.arange(1, steps) - steps / 2.0))
+    for i in order:
+        if not is_valid(a + (i + 1) / steps * (b - a)):
+            return False
+    return True
+
+
+def _shortcut(is_valid: Callable[[np.ndarray], bool], waypoints: np.ndarray,
+              options: PlannerOptions, seed: int) -> np.ndarray:
+    """Greedy vertex removal then random shortcuts, checked at the planning resolution."""
+    resolution = options.longest_valid_segment
+    path = [w for w in waypoints]
+    # Greedy: from each vertex, jump to the farthest vertex reachable in a straight line.
+    reduced = [path[0]]
+    i = 0
+    while i < len(path) - 1:
+        j = len(path) - 1
+        while j > i + 1 and not _segment_valid(is_valid, path[i], path[j], resolution):
+            j -= 1
+        reduced.append(path[j])
+        i = j
+    path = reduced
+    rng = np.random.default_rng(seed)
+    for _ in range(2 * len(path)):
+        if len(path) < 3:
+            break
+        # Shortcut between points inside two different segments.
+        s1, s2 = sorted(rng.choice(len(path) - 1, size=2, replace=False))
+        if s2 - s1 < 1:
+            continue
+        t1, t2 = rng.uniform(0.0, 1.0, size=2)
+        p1 = path[s1] + t1 * (path[s1 + 1] - path[s1])
+        p2 = path[s2] + t2 * (path[s2 + 1] - path[s2])
+        if _segment_valid(is_valid, p1, p2, resolution):
+            path = path[: s1 + 1] + [p1, p2] + path[s2 + 1:]
+    return np.array(path)
+
+
+def _describe(contacts) -> str:  # type: ignore[no-untyped-def]
+    if not contacts:
+        return "no contact reported"
+    shown = ", ".join(f"{c.a}–{c.b}" for c in contacts[:3])
+    more = f" and {len(contacts) - 3} more" if len(contacts) > 3 else ""
+    return shown + more
+
+
+def _seed_ompl(ou, seed: int) -> None:  # type: ignore[no-untyped-def]
+    """Reseed OMPL's generators (it logs an error when sampling has already started; the
+    reseeding works regardless, so the message is silenced)."""
+    level = ou.getLogLevel()
+    ou.setLogLevel(ou.LogLevel.LOG_NONE)
+    try:
+        ou.RNG.setSeed(int(seed) % (2**31 - 1) + 1)
+    finally:
+        ou.setLogLevel(level)
+

@@ -1,0 +1,158 @@
+"""What a motion plan is asked for, and what it answers.
+
+A :class:`PlanRequest` names a group, an optional start state, one goal or several (any of
+them will do) and :class:`PlannerOptions`. Goals are joint values, a named pose, or a pose
+of a link (full pose, or position only) that the planner turns into a set of goal states
+by sampling inverse kinematics.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from taskrunner.types import JointPath, Pose
+
+__all__ = [
+    "Goal",
+    "JointGoal",
+    "NamedGoal",
+    "PlanRequest",
+    "PlanResult",
+    "PlannerOptions",
+    "PoseGoal",
+]
+
+
+@dataclass(frozen=True)
+class JointGoal:
+    """Joint values (rad or m). Joints of the group left out keep their start value."""
+
+    values: Mapping[str, float]
+
+    def __post_init__(self) -> None:
+        if not self.values:
+            raise ValueError("'values' must name at least one joint")
+        object.__setattr__(self, "values", {str(k): float(v) for k, v in self.values.items()})
+
+
+@dataclass(frozen=True)
+class NamedGoal:
+    """A named pose of the group (SRDF ``group_state`` or a cell pose)."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class PoseGoal:
+    """A pose of ``link`` (default: the group's tip) in the world frame.
+
+    Attributes:
+        position_only: aim the link's origin only; None follows the group's
+            ``position_only_ik`` setting.
+        tolerance: IK tolerance (m, and rad for the orientation).
+    """
+
+    pose: Pose
+    link: str | None = None
+    position_only: bool | None = None
+    tolerance: float = 1e-4
+
+
+Goal = JointGoal | NamedGoal | PoseGoal
+
+PLANNERS = (
+    "RRTConnect", "RRT", "RRTstar", "InformedRRTstar", "SORRTstar", "PRM", "PRMstar",
+    "BITstar", "KPIECE1", "BKPIECE1", "LBKPIECE1", "FMT", "BFMT", "AORRTC",
+)
+
+
+@dataclass(frozen=True)
+class PlannerOptions:
+    """How to plan.
+
+    Attributes:
+        planner: OMPL planner by name (see ``PLANNERS``); RRTConnect by default.
+        planning_time: seconds per attempt.
+        attempts: independent attempts (each with ``planning_time``) before giving up.
+        seed: seeds OMPL's sampling and the IK goal sampling: the same seed, scene and
+            request give the same path.
+        longest_valid_segment: largest joint-space step (rad, max over joints) between
+            collision checks while planning.
+        validation_resolution: step (rad) of the final re-check of the returned path.
+        refine: let optimizing planners (RRTstar, BITstar, PRMstar …) use all their time
+            to improve the path; by default every planner stops at its first solution.
+        simplify: shortcut and smooth the path before returning it.
+        goal_samples: IK solutions sampled as goal states for a pose goal.
+    """
+
+    planner: str = "RRTConnect"
+    planning_time: float = 1.0
+    attempts: int = 1
+    seed: int = 0
+    longest_valid_segment: float = 0.05
+    validation_resolution: float = 0.01
+    refine: bool = False
+    simplify: bool = True
+    goal_samples: int = 6
+
+    def __post_init__(self) -> None:
+        if self.planner not in PLANNERS:
+            raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
+        for name in ("planning_time", "longest_valid_segment", "validation_resolution"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+                raise ValueError(f"'{name}' must be a positive number (got {value!r})")
+        for name in ("attempts", "goal_samples"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+                raise ValueError(f"'{name}' must be a positive integer (got {value!r})")
+        if isinstance(self.seed, bool) or not isinstance(self.seed, (int, np.integer)):
+            raise ValueError(f"'seed' must be an integer (got {self.seed!r})")
+
+
+@dataclass(frozen=True)
+class PlanRequest:
+    """A request to plan ``group`` from ``start`` (default: the scene's state) to a goal.
+
+    ``goal`` may be a tuple of goals: the plan reaches whichever is found first.
+    """
+
+    group: str
+    goal: Goal | tuple[Goal, ...]
+    start: np.ndarray | None = None
+    options: PlannerOptions = field(default_factory=PlannerOptions)
+
+    @property
+    def goals(self) -> tuple[Goal, ...]:
+        return self.goal if isinstance(self.goal, tuple) else (self.goal,)
+
+
+@dataclass(frozen=True)
+class PlanResult:
+    """A collision-free path, re-checked at ``validation_resolution``.
+
+    Attributes:
+        path: waypoints over the group's joints, from the start to the goal reached.
+        start: the full state vector the path starts from (other joints stay as here).
+        end: the full state vector at the end of the path.
+        goal_index: which of the request's goals was reached.
+        planning_time: seconds spent searching (all attempts).
+        simplify_time: seconds spent shortcutting the path.
+        total_time: wall time of the whole request (goal sampling, checks included).
+        checks: collision checks made while searching.
+    """
+
+    path: JointPath
+    start: np.ndarray
+    end: np.ndarray
+    goal_index: int
+    planner: str
+    planning_time: float
+    simplify_time: float
+    total_time: float
+    checks: int
+
