@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from taskrunner.scene.collision import Clearance, Contact
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
+from taskrunner.scene.from_cell import scene_from_cell
 from taskrunner.scene.scene import Scene, SceneOptions
 
 __all__ = [
@@ -17,4 +18,5 @@ __all__ = [
     "SceneObject",
     "SceneOptions",
     "SceneSnapshot",
+    "scene_from_cell",
 ]

@@ -1,0 +1,177 @@
+"""``run-task``: the command line.
+
+Subcommands:
+
+- ``run-task demo [CELL]``: load a cell, solve IK for a point in front of the arm, check
+  it for collisions, plan a collision-free path there and time it.
+- ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
+- ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
+
+Exit codes: 0 success, 2 invalid input, 3 planning failure.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
+
+__all__ = ["main"]
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+DEFAULT_CELL = REPO_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
+
+EXIT_OK, EXIT_INVALID, EXIT_PLANNING = 0, 2, 3
+
+
+def _load(path: Path):  # type: ignore[no-untyped-def]
+    """A cell file, or a robot (manifest, folder, URDF) wrapped as a one-robot cell."""
+    from taskrunner.robot import load_robot
+    from taskrunner.robot.cell import Cell, load_cell
+
+    if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
+        return load_cell(path)
+    model = load_robot(path)
+    return Cell(model.name, path, model, (), {})
+
+
+def _fmt(values: np.ndarray) -> str:
+    return "[" + ", ".join(f"{v:+.3f}" for v in values) + "]"
+
+
+def cmd_info(args: argparse.Namespace) -> int:
+    cell = _load(Path(args.path))
+    model = cell.model
+    out = [f"cell {cell.name}: {len(model.instances)} robot(s), {model.nq} joints"]
+    for inst in model.instances:
+        xyz = _fmt(inst.base.translation)
+        out.append(f"  robot {inst.name!r} prefix {inst.prefix!r} at {xyz}  ({inst.source})")
+    out.append("groups:")
+    for group in model.groups.values():
+        poses = ", ".join(model.named_state_names(group.name)) or "-"
+        ik = " position-only IK" if group.position_only_ik else ""
+        out.append(f"  {group.name}: {len(group.joint_names)} joints, tip {group.tip_link}"
+                   f"{ik}; poses: {poses}")
+    if cell.objects:
+        out.append("objects:")
+        for obj in cell.objects:
+            out.append(f"  {obj.name}: {obj.shape} at {_fmt(obj.pose.translation)} in {obj.frame}")
+    for warning in model.warnings:
+        out.append(f"warning: {warning}")
+    print("\n".join(out))
+    return EXIT_OK
+
+
+def cmd_demo(args: argparse.Namespace) -> int:
+    from taskrunner.kinematics import IkOptions, IkSolver, frame_pose
+    from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
+    from taskrunner.scene import scene_from_cell
+
+    t0 = time.perf_counter()
+    cell = _load(Path(args.cell))
+    model = cell.model
+    scene = scene_from_cell(cell)
+    print(f"loaded cell {cell.name!r} ({model.nq} joints, {len(cell.objects)} objects) "
+          f"in {1e3 * (time.perf_counter() - t0):.0f} ms")
+    arm = next((g for g in model.groups.values() if g.tip_link and g.end_effector), None)
+    if arm is None:
+        raise InputError(f"cell {cell.name!r} has no arm group with an end effector")
+    tip = arm.tip_link
+    assert tip is not None
+    start = scene.state
+    here = frame_pose(model, start, tip)
+    print(f"group {arm.name!r} at start {_fmt(start[arm.joint_indices])}: "
+          f"{tip} at {_fmt(here.translation)} m")
+    clearance = scene.min_distance()
+    print(f"start state collision-free; closest pair {clearance.pair[0]}–{clearance.pair[1]} "
+          f"at {1e3 * clearance.distance:.1f} mm")
+
+    # A point in front of the arm's base, a hand's height above the table.
+    base = model.instances[0].base
+    target = base.act(np.array(args.target, dtype=float))
+    # Aim the grasp point between the fingers when the arm has one.
+    frame = model.instances[0].prefix + "tool0"
+    frame = frame if model.has_link(frame) else tip
+    solver = IkSolver(model, arm.name, frame=frame)
+    t0 = time.perf_counter()
+    solutions = solver.solve_all(target, seed_q=start, options=IkOptions(
+        position_only=True, seed=args.seed, num_solutions=8, timeout=0.05))
+    ik_ms = 1e3 * (time.perf_counter() - t0)
+    free = [s for s in solutions if not scene.in_collision(s.q)]
+    print(f"IK (position only) of {frame} to {_fmt(target)} m: {len(solutions)} distinct "
+          f"solutions in {ik_ms:.2f} ms, {len(free)} collision-free")
+    if not free:
+        pairs = ", ".join(f"{c.a}–{c.b}" for c in scene.collisions(solutions[0].q))
+        raise PlanningError(f"every IK solution collides (first: {pairs})")
+    solution = free[0]
+    print(f"  chose {_fmt(solution.joint_state.positions)} rad, error "
+          f"{1e3 * solution.position_error:.4f} mm")
+
+    below = base.act(np.array([args.target[0], args.target[1], -0.02]))
+    sunk = solver.solve(below, seed_q=solution.q, options=IkOptions(position_only=True))
+    pairs = ", ".join(f"{c.a}–{c.b} ({1e3 * c.depth:.1f} mm deep)"
+                      for c in scene.collisions(sunk.q)[:3])
+    print(f"IK 2 cm below the table top: reachable, but in collision: {pairs}")
+
+    planner = MotionPlanner(scene)
+    request = PlanRequest(arm.name, JointGoal(solution.joint_state.as_dict()),
+                          options=PlannerOptions(seed=args.seed))
+    result = planner.plan(request)
+    print(f"planned {arm.name!r} start → IK solution: {len(result.path)} waypoints, "
+          f"{1e3 * result.planning_time:.1f} ms search + {1e3 * result.simplify_time:.1f} ms "
+          f"shortcut, {result.checks} collision checks, re-checked every "
+          f"{request.options.validation_resolution} rad")
+    return EXIT_OK
+
+
+def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
+    from taskrunner.scene import acm
+
+    return acm.main(list(rest))
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="run-task", description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
+    demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL), help="cell file")
+    demo.add_argument("--target", nargs=3, type=float, default=(0.2, 0.05, 0.08),
+                      metavar=("X", "Y", "Z"),
+                      help="IK target in the first robot's base frame, m (0.2 0.05 0.08)")
+    demo.add_argument("--seed", type=int, default=0)
+    info = sub.add_parser("info", help="describe a cell or robot")
+    info.add_argument("path")
+    sub.add_parser("collision-matrix", add_help=False,
+                   help="generate a robot's self-collision matrix (see --help)")
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = _parser()
+    if argv and argv[0] == "collision-matrix":
+        return cmd_collision_matrix(argparse.Namespace(), argv[1:])
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "demo":
+            return cmd_demo(args)
+        return cmd_info(args)
+    except (InputError, UnknownNameError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    except PlanningError as exc:
+        print(f"planning failed: {exc}", file=sys.stderr)
+        return EXIT_PLANNING
+    except TaskrunnerError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+
+
+if __name__ == "__main__":
+    sys.exit(main())
