@@ -146,4 +146,5 @@ def test_public_names_of_the_scene_package() -> None:
 
     assert sorted(taskrunner.scene.__all__) == [
         "Clearance", "Contact", "Scene", "SceneObject", "SceneOptions", "SceneSnapshot",
+        "scene_from_cell",
     ]
