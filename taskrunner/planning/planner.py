@@ -21,6 +21,7 @@ import numpy as np
 
 from taskrunner.errors import (
     GoalInCollisionError,
+    IkFailedError,
     InvalidStateError,
     PlanningCancelledError,
     PlanningError,
@@ -43,8 +44,7 @@ from taskrunner.types import JointPath
 __all__ = ["MotionPlanner", "interpolate_path", "first_invalid_state"]
 
 _REFINEMENTS = 3
-_OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT",
-               "AORRTC"}
+_OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
 
 
 def _ompl():  # type: ignore[no-untyped-def]
@@ -174,13 +174,22 @@ class MotionPlanner:
         model = self.scene.robot
         valid: list[tuple[int, np.ndarray]] = []
         rejected: list[tuple[int, np.ndarray]] = []
+        unreachable: list[IkFailedError] = []
         for index, goal in enumerate(request.goals):
-            for q in self._goal_candidates(goal, group, start, request.options):
+            try:
+                candidates = self._goal_candidates(goal, group, start, request.options)
+            except IkFailedError as exc:
+                # With several goals, one out of reach is fine as long as another is not.
+                unreachable.append(exc)
+                continue
+            for q in candidates:
                 bad = model.limit_violations(q)
                 if bad:
                     raise InvalidStateError(f"goal {index} outside the joint limits: "
                                             + "; ".join(bad))
                 (rejected if self.scene.in_collision(q) else valid).append((index, q))
+        if not valid and not rejected:
+            raise unreachable[0]
         if not valid:
             contacts = self.scene.collisions(rejected[0][1])
             raise GoalInCollisionError(
@@ -279,13 +288,19 @@ class MotionPlanner:
             start_state[k] = float(start[idx[k]])
         setup.setStartState(start_state)
         si = setup.getSpaceInformation()
-        goal_set = ob.GoalStates(si)
+        goal_states = []
         for _, q in goals:
             state = space.allocState()
             for k in rng:
                 state[k] = float(q[idx[k]])
-            goal_set.addState(state)
-        setup.setGoal(goal_set)
+            goal_states.append(state)
+        if len(goal_states) == 1:
+            setup.setGoalState(goal_states[0])
+        else:
+            goal_set = ob.GoalStates(si)
+            for state in goal_states:
+                goal_set.addState(state)
+            setup.setGoal(goal_set)
         if options.planner in _OPTIMIZING:
             objective = ob.PathLengthOptimizationObjective(si)
             if not options.refine:

@@ -1,0 +1,184 @@
+"""The OMPL motion planner: goal kinds, failure reasons, planners, seeds, dual arm, cancel."""
+
+from __future__ import annotations
+
+import numpy as np
+import pinocchio as pin
+import pytest
+
+from planning_scenes import READY, dense_states
+from taskrunner.errors import (
+    GoalInCollisionError,
+    IkFailedError,
+    InvalidStateError,
+    PlanningCancelledError,
+    PlanningTimeoutError,
+    StartInCollisionError,
+    UnknownNameError,
+)
+from taskrunner.kinematics import frame_pose
+from taskrunner.planning import (
+    PLANNERS,
+    JointGoal,
+    MotionPlanner,
+    NamedGoal,
+    PlannerOptions,
+    PlanRequest,
+    PoseGoal,
+)
+from taskrunner.shapes import Box, Sphere
+from taskrunner.types import Pose
+
+# The hand under the shelf's middle board, pointing forward (+x).
+UNDER_SHELF = Pose.from_se3(pin.SE3(pin.rpy.rpyToMatrix(0.0, np.pi / 2, 0.0),
+                                    np.array([0.62, 0.0, 0.15])))
+REACH_LEFT = {**READY, "panda_joint1": 1.2, "panda_joint2": 0.2, "panda_joint4": -1.8}
+
+
+def assert_path_is_free(scene, result, resolution=0.005):
+    for q in dense_states(scene, result, resolution):
+        assert not scene.in_collision(q), [(c.a, c.b) for c in scene.collisions(q)]
+        assert scene.robot.within_limits(q)
+
+
+def test_joint_goal_path_starts_at_start_ends_at_goal_and_is_free(shelf_scene):
+    result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(REACH_LEFT)))
+    idx = shelf_scene.robot.indices(result.path.names)
+    assert result.path.names == shelf_scene.robot.group("arm").joint_names
+    assert result.path.waypoints[0] == pytest.approx(shelf_scene.state[idx])
+    assert result.path.waypoints[-1] == pytest.approx([REACH_LEFT[n] for n in result.path.names])
+    assert result.end[idx] == pytest.approx(result.path.waypoints[-1])
+    assert_path_is_free(shelf_scene, result)
+    # The fingers were not part of the plan: they stay where the start had them.
+    assert result.end[7] == shelf_scene.state[7]
+
+
+def test_named_goal_moves_the_servo_arm_home_to_candle(servo_arm_model):
+    from taskrunner.scene import Scene
+
+    scene = Scene(servo_arm_model)
+    scene.set_state(servo_arm_model.named_state("arm", "home"))
+    result = MotionPlanner(scene).plan(PlanRequest("arm", NamedGoal("Candle")))
+    assert result.path.waypoints[-1] == pytest.approx([1.5708] + [-1.5708] * 4)
+    assert_path_is_free(scene, result)
+
+
+def test_pose_goal_reaches_under_the_shelf(shelf_scene):
+    result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", PoseGoal(UNDER_SHELF)))
+    reached = frame_pose(shelf_scene.robot, result.end, "panda_hand_tcp")
+    assert reached.translation == pytest.approx(UNDER_SHELF.xyz, abs=2e-4)
+    assert np.linalg.norm(pin.log3(reached.rotation.T @ UNDER_SHELF.se3.rotation)) < 2e-4
+    assert_path_is_free(shelf_scene, result)
+
+
+def test_several_goals_reach_one_even_if_another_is_out_of_reach(shelf_scene):
+    far = Pose((2.0, 0.0, 0.5))
+    result = MotionPlanner(shelf_scene).plan(
+        PlanRequest("arm", (PoseGoal(far), JointGoal(REACH_LEFT))))
+    assert result.goal_index == 1
+
+
+def test_start_in_collision_names_the_pair(shelf_scene):
+    start = shelf_scene.robot.state_with(shelf_scene.state, {"panda_joint2": 1.5, "panda_joint4": -0.2})
+    with pytest.raises(StartInCollisionError) as err:
+        MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(READY), start=start))
+    assert err.value.pairs
+    assert any("table" in pair or "shelf_board" in pair for pair in err.value.pairs)
+    assert "start state of group 'arm' is in collision" in str(err.value)
+
+
+def test_goal_in_collision_names_the_pair(shelf_scene):
+    shelf_scene.add_object("ball", Sphere(0.08), Pose((0.5, 0.0, 0.5)))
+    goal = Pose.from_se3(pin.SE3(pin.rpy.rpyToMatrix(np.pi, 0.0, 0.0), np.array([0.5, 0.0, 0.5])))
+    with pytest.raises(GoalInCollisionError) as err:
+        MotionPlanner(shelf_scene).plan(PlanRequest("arm", PoseGoal(goal)))
+    assert any("ball" in pair for pair in err.value.pairs)
+
+
+def test_unreachable_pose_is_an_ik_failure(shelf_scene):
+    with pytest.raises(IkFailedError, match="no IK solution for group 'arm'"):
+        MotionPlanner(shelf_scene).plan(PlanRequest("arm", PoseGoal(Pose((2.0, 0.0, 0.5)))))
+
+
+def test_goal_outside_the_limits_and_joints_not_in_the_group_are_refused(shelf_scene):
+    planner = MotionPlanner(shelf_scene)
+    with pytest.raises(InvalidStateError, match="'panda_joint4' = 0.5000 outside"):
+        planner.plan(PlanRequest("arm", JointGoal({"panda_joint4": 0.5})))
+    with pytest.raises(InvalidStateError, match="not active joints of group 'arm'"):
+        planner.plan(PlanRequest("arm", JointGoal({"panda_finger_joint1": 0.02})))
+    with pytest.raises(UnknownNameError, match="unknown group 'amr'"):
+        planner.plan(PlanRequest("amr", JointGoal(READY)))
+
+
+def test_no_path_within_the_planning_time_is_a_timeout(shelf_scene):
+    # Under the shelf board is a detour: far more than 0.1 ms of search.
+    with pytest.raises(PlanningTimeoutError,
+                       match=r"no path for group 'arm' found by RRTConnect in 2 attempt\(s\)"):
+        MotionPlanner(shelf_scene).plan(PlanRequest(
+            "arm", PoseGoal(UNDER_SHELF),
+            options=PlannerOptions(planning_time=1e-4, attempts=2)))
+
+
+@pytest.mark.parametrize("planner", PLANNERS)
+def test_every_planner_by_name_solves_a_shelf_query(shelf_scene, planner):
+    options = PlannerOptions(planner=planner, planning_time=5.0)
+    result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(REACH_LEFT),
+                                                         options=options))
+    assert result.planner == planner
+    assert_path_is_free(shelf_scene, result, resolution=0.01)
+
+
+def test_unknown_planner_name_is_refused():
+    with pytest.raises(ValueError, match="'planner' must be one of RRTConnect"):
+        PlannerOptions(planner="RRTConect")
+
+
+def test_the_same_seed_gives_the_same_path(shelf_scene):
+    planner = MotionPlanner(shelf_scene)
+    paths = [planner.plan(PlanRequest("arm", PoseGoal(UNDER_SHELF),
+                                      options=PlannerOptions(seed=seed))).path.waypoints
+             for seed in (7, 7, 8)]
+    assert np.array_equal(paths[0], paths[1])
+    assert paths[0].shape != paths[2].shape or not np.allclose(paths[0], paths[2])
+
+
+def test_both_arms_swap_sides_without_touching_each_other(servo_pair_scene):
+    model = servo_pair_scene.robot
+    servo_pair_scene.set_state(model.named_state("both_arms", "HandOff"))
+    # Left arm to the right of its base and right arm to the left: they must pass.
+    goal = {"left_Revolute 1": 0.9, "right_Revolute 1": 0.9,
+            **{f"{side}_Revolute {i}": v for side in ("left", "right")
+               for i, v in ((2, -0.9), (3, -0.5), (4, -0.4))}}
+    result = MotionPlanner(servo_pair_scene).plan(PlanRequest("both_arms", JointGoal(goal)))
+    assert len(result.path.names) == 10
+    assert_path_is_free(servo_pair_scene, result, resolution=0.005)
+
+
+def test_one_arm_plans_around_the_other_holding_an_object(servo_pair_scene):
+    model = servo_pair_scene.robot
+    servo_pair_scene.set_state(model.named_state("both_arms", "HandOff"))
+    servo_pair_scene.set_state(model.named_state("left_arm", "Candle"))
+    servo_pair_scene.add_object("part", Box((0.04, 0.04, 0.04)), Pose((0.0, 0.0, 0.0), frame="right_tool0"),
+                                attach_to="right_tool0",
+                                touch_links=["right_finger_left_1", "right_finger_right_1"])
+    result = MotionPlanner(servo_pair_scene).plan(
+        PlanRequest("left_arm", NamedGoal("HandOff")))
+    assert_path_is_free(servo_pair_scene, result)
+    # The right arm held still for the whole path.
+    right = model.group("right_arm").joint_indices
+    assert all(np.array_equal(q[right], result.start[right])
+               for q in dense_states(servo_pair_scene, result))
+
+
+def test_cancelling_stops_an_in_flight_plan(shelf_scene):
+    polls = []
+
+    def should_stop():
+        polls.append(1)
+        return len(polls) >= 3
+
+    with pytest.raises(PlanningCancelledError, match="planning for group 'arm' was cancelled"):
+        MotionPlanner(shelf_scene).plan(
+            PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(planning_time=30.0)),
+            should_stop=should_stop)
+    assert len(polls) >= 3
