@@ -31,14 +31,9 @@ EXIT_OK, EXIT_INVALID, EXIT_PLANNING = 0, 2, 3
 
 
 def _load(path: Path):  # type: ignore[no-untyped-def]
-    """A cell file, or a robot (manifest, folder, URDF) wrapped as a one-robot cell."""
-    from taskrunner.robot import load_robot
-    from taskrunner.robot.cell import Cell, load_cell
+    from taskrunner.robot.cell import load_cell_or_robot
 
-    if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
-        return load_cell(path)
-    model = load_robot(path)
-    return Cell(model.name, path, model, (), {})
+    return load_cell_or_robot(path)
 
 
 def _fmt(values: np.ndarray) -> str:

@@ -63,6 +63,10 @@ class InputError(TaskrunnerError):
         self.line = line
         super().__init__(self._format())
 
+    def __reduce__(self):  # type: ignore[no-untyped-def]
+        # Errors travel back from the planning worker process: keep every field.
+        return (type(self), (self.reason, self.path, self.line))
+
     @property
     def location(self) -> str:
         """``path:line`` (or ``path``, or an empty string when neither is known)."""
@@ -105,6 +109,9 @@ class UnknownNameError(TaskrunnerError):
         hint = f"; known: {shown}{more}" if self.known else ""
         super().__init__(f"unknown {kind} {name!r}{hint}")
 
+    def __reduce__(self):  # type: ignore[no-untyped-def]
+        return (type(self), (self.kind, self.name, self.known))
+
 
 class SceneError(TaskrunnerError):
     """An invalid change to the planning scene."""
@@ -126,6 +133,9 @@ class IkFailedError(PlanningError):
         self.best_error = best_error
         super().__init__(message)
 
+    def __reduce__(self):  # type: ignore[no-untyped-def]
+        return (type(self), (self.args[0], self.best_error))
+
 
 class InvalidStateError(PlanningError):
     """A start or goal that cannot be planned for: outside the joint limits, or not of the group."""
@@ -137,6 +147,9 @@ class _CollisionReported(PlanningError):
     def __init__(self, message: str, pairs: list[tuple[str, str]] | None = None):
         self.pairs = list(pairs or [])
         super().__init__(message)
+
+    def __reduce__(self):  # type: ignore[no-untyped-def]
+        return (type(self), (self.args[0], self.pairs))
 
 
 class StartInCollisionError(_CollisionReported):

@@ -44,7 +44,7 @@ from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.validation import validate_node
 from taskrunner.yamlfile import LineDict, line_of, load_yaml
 
-__all__ = ["Cell", "CellObject", "load_cell"]
+__all__ = ["Cell", "CellObject", "load_cell", "load_cell_or_robot"]
 
 Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
 
@@ -246,3 +246,15 @@ def load_cell(path: str | Path, packages: PackageMap | None = None) -> Cell:
         except UnknownNameError as exc:
             raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
     return Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
+
+
+def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None) -> Cell:
+    """A cell file, or a robot (manifest, folder, URDF, xacro) as a one-robot cell with no
+    objects."""
+    from taskrunner.robot import load_robot
+
+    path = Path(path)
+    if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
+        return load_cell(path, packages)
+    model = load_robot(path, packages)
+    return Cell(model.name, path, model, (), {})

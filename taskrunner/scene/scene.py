@@ -87,6 +87,7 @@ class Scene:
         self._data = robot.model.createData()
         self._fk_done = False
         self._checker: CollisionChecker | None = None
+        self._revision = 0
 
     # ----------------------------------------------------------------- copies
     def copy(self) -> Scene:
@@ -124,15 +125,33 @@ class Scene:
                 f"snapshot of robot model {snapshot.robot!r} cannot be restored on {robot.name!r}"
             )
         scene = cls(robot, options)
-        scene.set_state(snapshot.state)
-        for obj in snapshot.objects:
-            scene._check_new_name(obj.name)
-            if obj.attached_to is not None:
-                scene._check_links([obj.attached_to, *obj.touch_links])
-            scene._entries[obj.name] = _Entry(obj, shape_geometry(obj.shape, scene._meshes))
-        for a, b in snapshot.allowed:
-            scene.allow_collision(a, b)
+        scene.restore(snapshot)
         return scene
+
+    def restore(self, snapshot: SceneSnapshot) -> None:
+        """Replace this scene's objects, allowances and state with a snapshot's, keeping
+        the robot geometry already built (cheaper than :meth:`from_snapshot`).
+
+        Raises:
+            SceneError: the snapshot was taken on another model.
+            MissingMeshError: a mesh file of an object is gone.
+        """
+        if snapshot.robot != self.robot.name:
+            raise SceneError(
+                f"snapshot of robot model {snapshot.robot!r} cannot be restored on "
+                f"{self.robot.name!r}"
+            )
+        self._entries = {}
+        self._allowed = AllowedCollisions(self.robot.disabled_collisions)
+        self.set_state(snapshot.state)
+        for obj in snapshot.objects:
+            self._check_new_name(obj.name)
+            if obj.attached_to is not None:
+                self._check_links([obj.attached_to, *obj.touch_links])
+            self._entries[obj.name] = _Entry(obj, shape_geometry(obj.shape, self._meshes))
+        for a, b in snapshot.allowed:
+            self.allow_collision(a, b)
+        self._edited()
 
     # ----------------------------------------------------------------- state
     @property
@@ -350,8 +369,15 @@ class Scene:
         return self._checker or self._build()
 
     # ----------------------------------------------------------------- internals
+    @property
+    def revision(self) -> int:
+        """Counts edits of objects and allowances (not state changes): a copy of the scene
+        made at the same revision has the same objects."""
+        return self._revision
+
     def _edited(self) -> None:
         self._checker = None
+        self._revision += 1
 
     def _build(self) -> CollisionChecker:
         bodies = list(self._link_bodies)

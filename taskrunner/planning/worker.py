@@ -1,0 +1,236 @@
+"""Planning in a worker process, so the caller's threads keep running.
+
+OMPL's ``solve()`` holds the GIL for its whole run: a plan computed in-process freezes
+every other Python thread (the behaviour tree, the CLI display, the API's event loop). A
+:class:`PlanningWorker` owns a process that loads the robot model once, keeps a planning
+scene, and answers plan requests over a pipe. The caller gets a :class:`PlanHandle` at
+once and polls it (``done()``), waits for it (``result()``) or cancels it (``cancel()``,
+which stops the search inside the worker within one planner iteration).
+
+Scene updates travel with the requests: a snapshot of the caller's scene is sent only when
+its objects or allowances changed since the last request (``Scene.revision``); the start
+state always travels in the request.
+"""
+
+from __future__ import annotations
+
+import itertools
+import multiprocessing as mp
+import threading
+import time
+from dataclasses import replace
+from multiprocessing.connection import Connection
+from pathlib import Path
+from typing import Any
+
+from taskrunner.errors import PlanningError, TaskrunnerError
+from taskrunner.planning.request import PlanRequest, PlanResult
+from taskrunner.scene import Scene
+
+__all__ = ["PlanHandle", "PlanningWorker", "WorkerDiedError"]
+
+_NO_CANCEL = -1
+
+
+class WorkerDiedError(PlanningError):
+    """The planning worker process ended while a request was in flight."""
+
+
+def _serve(source: str, conn: Connection, cancel: Any) -> None:
+    """The worker process: load the model, then answer requests until told to stop."""
+    from taskrunner.planning.planner import MotionPlanner
+    from taskrunner.robot.cell import load_cell_or_robot
+
+    try:
+        started = time.perf_counter()
+        cell = load_cell_or_robot(source)
+        scene = Scene(cell.model)
+        planner = MotionPlanner(scene)
+        scene.checker  # noqa: B018 - build the collision geometry before the first request
+        conn.send(("ready", cell.model.name, time.perf_counter() - started))
+    except TaskrunnerError as exc:
+        conn.send(("failed", exc, 0.0))
+        return
+    while True:
+        try:
+            message = conn.recv()
+        except (EOFError, OSError):
+            return
+        kind = message[0]
+        if kind == "stop":
+            return
+        _, request_id, snapshot, request = message
+        try:
+            if snapshot is not None:
+                scene.restore(snapshot)
+            result = planner.plan(request, should_stop=lambda: cancel.value == request_id)
+            conn.send(("ok", request_id, result))
+        except TaskrunnerError as exc:
+            conn.send(("error", request_id, exc))
+        except Exception as exc:  # noqa: BLE001 - report, never kill the worker silently
+            conn.send(("error", request_id, PlanningError(f"{type(exc).__name__}: {exc}")))
+
+
+class PlanHandle:
+    """A request in flight in a :class:`PlanningWorker`."""
+
+    def __init__(self, worker: PlanningWorker, request_id: int) -> None:
+        self._worker = worker
+        self.request_id = request_id
+        self._outcome: tuple[str, Any] | None = None
+        self.submitted = time.perf_counter()
+
+    def done(self) -> bool:
+        """True once the worker answered (never blocks)."""
+        if self._outcome is None:
+            self._worker._collect(self, timeout=0.0)
+        return self._outcome is not None
+
+    def result(self, timeout: float | None = None) -> PlanResult:
+        """The plan, waiting up to ``timeout`` seconds (None: as long as it takes).
+
+        Raises:
+            TimeoutError: no answer within ``timeout``.
+            PlanningError: whatever the planner raised (same class, same message),
+                :class:`WorkerDiedError` if the worker process died.
+        """
+        if self._outcome is None:
+            self._worker._collect(self, timeout=timeout)
+        if self._outcome is None:
+            raise TimeoutError(f"plan request {self.request_id} not answered in {timeout} s")
+        kind, payload = self._outcome
+        if kind == "ok":
+            return payload
+        raise payload
+
+    def cancel(self) -> None:
+        """Ask the worker to stop this request; :meth:`result` then raises
+        :class:`~taskrunner.errors.PlanningCancelledError` (or returns a plan that was
+        finished before the cancel arrived)."""
+        if self._outcome is None:
+            self._worker._cancel.value = self.request_id
+
+
+class PlanningWorker:
+    """A process that plans for one robot model (cell or robot file).
+
+    Args:
+        source: the cell file (or robot manifest / folder / URDF) the worker loads.
+        start_timeout: seconds to wait for the worker to load the model.
+
+    One request is in flight at a time; :meth:`submit` while one is running waits for it.
+    Use several workers for parallel planning. Close with :meth:`close` or a ``with``.
+    """
+
+    def __init__(self, source: str | Path, start_timeout: float = 60.0) -> None:
+        self.source = str(source)
+        self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads
+        self._cancel = self._ctx.Value("q", _NO_CANCEL, lock=False)
+        self._ids = itertools.count(1)
+        self._lock = threading.Lock()
+        self._pending: PlanHandle | None = None
+        self._sent_scene: tuple[int, int] | None = None
+        self._start(start_timeout)
+
+    def _start(self, timeout: float) -> None:
+        self._conn, child = self._ctx.Pipe()
+        self._process = self._ctx.Process(target=_serve, args=(self.source, child, self._cancel),
+                                          name="taskrunner-planner", daemon=True)
+        self._process.start()
+        child.close()
+        if not self._conn.poll(timeout):
+            self._process.kill()
+            raise WorkerDiedError(f"planning worker did not load {self.source} in {timeout} s")
+        try:
+            kind, payload, seconds = self._conn.recv()
+        except (EOFError, OSError):
+            self._process.join(timeout=5.0)
+            raise WorkerDiedError(
+                f"planning worker for {self.source} exited while starting (exit code "
+                f"{self._process.exitcode}); a script that starts workers needs the "
+                "`if __name__ == '__main__':` guard (workers are spawned, not forked)"
+            ) from None
+        if kind == "failed":
+            self._process.join()
+            raise payload
+        self.model_name = payload
+        self.load_time = seconds
+        self._sent_scene = None
+
+    # ------------------------------------------------------------------ public
+    def submit(self, scene: Scene, request: PlanRequest) -> PlanHandle:
+        """Send a request; returns at once with a handle to poll, wait on or cancel.
+
+        The request's start defaults to the scene's current state.
+        """
+        with self._lock:
+            if self._pending is not None:
+                self._collect(self._pending, timeout=None)
+            if not self._process.is_alive():
+                self._start(60.0)
+            if request.start is None:
+                request = replace(request, start=scene.state)
+            key = (id(scene), scene.revision)
+            snapshot = scene.snapshot() if key != self._sent_scene else None
+            handle = PlanHandle(self, next(self._ids))
+            self._conn.send(("plan", handle.request_id, snapshot, request))
+            self._sent_scene = key
+            self._pending = handle
+            return handle
+
+    def plan(self, scene: Scene, request: PlanRequest, timeout: float | None = None) -> PlanResult:
+        """Plan and wait for the answer (the synchronous form of :meth:`submit`)."""
+        return self.submit(scene, request).result(timeout)
+
+    def close(self) -> None:
+        """Stop the worker process."""
+        if self._process.is_alive():
+            try:
+                self._cancel.value = self._pending.request_id if self._pending else _NO_CANCEL
+                self._conn.send(("stop",))
+            except (OSError, BrokenPipeError):
+                pass
+            self._process.join(timeout=5.0)
+            if self._process.is_alive():
+                self._process.kill()
+        self._conn.close()
+
+    def __enter__(self) -> PlanningWorker:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # ------------------------------------------------------------------ internals
+    def _collect(self, handle: PlanHandle, timeout: float | None) -> None:
+        """Read the worker's answer for ``handle`` if there is one within ``timeout``."""
+        if handle is not self._pending or handle._outcome is not None:
+            return
+        deadline = None if timeout is None else time.perf_counter() + timeout
+        while True:
+            remaining = None if deadline is None else max(0.0, deadline - time.perf_counter())
+            # Poll in slices so a dead worker is noticed even without an answer.
+            if self._conn.poll(0.05 if remaining is None else min(remaining, 0.05)):
+                try:
+                    kind, request_id, payload = self._conn.recv()
+                except (EOFError, OSError):
+                    self._died(handle)
+                    return
+                if request_id == handle.request_id:
+                    handle._outcome = (kind, payload)
+                    self._pending = None
+                    self._cancel.value = _NO_CANCEL
+                    return
+            elif not self._process.is_alive():
+                self._died(handle)
+                return
+            if deadline is not None and time.perf_counter() >= deadline:
+                return
+
+    def _died(self, handle: PlanHandle) -> None:
+        code = self._process.exitcode
+        handle._outcome = ("error", WorkerDiedError(
+            f"planning worker for {self.source} died (exit code {code}) during request "
+            f"{handle.request_id}; it restarts with the next request"))
+        self._pending = None
+        self._sent_scene = None

@@ -1,0 +1,108 @@
+"""The planning worker process: same plans as in-process, scene updates, cancel, crashes."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+
+import numpy as np
+import pytest
+from planning_scenes import READY, SHELF, dense_states
+
+from taskrunner.errors import PlanningCancelledError, UnknownNameError
+from taskrunner.kinematics import frame_pose
+from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
+from taskrunner.planning.worker import PlanningWorker, WorkerDiedError
+from taskrunner.scene import Scene
+from taskrunner.shapes import Box
+from taskrunner.types import Pose
+
+GOAL = JointGoal({**READY, "panda_joint1": 1.2, "panda_joint2": 0.2, "panda_joint4": -1.8})
+
+
+@pytest.fixture(scope="module")
+def worker(robots_dir, example_robot_data):
+    with PlanningWorker(robots_dir / "panda") as w:
+        yield w
+
+
+@pytest.fixture
+def scene(panda_model):
+    scene = Scene(panda_model)
+    for name, size, xyz in SHELF:
+        scene.add_object(name, Box(size), Pose(xyz))
+    scene.allow_collision("panda_link0", "table")
+    scene.set_state(READY)
+    return scene
+
+
+def test_worker_plans_the_same_path_as_in_process(worker, scene):
+    expected = MotionPlanner(scene).plan(PlanRequest("arm", GOAL))
+    result = worker.plan(scene, PlanRequest("arm", GOAL))
+    assert np.array_equal(result.path.waypoints, expected.path.waypoints)
+    assert worker.model_name == "panda"
+
+
+def test_scene_edits_reach_the_worker(worker, scene):
+    first = worker.plan(scene, PlanRequest("arm", GOAL))
+    # A post right on the first path's midpoint: the next plan must go around it.
+    along = dense_states(scene, first)
+    q = along[len(along) // 2]
+    hand = frame_pose(scene.robot, q, "panda_hand").translation
+    scene.add_object("post", Box((0.06, 0.06, 0.06)), Pose(tuple(hand)))
+    assert scene.in_collision(q) and not scene.in_collision()
+    second = worker.plan(scene, PlanRequest("arm", GOAL))
+    assert not any(scene.in_collision(s) for s in dense_states(scene, second))
+
+
+def test_submit_returns_at_once_and_the_caller_keeps_running(worker, scene):
+    request = PlanRequest("arm", GOAL, options=PlannerOptions(
+        planner="RRTstar", refine=True, planning_time=0.6))
+    started = time.perf_counter()
+    handle = worker.submit(scene, request)
+    assert time.perf_counter() - started < 0.2
+    assert not handle.done()
+    ticks = 0
+    while not handle.done():
+        ticks += 1
+        time.sleep(0.01)
+    assert ticks > 20  # this thread ran all along
+    assert handle.result().planner == "RRTstar"
+
+
+def test_cancel_stops_an_in_flight_plan_quickly(worker, scene):
+    request = PlanRequest("arm", GOAL, options=PlannerOptions(
+        planner="RRTstar", refine=True, planning_time=30.0))
+    handle = worker.submit(scene, request)
+    time.sleep(0.2)
+    cancelled_at = time.perf_counter()
+    handle.cancel()
+    with pytest.raises(PlanningCancelledError):
+        handle.result(timeout=10.0)
+    assert time.perf_counter() - cancelled_at < 1.0
+    # The worker serves the next request normally.
+    assert worker.plan(scene, PlanRequest("arm", GOAL)).path.names[0] == "panda_joint1"
+
+
+def test_errors_come_back_with_their_class_and_message(worker, scene):
+    with pytest.raises(UnknownNameError, match="unknown group 'amr'"):
+        worker.plan(scene, PlanRequest("amr", GOAL))
+
+
+def test_a_killed_worker_is_reported_and_restarted(robots_dir, scene, example_robot_data):
+    with PlanningWorker(robots_dir / "panda") as worker:
+        handle = worker.submit(scene, PlanRequest("arm", GOAL, options=PlannerOptions(
+            planner="RRTstar", refine=True, planning_time=30.0)))
+        time.sleep(0.2)
+        os.kill(worker._process.pid, signal.SIGKILL)
+        with pytest.raises(WorkerDiedError, match="died"):
+            handle.result(timeout=10.0)
+        assert worker.plan(scene, PlanRequest("arm", GOAL)).path.names[0] == "panda_joint1"
+
+
+def test_a_worker_on_a_bad_file_fails_to_start_with_the_files_error(tmp_path):
+    bad = tmp_path / "cell.yaml"
+    bad.write_text("name: x\nrobots: []\n")
+    with pytest.raises(Exception, match=r"cell.yaml:2: robots"):
+        PlanningWorker(bad)
