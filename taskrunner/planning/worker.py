@@ -171,10 +171,13 @@ class PlanningWorker:
             if request.start is None:
                 request = replace(request, start=scene.state)
             key = (id(scene), scene.revision)
-            snapshot = scene.snapshot() if key != self._sent_scene else None
             handle = PlanHandle(self, next(self._ids))
-            self._conn.send(("plan", handle.request_id, snapshot, request))
-            self._sent_scene = key
+            try:
+                self._send(handle, scene, key, request)
+            except OSError:  # the worker died since the last answer: restart, send again
+                self._process.join(timeout=5.0)
+                self._start(60.0)
+                self._send(handle, scene, key, request)
             self._pending = handle
             return handle
 
@@ -202,6 +205,12 @@ class PlanningWorker:
         self.close()
 
     # ------------------------------------------------------------------ internals
+    def _send(self, handle: PlanHandle, scene: Scene, key: tuple[int, int],
+              request: PlanRequest) -> None:
+        snapshot = scene.snapshot() if key != self._sent_scene else None
+        self._conn.send(("plan", handle.request_id, snapshot, request))
+        self._sent_scene = key
+
     def _collect(self, handle: PlanHandle, timeout: float | None) -> None:
         """Read the worker's answer for ``handle`` if there is one within ``timeout``."""
         if handle is not self._pending or handle._outcome is not None:
@@ -228,6 +237,7 @@ class PlanningWorker:
                 return
 
     def _died(self, handle: PlanHandle) -> None:
+        self._process.join(timeout=5.0)
         code = self._process.exitcode
         handle._outcome = ("error", WorkerDiedError(
             f"planning worker for {self.source} died (exit code {code}) during request "
