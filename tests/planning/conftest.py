@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from planning_scenes import READY, SHELF
+from plan_helpers import READY, SHELF
 
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import Scene, scene_from_cell

@@ -6,7 +6,7 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from planning_scenes import READY, dense_states
+from plan_helpers import READY, dense_states
 from taskrunner.errors import (
     GoalInCollisionError,
     IkFailedError,

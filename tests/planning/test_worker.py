@@ -8,7 +8,7 @@ import time
 
 import numpy as np
 import pytest
-from planning_scenes import READY, SHELF, dense_states
+from plan_helpers import READY, SHELF, dense_states
 
 from taskrunner.errors import PlanningCancelledError, UnknownNameError
 from taskrunner.kinematics import frame_pose
