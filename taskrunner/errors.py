@@ -7,16 +7,21 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     ├── InputError                  bad input from a file or a caller; names the file:line
     │   ├── RobotDescriptionError   URDF / xacro / SRDF / MoveIt YAML / robot manifest / cell
     │   │   └── MissingMeshError    a mesh file (robot collision or scene object) that does not exist
-    │   └── YamlError               a YAML file that does not parse, or repeats a key
+    │   ├── YamlError               a YAML file that does not parse, or repeats a key
+    │   └── TaskSpecError           a task file that is invalid (unknown verb, field, name …)
     ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
     ├── SceneError                  an invalid scene edit (duplicate object, bad shape)
-    └── PlanningError               no motion could be produced
-        ├── IkFailedError           the target pose is unreachable (within limits and tolerance)
-        ├── InvalidStateError       a start or goal outside the joint limits, or not of the group
-        ├── StartInCollisionError   the start state collides (names the pair)
-        ├── GoalInCollisionError    every goal state collides (names the pair)
-        ├── PlanningTimeoutError    no path found within the planning time
-        └── PlanningCancelledError  the caller cancelled the request
+    ├── PlanningError               no motion could be produced
+    │   ├── IkFailedError           the target pose is unreachable (within limits and tolerance)
+    │   ├── InvalidStateError       a start or goal outside the joint limits, or not of the group
+    │   ├── StartInCollisionError   the start state collides (names the pair)
+    │   ├── GoalInCollisionError    every goal state collides (names the pair)
+    │   ├── PlanningTimeoutError    no path found within the planning time
+    │   └── PlanningCancelledError  the caller cancelled the request
+    └── BackendError                an execution backend failed or refused a command
+        ├── TrajectoryRejectedError a trajectory refused before anything moved (names the joint)
+        ├── BackendBusyError        joints already moving under another trajectory
+        └── ExecutionCancelledError the motion was stopped on request
 
 Messages follow the form ``'<field>' must be <expectation> (got <value>)`` where it fits,
 and every error raised from a file starts with ``path:line:``.
@@ -27,12 +32,17 @@ from __future__ import annotations
 from pathlib import Path
 
 __all__ = [
+    "BackendBusyError",
+    "BackendError",
+    "ExecutionCancelledError",
     "GoalInCollisionError",
     "IkFailedError",
     "InvalidStateError",
     "PlanningCancelledError",
     "PlanningTimeoutError",
     "StartInCollisionError",
+    "TaskSpecError",
+    "TrajectoryRejectedError",
     "InputError",
     "MissingMeshError",
     "PlanningError",
@@ -89,6 +99,11 @@ class MissingMeshError(RobotDescriptionError):
 
 class YamlError(InputError):
     """A YAML file does not parse, repeats a key, or has the wrong shape."""
+
+
+class TaskSpecError(InputError):
+    """A task file is invalid: an unknown verb or field, a wrong type, an unknown arm,
+    pose or object, a target out of reach."""
 
 
 class UnknownNameError(TaskrunnerError):
@@ -166,3 +181,19 @@ class PlanningTimeoutError(PlanningError):
 
 class PlanningCancelledError(PlanningError):
     """The request was cancelled before a path was found."""
+
+
+class BackendError(TaskrunnerError):
+    """An execution backend failed, lost its device, or refused a command."""
+
+
+class TrajectoryRejectedError(BackendError):
+    """A trajectory refused before anything moved (unknown joint, angle out of range)."""
+
+
+class BackendBusyError(BackendError):
+    """A trajectory names joints that are already moving under another one."""
+
+
+class ExecutionCancelledError(BackendError):
+    """The motion was stopped on request, where it was."""

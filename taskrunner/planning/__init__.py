@@ -2,6 +2,14 @@
 
 from __future__ import annotations
 
+from taskrunner.planning.cartesian import (
+    CartesianOptions,
+    CartesianPlanner,
+    CartesianResult,
+    compute_cartesian_path,
+    compute_relative_cartesian_path,
+    relative_pose,
+)
 from taskrunner.planning.planner import MotionPlanner
 from taskrunner.planning.request import (
     PLANNERS,
@@ -16,6 +24,12 @@ from taskrunner.planning.request import (
 
 __all__ = [
     "PLANNERS",
+    "CartesianOptions",
+    "CartesianPlanner",
+    "CartesianResult",
+    "compute_cartesian_path",
+    "compute_relative_cartesian_path",
+    "relative_pose",
     "Goal",
     "JointGoal",
     "MotionPlanner",

@@ -212,9 +212,6 @@ class MotionPlanner:
                                         f"{group.name!r} ({', '.join(group.joint_names)})")
             return [model.state_with(start, values)]
         if isinstance(goal, PoseGoal):
-            if goal.pose.frame != "world":
-                raise InvalidStateError(f"pose goals must be in the 'world' frame (got "
-                                        f"{goal.pose.frame!r})")
             key = (group.name, goal.link)
             if key not in self._ik:
                 self._ik[key] = IkSolver(model, group.name, frame=goal.link)
@@ -226,7 +223,9 @@ class MotionPlanner:
                 timeout=max(settings.timeout if settings else 0.0, 0.05),
                 attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
             )
-            solutions = self._ik[key].solve_all(goal.pose.se3, seed_q=start, options=ik_options)
+            # A pose in a link's or an object's frame is taken at the start state.
+            target = self.scene.to_world(goal.pose, start)
+            solutions = self._ik[key].solve_all(target, seed_q=start, options=ik_options)
             return [s.q for s in solutions]
         raise TypeError(f"unsupported goal type {type(goal).__name__}")
 

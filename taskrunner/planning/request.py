@@ -48,7 +48,8 @@ class NamedGoal:
 
 @dataclass(frozen=True)
 class PoseGoal:
-    """A pose of ``link`` (default: the group's tip) in the world frame.
+    """A pose of ``link`` (default: the group's tip), in the world frame or in the frame
+    of a link or a scene object (taken at the start state).
 
     Attributes:
         position_only: aim the link's origin only; None follows the group's

@@ -442,6 +442,22 @@ class Scene:
             return obj.pose.se3
         return self._frame_transform(self.robot.frame_id(obj.attached_to)) * obj.pose.se3
 
+    def to_world(self, pose: Pose, q: np.ndarray | None = None) -> pin.SE3:
+        """World transform of ``pose``, whose frame is the world, a link or an object;
+        links (and the objects they carry) taken at state ``q`` (default: the current one).
+
+        Raises:
+            UnknownNameError: the frame is none of those.
+        """
+        if q is None:
+            return self._pose_transform(pose)
+        saved = self._q
+        self._q, self._fk_done = self._as_state(q), False
+        try:
+            return self._pose_transform(pose)
+        finally:
+            self._q, self._fk_done = saved, False
+
     def _pose_transform(self, pose: Pose) -> pin.SE3:
         """World transform of ``pose``, whose frame is the world, a link or an object."""
         if not isinstance(pose, Pose):

@@ -182,3 +182,12 @@ def test_cancelling_stops_an_in_flight_plan(shelf_scene):
             PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(planning_time=30.0)),
             should_stop=should_stop)
     assert len(polls) >= 3
+
+
+def test_pose_goal_in_the_tool_frame_is_taken_at_the_start_state(shelf_scene):
+    start_tcp = frame_pose(shelf_scene.robot, shelf_scene.state, "panda_hand_tcp")
+    goal = PoseGoal(Pose((0.0, 0.0, 0.1), frame="panda_hand_tcp"))  # 10 cm along the tool's z
+    result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", goal))
+    reached = frame_pose(shelf_scene.robot, result.end, "panda_hand_tcp")
+    expected = start_tcp * pin.SE3(np.eye(3), np.array([0.0, 0.0, 0.1]))
+    assert reached.translation == pytest.approx(expected.translation, abs=2e-4)
