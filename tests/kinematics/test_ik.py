@@ -207,7 +207,8 @@ def test_is_reachable_says_yes_to_a_reachable_target(ur5_model: RobotModel) -> N
     assert is_reachable(ur5_model, "manipulator", target, options=PATIENT)
 
 
-def test_bad_targets_and_frames_are_input_errors(panda_model: RobotModel) -> None:
+def test_bad_targets_and_frames_are_input_errors(panda_model: RobotModel,
+                                                 servo_arm_model: RobotModel) -> None:
     solver = IkSolver(panda_model, "arm")
     with pytest.raises(InputError, match="'target' must be an SE3"):
         solver.solve(np.zeros(4))
@@ -218,7 +219,7 @@ def test_bad_targets_and_frames_are_input_errors(panda_model: RobotModel) -> Non
     with pytest.raises(InputError, match="'frame' must be moved by a joint of group 'hand'"):
         IkSolver(panda_model, "hand", frame="panda_link3")
     with pytest.raises(InputError, match="'frame' must be given"):
-        IkSolver(panda_model, "arm_and_hand")
+        IkSolver(servo_arm_model, "gripper")  # two parallel fingers: no tip
     with pytest.raises(UnknownNameError):
         IkSolver(panda_model, "legs")
 
