@@ -1,0 +1,103 @@
+"""Run events: what happened during a run, in order, with the task file:line of each.
+
+Events are plain frozen data (JSON-ready through :meth:`RunEvent.as_dict`). An
+:class:`EventLog` numbers them, keeps them, and hands each to its subscribers (the CLI's
+display, a run record, the API's live stream). It is safe to append from several threads.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+__all__ = ["EventLog", "RunEvent"]
+
+# The kinds of event a run emits.
+KINDS = (
+    "run_started",      # the task was loaded and compiled; data: task, cell, backend, parameters
+    "node_started",     # a tree node began (initialise)
+    "node_finished",    # a node ended: status SUCCESS / FAILURE / INVALID (stopped)
+    "planned",          # a motion was planned; data: planning_time, duration, waypoints
+    "message",          # anything else worth showing (a warning, a retry)
+    "run_finished",     # the run ended; status succeeded / failed / cancelled
+)
+
+
+@dataclass(frozen=True)
+class RunEvent:
+    """One event of a run.
+
+    Attributes:
+        seq: 1-based position in the run's event list.
+        time: seconds since the run started.
+        kind: one of ``KINDS``.
+        node: the tree node's name, if the event is about one.
+        location: ``file:line`` of the task node, if known.
+        status: the node's or the run's status, where it has one.
+        message: a human-readable line.
+        data: extra figures (planning time in s, trajectory duration in s, …).
+    """
+
+    seq: int
+    time: float
+    kind: str
+    node: str | None = None
+    location: str | None = None
+    status: str | None = None
+    message: str = ""
+    data: dict[str, Any] = field(default_factory=dict)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "seq": self.seq, "time": round(self.time, 6), "kind": self.kind, "node": self.node,
+            "location": self.location, "status": self.status, "message": self.message,
+            "data": dict(self.data),
+        }
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> RunEvent:
+        return cls(**{k: data.get(k) for k in ("seq", "time", "kind", "node", "location",
+                                                "status")},
+                   message=data.get("message", ""), data=dict(data.get("data") or {}))
+
+
+class EventLog:
+    """An append-only, numbered list of run events with subscribers."""
+
+    def __init__(self, clock: Callable[[], float] = time.monotonic) -> None:
+        self._clock = clock
+        self._start = clock()
+        self._events: list[RunEvent] = []
+        self._subscribers: list[Callable[[RunEvent], None]] = []
+        self._lock = threading.Lock()
+
+    def subscribe(self, callback: Callable[[RunEvent], None]) -> None:
+        """Call ``callback`` with every event appended from now on (in the appending thread)."""
+        with self._lock:
+            self._subscribers.append(callback)
+
+    def emit(self, kind: str, message: str = "", *, node: str | None = None,
+             location: str | None = None, status: str | None = None,
+             **data: Any) -> RunEvent:
+        """Append an event and pass it to the subscribers."""
+        if kind not in KINDS:
+            raise ValueError(f"'kind' must be one of {', '.join(KINDS)} (got {kind!r})")
+        with self._lock:
+            event = RunEvent(len(self._events) + 1, self._clock() - self._start, kind, node,
+                             location, status, message, data)
+            self._events.append(event)
+            subscribers = list(self._subscribers)
+        for callback in subscribers:
+            callback(event)
+        return event
+
+    def events(self, after: int = 0) -> list[RunEvent]:
+        """The events with ``seq > after``."""
+        with self._lock:
+            return self._events[after:]
+
+    def __len__(self) -> int:
+        return len(self._events)
