@@ -2,12 +2,16 @@
 
 Subcommands:
 
+- ``run-task FILE [--backend mock|sim] [--param k=v]... [--speed X] [--seed N]``: run a
+  task; a live tree in a terminal, plain log lines otherwise, a summary at the end.
+- ``run-task check FILE``: report every problem of a task at once, with file:line.
 - ``run-task demo [CELL]``: load a cell, solve IK for a point in front of the arm, check
   it for collisions, plan a collision-free path there and time it.
 - ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
 - ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
 
-Exit codes: 0 success, 2 invalid input, 3 planning failure.
+Exit codes: 0 success, 2 invalid task or input, 3 planning failure, 4 execution failure,
+130 cancelled (Ctrl-C).
 """
 
 from __future__ import annotations
@@ -27,7 +31,8 @@ __all__ = ["main"]
 REPO_ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_CELL = REPO_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
 
-EXIT_OK, EXIT_INVALID, EXIT_PLANNING = 0, 2, 3
+EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
+COMMANDS = ("run", "check", "demo", "info", "collision-matrix")
 
 
 def _load(path: Path):  # type: ignore[no-untyped-def]
@@ -125,6 +130,37 @@ def cmd_demo(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _parameters(pairs: Sequence[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for pair in pairs:
+        key, sep, value = pair.partition("=")
+        if not sep or not key:
+            raise InputError(f"'--param' must be KEY=VALUE (got {pair!r})")
+        out[key] = value
+    return out
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    from taskrunner.tasks.check import check_task
+
+    report = check_task(Path(args.file), _parameters(args.param), seed=args.seed)
+    for problem in report.problems:
+        print(problem, file=sys.stderr)
+    if report.problems:
+        print(f"{args.file}: {len(report.problems)} problem(s)", file=sys.stderr)
+        return EXIT_INVALID
+    print(f"{args.file}: ok ({report.steps} steps checked against cell {report.cell!r})")
+    return EXIT_OK
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from taskrunner.runtime.session import run_task_file
+
+    return run_task_file(Path(args.file), backend=args.backend, parameters=_parameters(args.param),
+                         speed=args.speed, seed=args.seed, runs_dir=Path(args.runs_dir),
+                         live=sys.stdout.isatty() and not args.plain, worker=not args.in_process)
+
+
 def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
     from taskrunner.scene import acm
 
@@ -134,6 +170,23 @@ def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="run-task", description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="command", required=True)
+    run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
+    run.add_argument("file", help="task file (YAML)")
+    run.add_argument("--backend", choices=("mock", "sim"), default="mock")
+    run.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                     help="override a task parameter (repeatable)")
+    run.add_argument("--speed", type=float, default=None,
+                     help="time scale of the motion (sim: 2 = twice real time; mock: replay "
+                          "this many times faster instead of jumping to the end)")
+    run.add_argument("--seed", type=int, default=0, help="planner seed (0)")
+    run.add_argument("--runs-dir", default="runs", help="where run records go (runs/)")
+    run.add_argument("--plain", action="store_true", help="log lines even in a terminal")
+    run.add_argument("--in-process", action="store_true",
+                     help="plan in this process instead of a worker process")
+    check = sub.add_parser("check", help="check a task file; nothing moves")
+    check.add_argument("file", help="task file (YAML)")
+    check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE")
+    check.add_argument("--seed", type=int, default=0)
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
     demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL), help="cell file")
     demo.add_argument("--target", nargs=3, type=float, default=(0.2, 0.05, 0.08),
@@ -152,11 +205,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = _parser()
     if argv and argv[0] == "collision-matrix":
         return cmd_collision_matrix(argparse.Namespace(), argv[1:])
+    if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
+        argv = ["run", *argv]
     args = parser.parse_args(argv)
+    commands = {"run": cmd_run, "check": cmd_check, "demo": cmd_demo, "info": cmd_info}
     try:
-        if args.command == "demo":
-            return cmd_demo(args)
-        return cmd_info(args)
+        return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_INVALID

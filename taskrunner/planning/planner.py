@@ -225,9 +225,43 @@ class MotionPlanner:
             )
             # A pose in a link's or an object's frame is taken at the start state.
             target = self.scene.to_world(goal.pose, start)
-            solutions = self._ik[key].solve_all(target, seed_q=start, options=ik_options)
+            solver = self._ik[key]
+            if goal.position_only is False and group.position_only_ik:
+                return self._full_pose_on_short_arm(solver, target, start, ik_options)
+            solutions = solver.solve_all(target, seed_q=start, options=ik_options)
             return [s.q for s in solutions]
         raise TypeError(f"unsupported goal type {type(goal).__name__}")
+
+    @staticmethod
+    def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type: ignore[no-untyped-def]
+                                options: IkOptions) -> list[np.ndarray]:
+        """Full-pose IK for an arm with fewer than six joints (position-only by default).
+
+        The poses such an arm reaches form a thin set that random restarts rarely land
+        on; solving the position first and then the whole pose from there, locally, does.
+        """
+        from dataclasses import replace as replace_options
+
+        positions = solver.solve_all(target.translation, seed_q=start, options=replace_options(
+            options, position_only=True, num_solutions=4 * options.num_solutions))
+        found: list[np.ndarray] = []
+        best: IkFailedError | None = None
+        for candidate in positions:
+            try:
+                full = solver.solve(target, seed_q=candidate.q, options=replace_options(
+                    options, position_only=False, attempts=1, num_solutions=1))
+            except IkFailedError as exc:
+                best = exc if best is None or (exc.best_error or 0) < (best.best_error or 0) \
+                    else best
+                continue
+            if all(np.max(np.abs(full.q - q)) > options.min_distance for q in found):
+                found.append(full.q)
+            if len(found) >= options.num_solutions:
+                break
+        if not found:
+            assert best is not None
+            raise best
+        return found
 
     # ------------------------------------------------------------------ search
     def _validity(self, group: Group, start: np.ndarray) -> tuple[Callable[[np.ndarray], bool], list[int]]:

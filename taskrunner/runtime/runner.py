@@ -1,0 +1,166 @@
+"""Running a task: compile it, tick its tree to the end, keep the record.
+
+A :class:`Runner` owns one run: the scene built from the cell and the task's objects, the
+plan service, the backend, the event log and the run record. :meth:`Runner.run` ticks the
+tree at ``tick_hz`` until it succeeds, fails or is cancelled (``cancel()`` from another
+thread, or Ctrl-C in the CLI): cancelling stops the tree, which cancels any plan in flight
+and stops the motion where it is, and records the run as cancelled.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from datetime import datetime, timezone
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import py_trees
+from py_trees.common import Status
+
+from taskrunner.backends.base import Backend
+from taskrunner.errors import TaskrunnerError
+from taskrunner.planning.service import PlanService
+from taskrunner.planning.timing import TimingOptions
+from taskrunner.robot.cell import Cell
+from taskrunner.runtime.events import EventLog
+from taskrunner.runtime.records import RunRecord, new_run_id, save_record
+from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.tasks.spec import TaskSpec
+from taskrunner.tree.behaviours import TaskLeaf
+from taskrunner.tree.compiler import compile_task, object_shape
+from taskrunner.tree.context import TaskContext
+
+__all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
+
+# Exit codes of run-task, by outcome.
+EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130}
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """How to run.
+
+    Attributes:
+        tick_hz: behaviour-tree ticks per second.
+        seed: seeds every planner call of the run.
+        runs_dir: where run records are written (None: not written).
+        backend_name: recorded in the run record.
+        timing: default time parameterization (velocity / acceleration scaling).
+    """
+
+    tick_hz: float = 100.0
+    seed: int = 0
+    runs_dir: Path | None = None
+    backend_name: str = "mock"
+    timing: TimingOptions = field(default_factory=TimingOptions)
+
+    def __post_init__(self) -> None:
+        if not self.tick_hz > 0:
+            raise ValueError(f"'tick_hz' must be > 0 (got {self.tick_hz})")
+
+
+def task_scene(spec: TaskSpec, cell: Cell) -> Scene:
+    """The scene a task starts in: the cell's objects and robots, then the task's objects."""
+    scene = scene_from_cell(cell)
+    for obj in spec.objects:
+        scene.add_object(obj.name, object_shape(obj), obj.pose.to_pose())
+        for link in obj.touch_links:
+            scene.allow_collision(obj.name, link, reason="task")
+    return scene
+
+
+class Runner:
+    """Runs one task on one backend (see the module docstring)."""
+
+    def __init__(self, spec: TaskSpec, cell: Cell, backend: Backend, planner: PlanService,
+                 options: RunOptions | None = None, events: EventLog | None = None) -> None:
+        self.spec = spec
+        self.cell = cell
+        self.backend = backend
+        self.options = options or RunOptions()
+        self.events = events if events is not None else EventLog()
+        self.scene = task_scene(spec, cell)
+        self.ctx = TaskContext(cell, self.scene, planner, backend, self.events,
+                               self.options.timing, self.options.seed)
+        self.ctx.sync_from_backend()
+        self.tree = compile_task(spec, self.ctx)
+        self._cancel = threading.Event()
+        self.record = RunRecord(
+            run_id=new_run_id(), task=spec.name, task_file=str(spec.path or ""),
+            cell=cell.name, backend=self.options.backend_name,
+            parameters={k: p.value for k, p in spec.parameters.items()},
+            task_text=spec.path.read_text(encoding="utf-8") if spec.path else "")
+        self.events.subscribe(self.record.events.append)
+        self.failure_kind: str | None = None
+
+    def cancel(self) -> None:
+        """Stop the run (safe from any thread): the motion stops where it is."""
+        self._cancel.set()
+
+    def current_leaf(self) -> TaskLeaf | None:
+        """The leaf running now, if any."""
+        tip = self.tree.tip()
+        return tip if isinstance(tip, TaskLeaf) else None
+
+    def snapshot(self) -> str:
+        """The tree as text, with each node's status."""
+        return py_trees.display.unicode_tree(self.tree, show_status=True)
+
+    def run(self) -> RunRecord:
+        """Tick the tree to the end; returns the finished record."""
+        self.events.emit("run_started", f"task {self.spec.name!r} on cell {self.cell.name!r}",
+                         status="running", task=self.spec.name, cell=self.cell.name,
+                         backend=self.options.backend_name,
+                         parameters=dict(self.record.parameters))
+        self._save()
+        period = 1.0 / self.options.tick_hz
+        status = Status.RUNNING
+        try:
+            while True:
+                started = time.monotonic()
+                if self._cancel.is_set():
+                    self.tree.stop(Status.INVALID)
+                    break
+                self.tree.tick_once()
+                status = self.tree.status
+                if status in (Status.SUCCESS, Status.FAILURE):
+                    break
+                self._cancel.wait(max(0.0, period - (time.monotonic() - started)))
+        except TaskrunnerError as exc:  # a leaf let one of ours escape: fail, don't crash
+            self.tree.stop(Status.INVALID)
+            return self._finish("failed", 3, str(exc))
+        if self._cancel.is_set() and status not in (Status.SUCCESS, Status.FAILURE):
+            return self._finish("cancelled", EXIT_CODES["cancelled"], "cancelled")
+        if status == Status.SUCCESS:
+            return self._finish("succeeded", 0, None)
+        leaf = self._failed_leaf()
+        kind = leaf.failure_kind if leaf is not None and leaf.failure_kind else "planning"
+        self.failure_kind = kind
+        message = leaf.feedback_message if leaf is not None else "the task failed"
+        return self._finish("failed", EXIT_CODES[kind], message)
+
+    def _failed_leaf(self) -> TaskLeaf | None:
+        """The leaf whose failure ended the run: the last one that failed."""
+        failed = [e for e in self.record.events
+                  if e.kind == "node_finished" and e.status == Status.FAILURE.value]
+        if not failed:
+            return None
+        for node in self.tree.iterate():
+            if isinstance(node, TaskLeaf) and node.name == failed[-1].node \
+                    and node.feedback_message == failed[-1].message:
+                return node
+        return None
+
+    def _finish(self, status: str, code: int, error: str | None) -> RunRecord:
+        self.record.status = status
+        self.record.exit_code = code
+        self.record.error = error
+        self.events.emit("run_finished", error or status, status=status, exit_code=code)
+        self.record.finished = datetime.now(timezone.utc).isoformat()
+        self._save()
+        return self.record
+
+    def _save(self) -> None:
+        if self.options.runs_dir is not None:
+            save_record(self.record, self.options.runs_dir)

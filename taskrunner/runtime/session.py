@@ -1,0 +1,140 @@
+"""One ``run-task FILE`` session: load, build the backend and the planner, run, report.
+
+The run itself happens on a worker thread; the main thread shows progress (a live tree in
+a terminal, plain log lines otherwise) and turns Ctrl-C into a cancel, so the motion stops
+where it is and the run is recorded as cancelled.
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+from pathlib import Path
+from typing import TextIO
+
+from taskrunner.backends.base import Backend
+from taskrunner.backends.mock import MockBackend, MockOptions
+from taskrunner.backends.sim import SimBackend, SimOptions
+from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.runtime.events import EventLog, RunEvent
+from taskrunner.runtime.records import RunRecord
+from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
+from taskrunner.tasks.loader import load_task
+
+__all__ = ["make_backend", "run_task_file"]
+
+
+def make_backend(kind: str, cell: Cell, speed: float | None) -> Backend:
+    """A mock or sim backend driving every joint of the cell, starting at its start state."""
+    names = cell.model.joint_names
+    start = dict(zip(names, cell.start_state()))
+    if kind == "mock":
+        return MockBackend(names, start, MockOptions(speed=speed))
+    if kind == "sim":
+        return SimBackend(names, start, SimOptions(speed=speed or 1.0))
+    raise ValueError(f"'backend' must be mock or sim (got {kind!r})")
+
+
+def _log_line(event: RunEvent) -> str | None:
+    where = f"  ({event.location})" if event.location else ""
+    if event.kind == "node_started":
+        return f"{event.time:8.2f}s  ▶ {event.node}{where}"
+    if event.kind == "planned":
+        d = event.data
+        return (f"{event.time:8.2f}s    planned in {1e3 * d.get('planning_time', 0):.0f} ms, "
+                f"motion {d.get('duration', 0):.2f} s")
+    if event.kind == "node_finished":
+        mark = {"SUCCESS": "✔", "FAILURE": "✘"}.get(event.status or "", "■")
+        took = event.data.get("seconds")
+        timing = f" in {took:.2f} s" if took is not None else ""
+        tail = f": {event.message}" if event.message and event.status == "FAILURE" else ""
+        return f"{event.time:8.2f}s  {mark} {event.node}{timing}{tail}"
+    if event.kind in ("run_started", "run_finished", "message"):
+        return f"{event.time:8.2f}s  {event.message}"
+    return None
+
+
+def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] | None = None,
+                  speed: float | None = None, seed: int = 0, runs_dir: Path | None = None,
+                  live: bool = False, worker: bool = True, out: TextIO | None = None) -> int:
+    """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
+
+    Raises:
+        InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
+            cell; the CLI maps it to exit code 2.
+    """
+    out = out or sys.stdout
+    spec = load_task(path, parameters or {})
+    cell = load_cell(spec.cell)
+    events = EventLog()
+    planner_service = None
+    if worker:
+        from taskrunner.planning.worker import PlanningWorker
+
+        planner_service = PlanningWorker(spec.cell)
+    else:
+        from taskrunner.planning.service import InProcessPlanner
+
+        planner_service = InProcessPlanner()
+    machine = make_backend(backend, cell, speed)
+    try:
+        runner = Runner(spec, cell, machine, planner_service,
+                        RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
+                        events=events)
+        if not live:
+            def log(event: RunEvent) -> None:
+                line = _log_line(event)
+                if line:
+                    print(line, file=out, flush=True)
+            events.subscribe(log)
+        record = _run_with_display(runner, live, out)
+    finally:
+        machine.close()
+        planner_service.close()
+    _summary(record, runner, runs_dir, out)
+    return record.exit_code if record.exit_code is not None else EXIT_CODES["planning"]
+
+
+def _run_with_display(runner: Runner, live: bool, out: TextIO) -> RunRecord:
+    result: list[RunRecord] = []
+    thread = threading.Thread(target=lambda: result.append(runner.run()), name="task-run",
+                              daemon=True)
+    thread.start()
+    try:
+        while thread.is_alive():
+            thread.join(0.2)
+            if live:
+                _draw(runner, out)
+    except KeyboardInterrupt:
+        print("\ncancelling: stopping the motion where it is …", file=out, flush=True)
+        runner.cancel()
+        thread.join()
+    if live:
+        _draw(runner, out)
+    return result[0]
+
+
+def _draw(runner: Runner, out: TextIO) -> None:
+    leaf = runner.current_leaf()
+    current = f"{leaf.name}  ({leaf.location})" if leaf is not None else "-"
+    elapsed = runner.events.events()[-1].time if len(runner.events) else 0.0
+    out.write("\x1b[H\x1b[2J")  # home + clear
+    out.write(f"task {runner.spec.name}  ·  {elapsed:.1f} s  ·  now: {current}\n\n")
+    out.write(runner.snapshot())
+    out.write("\n")
+    out.flush()
+
+
+def _summary(record: RunRecord, runner: Runner, runs_dir: Path | None, out: TextIO) -> None:
+    steps = [e for e in record.events if e.kind == "node_finished"]
+    planned = [e for e in record.events if e.kind == "planned"]
+    plan_s = sum(e.data.get("planning_time", 0.0) for e in planned)
+    motion_s = sum(e.data.get("duration", 0.0) for e in planned)
+    wall = record.events[-1].time if record.events else 0.0
+    print(f"\n{record.task}: {record.status} (exit {record.exit_code}) in {wall:.2f} s wall; "
+          f"{len(steps)} steps, {len(planned)} motions planned in {plan_s:.3f} s, "
+          f"{motion_s:.1f} s of motion", file=out)
+    if record.error:
+        print(f"  {record.error}", file=out)
+    if runs_dir is not None:
+        print(f"  record: {runs_dir / (record.run_id + '.json')}", file=out)

@@ -1,0 +1,253 @@
+"""The building blocks of task models: locations, the frozen node base, poses, objects.
+
+Every model of a task file derives from :class:`Node`: frozen, ``extra="forbid"`` (a typo
+in the YAML is an error, not a silently ignored key), and knowing where it was written.
+A node validated from a mapping of :func:`taskrunner.yamlfile.load_yaml` records the
+mapping's file and line in :attr:`Node.loc`; the file comes from the validation context
+(``model_validate(data, context={"file": path})``). The location is a private attribute:
+it is not a field, takes no part in equality or hashing, never shows in ``model_dump``
+or in the JSON schema, and a YAML key ``loc`` is an unknown field like any other.
+
+Units: metres and radians; quaternions are (x, y, z, w); angles ``rpy`` are URDF
+roll-pitch-yaw (fixed axes X, then Y, then Z).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Annotated, Any, Literal, Self
+
+import numpy as np
+import pinocchio as pin
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    PrivateAttr,
+    ValidationInfo,
+    field_validator,
+    model_validator,
+)
+
+from taskrunner.types import Pose
+from taskrunner.yamlfile import LineDict
+
+__all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transform", "Vec2",
+           "Vec3", "Vec4", "WORLD"]
+
+WORLD = "world"
+
+Vec2 = Annotated[tuple[float, ...], Field(min_length=2, max_length=2)]
+Vec3 = Annotated[tuple[float, ...], Field(min_length=3, max_length=3)]
+Vec4 = Annotated[tuple[float, ...], Field(min_length=4, max_length=4)]
+
+
+@dataclass(frozen=True)
+class Location:
+    """Where a node was written: a file and a 1-based line.
+
+    Attributes:
+        file: the task file (absolute path).
+        line: the node's line: for a step the line of its verb, for a mapping (pose,
+            object) the line of its first key.
+        field_lines: line of each key of the node's mapping, for :meth:`line_of`.
+    """
+
+    file: Path
+    line: int | None = None
+    field_lines: tuple[tuple[str, int], ...] = field(default=(), compare=False, repr=False)
+
+    def line_of(self, name: str) -> int | None:
+        """Line of field ``name`` (its YAML key), or of the node when it was not written."""
+        for key, line in self.field_lines:
+            if key == name:
+                return line
+        return self.line
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}" if self.line is not None else str(self.file)
+
+
+def location_of(node: Any, file: str | Path | None, line: int | None = None) -> Location | None:
+    """Location of a YAML mapping (``line`` overrides the mapping's own line)."""
+    if file is None:
+        return None
+    lines: tuple[tuple[str, int], ...] = ()
+    if isinstance(node, LineDict):
+        lines = tuple((str(k), v) for k, v in node.key_lines.items())
+        line = line if line is not None else node.line
+    return Location(Path(file), line, lines)
+
+
+def _freeze(value: Any) -> Any:
+    if isinstance(value, dict):
+        return tuple(sorted(((k, _freeze(v)) for k, v in value.items()), key=repr))
+    if isinstance(value, (list, tuple)):
+        return tuple(_freeze(v) for v in value)
+    return value
+
+
+class Node(BaseModel):
+    """Base of every task model: frozen, no unknown keys, knows its :class:`Location`.
+
+    Equality and hashing compare the fields only (not the location), so a node can be a
+    dict key; two steps written identically at different places are equal — key a
+    per-occurrence map by ``id(node)``.
+    """
+
+    model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
+
+    _loc: Location | None = PrivateAttr(default=None)
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _record_location(cls, data: Any, handler: Any, info: ValidationInfo) -> Any:
+        node = handler(data)
+        if isinstance(data, LineDict) and isinstance(node, Node):
+            context = info.context if isinstance(info.context, dict) else {}
+            loc = location_of(data, context.get("file"))
+            if loc is not None:
+                node._loc = loc
+        return node
+
+    @property
+    def loc(self) -> Location | None:
+        """Where the node was written (None for a node built in code)."""
+        return self._loc
+
+    def located(self, loc: Location | None) -> Self:
+        """A copy of this node at ``loc``."""
+        copy = self.model_copy()
+        copy._loc = loc
+        return copy
+
+    def __eq__(self, other: object) -> bool:
+        return type(self) is type(other) and self.__dict__ == other.__dict__  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash((type(self), _freeze(tuple(self.__dict__.values()))))
+
+
+def _check_quat(value: tuple[float, ...] | None) -> tuple[float, ...] | None:
+    if value is None:
+        return None
+    norm = float(np.linalg.norm(value))
+    if not np.isfinite(norm) or abs(norm - 1.0) > 1e-3:
+        raise ValueError(f"must be a unit quaternion [x, y, z, w] (got norm {norm:.4g})")
+    return tuple(float(v) / norm for v in value)
+
+
+class Transform(Node):
+    """A rigid transform: translation and an optional orientation (``rpy`` or ``quat``)."""
+
+    xyz: Vec3 = (0.0, 0.0, 0.0)
+    """Translation (m)."""
+    rpy: Vec3 | None = None
+    """Orientation as roll, pitch, yaw (rad, fixed axes X then Y then Z); not with 'quat'."""
+    quat: Vec4 | None = None
+    """Orientation as a unit quaternion [x, y, z, w]; not with 'rpy'."""
+
+    @field_validator("quat")
+    @classmethod
+    def _quat_is_unit(cls, value: tuple[float, ...] | None) -> tuple[float, ...] | None:
+        return _check_quat(value)
+
+    @model_validator(mode="after")
+    def _one_orientation(self) -> Transform:
+        if self.rpy is not None and self.quat is not None:
+            raise ValueError("takes only one of 'rpy' or 'quat'")
+        return self
+
+    @property
+    def has_orientation(self) -> bool:
+        """Whether an orientation was given (else :meth:`rotation` is the identity)."""
+        return self.rpy is not None or self.quat is not None
+
+    def rotation(self) -> np.ndarray:
+        """The 3x3 rotation matrix (identity when no orientation was given)."""
+        if self.quat is not None:
+            x, y, z, w = self.quat
+            return np.array(pin.Quaternion(w, x, y, z).toRotationMatrix())
+        if self.rpy is not None:
+            return np.array(pin.rpy.rpyToMatrix(*self.rpy))
+        return np.eye(3)
+
+    def se3(self) -> pin.SE3:
+        """The transform as a pinocchio SE3."""
+        return pin.SE3(self.rotation(), np.array(self.xyz, dtype=float))
+
+
+class PoseSpec(Transform):
+    """A pose in a frame: 'world', a link of the cell, or an object of the scene."""
+
+    frame: str = WORLD
+    """Frame the pose is expressed in: 'world', a link name or an object name."""
+
+    def to_pose(self) -> Pose:
+        """As a :class:`taskrunner.types.Pose` (identity orientation if none was given)."""
+        return Pose.from_se3(self.se3(), self.frame)
+
+
+class TargetPose(PoseSpec):
+    """A pose for a link of a group to reach (``go``/``move``)."""
+
+    link: str | None = None
+    """The link to place at the pose (default: the group's tip link)."""
+    position_only: bool | None = None
+    """Reach the position and ignore the orientation (default: the group's IK setting,
+    or true when no orientation is given)."""
+
+
+Shape = Literal["box", "cylinder", "sphere", "mesh"]
+_SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
+    "box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
+    "mesh": ("file", "scale"),
+}
+
+
+class ObjectSpec(Node):
+    """A scene object (the fields of a cell's objects, plus frames of other objects)."""
+
+    name: str = Field(min_length=1)
+    """Unique name of the object."""
+    shape: Shape
+    """box (size), cylinder (radius, length along z), sphere (radius) or mesh (file, scale)."""
+    size: Vec3 | None = None
+    """Full lengths of a box along x, y, z (m)."""
+    radius: float | None = Field(default=None, gt=0)
+    """Radius of a cylinder or sphere (m)."""
+    length: float | None = Field(default=None, gt=0)
+    """Length of a cylinder along its z axis (m)."""
+    file: str | None = None
+    """Mesh file: a package:// URI or a path relative to the task file."""
+    scale: Vec3 | None = None
+    """Scale of a mesh along x, y, z (default 1, 1, 1)."""
+    pose: PoseSpec = PoseSpec()
+    """Placement of the object's centre (mesh origin)."""
+    touch_links: tuple[str, ...] = ()
+    """Links allowed to touch the object."""
+
+    @field_validator("file")
+    @classmethod
+    def _resolve_file(cls, value: str | None, info: ValidationInfo) -> str | None:
+        context = info.context if isinstance(info.context, dict) else {}
+        if value is None or "://" in value or context.get("file") is None:
+            return value
+        return str((Path(context["file"]).parent / value).resolve())
+
+    @model_validator(mode="after")
+    def _fields_match_shape(self) -> ObjectSpec:
+        needs = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
+                 "mesh": ("file",)}[self.shape]
+        missing = [f for f in needs if getattr(self, f) is None]
+        if missing:
+            raise ValueError(f"needs {' and '.join(repr(m) for m in missing)} for a {self.shape}")
+        foreign = [f for fields in _SHAPE_FIELDS.values() for f in fields
+                   if f not in _SHAPE_FIELDS[self.shape] and getattr(self, f) is not None]
+        if foreign:
+            raise ValueError(f"has {', '.join(repr(f) for f in dict.fromkeys(foreign))}, "
+                             f"which a {self.shape} does not take")
+        if self.size is not None and min(self.size) <= 0:
+            raise ValueError(f"'size' must be > 0 in every axis (got {list(self.size)})")
+        return self

@@ -1,0 +1,291 @@
+"""The leaves of a compiled task: py_trees behaviours that plan, execute and edit the scene.
+
+Every leaf follows the same rule: it never blocks in ``update()``. Work starts in
+``initialise()`` (a plan is submitted to the plan service, a trajectory to the backend),
+``update()`` polls it, and ``terminate()`` cancels whatever is still running when the tree
+stops the leaf (a sibling failed, a timeout fired, the run was cancelled). A failure is a
+``FAILURE`` status whose ``feedback_message`` starts with the task file:line and names
+the reason (which pair collided, which target was unreachable); leaves catch only
+taskrunner's own errors.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+
+import numpy as np
+import py_trees
+from py_trees.common import Status
+
+from taskrunner.backends.base import ExecutionHandle
+from taskrunner.errors import TaskrunnerError
+from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner
+from taskrunner.planning.request import Goal, PlannerOptions, PlanRequest
+from taskrunner.planning.service import PlanTicket
+from taskrunner.planning.timing import TimingOptions, parameterize_path
+from taskrunner.tree.context import TaskContext
+from taskrunner.types import JointPath, JointTrajectory, Pose
+
+__all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf", "Wait"]
+
+
+class TaskLeaf(py_trees.behaviour.Behaviour):
+    """A leaf that knows its task file:line and reports to the run's event log."""
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext) -> None:
+        super().__init__(name)
+        self.location = location
+        self.ctx = ctx
+        self.failure_kind: str | None = None  # "planning" or "execution" after a FAILURE
+        self.started_at = 0.0
+
+    def initialise(self) -> None:
+        self.feedback_message = ""
+        self.failure_kind = None
+        self.started_at = time.monotonic()
+        self.ctx.events.emit("node_started", node=self.name, location=self.location)
+        self.start()
+
+    def terminate(self, new_status: Status) -> None:
+        if new_status == Status.INVALID:
+            self.abort()
+        if new_status != Status.INVALID or self.status == Status.RUNNING:
+            self.ctx.events.emit("node_finished", self.feedback_message, node=self.name,
+                                 location=self.location, status=new_status.value,
+                                 seconds=round(time.monotonic() - self.started_at, 6))
+
+    def fail(self, reason: str, kind: str = "planning") -> Status:
+        """FAILURE, with the reason prefixed by the task file:line.
+
+        Args:
+            kind: "planning" (nothing moved for this step) or "execution" (the backend
+                failed while moving).
+        """
+        self.feedback_message = f"{self.location}: {reason}" if self.location else reason
+        self.failure_kind = kind
+        return Status.FAILURE
+
+    # Subclasses override these.
+    def start(self) -> None:
+        """Begin the work (called by ``initialise``)."""
+
+    def abort(self) -> None:
+        """Stop the work: the leaf was interrupted."""
+
+
+class _Executes(TaskLeaf):
+    """A leaf that ends by executing one trajectory on the backend."""
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext,
+                 timing: TimingOptions | None) -> None:
+        super().__init__(name, location, ctx)
+        self.timing = timing or ctx.timing
+        self.handle: ExecutionHandle | None = None
+        self.trajectory: JointTrajectory | None = None
+
+    def start(self) -> None:
+        self.handle = None
+        self.trajectory = None
+
+    def execute_path(self, path: JointPath, planning_time: float) -> Status:
+        """Time ``path``, send it to the backend; RUNNING, or FAILURE with the reason."""
+        trajectory = parameterize_path(self.ctx.scene.robot, path, self.timing)
+        self.trajectory = trajectory
+        self.ctx.events.emit(
+            "planned", f"{len(path)} waypoints, {trajectory.duration:.2f} s",
+            node=self.name, location=self.location, planning_time=round(planning_time, 6),
+            duration=round(trajectory.duration, 6), waypoints=len(path))
+        if len(trajectory.times) < 2:
+            return Status.SUCCESS  # already there
+        self.handle = self.ctx.backend.execute(trajectory)
+        return Status.RUNNING
+
+    def poll_execution(self) -> Status:
+        assert self.handle is not None
+        if not self.handle.done():
+            self.ctx.sync_from_backend()
+            return Status.RUNNING
+        self.ctx.sync_from_backend()
+        try:
+            self.handle.wait(0.0)
+        except TaskrunnerError as exc:
+            return self.fail(f"execution failed: {exc}", kind="execution")
+        return Status.SUCCESS
+
+    def abort(self) -> None:
+        if self.handle is not None and not self.handle.done():
+            self.handle.cancel()
+            self.ctx.sync_from_backend()
+
+
+class MoveToGoal(_Executes):
+    """Plan a collision-free motion of ``group`` to a goal, then execute it.
+
+    Args:
+        goal: builds the goal from the context when the leaf starts (so poses of objects
+            are read from the scene as it is then).
+    """
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext, group: str,
+                 goal: Callable[[TaskContext], Goal | tuple[Goal, ...]],
+                 options: PlannerOptions | None = None,
+                 timing: TimingOptions | None = None) -> None:
+        super().__init__(name, location, ctx, timing)
+        self.group = group
+        self.goal = goal
+        self.options = options or PlannerOptions()
+        self.ticket: PlanTicket | None = None
+
+    def start(self) -> None:
+        super().start()
+        self.ticket = None
+        try:
+            request = PlanRequest(self.group, self.goal(self.ctx), start=self.ctx.scene.state,
+                                  options=replace(self.options, seed=self.ctx.next_seed()))
+            self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
+        except TaskrunnerError as exc:
+            self.fail(str(exc))
+
+    def update(self) -> Status:
+        if self.handle is not None:
+            return self.poll_execution()
+        if self.ticket is None:
+            return Status.FAILURE  # the request itself was invalid: fail() ran in start()
+        if not self.ticket.done():
+            return Status.RUNNING
+        try:
+            result = self.ticket.result(0.0)
+            self.ticket = None
+            return self.execute_path(result.path, result.planning_time)
+        except TaskrunnerError as exc:
+            self.ticket = None
+            return self.fail(str(exc))
+
+    def abort(self) -> None:
+        if self.ticket is not None:
+            self.ticket.cancel()
+            self.ticket = None
+        super().abort()
+
+
+class MoveStraight(_Executes):
+    """Move a link of ``group`` in straight lines through waypoints, then execute.
+
+    The Cartesian path is computed in ``initialise`` (a few milliseconds, no OMPL); a path
+    that cannot be followed to the end fails the leaf with the reason and the fraction.
+    """
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext, group: str,
+                 waypoints: Callable[[TaskContext], Sequence[Pose]], link: str | None = None,
+                 options: CartesianOptions | None = None,
+                 timing: TimingOptions | None = None) -> None:
+        super().__init__(name, location, ctx, timing)
+        self.group, self.waypoints, self.link = group, waypoints, link
+        self.options = options or CartesianOptions()
+        self.outcome: Status = Status.RUNNING
+
+    def start(self) -> None:
+        super().start()
+        started = time.perf_counter()
+        try:
+            result = CartesianPlanner(self.ctx.scene).compute(
+                self.group, list(self.waypoints(self.ctx)), link=self.link,
+                options=self.options)
+        except TaskrunnerError as exc:
+            self.outcome = self.fail(str(exc))
+            return
+        if not result.complete:
+            self.outcome = self.fail(f"straight move of {self.link or self.group} stopped at "
+                                     f"{100 * result.fraction:.0f} % ({result.message})")
+            return
+        try:
+            self.outcome = self.execute_path(result.path, time.perf_counter() - started)
+        except TaskrunnerError as exc:
+            self.outcome = self.fail(str(exc))
+
+    def update(self) -> Status:
+        if self.handle is not None:
+            return self.poll_execution()
+        return self.outcome
+
+
+class MoveJoints(_Executes):
+    """Move joints straight in joint space to target values (a gripper opening or closing).
+
+    The motion is checked for collisions every 0.01 rad unless ``check`` is False.
+    """
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext,
+                 values: Callable[[TaskContext], dict[str, float]], check: bool = True,
+                 timing: TimingOptions | None = None) -> None:
+        super().__init__(name, location, ctx, timing)
+        self.values, self.check = values, check
+        self.outcome: Status = Status.RUNNING
+
+    def start(self) -> None:
+        super().start()
+        scene, model = self.ctx.scene, self.ctx.scene.robot
+        try:
+            target = self.values(self.ctx)
+            names = tuple(target)
+            idx = model.indices(names)
+            start = scene.state
+            goal = model.state_with(start, target)
+            bad = model.limit_violations(goal)
+            if bad:
+                self.outcome = self.fail("target outside the joint limits: " + "; ".join(bad))
+                return
+            if self.check:
+                steps = max(1, int(np.ceil(np.max(np.abs(goal - start)) / 0.01)))
+                for t in np.linspace(0.0, 1.0, steps + 1)[1:]:
+                    q = model.apply_mimic(start + t * (goal - start))
+                    if scene.in_collision(q):
+                        pairs = ", ".join(f"{c.a}–{c.b}" for c in scene.collisions(q)[:3])
+                        self.outcome = self.fail(f"moving {', '.join(names)} collides: {pairs}")
+                        return
+            path = JointPath(names, np.vstack([start[idx], goal[idx]]))
+            self.outcome = self.execute_path(path, 0.0)
+        except TaskrunnerError as exc:
+            self.outcome = self.fail(str(exc))
+
+    def update(self) -> Status:
+        if self.handle is not None:
+            return self.poll_execution()
+        return self.outcome
+
+
+class SceneAction(TaskLeaf):
+    """An instant change of the scene (attach, detach, add or remove an object)."""
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext,
+                 action: Callable[[TaskContext], None]) -> None:
+        super().__init__(name, location, ctx)
+        self.action = action
+        self.outcome: Status = Status.RUNNING
+
+    def start(self) -> None:
+        try:
+            self.action(self.ctx)
+            self.outcome = Status.SUCCESS
+        except TaskrunnerError as exc:
+            self.outcome = self.fail(str(exc))
+
+    def update(self) -> Status:
+        return self.outcome
+
+
+class Wait(TaskLeaf):
+    """Succeed after ``seconds`` of wall time."""
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext, seconds: float) -> None:
+        super().__init__(name, location, ctx)
+        self.seconds = seconds
+        self.until = 0.0
+
+    def start(self) -> None:
+        self.until = time.monotonic() + self.seconds
+
+    def update(self) -> Status:
+        return Status.SUCCESS if time.monotonic() >= self.until else Status.RUNNING

@@ -1,0 +1,338 @@
+"""Compiling a :class:`~taskrunner.tasks.spec.TaskSpec` into a py_trees behaviour tree.
+
+Steps map one to one onto behaviours: leaves onto :mod:`taskrunner.tree.behaviours`,
+pick / place / handoff onto the subtrees of :mod:`taskrunner.tree.idioms`, ``sequence`` onto
+a ``Sequence``, ``fallback`` onto a ``Selector``, ``retry`` / ``timeout`` / ``repeat`` onto
+the decorators of the same names. A ``parallel`` of ``go`` steps of different arms becomes
+ONE motion planned in a group spanning those arms, so the arms cannot collide; other
+parallel children run side by side on their own joints.
+"""
+
+from __future__ import annotations
+
+import pinocchio as pin
+import py_trees
+from py_trees.behaviour import Behaviour
+
+from taskrunner.errors import TaskSpecError
+from taskrunner.planning.cartesian import CartesianOptions
+from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
+from taskrunner.planning.timing import TimingOptions
+from taskrunner.shapes import Box, Cylinder, Mesh, Sphere
+from taskrunner.tasks import (
+    AddObjectStep,
+    AttachStep,
+    DetachStep,
+    FallbackStep,
+    GoStep,
+    GripperStep,
+    HandoffStep,
+    IncludeStep,
+    MotionOptions,
+    MoveStep,
+    ParallelStep,
+    PickStep,
+    PlaceStep,
+    RemoveObjectStep,
+    RepeatStep,
+    RetryStep,
+    SequenceStep,
+    StepNode,
+    TaskSpec,
+    TimeoutStep,
+    WaitStep,
+)
+from taskrunner.tree import idioms
+from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
+from taskrunner.tree.context import TaskContext
+from taskrunner.types import Pose
+
+__all__ = ["compile_task", "object_shape", "planner_options", "timing_options"]
+
+
+def compile_task(spec: TaskSpec, ctx: TaskContext) -> Behaviour:
+    """The behaviour tree of ``spec``; its leaves act on ``ctx``.
+
+    Raises:
+        TaskSpecError: a step that names something the cell does not have, with file:line.
+    """
+    children = [_compile(step, ctx) for step in spec.steps]
+    return py_trees.composites.Sequence(spec.name, memory=True, children=children)
+
+
+def _where(step: StepNode) -> str | None:
+    return str(step.loc) if step.loc is not None else None
+
+
+def _error(step: StepNode, message: str) -> TaskSpecError:
+    loc = step.loc
+    return TaskSpecError(message, loc.file if loc else None, loc.line if loc else None)
+
+
+def planner_options(step: MotionOptions) -> PlannerOptions:
+    """Planner options of a motion step (the task's defaults already applied)."""
+    values = {}
+    if step.planner is not None:
+        values["planner"] = step.planner
+    if step.planning_time is not None:
+        values["planning_time"] = step.planning_time
+    try:
+        return PlannerOptions(**values)
+    except ValueError as exc:
+        raise _error(step, str(exc)) from None  # type: ignore[arg-type]
+
+
+def timing_options(step: MotionOptions, ctx: TaskContext) -> TimingOptions:
+    """Timing of a motion step: its scaling factors, else the run's defaults."""
+    from dataclasses import replace
+
+    return replace(ctx.timing,
+                   velocity_scaling=step.velocity_scaling or ctx.timing.velocity_scaling,
+                   acceleration_scaling=step.acceleration_scaling
+                   or ctx.timing.acceleration_scaling)
+
+
+def object_shape(spec):  # type: ignore[no-untyped-def]
+    """The :mod:`taskrunner.shapes` shape of an object spec."""
+    if spec.shape == "box":
+        return Box(tuple(spec.size))
+    if spec.shape == "cylinder":
+        return Cylinder(spec.radius, spec.length)
+    if spec.shape == "sphere":
+        return Sphere(spec.radius)
+    return Mesh(spec.file, tuple(spec.scale or (1.0, 1.0, 1.0)))
+
+
+def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
+    name, where = step.label, _where(step)
+    match step:
+        case SequenceStep() | IncludeStep():
+            return py_trees.composites.Sequence(
+                name, memory=True, children=[_compile(s, ctx) for s in step.children])
+        case FallbackStep():
+            return py_trees.composites.Selector(
+                name, memory=True, children=[_compile(s, ctx) for s in step.children])
+        case RetryStep():
+            return py_trees.decorators.Retry(name, _body(step, ctx), num_failures=step.times)
+        case TimeoutStep():
+            return py_trees.decorators.Timeout(name, _body(step, ctx), duration=step.seconds)
+        case RepeatStep():
+            return py_trees.decorators.Repeat(name, _body(step, ctx), num_success=step.times)
+        case ParallelStep():
+            return _parallel(step, ctx)
+        case GoStep():
+            return MoveToGoal(name, where, ctx, _group(step, ctx, step.group), _go_goal(step),
+                              planner_options(step), timing_options(step, ctx))
+        case MoveStep():
+            return _move(step, ctx)
+        case GripperStep():
+            return _gripper(step, ctx)
+        case PickStep():
+            arm = _arm(step, ctx, step.arm)
+            grasp = step.grasp if isinstance(step.grasp, str) else Pose.from_se3(step.grasp.se3())
+            return idioms.pick(ctx, name, where, arm, step.object, grasp, step.approach,
+                               step.retreat, planner_options(step), timing_options(step, ctx))
+        case PlaceStep():
+            arm = _arm(step, ctx, step.arm)
+            at = step.at.to_pose() if step.at is not None else None
+            return idioms.place(ctx, name, where, arm, step.object, at, step.on,
+                                step.offset or (0.0, 0.0), step.approach, step.retreat,
+                                planner_options(step), timing_options(step, ctx))
+        case HandoffStep():
+            giver, receiver = _arm(step, ctx, step.from_arm), _arm(step, ctx, step.to_arm)
+            at = step.at if isinstance(step.at, str) else step.at.to_pose()
+            if isinstance(at, str) and at not in ctx.scene.robot.named_state_names(giver):
+                raise _error(step, f"'at': {at!r} is not a named pose of arm {giver!r}")
+            return idioms.handoff(ctx, name, where, step.object, giver, receiver, at,
+                                  step.approach, step.retreat, planner_options(step),
+                                  timing_options(step, ctx))
+        case AttachStep():
+            return SceneAction(name, where, ctx, _attach(step, ctx))
+        case DetachStep():
+            obj = step.object
+            return SceneAction(name, where, ctx, lambda c: c.scene.detach_object(obj))
+        case AddObjectStep():
+            spec = step.object
+            shape = object_shape(spec)
+            pose = spec.pose.to_pose()
+            links = tuple(spec.touch_links)
+
+            def add(c: TaskContext) -> None:
+                c.scene.add_object(spec.name, shape, pose)
+                for link in links:
+                    c.scene.allow_collision(spec.name, link, reason="task")
+
+            return SceneAction(name, where, ctx, add)
+        case RemoveObjectStep():
+            obj = step.object
+            return SceneAction(name, where, ctx, lambda c: c.scene.remove_object(obj))
+        case WaitStep():
+            return Wait(name, where, ctx, step.seconds)
+    raise _error(step, f"step '{step.verb}' cannot be compiled")
+
+
+def _body(step, ctx: TaskContext) -> Behaviour:  # type: ignore[no-untyped-def]
+    children = [_compile(s, ctx) for s in step.children]
+    if len(children) == 1:
+        return children[0]
+    return py_trees.composites.Sequence(f"{step.label} body", memory=True, children=children)
+
+
+def _group(step: StepNode, ctx: TaskContext, name: str) -> str:
+    model = ctx.scene.robot
+    if name not in model.groups:
+        raise _error(step, f"group {name!r} is not a group of cell {ctx.cell.name!r} "
+                           f"(groups: {', '.join(model.groups)})")
+    return name
+
+
+def _arm(step: StepNode, ctx: TaskContext, name: str) -> str:
+    try:
+        ctx.arm(name)
+    except Exception as exc:  # UnknownNameError: not an arm
+        raise _error(step, str(exc)) from None
+    return name
+
+
+def _go_goal(step: GoStep):  # type: ignore[no-untyped-def]
+    if step.to is not None:
+        goal = NamedGoal(step.to)
+    elif step.joints is not None:
+        goal = JointGoal(dict(step.joints))
+    else:
+        target = step.pose
+        assert target is not None
+        goal = PoseGoal(target.to_pose(), link=target.link, position_only=target.position_only)
+    return lambda ctx: goal
+
+
+def _move(step: MoveStep, ctx: TaskContext) -> Behaviour:
+    group = _group(step, ctx, step.group)
+    link = step.link or ctx.scene.robot.group(group).tip_link
+    if link is None:
+        raise _error(step, f"group {group!r} has no tip link: give 'link'")
+    name, where = step.label, _where(step)
+
+    def target(c: TaskContext) -> Pose:
+        if step.pose is not None:
+            return step.pose.to_pose()
+        assert step.by is not None
+        now = c.scene.link_pose(link).se3
+        offset = step.by.se3()
+        if step.by.frame == "tool":
+            return Pose.from_se3(now * offset)
+        moved = pin.SE3(offset.rotation @ now.rotation, now.translation + offset.translation)
+        return Pose.from_se3(moved)
+
+    if step.cartesian:
+        position_only = step.pose.position_only if step.pose is not None else None
+        return MoveStraight(name, where, ctx, group, lambda c: [target(c)], link,
+                            CartesianOptions(position_only=position_only),
+                            timing_options(step, ctx))
+    return MoveToGoal(name, where, ctx, group,
+                      lambda c: PoseGoal(target(c), link=link,
+                                         position_only=step.pose.position_only
+                                         if step.pose is not None else None),
+                      planner_options(step), timing_options(step, ctx))
+
+
+def _gripper(step: GripperStep, ctx: TaskContext) -> Behaviour:
+    model = ctx.scene.robot
+    if step.arm is not None:
+        gripper = ctx.arm(_arm(step, ctx, step.arm)).gripper
+        if gripper is None:
+            raise _error(step, f"arm {step.arm!r} has no gripper group")
+    else:
+        assert step.group is not None
+        gripper = _group(step, ctx, step.group)
+    if step.width is not None:
+        joints = model.group(gripper).joint_names
+        kinds = {model.joint(j).type for j in joints}
+        if kinds != {"prismatic"}:
+            raise _error(step, f"'width' needs prismatic finger joints; gripper {gripper!r} "
+                               f"has {', '.join(sorted(kinds))} joints: use 'action' or 'to'")
+        # Each finger moves half the width (a mimic finger follows its source).
+        values = {j: step.width / 2 for j in joints}
+    else:
+        pose = step.to or ("open" if step.action == "open" else "closed")
+        if pose not in model.named_state_names(gripper):
+            raise _error(step, f"gripper group {gripper!r} has no named pose {pose!r} "
+                               f"(poses: {', '.join(model.named_state_names(gripper))})")
+        values = model.named_state(gripper, pose).as_dict()
+    bad = model.limit_violations(model.state_with(model.default_state(), values))
+    if bad:
+        raise _error(step, "gripper target outside the joint limits: " + "; ".join(bad))
+    # Closing on a held or touching object is expected: no collision check when closing.
+    check = step.action != "close"
+    return MoveJoints(step.label, _where(step), ctx, lambda c: dict(values), check=check,
+                      timing=timing_options(step, ctx))
+
+
+def _attach(step: AttachStep, ctx: TaskContext):  # type: ignore[no-untyped-def]
+    obj = step.object
+    if step.arm is not None:
+        arm = ctx.arm(_arm(step, ctx, step.arm))
+        link, touch = arm.grasp_frame, arm.finger_links
+    else:
+        assert step.link is not None
+        if not ctx.scene.robot.has_link(step.link):
+            raise _error(step, f"'link': {step.link!r} is not a link of cell {ctx.cell.name!r}")
+        link, touch = step.link, ()
+    return lambda c: c.scene.attach_object(obj, link, touch_links=touch)
+
+
+def _parallel(step: ParallelStep, ctx: TaskContext) -> Behaviour:
+    children = step.children
+    gos = [c for c in children if isinstance(c, GoStep)]
+    others = [c for c in children if not isinstance(c, GoStep)]
+    behaviours = [_compile(c, ctx) for c in others]
+    if len(gos) == 1:
+        behaviours.append(_compile(gos[0], ctx))
+    elif gos:
+        behaviours.append(_joint_go(step, gos, ctx))
+    if len(behaviours) == 1:
+        return behaviours[0]
+    return py_trees.composites.Parallel(
+        step.label, policy=py_trees.common.ParallelPolicy.SuccessOnAll(synchronise=True),
+        children=behaviours)
+
+
+def _joint_go(step: ParallelStep, gos: list[GoStep], ctx: TaskContext) -> Behaviour:
+    """Several arms' ``go`` steps as one motion in a group spanning them all."""
+    model = ctx.scene.robot
+    joints: set[str] = set()
+    for go in gos:
+        group = model.group(_group(go, ctx, go.group))
+        if joints & set(group.joint_names):
+            raise _error(go, f"parallel motions share joints of group {go.group!r}")
+        joints |= set(group.joint_names)
+    spanning = [g.name for g in model.groups.values() if set(g.joint_names) == joints]
+    if not spanning:
+        groups = ", ".join(go.group for go in gos)
+        raise _error(step, f"moving {groups} at once needs a group spanning them; add one "
+                           f"to the cell (groups: {{both: [{groups}]}})")
+    goals = [(go, _go_goal(go)) for go in gos]
+
+    def joint_goal(c: TaskContext) -> JointGoal:
+        values: dict[str, float] = {}
+        for go, goal in goals:
+            g = goal(c)
+            if isinstance(g, NamedGoal):
+                values.update(c.scene.robot.named_state(go.group, g.name).as_dict())
+            elif isinstance(g, JointGoal):
+                values.update(g.values)
+            else:
+                from taskrunner.kinematics import IkOptions, IkSolver
+
+                target = c.scene.to_world(g.pose)
+                solver = IkSolver(c.scene.robot, go.group, frame=g.link)
+                found = solver.solve(target, seed_q=c.scene.state,
+                                     options=IkOptions(position_only=g.position_only,
+                                                       seed=c.next_seed()))
+                values.update(found.joint_state.as_dict())
+        return JointGoal(values)
+
+    first = gos[0]
+    return MoveToGoal(step.label, _where(step), ctx, spanning[0], joint_goal,
+                      planner_options(first), timing_options(first, ctx))
+

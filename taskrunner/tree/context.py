@@ -1,0 +1,98 @@
+"""What every leaf of a compiled task shares: the cell, the scene, the planner, the backend.
+
+A :class:`TaskContext` is built by the runner for one run. Leaves read the scene (the
+planning world as it is now), submit plans to the plan service, send trajectories to the
+backend, and report through the event log. Arms are resolved once into :class:`Arm`
+records (arm group, gripper group, the frame that grasps).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from taskrunner.backends.base import Backend
+from taskrunner.errors import UnknownNameError
+from taskrunner.planning.service import PlanService
+from taskrunner.planning.timing import TimingOptions
+from taskrunner.robot.cell import Cell
+from taskrunner.runtime.events import EventLog
+from taskrunner.scene import Scene
+
+__all__ = ["Arm", "TaskContext", "resolve_arm"]
+
+
+@dataclass(frozen=True)
+class Arm:
+    """An arm as the task language sees it.
+
+    Attributes:
+        group: the arm's planning group (it has an end effector).
+        gripper: the end effector's group (its finger joints), or None.
+        tip: the group's tip link (where the end effector is mounted).
+        grasp_frame: the frame placed on a grasped object: ``<prefix>tool0`` when the
+            robot has one, else the tip.
+        finger_links: links that may touch a grasped object (the gripper group's links
+            and the tip).
+    """
+
+    group: str
+    gripper: str | None
+    tip: str
+    grasp_frame: str
+    finger_links: tuple[str, ...]
+
+
+def resolve_arm(cell: Cell, name: str) -> Arm:
+    """The :class:`Arm` for group ``name`` of the cell.
+
+    Raises:
+        UnknownNameError: no such group, or the group has no end effector.
+    """
+    model = cell.model
+    group = model.group(name)
+    arms = [g.name for g in model.groups.values() if g.end_effector and g.tip_link]
+    if not group.end_effector or not group.tip_link:
+        raise UnknownNameError("arm (a group with an end effector)", name, arms)
+    eef = model.end_effectors[group.end_effector]
+    gripper = eef.group if eef.group != group.name else None
+    prefix = next((i.prefix for i in model.instances if i.name == group.robot), "")
+    tool = prefix + "tool0"
+    grasp_frame = tool if model.has_link(tool) else group.tip_link
+    fingers = tuple(model.group(gripper).links) if gripper else ()
+    return Arm(group.name, gripper, group.tip_link, grasp_frame,
+               tuple(dict.fromkeys((*fingers, group.tip_link))))
+
+
+@dataclass
+class TaskContext:
+    """The shared state of one run.
+
+    Attributes:
+        timing: default time parameterization (scaling from the robot unless set).
+        seed: seeds every planner call of the run (each call adds its own offset).
+    """
+
+    cell: Cell
+    scene: Scene
+    planner: PlanService
+    backend: Backend
+    events: EventLog = field(default_factory=EventLog)
+    timing: TimingOptions = field(default_factory=TimingOptions)
+    seed: int = 0
+    _arms: dict[str, Arm] = field(default_factory=dict)
+    _calls: int = 0
+
+    def arm(self, name: str) -> Arm:
+        if name not in self._arms:
+            self._arms[name] = resolve_arm(self.cell, name)
+        return self._arms[name]
+
+    def next_seed(self) -> int:
+        """A fresh, reproducible seed for the next planner call."""
+        self._calls += 1
+        return self.seed * 1000 + self._calls
+
+    def sync_from_backend(self) -> None:
+        """Make the scene's robot state what the backend reports."""
+        state = self.backend.joint_state()
+        self.scene.set_state(dict(zip(state.names, state.positions)))
