@@ -25,7 +25,7 @@ from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner
 from taskrunner.planning.request import Goal, PlannerOptions, PlanRequest
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
-from taskrunner.tree.context import TaskContext
+from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf", "Wait"]
@@ -100,6 +100,8 @@ class _Executes(TaskLeaf):
         if len(trajectory.times) < 2:
             return Status.SUCCESS  # already there
         self.handle = self.ctx.backend.execute(trajectory)
+        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory,
+                                                self.ctx.scene.snapshot()))
         return Status.RUNNING
 
     def poll_execution(self) -> Status:

@@ -16,9 +16,10 @@ from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import EventLog
-from taskrunner.scene import Scene
+from taskrunner.scene import Scene, SceneSnapshot
+from taskrunner.types import JointTrajectory
 
-__all__ = ["Arm", "TaskContext", "resolve_arm"]
+__all__ = ["Arm", "ExecutedMotion", "TaskContext", "resolve_arm"]
 
 
 @dataclass(frozen=True)
@@ -63,6 +64,17 @@ def resolve_arm(cell: Cell, name: str) -> Arm:
                tuple(dict.fromkeys((*fingers, group.tip_link))))
 
 
+@dataclass(frozen=True)
+class ExecutedMotion:
+    """A trajectory sent to the backend, with the scene as it was when it started (plain
+    data: objects, attachments, allowances), so the motion can be re-checked afterwards."""
+
+    node: str
+    location: str | None
+    trajectory: JointTrajectory
+    scene: SceneSnapshot
+
+
 @dataclass
 class TaskContext:
     """The shared state of one run.
@@ -70,6 +82,7 @@ class TaskContext:
     Attributes:
         timing: default time parameterization (scaling from the robot unless set).
         seed: seeds every planner call of the run (each call adds its own offset).
+        executed: every trajectory sent to the backend, in order.
     """
 
     cell: Cell
@@ -79,6 +92,7 @@ class TaskContext:
     events: EventLog = field(default_factory=EventLog)
     timing: TimingOptions = field(default_factory=TimingOptions)
     seed: int = 0
+    executed: list[ExecutedMotion] = field(default_factory=list)
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
 
