@@ -1,0 +1,113 @@
+"""The runner: success, failures with file:line and exit codes, cancel mid-motion on sim."""
+
+from __future__ import annotations
+
+import textwrap
+import threading
+import time
+
+import numpy as np
+import pytest
+
+from taskrunner.backends.mock import MockBackend, MockOptions
+from taskrunner.backends.sim import SimBackend, SimOptions
+from taskrunner.cli import main
+from taskrunner.planning.service import InProcessPlanner
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
+from taskrunner.tasks import load_task
+
+
+def write_task(tmp_path, repo_root, body: str):
+    path = tmp_path / "task.yaml"
+    cell = repo_root / "robots" / "cells" / "servo_arm_table.yaml"
+    path.write_text(f"task: t\ncell: {cell}\n" + textwrap.dedent(body))
+    return path
+
+
+def make_runner(path, backend_factory, **options):
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = backend_factory(names, dict(zip(names, cell.start_state())))
+    return Runner(spec, cell, backend, InProcessPlanner(), RunOptions(**options)), backend
+
+
+def test_an_unreachable_pose_fails_the_run_with_the_steps_line(tmp_path, repo_root):
+    path = write_task(tmp_path, repo_root, """\
+        steps:
+          - go: {group: arm, to: Candle}
+          - go: {group: arm, pose: {xyz: [1.5, 0, 1.0]}}
+        """)
+    runner, _ = make_runner(path, MockBackend)
+    record = runner.run()
+    assert record.status == "failed"
+    assert record.exit_code == EXIT_CODES["planning"] == 3
+    assert record.error.startswith(f"{path}:5: no IK solution for group 'arm'")
+
+
+def test_an_execution_failure_is_exit_code_4(tmp_path, repo_root):
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle}\n")
+    runner, _ = make_runner(
+        path, lambda n, s: MockBackend(n, s, MockOptions(speed=1000.0, fail_after=0.5)))
+    record = runner.run()
+    assert record.exit_code == EXIT_CODES["execution"] == 4
+    assert "execution failed" in record.error and f"{path}:4" in record.error
+
+
+def test_fallback_recovers_and_the_run_succeeds(tmp_path, repo_root):
+    path = write_task(tmp_path, repo_root, """\
+        steps:
+          - fallback:
+              - go: {group: arm, pose: {xyz: [1.5, 0, 1.0]}}
+              - go: {group: arm, to: Candle}
+        """)
+    runner, _ = make_runner(path, MockBackend)
+    record = runner.run()
+    assert record.status == "succeeded"
+    failures = [e for e in record.events if e.kind == "node_finished" and e.status == "FAILURE"]
+    assert len(failures) == 1 and failures[0].location == f"{path}:5"
+
+
+def test_cancel_stops_the_sim_where_it_is_and_records_cancelled(tmp_path, repo_root):
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle}\n")
+    runner, backend = make_runner(
+        path, lambda n, s: SimBackend(n, s, SimOptions(speed=10.0)), runs_dir=tmp_path / "runs")
+    start = backend.joint_state().positions.copy()
+    result = []
+    thread = threading.Thread(target=lambda: result.append(runner.run()))
+    thread.start()
+    deadline = time.monotonic() + 20
+    while not runner.ctx.executed and time.monotonic() < deadline:
+        time.sleep(0.01)
+    time.sleep(0.3)  # let it move for a while (30 s of motion at 10x: ~1 s for the whole)
+    runner.cancel()
+    thread.join(10)
+    backend_state = backend.joint_state().positions.copy()
+    time.sleep(0.2)
+    try:
+        assert result[0].status == "cancelled" and result[0].exit_code == 130
+        # Stopped part-way: moved from the start, not at Candle, and not moving any more.
+        candle = runner.scene.robot.named_state("arm", "Candle").positions
+        assert not np.allclose(backend_state[:5], start[:5], atol=1e-3)
+        assert not np.allclose(backend_state[:5], candle, atol=1e-3)
+        assert np.array_equal(backend.joint_state().positions, backend_state)
+        # The scene followed the backend.
+        assert runner.scene.state == pytest.approx(backend_state)
+    finally:
+        backend.close()
+
+
+def test_cli_runs_a_task_and_reports(tmp_path, repo_root, capsys):
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle}\n")
+    code = main(["run", str(path), "--in-process", "--runs-dir", str(tmp_path / "runs")])
+    out = capsys.readouterr().out
+    assert code == 0
+    assert "t: succeeded (exit 0)" in out
+    assert list((tmp_path / "runs").glob("*.json"))
+
+
+def test_cli_exit_code_2_for_an_invalid_task(tmp_path, repo_root, capsys):
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, too: Candle}\n")
+    assert main([str(path), "--in-process", "--runs-dir", str(tmp_path / "runs")]) == 2
+    assert f"{path}:4: 'too' is not a field of 'go'" in capsys.readouterr().err
