@@ -117,12 +117,15 @@ class PlanningWorker:
     Args:
         source: the cell file (or robot manifest / folder / URDF) the worker loads.
         start_timeout: seconds to wait for the worker to load the model.
+        wait_ready: wait for the model to load now (True), or let the caller go on and
+            wait at the first request (False: the load overlaps the caller's own work).
 
     One request is in flight at a time; :meth:`submit` while one is running waits for it.
     Use several workers for parallel planning. Close with :meth:`close` or a ``with``.
     """
 
-    def __init__(self, source: str | Path, start_timeout: float = 60.0) -> None:
+    def __init__(self, source: str | Path, start_timeout: float = 60.0,
+                 wait_ready: bool = True) -> None:
         self.source = str(source)
         self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads
         self._cancel = self._ctx.Value("q", _NO_CANCEL, lock=False)
@@ -130,14 +133,28 @@ class PlanningWorker:
         self._lock = threading.Lock()
         self._pending: PlanHandle | None = None
         self._sent_scene: tuple[int, int] | None = None
-        self._start(start_timeout)
+        self._start_timeout = start_timeout
+        self._ready = False
+        self._launch()
+        if wait_ready:
+            self._await_ready(start_timeout)
 
     def _start(self, timeout: float) -> None:
+        self._launch()
+        self._await_ready(timeout)
+
+    def _launch(self) -> None:
+        """Start the process; it loads the model while the caller goes on."""
+        self._ready = False
         self._conn, child = self._ctx.Pipe()
         self._process = self._ctx.Process(target=_serve, args=(self.source, child, self._cancel),
                                           name="taskrunner-planner", daemon=True)
         self._process.start()
         child.close()
+
+    def _await_ready(self, timeout: float) -> None:
+        if self._ready:
+            return
         if not self._conn.poll(timeout):
             self._process.kill()
             raise WorkerDiedError(f"planning worker did not load {self.source} in {timeout} s")
@@ -156,6 +173,7 @@ class PlanningWorker:
         self.model_name = payload
         self.load_time = seconds
         self._sent_scene = None
+        self._ready = True
 
     # ------------------------------------------------------------------ public
     def submit(self, scene: Scene, request: PlanRequest) -> PlanHandle:
@@ -166,8 +184,9 @@ class PlanningWorker:
         with self._lock:
             if self._pending is not None:
                 self._collect(self._pending, timeout=None)
+            self._await_ready(self._start_timeout)
             if not self._process.is_alive():
-                self._start(60.0)
+                self._start(self._start_timeout)
             if request.start is None:
                 request = replace(request, start=scene.state)
             key = (id(scene), scene.revision)

@@ -35,6 +35,10 @@ def make_backend(kind: str, cell: Cell, speed: float | None) -> Backend:
     raise ValueError(f"'backend' must be mock or sim (got {kind!r})")
 
 
+def _import_toppra() -> None:
+    import toppra  # noqa: F401
+
+
 def _log_line(event: RunEvent) -> str | None:
     where = f"  ({event.location})" if event.location else ""
     if event.kind == "node_started":
@@ -65,14 +69,16 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     """
     out = out or sys.stdout
     spec = load_task(path, parameters or {})
-    cell = load_cell(spec.cell)
+    # toppra takes most of a second to import: do it while the rest loads.
+    threading.Thread(target=_import_toppra, daemon=True).start()
     events = EventLog()
     planner_service = None
     if worker:
         from taskrunner.planning.worker import PlanningWorker
 
-        planner_service = PlanningWorker(spec.cell)
-    else:
+        planner_service = PlanningWorker(spec.cell, wait_ready=False)
+    cell = load_cell(spec.cell)
+    if not worker:
         from taskrunner.planning.service import InProcessPlanner
 
         planner_service = InProcessPlanner()
