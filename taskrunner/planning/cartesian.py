@@ -37,7 +37,6 @@ from taskrunner.errors import (
     InputError,
     InvalidStateError,
     StartInCollisionError,
-    UnknownNameError,
 )
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.planning.planner import interpolate_path
