@@ -251,6 +251,10 @@ def _gridpoints(curve: Any, ss: np.ndarray) -> np.ndarray:
         else:
             continue
         last = ss[k + 1]
+    if len(points) < _MIN_STAGES + 1:
+        # Merging straight intervals can leave a short path with a single stage, which
+        # cannot go rest to rest: keep at least _MIN_STAGES stages.
+        points = sorted(set(points) | set(np.linspace(0.0, ss[-1], _MIN_STAGES + 1)))
     return np.array(points)
 
 

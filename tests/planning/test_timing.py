@@ -280,3 +280,16 @@ def test_path_deviation_measures_the_distance_to_the_nearest_segment():
 def test_importing_the_module_does_not_import_toppra():
     code = "import sys, taskrunner.planning.timing; assert 'toppra' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_a_short_straight_path_of_many_waypoints_is_timed(panda_model):
+    """Regression: merging straight intervals once left such a path a single toppra stage,
+    which cannot go rest to rest ("toppra stopped inside the path")."""
+    start = np.array([0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785])
+    delta = np.array([0.05, 0.06, 0.02, 0.08, 0.01, 0.03, 0.0])
+    names = panda_model.group("arm").joint_names
+    for count in (10, 21, 41):
+        path = JointPath(names, start + np.linspace(0.0, 1.0, count)[:, None] * delta)
+        trajectory = parameterize_path(panda_model, path)
+        assert trajectory.positions[-1] == pytest.approx(path.waypoints[-1])
+        assert 0.1 < trajectory.duration < 1.0
