@@ -44,6 +44,7 @@ from taskrunner.types import JointPath
 __all__ = ["MotionPlanner", "interpolate_path", "first_invalid_state"]
 
 _REFINEMENTS = 3
+_SINGLE_GOAL = {"PRM", "PRMstar"}
 _OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
 
 
@@ -289,6 +290,11 @@ class MotionPlanner:
         ob, og, ou = _ompl()
         model = self.scene.robot
         idx = group.joint_indices
+        if options.planner in _SINGLE_GOAL and len(goals) > 1:
+            # PRM's goal-watching thread calls the (Python) validity checker while holding
+            # its graph lock, and the search thread holds the GIL waiting for that lock:
+            # with several goal states they deadlock. Give it the nearest goal only.
+            goals = [min(goals, key=lambda g: float(np.linalg.norm(g[1][idx] - start[idx])))]
         n = len(idx)
         is_valid, count = self._validity(group, start)
         lower = model.lower[idx].copy()

@@ -191,3 +191,13 @@ def test_pose_goal_in_the_tool_frame_is_taken_at_the_start_state(shelf_scene):
     reached = frame_pose(shelf_scene.robot, result.end, "panda_hand_tcp")
     expected = start_tcp * pin.SE3(np.eye(3), np.array([0.0, 0.0, 0.1]))
     assert reached.translation == pytest.approx(expected.translation, abs=2e-4)
+
+
+@pytest.mark.parametrize("planner", ["PRM", "PRMstar"])
+def test_prm_with_several_goals_plans_to_one_instead_of_deadlocking(shelf_scene, planner):
+    other = {**REACH_LEFT, "panda_joint1": -1.2}
+    options = PlannerOptions(planner=planner, planning_time=2.0)
+    result = MotionPlanner(shelf_scene).plan(
+        PlanRequest("arm", (JointGoal(REACH_LEFT), JointGoal(other)), options=options))
+    assert result.goal_index in (0, 1)
+    assert_path_is_free(shelf_scene, result, resolution=0.01)
