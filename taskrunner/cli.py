@@ -9,6 +9,8 @@ Subcommands:
   it for collisions, plan a collision-free path there and time it.
 - ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
 - ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
+- ``run-task serve [--host 127.0.0.1] [--port 8000] [--token T | --no-auth]``: the REST API
+  (``api/``); with no token given or in ``TASKRUNNER_TOKEN``, one is made and printed.
 
 Exit codes: 0 success, 2 invalid task or input, 3 planning failure, 4 execution failure,
 130 cancelled (Ctrl-C).
@@ -32,7 +34,7 @@ REPO_ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_CELL = REPO_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
-COMMANDS = ("run", "check", "demo", "info", "collision-matrix")
+COMMANDS = ("run", "check", "demo", "info", "collision-matrix", "serve")
 
 
 def _load(path: Path):  # type: ignore[no-untyped-def]
@@ -141,7 +143,7 @@ def _parameters(pairs: Sequence[str]) -> dict[str, str]:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from taskrunner.tasks.check import check_task
+    from taskrunner.tree.check import check_task
 
     report = check_task(Path(args.file), _parameters(args.param), seed=args.seed)
     for problem in report.problems:
@@ -159,6 +161,33 @@ def cmd_run(args: argparse.Namespace) -> int:
     return run_task_file(Path(args.file), backend=args.backend, parameters=_parameters(args.param),
                          speed=args.speed, seed=args.seed, runs_dir=Path(args.runs_dir),
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process)
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    from api import Settings, create_app
+
+    try:
+        settings = Settings.from_env(token=args.token, planner=args.planner,
+                                     state_dir=args.state_dir)
+        if args.no_auth:
+            settings = Settings(**{**vars(settings), "auth": False, "token": None})
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    app = create_app(settings)
+    base = f"http://{args.host}:{args.port}"
+    if app.state.token is None:
+        print(f"taskrunner API at {base} (docs: {base}/docs), OPEN: no token needed "
+              "(--no-auth)", flush=True)
+    else:
+        made = "" if settings.token else " (made for this session; set TASKRUNNER_TOKEN to fix it)"
+        print(f"taskrunner API at {base} (docs: {base}/docs)\n"
+              f"  token{made}:\n    {app.state.token}\n"
+              f"  send it as: Authorization: Bearer <token>", flush=True)
+    uvicorn.run(app, host=args.host, port=args.port, log_level=args.log_level)
+    return EXIT_OK
 
 
 def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
@@ -195,6 +224,19 @@ def _parser() -> argparse.ArgumentParser:
     demo.add_argument("--seed", type=int, default=0)
     info = sub.add_parser("info", help="describe a cell or robot")
     info.add_argument("path")
+    serve = sub.add_parser("serve", help="serve the REST API (api/) with uvicorn")
+    serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
+    serve.add_argument("--port", type=int, default=8000, help="port (8000)")
+    serve.add_argument("--token", default=None,
+                       help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
+    serve.add_argument("--no-auth", action="store_true",
+                       help="run open: no endpoint needs a token")
+    serve.add_argument("--state-dir", default=None,
+                       help="where the run database goes (TASKRUNNER_STATE_DIR, else state/)")
+    serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
+                       help="plan in a worker process per run (default) or in-process")
+    serve.add_argument("--log-level", default="info",
+                       choices=("critical", "error", "warning", "info", "debug"))
     sub.add_parser("collision-matrix", add_help=False,
                    help="generate a robot's self-collision matrix (see --help)")
     return parser
@@ -208,7 +250,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
         argv = ["run", *argv]
     args = parser.parse_args(argv)
-    commands = {"run": cmd_run, "check": cmd_check, "demo": cmd_demo, "info": cmd_info}
+    commands = {"run": cmd_run, "check": cmd_check, "demo": cmd_demo, "info": cmd_info,
+                "serve": cmd_serve}
     try:
         return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:

@@ -21,7 +21,11 @@ from py_trees.common import Status
 
 from taskrunner.backends.base import ExecutionHandle
 from taskrunner.errors import TaskrunnerError
-from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner
+from taskrunner.planning.cartesian import (
+    CartesianOptions,
+    CartesianPlanner,
+    CartesianResult,
+)
 from taskrunner.planning.request import Goal, PlannerOptions, PlanRequest
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
@@ -177,24 +181,44 @@ class MoveStraight(_Executes):
 
     The Cartesian path is computed in ``initialise`` (a few milliseconds, no OMPL); a path
     that cannot be followed to the end fails the leaf with the reason and the fraction.
+    With ``fallback`` options, a path that stops for want of an IK solution (``"ik"``:
+    e.g. an arm of five joints asked to hold its tool's orientation) is computed again
+    with those (e.g. position only); a "message" event says so.
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext, group: str,
                  waypoints: Callable[[TaskContext], Sequence[Pose]], link: str | None = None,
                  options: CartesianOptions | None = None,
-                 timing: TimingOptions | None = None) -> None:
+                 timing: TimingOptions | None = None,
+                 fallback: CartesianOptions | None = None) -> None:
         super().__init__(name, location, ctx, timing)
         self.group, self.waypoints, self.link = group, waypoints, link
         self.options = options or CartesianOptions()
+        self.fallback = fallback
         self.outcome: Status = Status.RUNNING
+
+    def compute(self, ctx: TaskContext) -> CartesianResult:
+        """The Cartesian path from the scene's state (the fallback options applied).
+
+        Raises:
+            TaskrunnerError: the path cannot be started (see :class:`CartesianPlanner`).
+        """
+        planner = CartesianPlanner(ctx.scene)
+        waypoints = list(self.waypoints(ctx))
+        result = planner.compute(self.group, waypoints, link=self.link, options=self.options)
+        if result.stop_reason == "ik" and self.fallback is not None:
+            ctx.events.emit("message", f"straight move stopped ({result.message}); "
+                            "following it with the fallback options", node=self.name,
+                            location=self.location)
+            result = planner.compute(self.group, waypoints, link=self.link,
+                                     options=self.fallback)
+        return result
 
     def start(self) -> None:
         super().start()
         started = time.perf_counter()
         try:
-            result = CartesianPlanner(self.ctx.scene).compute(
-                self.group, list(self.waypoints(self.ctx)), link=self.link,
-                options=self.options)
+            result = self.compute(self.ctx)
         except TaskrunnerError as exc:
             self.outcome = self.fail(str(exc))
             return

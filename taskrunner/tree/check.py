@@ -1,0 +1,645 @@
+"""Checking a task without moving anything: ``run-task check FILE``.
+
+:func:`check_task` reports every problem of a task file at once, each at its
+``file:line``, in three passes:
+
+1. the loader's problems (unknown verbs or fields, wrong types, parameters, includes);
+   when there are any, nothing else is checked;
+2. the names the cell does not have (:func:`~taskrunner.tasks.check_names`);
+3. a kinematic dry run of the steps in document order, on the scene the task starts in.
+
+The dry run compiles each leaf step as a run does (:func:`compile_task`: pick, place and
+hand-over are the very subtrees of :mod:`taskrunner.tree.idioms`) and plays the leaves
+without OMPL and without a backend. A ``MoveToGoal`` goal becomes goal states as the
+planner makes them (named and joint targets; IK for poses, seeded like the run) and is
+checked for collisions; ``MoveStraight`` runs the :class:`CartesianPlanner` and times the
+path (toppra) as a run does before it moves; ``MoveJoints`` checks its joint-space line;
+``SceneAction`` edits the scene. A place whose target is inside another object is a
+problem too (a run lets a 5-DOF arm's object touch the world while it is set down). The
+robot then *is* at the state reached, so later steps are checked in the situation
+earlier ones leave: a picked object is attached where it was grasped, a placed one sits
+where it was released. What needs a planner is not checked: the joint-space path of a
+``go`` or of the motion to a pre-grasp.
+
+Of several goal states the dry run follows the first collision-free one: the one the
+run's planner reaches (RRTConnect connects to the first goal state it is given; the IK
+searches are seeded as in the run, so the goal states are the run's). When the rest of
+the step fails from it but another goal state would do, the problem is reported all
+the same, with a note. (A ``retry`` does not help there: its next attempt starts its IK
+searches from where the arm is, the first goal state of the failed attempt.)
+
+A step with a name problem, or naming an object missing because of one, is skipped.
+After a failed step the dry run finishes it without checks (collisions ignored), so
+later steps start about where the run would have left the robot and the objects, and
+the collision of their start state is not reported again. A ``fallback`` reports its
+branches' problems only when every branch has some (each branch starts where the one
+before stopped, as in a run); the body of ``retry``, ``timeout`` and ``repeat`` is
+checked once; a ``parallel`` of ``go`` steps is the one motion a run makes of it, other
+parallels are checked child by child.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pinocchio as pin
+import py_trees
+from py_trees.behaviour import Behaviour
+
+from taskrunner.errors import (
+    IkFailedError,
+    InputError,
+    InvalidStateError,
+    StartInCollisionError,
+    TaskrunnerError,
+    TaskSpecError,
+)
+from taskrunner.kinematics import IkOptions, IkSolver
+from taskrunner.planning.cartesian import CartesianPlanner
+from taskrunner.planning.planner import MotionPlanner, interpolate_path
+from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
+from taskrunner.planning.timing import parameterize_path
+from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.robot.model import Group
+from taskrunner.scene import Contact, Scene, SceneObject, scene_from_cell
+from taskrunner.scene.collision import Body, CollisionChecker
+from taskrunner.scene.geometry import MeshCache, object_geometry, shape_geometry
+from taskrunner.tasks import (
+    AddObjectStep,
+    FallbackStep,
+    GoStep,
+    GripperStep,
+    HandoffStep,
+    MoveStep,
+    Node,
+    ParallelStep,
+    PickStep,
+    PlaceStep,
+    Problem,
+    StepNode,
+    TaskSpec,
+    check_names,
+    load_task,
+    walk_steps,
+)
+from taskrunner.tree.behaviours import (
+    MoveJoints,
+    MoveStraight,
+    MoveToGoal,
+    SceneAction,
+    TaskLeaf,
+)
+from taskrunner.tree.compiler import compile_task, object_shape
+from taskrunner.tree.context import TaskContext
+from taskrunner.tree.idioms import place_target
+from taskrunner.types import Pose
+
+__all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
+
+MAX_GOAL_STATES = 8
+"""Goal states of one ``MoveToGoal`` tried, in the planner's order, to see whether any
+lets the rest of its step succeed."""
+OVERLAP_TOLERANCE = 0.001
+"""Penetration (m) up to which an object put down touches, rather than overlaps, another."""
+_JOINT_STEP = 0.01  # rad between the collision checks of a MoveJoints line, as in a run
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    """What :func:`check_task` found.
+
+    Attributes:
+        cell: the name of the task's cell ('' when the task or the cell did not load).
+        steps: leaf steps dry-run (steps skipped for a name problem not counted).
+        problems: every problem once, the task file's first, then by file and line.
+    """
+
+    cell: str
+    steps: int
+    problems: list[Problem] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        """True when there is no problem."""
+        return not self.problems
+
+
+def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
+               seed: int = 0) -> CheckReport:
+    """Check a task file: structure, names, then a kinematic dry run (nothing moves).
+
+    Args:
+        path: the task file.
+        parameters: overrides of the task's parameters (as for :func:`load_task`).
+        seed: the run's seed: IK searches are seeded as a run with this seed seeds them.
+
+    Returns:
+        The report; problems of the task or of its cell are in it, never raised.
+    """
+    root = Path(path).resolve()
+    try:
+        spec = load_task(root, parameters)
+    except TaskSpecError as exc:
+        found = getattr(exc, "problems", None) or [Problem(exc.path, exc.line, exc.reason)]
+        return CheckReport("", 0, _ordered(found, root))
+    try:
+        cell = load_cell(spec.cell)
+    except TaskrunnerError as exc:
+        if isinstance(exc, InputError) and exc.path is not None:
+            return CheckReport("", 0, [Problem(exc.path, exc.line, exc.reason)])
+        return CheckReport("", 0, [Problem(root, None, f"cell {spec.cell}: {exc}")])
+    named = check_names(spec, cell)
+    marked = {(p.path, p.line) for p in named}
+    scene, problems, missing = _start_scene(spec, cell, marked)
+    run = _DryRun(spec, cell, marked, missing)
+    ctx = TaskContext(cell, scene, None, None, seed=seed)  # type: ignore[arg-type]
+    run.sequence(spec.steps, ctx)
+    return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root))
+
+
+# ----------------------------------------------------------------------------- helpers
+def _ordered(problems: Iterable[Problem], root: Path) -> list[Problem]:
+    unique = list(dict.fromkeys(problems))
+    return sorted(unique, key=lambda p: (p.path != root, str(p.path), p.line or 0))
+
+
+def _nested(node: Node) -> Iterable[Node]:
+    """The models inside ``node``'s fields (poses, objects …), not its sub-steps."""
+    for value in node.__dict__.values():
+        for item in value if isinstance(value, tuple) else (value,):
+            if isinstance(item, Node) and not isinstance(item, StepNode):
+                yield item
+
+
+def _lines(node: Node) -> set[tuple[Path, int | None]]:
+    """Every ``(file, line)`` written for ``node`` and the models inside it."""
+    found: set[tuple[Path, int | None]] = set()
+    if node.loc is not None:
+        found.add((node.loc.file, node.loc.line))
+        found.update((node.loc.file, line) for _, line in node.loc.field_lines)
+    for inner in _nested(node):
+        found |= _lines(inner)
+    return found
+
+
+def _names(node: Node) -> set[str]:
+    """Every string value of ``node``'s fields and of the models inside it."""
+    found = {v for v in node.__dict__.values() if isinstance(v, str)}
+    for inner in _nested(node):
+        found |= _names(inner)
+    return found
+
+
+def _at(node: Node, message: str) -> Problem:
+    loc = node.loc
+    return Problem(loc.file if loc else None, loc.line if loc else None, message)
+
+
+def _start_scene(spec: TaskSpec, cell: Cell, marked: set[Any]
+                 ) -> tuple[Scene, list[Problem], set[str]]:
+    """The scene the task starts in (built as ``runtime.runner.task_scene`` builds it),
+    problems of objects that cannot be added (unless reported by name already), and the
+    names of the objects left out."""
+    scene = scene_from_cell(cell)
+    problems, missing = [], set()
+    for obj in spec.objects:
+        try:
+            scene.add_object(obj.name, object_shape(obj), obj.pose.to_pose())
+            for link in obj.touch_links:
+                scene.allow_collision(obj.name, link, reason="task")
+        except TaskrunnerError as exc:
+            if obj.name not in scene:
+                missing.add(obj.name)
+            if not _lines(obj) & marked:
+                problems.append(_at(obj, f"object {obj.name!r}: {exc}"))
+    return scene, problems, missing
+
+
+def _pairs(contacts: Iterable[Contact | tuple[str, str]]) -> str:
+    pairs = [(c.a, c.b) if isinstance(c, Contact) else c for c in contacts]
+    shown = ", ".join(f"{a}–{b}" for a, b in pairs[:3])
+    return shown + (f" and {len(pairs) - 3} more" if len(pairs) > 3 else "")
+
+
+def _miss(exc: IkFailedError) -> str:
+    """``best residual … for 'frame' at (x, y, z)`` from an IK failure's message."""
+    residual = f"best residual {exc.best_error if exc.best_error is not None else math.nan:.3g}"
+    found = re.search(r"frame '([^']+)', target (position |pose xyz=)\(([^)]*)\)", str(exc))
+    if found is None:
+        return residual
+    xyz = ", ".join(f"{float(v):.3f}" for v in found[3].split(","))
+    unit = " m" if found[2] == "position " else " (m and rad)"
+    return f"{residual}{unit} for {found[1]!r} at ({xyz})"
+
+
+def _describe(step: StepNode) -> str:
+    """How messages name a step: ``go arm to 'Candle'``, ``pick cube`` …"""
+    match step:
+        case GoStep():
+            target = (repr(step.to) if step.to is not None
+                      else "joints" if step.joints is not None else "a pose")
+            return f"go {step.group} to {target}"
+        case MoveStep():
+            return f"move {step.group} {'by an offset' if step.by is not None else 'to a pose'}"
+        case GripperStep():
+            what = step.action or (repr(step.to) if step.to else f"width {step.width:g}")
+            return f"gripper {step.arm or step.group} {what}"
+        case AddObjectStep():
+            return f"add_object {step.object.name}"
+        case ParallelStep():
+            return "parallel " + ", ".join(_describe(child) for child in step.steps)
+    obj = getattr(step, "object", None)
+    return f"{step.verb} {obj}" if isinstance(obj, str) else step.label
+
+
+def _leaves(behaviour: Behaviour) -> list[Behaviour]:
+    if isinstance(behaviour, py_trees.composites.Sequence):
+        return [leaf for child in behaviour.children for leaf in _leaves(child)]
+    return [behaviour]
+
+
+def _stage(leaf: Behaviour, step: StepNode) -> str | None:
+    """The part of an idiom a leaf plays (``approach``), or None for a step's one leaf."""
+    prefix = f"{step.label}: "
+    return leaf.name[len(prefix):] if leaf.name.startswith(prefix) else None
+
+
+def _goal_word(stage: str | None) -> str:
+    """What a MoveToGoal stage aims at: ``target``, ``pre-grasp``, ``right_arm pre-grasp``."""
+    if stage is None:
+        return "target"
+    if stage.startswith("to "):
+        return stage[3:]
+    return stage.replace(" to ", " ", 1) if " to " in stage else f"{stage}: target"
+
+
+def _moved(ctx: TaskContext, q: np.ndarray) -> TaskContext:
+    """A copy of ``ctx`` on a copy of its scene, the robot at state ``q``."""
+    branch = replace(ctx, scene=ctx.scene.copy())
+    branch.scene.set_state(q)
+    return branch
+
+
+@dataclass(frozen=True)
+class _Failure:
+    """Why a step's leaves stopped: at leaf ``leaf``, in the situation ``ctx``; ``other``
+    names a MoveToGoal stage where another goal state would have let the step succeed."""
+
+    leaf: int
+    text: str
+    ctx: TaskContext
+    other: str | None = None
+
+
+class _Unreachable(Exception):
+    """No goal of a MoveToGoal has an IK solution (control flow inside this module)."""
+
+
+# ----------------------------------------------------------------------------- dry run
+class _DryRun:
+    """Plays the compiled steps kinematically, collecting problems (module docstring)."""
+
+    def __init__(self, spec: TaskSpec, cell: Cell, marked: set[Any], missing: set[str]
+                 ) -> None:
+        self.spec, self.cell = spec, cell
+        self.marked = marked  # (file, line) of every name problem
+        # Objects not in the scene, or not where the task expects them, because of an
+        # earlier problem: the steps naming them are skipped.
+        self.missing = missing
+        self.problems: list[Problem] = []
+        self.checked = 0
+        self.tainted = False  # the state comes from a failed step: do not blame its start
+        self.stopped: TaskContext | None = None  # the situation at the first failure
+        self._ik: dict[tuple[str, str | None], IkSolver] = {}
+        self._meshes = MeshCache()
+
+    # ------------------------------------------------------------------ composites
+    def sequence(self, steps: Iterable[StepNode], ctx: TaskContext) -> TaskContext:
+        for step in steps:
+            ctx = self.step(step, ctx)
+        return ctx
+
+    def step(self, step: StepNode, ctx: TaskContext) -> TaskContext:
+        if isinstance(step, FallbackStep):
+            return self.fallback(step, ctx)
+        if isinstance(step, ParallelStep) and not any(
+                _lines(s) & self.marked or _names(s) & self.missing
+                for s in walk_steps(step.children)):
+            compiled = self.compile(step, ctx)  # reports what only the whole can get wrong
+            leaves = _leaves(compiled) if compiled is not None else []
+            if leaves and all(isinstance(leaf, TaskLeaf) for leaf in leaves):
+                # Its go steps became one motion of the arms together: play it as the run does.
+                return self.leaf(step, ctx, leaves)
+        if step.children:
+            return self.sequence(step.children, ctx)
+        return self.leaf(step, ctx)
+
+    def fallback(self, step: FallbackStep, ctx: TaskContext) -> TaskContext:
+        """The first branch without problems ends the fallback; when every branch has
+        some, all are reported. A branch starts where the one before stopped (at its
+        first problem), as in a run."""
+        outer, tainted = self.problems, self.tainted
+        tried: list[tuple[list[Problem], TaskContext]] = []
+        start = ctx
+        for branch in step.steps:
+            self.problems, self.tainted, self.stopped = [], tainted, None
+            end = self.step(branch, replace(start, scene=start.scene.copy()))
+            tried.append((self.problems, end))
+            if not self.problems:
+                self.problems = outer
+                return end
+            start = self.stopped or end
+        self.problems = outer + [p for found, _ in tried for p in found]
+        self.tainted = True
+        return tried[0][1]
+
+    # ------------------------------------------------------------------ leaf steps
+    def compile(self, step: StepNode, ctx: TaskContext) -> Behaviour | None:
+        """``step`` compiled as the run compiles it, or None (its problem reported)."""
+        one = self.spec.model_copy(update={"name": step.label, "steps": (step,)})
+        try:
+            return compile_task(one, ctx)
+        except TaskSpecError as exc:
+            self.problems.append(Problem(exc.path, exc.line, exc.reason))
+            return None
+
+    def leaf(self, step: StepNode, ctx: TaskContext,
+             leaves: list[Behaviour] | None = None) -> TaskContext:
+        """Check one step (a leaf, or a parallel compiled into ``leaves``)."""
+        if _lines(step) & self.marked or _names(step) & self.missing:
+            # Its problem is reported already; what it would leave is unknown.
+            if isinstance(step, AddObjectStep):
+                self.missing.add(step.object.name)
+            self.tainted = True
+            return ctx
+        self.checked += 1
+        if leaves is None:
+            compiled = self.compile(step, ctx)
+            if compiled is None:
+                self.tainted = True
+                return ctx
+            leaves = _leaves(compiled)
+        text, finish = self.precheck(step, ctx)
+        start = 0
+        if text is None:
+            end, failure = self.play(leaves, 0, step, ctx)
+            if failure is None:
+                self.tainted = False
+                return end
+            text, start, ctx = failure.text, failure.leaf, failure.ctx
+            if failure.other:
+                other = failure.other
+                aimed = other.startswith("to ") or " to " in other
+                what = f"{_goal_word(other)} solution" if aimed else f"goal state of '{other}'"
+                text += f" (another {what} would do, but the run takes the planner's first)"
+        self.problems.append(_at(step, f"{_describe(step)}: {text}"))
+        self.tainted = True
+        if self.stopped is None:  # where a run stops: a fallback's next branch starts there
+            self.stopped = replace(ctx, scene=ctx.scene.copy())
+        if finish and not self.force(leaves[start:], ctx):
+            held = getattr(step, "object", None)  # pick, place, handoff: left who knows where
+            if isinstance(held, str):
+                self.missing.add(held)
+        if isinstance(step, AddObjectStep) and step.object.name not in ctx.scene:
+            self.missing.add(step.object.name)
+        return ctx
+
+    def precheck(self, step: StepNode, ctx: TaskContext) -> tuple[str | None, bool]:
+        """What fails an idiom before it moves (who holds the object; a place target
+        inside another object), and whether the step can be finished all the same."""
+        scene = ctx.scene
+        try:
+            if isinstance(step, PickStep) and scene.object(step.object).attached:
+                holder = scene.object(step.object).attached_to
+                return f"{step.object!r} is already held (by {holder!r})", False
+            if isinstance(step, (PlaceStep, HandoffStep)):
+                arm = step.arm if isinstance(step, PlaceStep) else step.from_arm
+                if scene.object(step.object).attached_to != ctx.arm(arm).grasp_frame:
+                    return f"arm {arm!r} is not holding {step.object!r}", False
+            if isinstance(step, PlaceStep):
+                at = step.at.to_pose() if step.at is not None else None
+                target = place_target(ctx, step.object, at, step.on, step.offset or (0.0, 0.0))
+                found = self.overlap(scene, step.object, target)
+                if found is not None:
+                    other = found.a if found.b == step.object else found.b
+                    depth = f"{1e3 * found.depth:.0f} mm"
+                    return f"target occupied by {other!r} ({depth} overlap)", True
+        except TaskrunnerError as exc:
+            return str(exc), False
+        return None, True
+
+    def overlap(self, scene: Scene, name: str, target: pin.SE3) -> Contact | None:
+        """The deepest overlap (beyond :data:`OVERLAP_TOLERANCE`) of object ``name`` put at
+        world pose ``target`` with another world object, or None. (World objects are never
+        checked against each other in a run.)"""
+        model = scene.robot
+
+        def body(obj: SceneObject, static: bool) -> Body:
+            geometry = shape_geometry(obj.shape, self._meshes)
+            return Body(obj.name, (object_geometry(model, obj, geometry),), static)
+
+        placed = SceneObject(name, scene.object(name).shape, Pose.from_se3(target))
+        bodies = [body(placed, False)] + [body(o, True) for o in scene.objects
+                                          if o.name != name and not o.attached]
+        checker = CollisionChecker(model.model, bodies, scene.allowed_collisions())
+        contacts = [c for c in checker.collisions(model.to_pin(scene.state))
+                    if c.depth > OVERLAP_TOLERANCE]
+        return contacts[0] if contacts else None
+
+    # ------------------------------------------------------------------ playing leaves
+    def play(self, leaves: list[Behaviour], index: int, step: StepNode, ctx: TaskContext,
+             explore: bool = True) -> tuple[TaskContext, _Failure | None]:
+        """Play ``leaves[index:]`` on ``ctx`` (its scene edited in place). At a MoveToGoal,
+        go on from its first goal state; when the rest fails from there and ``explore``,
+        try the other goal states (each followed through first goal states only), just
+        to say whether one would have done."""
+        while index < len(leaves):
+            leaf, stage = leaves[index], _stage(leaves[index], step)
+            if not isinstance(leaf, MoveToGoal):
+                text = self.apply(leaf, stage, ctx)
+                if text is not None:
+                    return ctx, _Failure(index, text, ctx)
+                index += 1
+                continue
+            states = self.goal_states(leaf, stage, ctx)
+            if isinstance(states, str):
+                return ctx, _Failure(index, states, ctx)
+            end, first = self.play(leaves, index + 1, step, _moved(ctx, states[0]), explore)
+            if first is None or not explore or first.other:
+                return end, first
+            for q in states[1:]:
+                if self.play(leaves, index + 1, step, _moved(ctx, q), False)[1] is None:
+                    return end, replace(first, other=stage or "goal")
+            return end, first
+        return ctx, None
+
+    def goal_states(self, leaf: MoveToGoal, stage: str | None, ctx: TaskContext
+                    ) -> list[np.ndarray] | str:
+        """The collision-free goal states of ``leaf`` in the planner's order (at most
+        :data:`MAX_GOAL_STATES`), or what is wrong."""
+        scene, model = ctx.scene, ctx.scene.robot
+        lead, word = (f"{stage}: " if stage else ""), _goal_word(stage)
+        start = scene.state
+        try:
+            goals = leaf.goal(ctx)
+            group = model.group(leaf.group)
+            seed = ctx.next_seed()  # as MoveToGoal draws it, so IK finds what the run finds
+            if not self.tainted and scene.in_collision(start):
+                return f"{lead}start state in collision ({_pairs(scene.collisions(start))})"
+            valid: list[np.ndarray] = []
+            rejected: list[np.ndarray] = []
+            for q in self.candidates(goals if isinstance(goals, tuple) else (goals,), group,
+                                     start, replace(leaf.options, seed=seed), scene):
+                bad = model.limit_violations(q)
+                if bad:
+                    return f"{lead}goal outside the joint limits: " + "; ".join(bad)
+                (rejected if scene.in_collision(q) else valid).append(q)
+        except _Unreachable as exc:
+            return f"{word} out of reach (IK): {exc}"
+        except IkFailedError as exc:  # from a goal function (joint goals it solved for)
+            return f"{word} out of reach (IK): {_miss(exc)}"
+        except TaskrunnerError as exc:
+            return f"{lead}{exc}"
+        if not valid:
+            return f"{word} in collision ({_pairs(scene.collisions(rejected[0]))})"
+        return valid[:MAX_GOAL_STATES]
+
+    def candidates(self, goals: tuple[Any, ...], group: Group, start: np.ndarray,
+                   options: PlannerOptions, scene: Scene) -> list[np.ndarray]:
+        """Goal states of every goal with a solution, as ``MotionPlanner`` makes them.
+
+        Raises:
+            _Unreachable: no goal has an IK solution (the message: the nearest miss).
+            InvalidStateError: joints that are not the group's.
+        """
+        model = scene.robot
+        out: list[np.ndarray] = []
+        misses: list[tuple[float, str]] = []
+        for goal in goals:
+            if isinstance(goal, (JointGoal, NamedGoal)):
+                values = (goal.values if isinstance(goal, JointGoal)
+                          else model.named_state(group.name, goal.name).as_dict())
+                outside = [n for n in values if n not in group.joint_names]
+                if outside:
+                    raise InvalidStateError(f"joints {outside} are not active joints of "
+                                            f"group {group.name!r}")
+                out.append(model.state_with(start, values))
+                continue
+            assert isinstance(goal, PoseGoal)
+            solver = self.solver(group, goal.link)
+            settings = group.kinematics
+            ik = IkOptions(
+                tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
+                num_solutions=options.goal_samples,
+                timeout=max(settings.timeout if settings else 0.0, 0.05),
+                attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples))
+            world = scene.to_world(goal.pose, start)
+            try:
+                if goal.position_only is False and group.position_only_ik:
+                    out += MotionPlanner._full_pose_on_short_arm(solver, world, start, ik)
+                else:
+                    out += [s.q for s in solver.solve_all(world, seed_q=start, options=ik)]
+            except IkFailedError as exc:
+                only = group.position_only_ik if goal.position_only is None \
+                    else goal.position_only
+                xyz = ", ".join(f"{v:.3f}" for v in world.translation)
+                residual = exc.best_error if exc.best_error is not None else math.inf
+                unit = "m" if only else "(m and rad)"
+                text = f"best residual {residual:.3g} {unit} for {solver.frame!r} at ({xyz})"
+                misses.append((residual, text))
+        if not out:
+            raise _Unreachable(min(misses)[1])
+        return out
+
+    def solver(self, group: Group, link: str | None) -> IkSolver:
+        key = (group.name, link)
+        if key not in self._ik:
+            self._ik[key] = IkSolver(self.cell.model, group, frame=link)
+        return self._ik[key]
+
+    def apply(self, leaf: Behaviour, stage: str | None, ctx: TaskContext) -> str | None:
+        """Play a leaf that has no goal states to choose; what failed, or None."""
+        scene, model = ctx.scene, ctx.scene.robot
+        try:
+            if isinstance(leaf, MoveStraight):
+                return self.straight(leaf, stage, ctx)
+            if isinstance(leaf, MoveJoints):
+                start = scene.state
+                goal = model.state_with(start, leaf.values(ctx))
+                what = {"open": "opening the gripper", "close": "closing the gripper"}.get(
+                    stage or "", stage or "gripper motion")
+                bad = model.limit_violations(goal)
+                if bad:
+                    return f"{what}: target outside the joint limits: " + "; ".join(bad)
+                if leaf.check and not (self.tainted and scene.in_collision(start)):
+                    line = interpolate_path(np.vstack([start, goal]), _JOINT_STEP)
+                    for k in range(1, len(line)):
+                        q = model.apply_mimic(line[k].copy())
+                        if scene.in_collision(q):
+                            return f"{what} collides ({_pairs(scene.collisions(q))})"
+                scene.set_state(goal)
+            elif isinstance(leaf, SceneAction):
+                leaf.action(ctx)
+        except TaskrunnerError as exc:
+            return f"{stage}: {exc}" if stage else str(exc)
+        return None
+
+    def straight(self, leaf: MoveStraight, stage: str | None, ctx: TaskContext) -> str | None:
+        name = stage or "straight move"
+        sep = ": " if stage and " " in stage else " "
+        if self.tainted and ctx.scene.in_collision():
+            self.force([leaf], ctx)  # a start the run would refuse, reported already
+            return None
+        try:
+            result = leaf.compute(ctx)  # the run's own computation (fallback options too)
+        except StartInCollisionError as exc:
+            return f"{name}: start state in collision ({_pairs(exc.pairs)})"
+        if not result.complete:
+            verb = "blocked" if result.stop_reason == "collision" else "stopped"
+            percent = f"{math.floor(100.0 * result.fraction + 1e-9):.0f} %"
+            reason = re.sub(r" at \d+ % of the path", "", result.message)
+            reason = re.sub(r" \(and (\d+ more pair\(s\))\)", r", and \1", reason)
+            return f"{name}{sep}{verb} at {percent} ({reason})"
+        try:  # a run times the path before it moves; toppra can fail where IK did not
+            parameterize_path(ctx.scene.robot, result.path, leaf.timing)
+        except TaskrunnerError as exc:
+            return f"{name}{sep}cannot be timed ({exc})"
+        ctx.scene.set_state(result.end)
+        return None
+
+    # ------------------------------------------------------------------ after a failure
+    def force(self, leaves: list[Behaviour], ctx: TaskContext) -> bool:
+        """Play ``leaves`` without checks (collisions ignored, nothing reported), so that
+        later steps start about where the run would have left the robot and the objects;
+        False when a goal cannot be reached at all (the objects are then not where the
+        task expects them)."""
+        scene = ctx.scene
+        for leaf in leaves:
+            try:
+                if isinstance(leaf, MoveToGoal):
+                    goals = leaf.goal(ctx)
+                    group = scene.robot.group(leaf.group)
+                    states = self.candidates(goals if isinstance(goals, tuple) else (goals,),
+                                             group, scene.state, leaf.options, scene)
+                    free = [q for q in states if not scene.in_collision(q)]
+                    scene.set_state((free or states)[0])
+                elif isinstance(leaf, MoveStraight):
+                    options = replace(leaf.options, avoid_collisions=False)
+                    result = CartesianPlanner(scene).compute(
+                        leaf.group, list(leaf.waypoints(ctx)), link=leaf.link, options=options)
+                    scene.set_state(result.end)
+                elif isinstance(leaf, MoveJoints):
+                    scene.set_state(scene.robot.state_with(scene.state, leaf.values(ctx)))
+                elif isinstance(leaf, SceneAction):
+                    leaf.action(ctx)
+            except (_Unreachable, IkFailedError):
+                return False
+            except TaskrunnerError:
+                continue
+        return True

@@ -1,0 +1,370 @@
+"""Goal states for a straight approach: reachable, and joined to the contact by a line.
+
+A pick's pre-grasp (a place's pre-place, a hand-over's pre-grasp) is planned to; from
+there the grasp frame moves in a straight line to the contact pose. An IK solution of the
+pre-pose on the wrong branch can make that line impossible (a joint would have to jump),
+so :func:`approach_goals` returns goal states whose line is followed point by point
+first (without collision checks: those come with the real straight move).
+
+Arms of six joints or more reach the poses exactly. An arm with fewer
+(``position_only_ik``, like the 5-DOF servo arm) cannot put its tool at an arbitrary
+pose: only the tool's position is planned, and its orientation is whatever the arm's
+remaining freedom gives. For grasping and putting down that orientation still matters
+(the fingers should close across the object's faces, a bar laid down should lie flat),
+so :func:`approximate` chooses it as well as the arm allows:
+
+1. position-only IK solutions are sampled for the point to be placed (the grasp frame's
+   origin, or a held object's centre: then the frame's position follows from the
+   orientation, found by a few fixed-point rounds);
+2. when the group's last joint rolls the frame about its own z axis (a wrist roll, which
+   does not move the frame's origin), it is turned to bring the closing axis (y) as near
+   the wanted one as the pointing axis (z) allows;
+3. a local full-pose solve is tried from the nearest approximation of each wanted pose:
+   where that pose is reachable exactly, it is used;
+4. the candidates nearest the wanted orientations come first. For a grasp, a turn about
+   the closing axis counts little: the fingers stay flat on the same faces
+   (:func:`orientation_error`).
+
+For such an arm the pre-pose is the contact state moved along the line with the
+orientation unchanged, checked point by point, so the straight approach can hold the
+orientation all the way; where no candidate allows that, the moved poses are
+approximated on their own and the approach follows the line by position only.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import pinocchio as pin
+
+from taskrunner.errors import IkFailedError
+from taskrunner.kinematics import IkOptions, IkSolver
+from taskrunner.planning.request import Goal, JointGoal, PoseGoal
+from taskrunner.robot.model import RobotModel
+from taskrunner.types import Pose
+
+__all__ = ["Approximation", "Lift", "approach_goals", "approximate", "approximate_goals",
+           "orientation_error", "wrist_roll"]
+
+Lift = Callable[[int, pin.SE3], np.ndarray]
+"""``(index of a wanted pose, link pose reached there) -> world offset (m)``."""
+
+SAMPLES = 8  # position-only IK solutions per distinct point
+KEEP = 6  # joint goals returned
+FIXED_POINT_ROUNDS = 3
+FREE_TURN_WEIGHT = 0.1  # weight of a grasp's turn about its closing axis (see orientation_error)
+LINE_STEP = 0.005  # m between the points a straight line is checked at (eef_step)
+LINE_TURN = 0.05  # rad of turn between two such points (max_rotation_step)
+MAX_JOINT_STEP = 0.2  # rad a joint may move between two points of a line (max_joint_step)
+FULL_POSE_SOLUTIONS = 6  # IK solutions tried per pre-pose of a full-pose arm
+_IK_TIMEOUT = 1.0  # s; attempts run out long before, so results do not depend on load
+
+
+@dataclass(frozen=True)
+class Approximation:
+    """One goal state and how far its frame's orientation is from the wanted pose's.
+
+    Attributes:
+        q: the full state vector.
+        wanted: index of the wanted pose it approximates.
+        angle: how far the frame's orientation is from the wanted one (rad, see
+            :func:`orientation_error`).
+    """
+
+    q: np.ndarray
+    wanted: int
+    angle: float
+
+
+def wrist_roll(model: RobotModel, group: str, link: str, q: np.ndarray) -> tuple[int, float] | None:
+    """The group's last joint if it turns ``link`` about the link's own z axis without
+    moving its origin: ``(state index, +1 or -1 for the turn's sense about z)``; else None."""
+    joint = model.joint(model.group(group).joint_names[-1])
+    if joint.type not in ("revolute", "continuous"):
+        return None
+    data = model.model.createData()
+    frame = model.frame_id(link)
+
+    def pose(values: np.ndarray) -> pin.SE3:
+        pin.framesForwardKinematics(model.model, data, model.to_pin(values))
+        return pin.SE3(data.oMf[frame])
+
+    eps = 1e-4
+    before = pose(q)
+    turned = q.copy()
+    turned[joint.index] += eps
+    after = pose(turned)
+    if np.linalg.norm(after.translation - before.translation) > 1e-7:
+        return None
+    omega = pin.log3(before.rotation.T @ after.rotation) / eps  # in the link frame
+    if abs(abs(omega[2]) - 1.0) > 1e-3 or np.linalg.norm(omega[:2]) > 1e-3:
+        return None
+    return joint.index, math.copysign(1.0, omega[2])
+
+
+class _Frames:
+    """Forward kinematics of one frame (a private pin.Data)."""
+
+    def __init__(self, model: RobotModel, link: str) -> None:
+        self.model, self.data, self.frame = model, model.model.createData(), model.frame_id(link)
+
+    def __call__(self, q: np.ndarray) -> pin.SE3:
+        pin.framesForwardKinematics(self.model.model, self.data, self.model.to_pin(q))
+        return pin.SE3(self.data.oMf[self.frame])
+
+
+def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[pin.SE3],
+                   lift: Lift, start: np.ndarray, seed: int, point: np.ndarray | None = None,
+                   grasping: bool = False, keep: int = KEEP) -> tuple[Goal, ...]:
+    """Goals a straight line away from the contact poses of ``link`` (``lift``: see
+    :data:`Lift`), from which the arm can follow that line back to the contact.
+
+    Args:
+        point: for a short arm, the point of ``link`` (its frame, m) placed exactly.
+        grasping: the contact poses are grasps (see :func:`approximate_goals`).
+        keep: goals returned (twice as many for a full-pose arm, whose goals differ
+            more).
+
+    Raises:
+        IkFailedError: a short arm reaches no contact position.
+    """
+    if model.group(group).position_only_ik:
+        return approximate_goals(model, group, link, contact, start, seed, point, lift,
+                                 grasping, keep)
+    solver = IkSolver(model, group, frame=link)
+    options = IkOptions(position_only=False, num_solutions=FULL_POSE_SOLUTIONS, seed=seed,
+                        timeout=_IK_TIMEOUT, attempts=20 * FULL_POSE_SOLUTIONS)
+    pre = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
+           for i, p in enumerate(contact)]
+    found: list[list[np.ndarray]] = []
+    for away, there in zip(pre, contact):
+        try:
+            solutions = solver.solve_all(away, seed_q=start, options=options)
+        except IkFailedError:
+            continue
+        found.append([np.array(s.q) for s in solutions
+                      if _follows(solver, np.array(s.q), away, there) is not None])
+    # Every contact pose's states in turn, so that one pose blocked by an obstacle (its
+    # states in collision, which the planner drops) leaves the others to choose from.
+    states = [q for turn in itertools.zip_longest(*found) for q in turn if q is not None]
+    if not states:
+        # No line can be followed: plan to the pre-poses anyway; the straight move will
+        # say why it stops.
+        return tuple(PoseGoal(Pose.from_se3(p), link=link, position_only=False) for p in pre)
+    return _joint_goals(model, group, states, 2 * keep)
+
+
+def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
+             rotation: np.ndarray | None = None) -> np.ndarray | None:
+    """The state at ``end`` reached from ``q`` (at ``start``) along the straight line
+    between them, solved point by point without jumps (orientation: slerp, or
+    ``rotation`` held); None where the line cannot be followed."""
+    exact = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
+    turn = pin.log3(start.rotation.T @ end.rotation)
+    steps = max(1, math.ceil(max(np.linalg.norm(end.translation - start.translation)
+                                 / LINE_STEP, np.linalg.norm(turn) / LINE_TURN)))
+    idx = solver.group.joint_indices
+    for k in range(1, steps + 1):
+        s = k / steps
+        held = rotation if rotation is not None else start.rotation @ pin.exp3(s * turn)
+        point = start.translation + s * (end.translation - start.translation)
+        try:
+            nxt = np.array(solver.solve(pin.SE3(held, point), seed_q=q, options=exact).q)
+        except IkFailedError:
+            return None
+        if np.max(np.abs(nxt[idx] - q[idx])) > MAX_JOINT_STEP:
+            return None
+        q = nxt
+    return q
+
+
+def _joint_goals(model: RobotModel, group: str, states: Sequence[np.ndarray], keep: int
+                 ) -> tuple[JointGoal, ...]:
+    """Up to ``keep`` distinct states as joint goals of ``group``, in order."""
+    idx = model.group(group).joint_indices
+    names = model.group(group).joint_names
+    goals: list[JointGoal] = []
+    chosen: list[np.ndarray] = []
+    for q in states:
+        if any(np.max(np.abs(q[idx] - c[idx])) < 1e-3 for c in chosen):
+            continue
+        chosen.append(q)
+        goals.append(JointGoal(dict(zip(names, q[idx]))))
+        if len(goals) >= keep:
+            break
+    return tuple(goals)
+
+
+def approximate_goals(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
+                      start: np.ndarray, seed: int, point: np.ndarray | None = None,
+                      lift: Lift | None = None, grasping: bool = False,
+                      keep: int = KEEP) -> tuple[JointGoal, ...]:
+    """Joint goals of ``group`` that put ``point`` (fixed in ``link``'s frame, m; default
+    its origin) where each wanted pose of ``link`` puts it, exactly, with ``link``'s
+    orientation as near that pose's as the arm allows (see the module docstring).
+
+    Args:
+        lift: for goals a straight move away from the wanted poses (a pre-grasp): maps
+            ``(index of the wanted pose, link pose reached there)`` to the world offset
+            (m) of the goal from that pose. The goals are then the states reached there
+            with the *same* orientation, so that the straight move between the two can
+            hold it; where no such state exists, the wanted poses are moved by the offset
+            and approximated as they are.
+        grasping: the wanted poses are grasps: a turn about their closing axis (y) keeps
+            the fingers flat on the same faces, so it counts for a tenth only (an arm
+            whose pitch cannot match closes across its own plane, not along it).
+
+    Raises:
+        IkFailedError: no wanted position is within reach.
+    """
+    if lift is None:
+        states = [a.q for a in approximate(model, group, link, wanted, start, seed, point,
+                                           grasping)]
+    else:
+        states = _lifted(model, group, link, wanted, start, seed, point, lift, grasping)
+    return _joint_goals(model, group, states, keep)
+
+
+def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
+            start: np.ndarray, seed: int, point: np.ndarray | None, lift: Lift,
+            grasping: bool) -> list[np.ndarray]:
+    """States a lift away from the approximations of ``wanted``, orientation unchanged,
+    joined to them by a straight line the arm can follow holding that orientation."""
+    solver = IkSolver(model, group, frame=link)
+    fk = _Frames(model, link)
+    out: list[np.ndarray] = []
+    for item in approximate(model, group, link, wanted, start, seed, point, grasping):
+        if len(out) >= KEEP:
+            break
+        reached = fk(item.q)
+        away = pin.SE3(reached.rotation, reached.translation
+                       + np.asarray(lift(item.wanted, reached), dtype=float))
+        q = _follows(solver, item.q, reached, away, rotation=reached.rotation)
+        if q is not None:
+            out.append(q)
+    if out:
+        return out
+    moved = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
+             for i, p in enumerate(wanted)]
+    return [a.q for a in approximate(model, group, link, moved, start, seed, point, grasping)]
+
+
+def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
+                start: np.ndarray, seed: int, point: np.ndarray | None = None,
+                grasping: bool = False) -> list[Approximation]:
+    """Every candidate of :func:`approximate_goals`, nearest the wanted orientation first
+    (``angle``: see :func:`orientation_error`).
+
+    Raises:
+        IkFailedError: no wanted position is within reach.
+    """
+    offset = np.zeros(3) if point is None else np.asarray(point, dtype=float)
+    solver = IkSolver(model, group, frame=link)
+    fk = _Frames(model, link)
+    roll = wrist_roll(model, group, link, np.asarray(start, dtype=float))
+
+    def error(q: np.ndarray, pose: pin.SE3) -> float:
+        return orientation_error(fk(q), pose, grasping)
+
+    sample = IkOptions(position_only=True, num_solutions=SAMPLES, seed=seed,
+                       timeout=_IK_TIMEOUT, attempts=20 * SAMPLES)
+    local = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
+    exact = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
+    out: list[Approximation] = []
+    failure: IkFailedError | None = None
+    targets: dict[tuple[float, ...], list[int]] = {}
+    for i, pose in enumerate(wanted):
+        spot = pose.translation + pose.rotation @ offset
+        targets.setdefault(tuple(np.round(spot, 6)), []).append(i)
+    for spot, members in targets.items():
+        goal = np.array(spot)
+        try:
+            solutions = solver.solve_all(goal - _offset(fk, start, offset), seed_q=start,
+                                         options=sample)
+        except IkFailedError as exc:
+            failure = exc
+            continue
+        for i in members:
+            aimed = [q for q in (_aimed(fk, roll, error, s.q, wanted[i], goal, offset,
+                                        solver, local) for s in solutions) if q is not None]
+            out += [Approximation(q, i, error(q, wanted[i])) for q in aimed]
+            if not aimed:
+                continue
+            # Where the wanted pose is reachable exactly, a local full-pose solve from the
+            # nearest approximation finds it.
+            best = min(aimed, key=lambda q: error(q, wanted[i]))
+            try:
+                q = np.array(solver.solve(wanted[i], seed_q=best, options=exact).q)
+            except IkFailedError:
+                continue
+            out.append(Approximation(q, i, error(q, wanted[i])))
+    if not out:
+        if failure is not None:
+            raise failure
+        raise IkFailedError(f"no state of group {group!r} puts the point "
+                            f"{np.round(offset, 4).tolist()} of {link!r} at "
+                            f"{np.round(next(iter(targets)), 4).tolist()} (m, world)")
+    out.sort(key=lambda a: a.angle)
+    return out
+
+
+def _offset(fk: _Frames, q: np.ndarray, offset: np.ndarray) -> np.ndarray:
+    """``offset`` (link frame) in world axes at state ``q``."""
+    return fk(q).rotation @ offset if offset.any() else np.zeros(3)
+
+
+def _aimed(fk: _Frames, roll: tuple[int, float] | None, error: Callable[..., float],
+           q: np.ndarray, pose: pin.SE3, goal: np.ndarray, offset: np.ndarray,
+           solver: IkSolver, local: IkOptions) -> np.ndarray | None:
+    """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``."""
+    q = np.array(q, dtype=float)
+    for _ in range(FIXED_POINT_ROUNDS):
+        if roll is not None:
+            q = _rolled(fk, roll, error, q, pose, solver.model)
+        if not offset.any():
+            return q
+        try:
+            q = np.array(solver.solve(goal - _offset(fk, q, offset), seed_q=q, options=local).q)
+        except IkFailedError:
+            return None
+    miss = np.linalg.norm(fk(q).translation + _offset(fk, q, offset) - goal)
+    return q if miss < 1e-4 else None
+
+
+def _rolled(fk: _Frames, roll: tuple[int, float], error: Callable[..., float],
+            q: np.ndarray, pose: pin.SE3, model: RobotModel) -> np.ndarray:
+    """``q`` with the wrist roll turned so the frame's y axis is nearest ``pose``'s (of the
+    two closing senses, the one within the joint's limits and nearer the whole pose)."""
+    index, sense = roll
+    now = fk(q).rotation
+    z, y = now[:, 2], now[:, 1]
+    want = pose.rotation[:, 1] - (pose.rotation[:, 1] @ z) * z
+    if np.linalg.norm(want) < 1e-6:
+        return q
+    turn = math.atan2(float(np.cross(y, want) @ z), float(y @ want))
+    lower, upper = model.lower[index], model.upper[index]
+    best, best_error = q, math.inf
+    for extra in (0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi):
+        value = q[index] + sense * (turn + extra)
+        if not lower - 1e-9 <= value <= upper + 1e-9:
+            continue
+        candidate = q.copy()
+        candidate[index] = min(max(value, lower), upper)
+        found = error(candidate, pose)
+        if found < best_error:
+            best, best_error = candidate, found
+    return best
+
+
+def orientation_error(reached: pin.SE3, wanted: pin.SE3, grasping: bool = False) -> float:
+    """How far ``reached``'s orientation is from ``wanted``'s (rad): the angle of the
+    rotation between them; for a grasp, its turn about the wanted closing axis (y) counts
+    for ``FREE_TURN_WEIGHT`` only."""
+    turn = pin.log3(wanted.rotation.T @ reached.rotation)
+    if not grasping:
+        return float(np.linalg.norm(turn))
+    return float(math.hypot(turn[0], turn[2]) + FREE_TURN_WEIGHT * abs(turn[1]))
