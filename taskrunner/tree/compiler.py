@@ -194,6 +194,14 @@ def _arm(step: StepNode, ctx: TaskContext, name: str) -> str:
     return name
 
 
+def _position_only(target) -> bool | None:  # type: ignore[no-untyped-def]
+    """As written, else True for a pose written without an orientation (reach the point),
+    else None (the group's IK setting decides)."""
+    if target.position_only is not None:
+        return bool(target.position_only)
+    return None if target.has_orientation else True
+
+
 def _go_goal(step: GoStep):  # type: ignore[no-untyped-def]
     if step.to is not None:
         goal = NamedGoal(step.to)
@@ -202,7 +210,7 @@ def _go_goal(step: GoStep):  # type: ignore[no-untyped-def]
     else:
         target = step.pose
         assert target is not None
-        goal = PoseGoal(target.to_pose(), link=target.link, position_only=target.position_only)
+        goal = PoseGoal(target.to_pose(), link=target.link, position_only=_position_only(target))
     return lambda ctx: goal
 
 
@@ -225,13 +233,13 @@ def _move(step: MoveStep, ctx: TaskContext) -> Behaviour:
         return Pose.from_se3(moved)
 
     if step.cartesian:
-        position_only = step.pose.position_only if step.pose is not None else None
+        position_only = _position_only(step.pose) if step.pose is not None else None
         return MoveStraight(name, where, ctx, group, lambda c: [target(c)], link,
                             CartesianOptions(position_only=position_only),
                             timing_options(step, ctx))
     return MoveToGoal(name, where, ctx, group,
                       lambda c: PoseGoal(target(c), link=link,
-                                         position_only=step.pose.position_only
+                                         position_only=_position_only(step.pose)
                                          if step.pose is not None else None),
                       planner_options(step), timing_options(step, ctx))
 
