@@ -1,0 +1,74 @@
+"""The FastAPI application: :func:`create_app` assembles the routers around one
+:class:`~api.runs.RunManager`, built in the lifespan and closed with it."""
+
+from __future__ import annotations
+
+import logging
+import secrets
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI
+
+from api.cells import CellRegistry
+from api.handlers import BodyLimit, add_error_handlers
+from api.routers import cells, health, plan, runs, tasks
+from api.runs import RunManager
+from api.settings import Settings
+from api.store import RunStore
+
+__all__ = ["create_app", "new_token"]
+
+log = logging.getLogger("taskrunner.api")
+
+
+def new_token() -> str:
+    """A fresh random bearer token (URL-safe, 32 bytes of entropy)."""
+    return secrets.token_urlsafe(32)
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    """The API app.
+
+    With ``settings.auth`` on and no token set, a token is made here and kept in
+    ``app.state.token`` (the CLI prints it); with ``auth`` off, no endpoint needs one.
+    The run database is opened, and rows a previous server left running are marked
+    interrupted, when the app starts; at shutdown every run in flight is cancelled and
+    recorded as interrupted, the backends and planning workers are closed.
+    """
+    settings = settings or Settings.from_env()
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        store = RunStore(settings.db_path)
+        marked = store.mark_interrupted()
+        if marked:
+            log.warning("%d run(s) left in flight by a previous server marked interrupted",
+                        marked)
+        registry = CellRegistry(settings.cells_dir,
+                                {"sim": settings.sim_speed, "mock": settings.mock_speed},
+                                settings.planner)
+        manager = RunManager(registry, store, tick_hz=settings.tick_hz)
+        app.state.cells, app.state.manager, app.state.store = registry, manager, store
+        try:
+            yield
+        finally:
+            manager.shutdown(settings.shutdown_timeout_s)
+            registry.close()
+            store.close()
+
+    app = FastAPI(
+        title="taskrunner",
+        version="0.1.0",
+        description="Run robot-cell tasks, follow them live, cancel them, check them, plan "
+                    "motions. Endpoints that move a robot or change state need the bearer "
+                    "token.",
+        lifespan=lifespan,
+    )
+    app.state.settings = settings
+    app.state.token = (settings.token or new_token()) if settings.auth else None
+    for module in (health, runs, tasks, cells, plan):
+        app.include_router(module.router)
+    add_error_handlers(app)
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    return app

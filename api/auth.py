@@ -1,0 +1,39 @@
+"""Bearer-token checks: every endpoint that moves a robot or changes state needs the token;
+reads need it when ``read_requires_auth`` is set; ``auth`` off runs open."""
+
+from __future__ import annotations
+
+import secrets
+
+from fastapi import Depends, HTTPException, Request, status
+from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
+
+__all__ = ["require_read", "require_write"]
+
+_bearer = HTTPBearer(auto_error=False, description="the server's token (printed at start)")
+
+
+def _check(request: Request, credentials: HTTPAuthorizationCredentials | None) -> None:
+    token: str | None = request.app.state.token
+    if token is None:  # running open (--no-auth)
+        return
+    given = credentials.credentials if credentials is not None else ""
+    if not secrets.compare_digest(given.encode(), token.encode()):
+        raise HTTPException(
+            status.HTTP_401_UNAUTHORIZED,
+            "a valid bearer token is required (Authorization: Bearer <token>)"
+            if credentials is None else "invalid bearer token",
+            headers={"WWW-Authenticate": "Bearer"})
+
+
+def require_write(request: Request,
+                  credentials: HTTPAuthorizationCredentials | None = Depends(_bearer)) -> None:
+    """Dependency of endpoints that move a robot or change state."""
+    _check(request, credentials)
+
+
+def require_read(request: Request,
+                 credentials: HTTPAuthorizationCredentials | None = Depends(_bearer)) -> None:
+    """Dependency of read endpoints: checks the token only if reads require it."""
+    if request.app.state.settings.read_requires_auth:
+        _check(request, credentials)

@@ -1,0 +1,23 @@
+"""Getting the app's shared objects into endpoints (``Depends``)."""
+
+from __future__ import annotations
+
+from fastapi import Request
+
+from api.cells import CellRegistry
+from api.runs import RunManager
+from api.settings import Settings
+
+__all__ = ["get_cells", "get_manager", "get_settings"]
+
+
+def get_settings(request: Request) -> Settings:
+    return request.app.state.settings  # type: ignore[no-any-return]
+
+
+def get_manager(request: Request) -> RunManager:
+    return request.app.state.manager  # type: ignore[no-any-return]
+
+
+def get_cells(request: Request) -> CellRegistry:
+    return request.app.state.cells  # type: ignore[no-any-return]

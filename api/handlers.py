@@ -1,0 +1,164 @@
+"""Errors to HTTP answers, in one place, and the request-body size limit.
+
+======================  ====  ==========================================================
+error                   code  body
+======================  ====  ==========================================================
+InputError (TaskSpec,   422   ``detail`` (the message), ``location`` (file:line) and, for
+YamlError, robot …)           a task, ``problems`` (each with its file:line)
+UnknownNameError        422   ``detail`` names the unknown name and the known ones
+PlanningError           422   ``detail``: why no motion could be produced
+ArmBusyError            409   ``detail`` names the run holding the arm
+RunNotFinishedError     409   cancelling a run that has ended
+RunNotFoundError        404
+CellNotFoundError       404
+other TaskrunnerError   422
+body too large          413
+======================  ====  ==========================================================
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Awaitable, Callable, MutableMapping
+from typing import Any
+
+from fastapi import FastAPI, Request
+from fastapi.responses import JSONResponse
+
+from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
+
+from api.cells import CellNotFoundError
+from api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
+
+__all__ = ["BodyLimit", "add_error_handlers", "problems_of"]
+
+Scope = MutableMapping[str, Any]
+Message = MutableMapping[str, Any]
+Receive = Callable[[], Awaitable[Message]]
+Send = Callable[[Message], Awaitable[None]]
+
+
+def problems_of(exc: InputError) -> list[dict[str, Any]]:
+    """The problems of a task error, each as file, line, message and text."""
+    from taskrunner.tasks.problem import Problem
+
+    found = getattr(exc, "problems", None) or [Problem(exc.path, exc.line, exc.reason)]
+    return [problem_out(p) for p in found]
+
+
+def problem_out(problem: Any) -> dict[str, Any]:
+    return {"file": str(problem.path) if problem.path is not None else None,
+            "line": problem.line, "message": problem.message, "text": str(problem)}
+
+
+def _answer(code: int, detail: Any, **extra: Any) -> JSONResponse:
+    return JSONResponse({"detail": detail, **extra}, status_code=code)
+
+
+async def _input_error(request: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, InputError)
+    return _answer(422, str(exc), location=exc.location or None, problems=problems_of(exc))
+
+
+async def _unknown_name(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(422, str(exc))
+
+
+async def _planning_error(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(422, f"planning failed: {exc}")
+
+
+async def _taskrunner_error(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(422, str(exc))
+
+
+async def _arm_busy(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(409, str(exc))
+
+
+async def _not_finished(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(409, str(exc))
+
+
+async def _not_found(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(404, str(exc))
+
+
+async def _value_error(request: Request, exc: Exception) -> JSONResponse:
+    return _answer(422, str(exc))
+
+
+def add_error_handlers(app: FastAPI) -> None:
+    """One handler per domain error class (the most specific class wins)."""
+    app.add_exception_handler(InputError, _input_error)
+    app.add_exception_handler(UnknownNameError, _unknown_name)
+    app.add_exception_handler(PlanningError, _planning_error)
+    app.add_exception_handler(TaskrunnerError, _taskrunner_error)
+    app.add_exception_handler(ArmBusyError, _arm_busy)
+    app.add_exception_handler(RunNotFinishedError, _not_finished)
+    app.add_exception_handler(RunNotFoundError, _not_found)
+    app.add_exception_handler(CellNotFoundError, _not_found)
+    app.add_exception_handler(ValueError, _value_error)
+
+
+class BodyLimit:
+    """ASGI middleware: refuse request bodies over ``max_bytes`` with 413, whether the
+    client declares the length or streams the body."""
+
+    def __init__(self, app: Callable[..., Awaitable[None]], max_bytes: int) -> None:
+        self.app = app
+        self.max_bytes = max_bytes
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        headers = dict(scope.get("headers") or [])
+        declared = headers.get(b"content-length")
+        if declared is not None:
+            try:
+                too_big = int(declared) > self.max_bytes
+            except ValueError:
+                await self._refuse(send, 400, "invalid Content-Length")
+                return
+            if too_big:
+                await self._refuse(send, 413, self._message())
+                return
+        received = 0
+        started = False
+
+        async def limited_receive() -> Message:
+            nonlocal received
+            message = await receive()
+            if message["type"] == "http.request":
+                received += len(message.get("body", b""))
+                if received > self.max_bytes:
+                    raise _TooLarge
+            return message
+
+        async def tracking_send(message: Message) -> None:
+            nonlocal started
+            if message["type"] == "http.response.start":
+                started = True
+            await send(message)
+
+        try:
+            await self.app(scope, limited_receive, tracking_send)
+        except _TooLarge:
+            if not started:
+                await self._refuse(send, 413, self._message())
+
+    def _message(self) -> str:
+        return f"request body must be at most {self.max_bytes} bytes"
+
+    @staticmethod
+    async def _refuse(send: Send, code: int, detail: str) -> None:
+        body = json.dumps({"detail": detail}).encode()
+        await send({"type": "http.response.start", "status": code,
+                    "headers": [(b"content-type", b"application/json"),
+                                (b"content-length", str(len(body)).encode())]})
+        await send({"type": "http.response.body", "body": body})
+
+
+class _TooLarge(Exception):
+    pass

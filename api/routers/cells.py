@@ -1,0 +1,73 @@
+"""``/cells``: the cells, their robots, groups, poses and objects, and their live state."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import yaml
+from fastapi import APIRouter, Depends
+
+from api.auth import require_read
+from api.cells import BACKENDS, CellRegistry
+from api.dependencies import get_cells, get_manager
+from api.runs import RunManager
+from api.schemas import CellDetail, CellState, CellSummary, ErrorBody
+
+__all__ = ["router"]
+
+router = APIRouter(prefix="/cells", tags=["cells"], dependencies=[Depends(require_read)])
+_ERRORS = {401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 422: {"model": ErrorBody}}
+
+
+@router.get("", response_model=list[CellSummary], responses=_ERRORS)
+def list_cells(cells: Annotated[CellRegistry, Depends(get_cells)]) -> list[CellSummary]:
+    """The cell files of the cells folder (read without loading their robots)."""
+    out = []
+    for cell_id in cells.ids():
+        try:
+            with open(cells.cells_dir / f"{cell_id}.yaml", encoding="utf-8") as f:
+                doc = yaml.safe_load(f)
+        except (OSError, yaml.YAMLError):
+            doc = None
+        doc = doc if isinstance(doc, dict) else {}
+        out.append(CellSummary(id=cell_id, name=str(doc.get("name", cell_id)),
+                               description=str(doc.get("description", ""))))
+    return out
+
+
+@router.get("/{cell_id}", response_model=CellDetail, responses=_ERRORS)
+def get_cell(cell_id: str, cells: Annotated[CellRegistry, Depends(get_cells)]) -> CellDetail:
+    """A cell's robots (placement in the world, m), groups with their named poses, and
+    fixed objects."""
+    cell = cells.by_id(cell_id).cell
+    model = cell.model
+    return CellDetail(
+        id=cell_id, name=cell.name, description=cell.description,
+        robots=[{"name": i.name, "prefix": i.prefix,  # type: ignore[misc]
+                 "xyz": [float(v) for v in i.base.translation]} for i in model.instances],
+        groups=[{"name": g.name, "joints": list(g.joint_names),  # type: ignore[misc]
+                 "tip_link": g.tip_link, "poses": model.named_state_names(g.name)}
+                for g in model.groups.values()],
+        objects=[{"name": o.name, "shape": type(o.shape).__name__.lower(),  # type: ignore[misc]
+                  "frame": o.frame, "xyz": [float(v) for v in o.pose.translation]}
+                 for o in cell.objects])
+
+
+@router.get("/{cell_id}/state", response_model=CellState, responses=_ERRORS)
+def cell_state(cell_id: str, cells: Annotated[CellRegistry, Depends(get_cells)],
+               manager: Annotated[RunManager, Depends(get_manager)],
+               backend: str = "sim") -> CellState:
+    """Joint positions (rad or m) as the cell's backend reports them now, the objects
+    attached to its links (in the newest run's scene), and the runs in flight."""
+    if backend not in BACKENDS:
+        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
+    session = cells.by_id(cell_id)
+    state = session.backend(backend).joint_state()
+    running = manager.running_on(session)
+    scene = running[-1].runner.scene if running else session.last_scene
+    attached = [] if scene is None else [
+        {"name": o.name, "link": o.attached_to} for o in scene.attached_objects()]
+    return CellState(id=cell_id, backend=backend,
+                     joints={n: float(v) for n, v in zip(state.names, state.positions)},
+                     attached=attached,  # type: ignore[arg-type]
+                     running=[r.run_id for r in running])

@@ -1,0 +1,151 @@
+"""``/runs``: start, list, inspect, cancel runs, and follow their events live (SSE)."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from collections.abc import AsyncIterator
+from typing import Annotated
+
+from fastapi import APIRouter, Depends, Header, HTTPException, Query, Request, Response, status
+from fastapi.responses import StreamingResponse
+
+from taskrunner.runtime.events import RunEvent
+from taskrunner.runtime.records import RunRecord
+
+from api.auth import require_read, require_write
+from api.cells import CellRegistry
+from api.dependencies import get_cells, get_manager, get_settings
+from api.runs import LiveRun, RunManager
+from api.schemas import ErrorBody, RunAccepted, RunCreate, RunDetail, RunStatus, RunSummary
+from api.settings import Settings
+from api.tasksource import load_request_task
+
+__all__ = ["router"]
+
+router = APIRouter(prefix="/runs", tags=["runs"])
+
+_KEEPALIVE_S = 10.0  # an idle stream sends a comment this often, so proxies keep it open
+_ERRORS = {401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
+           413: {"model": ErrorBody}, 422: {"model": ErrorBody}}
+
+
+@router.post("", status_code=status.HTTP_202_ACCEPTED, response_model=RunAccepted,
+             dependencies=[Depends(require_write)], responses=_ERRORS)
+def start_run(body: RunCreate, response: Response,
+              settings: Annotated[Settings, Depends(get_settings)],
+              manager: Annotated[RunManager, Depends(get_manager)],
+              cells: Annotated[CellRegistry, Depends(get_cells)]) -> RunAccepted:
+    """Start a task (a file of the tasks folder, or inline YAML) on a cell's backend.
+
+    Answers 202 at once with the run id; the run goes on in the background. A run that
+    needs an arm (joints) a run in flight moves is refused with 409: runs are not queued.
+    """
+    spec, task_file, text = load_request_task(settings.tasks_dir, body.task, body.yaml,
+                                              body.parameters)
+    if body.cell is not None:
+        spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
+    live = manager.start(spec, body.backend, seed=body.seed, task_text=text,
+                         task_file=task_file)
+    url = f"/runs/{live.run_id}"
+    response.headers["Location"] = url
+    return RunAccepted(run_id=live.run_id, status="running", url=url)
+
+
+@router.get("", response_model=list[RunSummary], dependencies=[Depends(require_read)],
+            responses=_ERRORS)
+def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
+              status: RunStatus | None = None,
+              limit: Annotated[int, Query(ge=1, le=1000)] = 100) -> list[RunSummary]:
+    """Runs, newest first, optionally of one status."""
+    return [RunSummary(**row) for row in manager.store.summaries(status, limit)]  # type: ignore[arg-type]
+
+
+@router.get("/{run_id}", response_model=RunDetail, dependencies=[Depends(require_read)],
+            responses=_ERRORS)
+def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> RunDetail:
+    """A run: status, the node running now (with its file:line), the tree, the events so
+    far and the result."""
+    live = manager.live(run_id)
+    if live is not None:
+        return _detail(live.record, live)
+    return _detail(manager.record(run_id), None)
+
+
+@router.post("/{run_id}/cancel", status_code=status.HTTP_202_ACCEPTED,
+             response_model=RunAccepted, dependencies=[Depends(require_write)],
+             responses=_ERRORS)
+def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> RunAccepted:
+    """Stop a run: the motion stops where it is and the run ends as cancelled (409 if it
+    has already ended). Follow its events or poll it to see it end."""
+    live = manager.cancel(run_id)
+    return RunAccepted(run_id=run_id, status=live.record.status,  # type: ignore[arg-type]
+                       url=f"/runs/{run_id}")
+
+
+@router.get("/{run_id}/events", dependencies=[Depends(require_read)],
+            responses={**_ERRORS, 200: {"content": {"text/event-stream": {}},
+                                        "description": "the run's events, as Server-Sent "
+                                                       "Events, to the end of the run"}})
+async def run_events(run_id: str, request: Request,
+                     manager: Annotated[RunManager, Depends(get_manager)],
+                     settings: Annotated[Settings, Depends(get_settings)],
+                     last_event_id: Annotated[str | None, Header()] = None,
+                     after: Annotated[int | None, Query(ge=0)] = None) -> StreamingResponse:
+    """The run's events as Server-Sent Events (``id`` = the event's seq, ``event`` = its
+    kind, ``data`` = the event as JSON), from the first one or from after
+    ``Last-Event-ID`` (or ``?after=N``); the stream ends after ``run_finished``."""
+    start = after or 0
+    if last_event_id is not None:
+        try:
+            start = int(last_event_id)
+        except ValueError:
+            raise HTTPException(422, f"'Last-Event-ID' must be an event seq, an integer "
+                                     f"(got {last_event_id!r})") from None
+        if start < 0:
+            raise HTTPException(422, f"'Last-Event-ID' must be >= 0 (got {start})")
+    manager.record(run_id)  # 404 before the stream starts
+    return StreamingResponse(_stream(manager, run_id, start, settings.sse_poll_s, request),
+                             media_type="text/event-stream",
+                             headers={"Cache-Control": "no-cache", "X-Accel-Buffering": "no"})
+
+
+async def _stream(manager: RunManager, run_id: str, after: int, poll: float,
+                  request: Request) -> AsyncIterator[str]:
+    idle = 0.0
+    while True:
+        events, more = manager.events_after(run_id, after)
+        for event in events:
+            after = event.seq
+            yield _sse(event)
+            if event.kind == "run_finished":
+                return
+        if not more:
+            if not events:
+                return
+            continue  # events may have arrived between the read and the end
+        if events:
+            idle = 0.0
+        elif idle >= _KEEPALIVE_S:
+            idle = 0.0
+            yield ": keepalive\n\n"
+        if await request.is_disconnected():
+            return
+        await asyncio.sleep(poll)
+        idle += poll
+
+
+def _sse(event: RunEvent) -> str:
+    return f"id: {event.seq}\nevent: {event.kind}\ndata: {json.dumps(event.as_dict())}\n\n"
+
+
+def _detail(record: RunRecord, live: LiveRun | None) -> RunDetail:
+    current = live.current() if live is not None else None
+    return RunDetail(
+        run_id=record.run_id, status=record.status, task=record.task,  # type: ignore[arg-type]
+        cell=record.cell, backend=record.backend, started=record.started,
+        finished=record.finished, exit_code=record.exit_code, error=record.error,
+        task_file=record.task_file, parameters=dict(record.parameters),
+        current=None if current is None else {"node": current[0], "location": current[1]},
+        tree=live.tree() if live is not None else None,
+        events=[e.as_dict() for e in list(record.events)])  # type: ignore[misc]

@@ -1,0 +1,287 @@
+"""Runs in flight: each on its own thread, on its cell's shared backend, recorded in SQLite.
+
+**Arms in use: refused, not queued.** A run declares the joints it can move (the groups
+its steps move, :func:`~taskrunner.tasks.names.moved_groups`, and their joints). A run
+whose joints overlap those of a run in flight on the same cell is refused with
+:class:`ArmBusyError` (HTTP 409, naming the run that holds them); runs on disjoint joints
+run at once. Refusing keeps the outcome of a request immediate and predictable: the
+caller knows at once whether its run started and can retry or cancel the other run,
+and a run never starts minutes later, when the situation it was meant for is gone.
+
+Runs on different arms of one cell share the backend, so each sees the other's arm where
+the controller reports it at every motion's start and end; the planner does not predict
+where the other arm will be during a motion.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from taskrunner.errors import TaskrunnerError
+from taskrunner.runtime.events import EventLog, RunEvent
+from taskrunner.runtime.records import RunRecord
+from taskrunner.runtime.runner import RunOptions, Runner
+from taskrunner.tasks import check_names, raise_for_problems
+from taskrunner.tasks.names import moved_groups
+from taskrunner.tasks.spec import TaskSpec
+
+from api.cells import BACKENDS, CellRegistry, CellSession
+from api.store import RunStore
+
+__all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
+
+# Progress is written to the database at these events (besides the start and the end).
+_SAVE_AT = ("run_started", "node_finished")
+
+
+class RunNotFoundError(LookupError):
+    """No run of that id, in flight or recorded."""
+
+    def __init__(self, run_id: str) -> None:
+        self.run_id = run_id
+        super().__init__(f"unknown run {run_id!r}")
+
+
+class RunNotFinishedError(RuntimeError):
+    """Cancelling a run that has already ended."""
+
+
+class ArmBusyError(RuntimeError):
+    """A run would move joints that a run in flight moves."""
+
+    def __init__(self, holder: str, joints: list[str]) -> None:
+        self.holder = holder
+        self.joints = joints
+        shown = ", ".join(repr(j) for j in joints[:8])
+        super().__init__(f"run {holder!r} is moving joint(s) {shown} of this cell; wait for "
+                         "it to end or cancel it (runs that need an arm in use are refused, "
+                         "not queued)")
+
+
+@dataclass
+class LiveRun:
+    """A run this server started (kept after it ends, for its final tree)."""
+
+    runner: Runner
+    session: CellSession
+    joints: frozenset[str]
+    thread: threading.Thread | None = None
+    final_tree: str | None = None
+    planner: Any = None
+    done: threading.Event = field(default_factory=threading.Event)
+
+    @property
+    def run_id(self) -> str:
+        return self.runner.record.run_id
+
+    @property
+    def record(self) -> RunRecord:
+        return self.runner.record
+
+    @property
+    def events(self) -> EventLog:
+        return self.runner.events
+
+    def tree(self) -> str:
+        return self.final_tree if self.final_tree is not None else self.runner.snapshot()
+
+    def current(self) -> tuple[str, str | None] | None:
+        if self.done.is_set():
+            return None
+        leaf = self.runner.current_leaf()
+        return None if leaf is None else (leaf.name, leaf.location)
+
+
+class RunManager:
+    """Starts runs, refuses those whose arms are in use, records every run."""
+
+    def __init__(self, cells: CellRegistry, store: RunStore, tick_hz: float = 100.0) -> None:
+        self.cells = cells
+        self.store = store
+        self.tick_hz = tick_hz
+        self._runs: dict[str, LiveRun] = {}
+        # Joints claimed per run in flight (or being built): (session, joints, run id).
+        self._claims: dict[int, tuple[CellSession, frozenset[str], str]] = {}
+        self._lock = threading.Lock()
+        self._stopping = False
+
+    # ----------------------------------------------------------------- starting
+    def start(self, spec: TaskSpec, backend: str, seed: int = 0, task_text: str | None = None,
+              task_file: str | None = None) -> LiveRun:
+        """Check ``spec``'s names against its cell, claim its joints and start it.
+
+        Raises:
+            TaskSpecError: the task names what its cell does not have (every problem).
+            YamlError, RobotDescriptionError: the cell is invalid.
+            ArmBusyError: a run in flight moves some of the same joints.
+        """
+        if backend not in BACKENDS:
+            raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
+        session = self.cells.session(spec.cell)
+        raise_for_problems(check_names(spec, session.cell))
+        joints = self._joints(spec, session)
+        claim = object()
+        with self._lock:
+            if self._stopping:
+                raise RuntimeError("the server is shutting down")
+            self._claim_check(session, joints)
+            self._claims[id(claim)] = (session, joints, "(starting)")
+        # Build the run outside the lock (scene and tree take a while), its joints claimed.
+        planner = None
+        try:
+            machine = session.backend(backend)
+            planner = session.take_planner()
+            runner = Runner(spec, session.cell, machine, planner,
+                            RunOptions(tick_hz=self.tick_hz, seed=seed, backend_name=backend),
+                            events=EventLog())
+        except BaseException:
+            with self._lock:
+                self._claims.pop(id(claim), None)
+            if planner is not None:
+                session.give_planner(planner)
+            raise
+        live = LiveRun(runner, session, joints, planner=planner)
+        if task_text is not None:
+            runner.record.task_text = task_text
+        if task_file is not None:
+            runner.record.task_file = task_file
+        runner.record.cell = self.cells.id_of(session.key)
+        with self._lock:
+            self._claims.pop(id(claim), None)
+            self._claims[id(live)] = (session, joints, live.run_id)
+            self._runs[live.run_id] = live
+        self.store.save(live.record)
+        runner.events.subscribe(lambda event: self._progress(live, event))
+        live.thread = threading.Thread(target=self._run, args=(live,), daemon=True,
+                                       name=f"run-{live.run_id}")
+        live.thread.start()
+        return live
+
+    def _joints(self, spec: TaskSpec, session: CellSession) -> frozenset[str]:
+        model = session.cell.model
+        groups: list[str] = []
+        for step in spec.steps:
+            groups += moved_groups(step, model)
+        return frozenset(j for g in dict.fromkeys(groups) for j in model.group(g).joint_names)
+
+    def _claim_check(self, session: CellSession, joints: frozenset[str]) -> None:
+        for other, held, holder in self._claims.values():
+            shared = sorted(joints & held) if other is session else []
+            if shared:
+                raise ArmBusyError(holder, shared)
+
+    def _progress(self, live: LiveRun, event: RunEvent) -> None:
+        if event.kind in _SAVE_AT:
+            try:
+                self.store.save(live.record)
+            except Exception:  # noqa: BLE001 - a failed progress write must not kill the run
+                pass
+
+    def _run(self, live: LiveRun) -> None:
+        try:
+            live.runner.run()
+        except TaskrunnerError as exc:  # the runner turns ours into failures; be sure
+            live.record.status, live.record.error = "failed", str(exc)
+        finally:
+            if self._stopping and live.record.status in ("cancelled", "running"):
+                live.record.status = "interrupted"
+                live.record.error = "the server stopped while the run was in flight"
+            live.final_tree = live.runner.snapshot()
+            live.session.last_scene = live.runner.scene
+            live.session.give_planner(live.planner)
+            self.store.save(live.record)
+            with self._lock:
+                self._claims.pop(id(live), None)
+            live.done.set()
+
+    # ----------------------------------------------------------------- queries
+    def live(self, run_id: str) -> LiveRun | None:
+        with self._lock:
+            return self._runs.get(run_id)
+
+    def in_flight(self) -> int:
+        """How many runs are in flight."""
+        with self._lock:
+            return sum(not r.done.is_set() for r in self._runs.values())
+
+    def running_on(self, session: CellSession) -> list[LiveRun]:
+        with self._lock:
+            return [r for r in self._runs.values()
+                    if r.session is session and not r.done.is_set()]
+
+    def record(self, run_id: str) -> RunRecord:
+        """The record of ``run_id``: live if this server runs it, else from the database.
+
+        Raises:
+            RunNotFoundError: no such run.
+        """
+        live = self.live(run_id)
+        if live is not None:
+            return live.record
+        record = self.store.load(run_id)
+        if record is None:
+            raise RunNotFoundError(run_id)
+        return record
+
+    def events_after(self, run_id: str, after: int) -> tuple[list[RunEvent], bool]:
+        """Events with ``seq > after`` and whether more may come."""
+        live = self.live(run_id)
+        if live is not None:
+            finished = live.done.is_set()
+            return live.events.events(after), not finished
+        return [e for e in self.record(run_id).events if e.seq > after], False
+
+    # ----------------------------------------------------------------- control
+    def cancel(self, run_id: str) -> LiveRun:
+        """Stop a run in flight: its motion stops where it is, it ends as cancelled.
+
+        Raises:
+            RunNotFoundError: no such run.
+            RunNotFinishedError: the run has already ended (the message says how).
+        """
+        live = self.live(run_id)
+        if live is None:
+            status = self.record(run_id).status
+            raise RunNotFinishedError(f"run {run_id!r} has already ended ({status})")
+        if live.done.is_set():
+            raise RunNotFinishedError(f"run {run_id!r} has already ended ({live.record.status})")
+        live.runner.cancel()
+        return live
+
+    def shutdown(self, timeout: float) -> None:
+        """Cancel every run in flight and record each as interrupted."""
+        with self._lock:
+            self._stopping = True
+            runs = [r for r in self._runs.values() if not r.done.is_set()]
+        for live in runs:
+            live.runner.cancel()
+        for live in runs:
+            if live.thread is not None:
+                live.thread.join(timeout)
+            if not live.done.is_set():  # stuck: record it all the same
+                live.record.status = "interrupted"
+                live.record.error = "the server stopped while the run was in flight"
+                self.store.save(live.record)
+
+
+def resolve_task_file(tasks_dir: Path, name: str) -> Path:
+    """The task file ``name`` (a plain file name, ``.yaml`` optional) in ``tasks_dir``.
+
+    Raises:
+        InputError: a path rather than a file name, or no such file.
+    """
+    from taskrunner.errors import InputError
+
+    if not name or "/" in name or "\\" in name or name.startswith("."):
+        raise InputError(f"'task' must be a file name in the tasks folder (got {name!r})")
+    path = tasks_dir / name
+    if not path.suffix:
+        path = path.with_suffix(".yaml")
+    if not path.is_file():
+        known = ", ".join(sorted(p.name for p in tasks_dir.glob("*.yaml"))) or "none"
+        raise InputError(f"'task' must name a task file of the tasks folder (got {name!r}; "
+                         f"known: {known})")
+    return path

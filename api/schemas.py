@@ -1,0 +1,215 @@
+"""Request and response bodies of the API (pydantic, unknown fields refused)."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+__all__ = [
+    "CellDetail", "CellState", "CellSummary", "CheckRequest", "CheckResponse", "ErrorBody",
+    "EventOut", "GroupOut", "Health", "ObjectOut", "PlanBody", "PlanResponse", "ProblemOut",
+    "RobotOut", "RunAccepted", "RunCreate", "RunDetail", "RunSummary", "TeachBody", "TeachResponse",
+]
+
+RunStatus = Literal["running", "succeeded", "failed", "cancelled", "interrupted"]
+MAX_YAML_CHARS = 200_000
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class _TaskSource(_Strict):
+    task: str | None = Field(default=None, max_length=255,
+                             description="a task file name in the tasks folder")
+    yaml: str | None = Field(default=None, max_length=MAX_YAML_CHARS,
+                             description="the task as inline YAML; relative paths start "
+                                         "from the tasks folder")
+    parameters: dict[str, Any] = Field(default_factory=dict,
+                                       description="overrides of the task's parameters")
+    seed: int = Field(default=0, ge=0, le=2**31 - 1)
+
+    @model_validator(mode="after")
+    def _one_source(self) -> _TaskSource:
+        if (self.task is None) == (self.yaml is None):
+            raise ValueError("give exactly one of 'task' (a file name) and 'yaml' (inline)")
+        return self
+
+
+class RunCreate(_TaskSource):
+    backend: Literal["sim", "mock"] = "sim"
+    cell: str | None = Field(default=None, max_length=255,
+                             description="run on this cell (an id of GET /cells) instead of "
+                                         "the task's own")
+
+
+class RunAccepted(_Strict):
+    run_id: str
+    status: RunStatus
+    url: str
+
+
+class EventOut(_Strict):
+    seq: int
+    time: float
+    kind: str
+    node: str | None = None
+    location: str | None = None
+    status: str | None = None
+    message: str = ""
+    data: dict[str, Any] = {}
+
+
+class RunSummary(_Strict):
+    run_id: str
+    status: RunStatus
+    task: str
+    cell: str
+    backend: str
+    started: str
+    finished: str | None = None
+    exit_code: int | None = None
+    error: str | None = None
+
+
+class CurrentNode(_Strict):
+    node: str
+    location: str | None = None
+
+
+class RunDetail(RunSummary):
+    task_file: str
+    parameters: dict[str, Any]
+    current: CurrentNode | None = None
+    tree: str | None = Field(default=None, description="the behaviour tree with each node's "
+                                                       "status (runs of this server only)")
+    events: list[EventOut]
+
+
+class ProblemOut(_Strict):
+    file: str | None
+    line: int | None
+    message: str
+    text: str = Field(description="file:line: message, as run-task check prints it")
+
+
+class CheckRequest(_TaskSource):
+    pass
+
+
+class CheckResponse(_Strict):
+    ok: bool
+    cell: str
+    steps: int
+    problems: list[ProblemOut]
+
+
+class ErrorBody(_Strict):
+    detail: Any
+    location: str | None = None
+    problems: list[ProblemOut] | None = None
+
+
+class RobotOut(_Strict):
+    name: str
+    prefix: str
+    xyz: list[float]
+
+
+class GroupOut(_Strict):
+    name: str
+    joints: list[str]
+    tip_link: str | None
+    poses: list[str]
+
+
+class ObjectOut(_Strict):
+    name: str
+    shape: str
+    frame: str
+    xyz: list[float]
+
+
+class CellSummary(_Strict):
+    id: str
+    name: str
+    description: str
+
+
+class CellDetail(CellSummary):
+    robots: list[RobotOut]
+    groups: list[GroupOut]
+    objects: list[ObjectOut]
+
+
+class AttachedOut(_Strict):
+    name: str
+    link: str
+
+
+class CellState(_Strict):
+    id: str
+    backend: str
+    joints: dict[str, float]
+    attached: list[AttachedOut]
+    running: list[str] = Field(description="ids of the runs in flight on this cell")
+
+
+class PoseTarget(_Strict):
+    xyz: list[float] = Field(min_length=3, max_length=3)
+    rpy: list[float] = Field(default=[0.0, 0.0, 0.0], min_length=3, max_length=3)
+    frame: str = "world"
+    link: str | None = None
+    position_only: bool | None = None
+
+
+class PlanBody(_Strict):
+    """Plan one motion of a group from the cell's current state; nothing moves."""
+
+    cell: str
+    group: str
+    to: str | None = Field(default=None, description="a named pose of the group (go)")
+    joints: dict[str, float] | None = Field(default=None, description="joint values (go)")
+    pose: PoseTarget | None = Field(default=None, description="a link pose (move)")
+    backend: Literal["sim", "mock"] = "sim"
+    planning_time: float = Field(default=1.0, gt=0, le=30)
+    seed: int = Field(default=0, ge=0, le=2**31 - 1)
+    velocity_scaling: float | None = Field(default=None, gt=0, le=1)
+
+    @model_validator(mode="after")
+    def _one_goal(self) -> PlanBody:
+        if sum(x is not None for x in (self.to, self.joints, self.pose)) != 1:
+            raise ValueError("give exactly one goal: 'to', 'joints' or 'pose'")
+        if self.joints is not None and not self.joints:
+            raise ValueError("'joints' must name at least one joint")
+        return self
+
+
+class PlanResponse(_Strict):
+    group: str
+    joint_names: list[str]
+    times: list[float]
+    positions: list[list[float]]
+    velocities: list[list[float]]
+    duration: float
+    planning_time: float
+    waypoints: int
+
+
+class TeachBody(_Strict):
+    group: str
+    backend: Literal["sim", "mock"] = "sim"
+
+
+class TeachResponse(_Strict):
+    cell: str
+    group: str
+    name: str
+    joints: dict[str, float]
+
+
+class Health(_Strict):
+    status: Literal["ok"]
+    runs_in_flight: int
+    auth: bool

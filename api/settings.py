@@ -1,0 +1,113 @@
+"""Settings of the API server, built once from arguments or the environment.
+
+Environment variables (all optional):
+
+- ``TASKRUNNER_TOKEN``: the bearer token; with none, :func:`api.app.create_app` makes one.
+- ``TASKRUNNER_NO_AUTH=1``: run open (no token at all).
+- ``TASKRUNNER_READ_REQUIRES_AUTH=1``: GET endpoints need the token too.
+- ``TASKRUNNER_TASKS_DIR``, ``TASKRUNNER_CELLS_DIR``, ``TASKRUNNER_STATE_DIR``: folders.
+- ``TASKRUNNER_MAX_BODY_BYTES``: largest accepted request body (bytes).
+- ``TASKRUNNER_PLANNER``: ``worker`` (a planning process per run, default) or ``inprocess``.
+- ``TASKRUNNER_SIM_SPEED``: time scale of the simulated backend (2: twice real time).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+__all__ = ["REPO_ROOT", "Settings"]
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+PLANNERS = ("worker", "inprocess")
+
+
+@dataclass(frozen=True)
+class Settings:
+    """How the server runs.
+
+    Attributes:
+        token: the bearer token required by endpoints that move a robot or change state;
+            None with ``auth`` on: the app makes one at start (``app.state.token``).
+        auth: False runs open (the CLI's ``--no-auth``): no endpoint needs a token.
+        read_requires_auth: GET endpoints need the token too.
+        tasks_dir: task files that ``POST /runs`` and ``/tasks/check`` name by file name.
+        cells_dir: cell files; a cell's id is its file name without ``.yaml``.
+        state_dir: where the run database lives (``runs.sqlite``).
+        max_body_bytes: larger request bodies are refused with 413.
+        planner: ``worker`` plans in a process per run (the event loop and the other runs
+            keep going while OMPL searches); ``inprocess`` plans in the run's thread
+            (tests: no process start-up).
+        sim_speed: default time scale of the sim backend.
+        mock_speed: default replay speed of the mock backend (None: motions end at once).
+        tick_hz: behaviour-tree ticks per second.
+        sse_poll_s: how often an event stream looks for new events (s).
+        shutdown_timeout_s: how long shutdown waits for cancelled runs to stop (s).
+    """
+
+    token: str | None = None
+    auth: bool = True
+    read_requires_auth: bool = False
+    tasks_dir: Path = REPO_ROOT / "tasks"
+    cells_dir: Path = REPO_ROOT / "robots" / "cells"
+    state_dir: Path = REPO_ROOT / "state"
+    max_body_bytes: int = 1_000_000
+    planner: str = "worker"
+    sim_speed: float = 1.0
+    mock_speed: float | None = None
+    tick_hz: float = 100.0
+    sse_poll_s: float = 0.02
+    shutdown_timeout_s: float = 10.0
+
+    def __post_init__(self) -> None:
+        for name in ("tasks_dir", "cells_dir", "state_dir"):
+            object.__setattr__(self, name, Path(getattr(self, name)).resolve())
+        if self.token is not None and len(self.token) < 8:
+            raise ValueError(f"'token' must be at least 8 characters (got {len(self.token)})")
+        if isinstance(self.max_body_bytes, bool) or not isinstance(self.max_body_bytes, int) \
+                or self.max_body_bytes < 1:
+            raise ValueError(f"'max_body_bytes' must be a positive integer "
+                             f"(got {self.max_body_bytes!r})")
+        if self.planner not in PLANNERS:
+            raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} "
+                             f"(got {self.planner!r})")
+        for name in ("sim_speed", "tick_hz", "sse_poll_s", "shutdown_timeout_s"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+                raise ValueError(f"'{name}' must be a positive number (got {value!r})")
+        if self.mock_speed is not None and not self.mock_speed > 0:
+            raise ValueError(f"'mock_speed' must be a positive number (got {self.mock_speed!r})")
+
+    @property
+    def db_path(self) -> Path:
+        """The SQLite file of the run records."""
+        return self.state_dir / "runs.sqlite"
+
+    @classmethod
+    def from_env(cls, environ: Mapping[str, str] | None = None, **overrides: object) -> Settings:
+        """Settings from ``TASKRUNNER_*`` variables; ``overrides`` win over them."""
+        env = os.environ if environ is None else environ
+        values: dict[str, object] = {}
+        if env.get("TASKRUNNER_TOKEN"):
+            values["token"] = env["TASKRUNNER_TOKEN"]
+        if "TASKRUNNER_NO_AUTH" in env:
+            values["auth"] = not _flag(env["TASKRUNNER_NO_AUTH"])
+        if "TASKRUNNER_READ_REQUIRES_AUTH" in env:
+            values["read_requires_auth"] = _flag(env["TASKRUNNER_READ_REQUIRES_AUTH"])
+        for key, name in (("TASKS_DIR", "tasks_dir"), ("CELLS_DIR", "cells_dir"),
+                          ("STATE_DIR", "state_dir"), ("PLANNER", "planner")):
+            if env.get(f"TASKRUNNER_{key}"):
+                values[name] = env[f"TASKRUNNER_{key}"]
+        if env.get("TASKRUNNER_MAX_BODY_BYTES"):
+            values["max_body_bytes"] = int(env["TASKRUNNER_MAX_BODY_BYTES"])
+        if env.get("TASKRUNNER_SIM_SPEED"):
+            values["sim_speed"] = float(env["TASKRUNNER_SIM_SPEED"])
+        values.update({k: v for k, v in overrides.items() if v is not None})
+        return cls(**values)  # type: ignore[arg-type]
+
+
+def _flag(value: str) -> bool:
+    return value.strip().lower() in ("1", "true", "yes", "on")

@@ -1,0 +1,110 @@
+"""Run records in SQLite: one row per run, the whole record as JSON beside a few columns.
+
+Rows are written when a run starts, as its steps finish and when it ends, so a server
+that dies halfway leaves every run with its events up to then. :meth:`RunStore.open`
+marks rows still ``running`` from a previous server as ``interrupted``: no run is lost,
+and none claims to run when nothing runs it.
+"""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+import threading
+from datetime import datetime, timezone
+from pathlib import Path
+
+from taskrunner.runtime.records import RunRecord
+
+__all__ = ["RunStore"]
+
+_SCHEMA = """
+CREATE TABLE IF NOT EXISTS runs (
+    run_id   TEXT PRIMARY KEY,
+    status   TEXT NOT NULL,
+    task     TEXT NOT NULL,
+    cell     TEXT NOT NULL,
+    backend  TEXT NOT NULL,
+    started  TEXT NOT NULL,
+    finished TEXT,
+    record   TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS runs_status ON runs (status);
+"""
+
+
+class RunStore:
+    """A SQLite file of run records, safe to use from several threads."""
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self._lock = threading.Lock()
+        self._db = sqlite3.connect(self.path, check_same_thread=False, isolation_level=None)
+        self._db.execute("PRAGMA journal_mode=WAL")
+        self._db.executescript(_SCHEMA)
+
+    def mark_interrupted(self) -> int:
+        """Turn rows left ``running`` by a server that stopped into ``interrupted``;
+        returns how many."""
+        now = datetime.now(timezone.utc).isoformat()
+        with self._lock:
+            rows = self._db.execute("SELECT record FROM runs WHERE status = 'running'").fetchall()
+            for (text,) in rows:
+                record = RunRecord.from_dict(json.loads(text))
+                record.status = "interrupted"
+                record.error = record.error or "the server stopped while the run was in flight"
+                record.finished = record.finished or now
+                self._write(record)
+        return len(rows)
+
+    def save(self, record: RunRecord) -> None:
+        """Insert or replace ``record``."""
+        with self._lock:
+            self._write(record)
+
+    def load(self, run_id: str) -> RunRecord | None:
+        """The record of ``run_id``, or None."""
+        with self._lock:
+            row = self._db.execute("SELECT record FROM runs WHERE run_id = ?",
+                                   (run_id,)).fetchone()
+        return None if row is None else RunRecord.from_dict(json.loads(row[0]))
+
+    def summaries(self, status: str | None = None, limit: int = 100) -> list[dict[str, object]]:
+        """The newest runs first (without their events), optionally of one status."""
+        query = ("SELECT run_id, status, task, cell, backend, started, finished, record "
+                 "FROM runs")
+        args: tuple[object, ...] = ()
+        if status is not None:
+            query += " WHERE status = ?"
+            args = (status,)
+        query += " ORDER BY started DESC LIMIT ?"
+        with self._lock:
+            rows = self._db.execute(query, (*args, limit)).fetchall()
+        out = []
+        for run_id, st, task, cell, backend, started, finished, text in rows:
+            record = json.loads(text)
+            out.append({"run_id": run_id, "status": st, "task": task, "cell": cell,
+                        "backend": backend, "started": started, "finished": finished,
+                        "exit_code": record.get("exit_code"), "error": record.get("error")})
+        return out
+
+    def close(self) -> None:
+        with self._lock:
+            self._db.close()
+
+    def _write(self, record: RunRecord) -> None:
+        text = json.dumps(record.as_dict(), default=_jsonable)
+        self._db.execute(
+            "INSERT OR REPLACE INTO runs (run_id, status, task, cell, backend, started, "
+            "finished, record) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+            (record.run_id, record.status, record.task, record.cell, record.backend,
+             record.started, record.finished, text))
+
+
+def _jsonable(value: object) -> object:
+    if hasattr(value, "tolist"):
+        return value.tolist()  # type: ignore[union-attr]
+    if isinstance(value, Path):
+        return str(value)
+    return str(value)

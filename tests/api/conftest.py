@@ -1,0 +1,23 @@
+"""Fixtures of the API tests: an app on a temporary database, planning in-process."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from apitest import make_settings
+from fastapi.testclient import TestClient
+
+from api import Settings, create_app
+
+
+@pytest.fixture
+def settings(tmp_path: Path) -> Settings:
+    return make_settings(tmp_path / "state")
+
+
+@pytest.fixture
+def client(settings: Settings) -> Iterator[TestClient]:
+    with TestClient(create_app(settings)) as c:
+        yield c

@@ -1,0 +1,109 @@
+"""Tokens, body limits and error answers: 401, 404, 409, 413, 422 with file:line."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from apitest import AUTH, TOKEN, make_settings
+from fastapi.testclient import TestClient
+
+from api import Settings, create_app
+
+
+def test_endpoints_that_change_state_need_the_token(client):
+    for method, url in (("post", "/runs"), ("post", "/runs/x/cancel")):
+        answer = client.request(method, url, json={"task": "go_home"})
+        assert answer.status_code == 401, url
+        assert answer.headers["www-authenticate"] == "Bearer"
+    wrong = client.post("/runs", json={"task": "go_home"}, headers={"Authorization": "Bearer no"})
+    assert wrong.status_code == 401 and wrong.json()["detail"] == "invalid bearer token"
+
+
+def test_reads_are_open_unless_the_setting_says_otherwise(tmp_path: Path):
+    with TestClient(create_app(make_settings(tmp_path / "a"))) as client:
+        assert client.get("/runs").status_code == 200
+    strict = make_settings(tmp_path / "b", read_requires_auth=True)
+    with TestClient(create_app(strict)) as client:
+        for url in ("/runs", "/cells", "/cells/servo_arm_table", "/runs/x"):
+            assert client.get(url).status_code == 401, url
+        assert client.get("/runs", headers=AUTH).status_code == 200
+        assert client.get("/health").status_code == 200  # never needs a token
+
+
+def test_without_a_configured_token_the_app_makes_one(tmp_path: Path):
+    app = create_app(Settings(state_dir=tmp_path))
+    token = app.state.token
+    assert isinstance(token, str) and len(token) >= 32
+    with TestClient(app) as client:
+        assert client.post("/runs/x/cancel").status_code == 401
+        answer = client.post("/runs/x/cancel", headers={"Authorization": f"Bearer {token}"})
+        assert answer.status_code == 404
+
+
+def test_running_open_needs_no_token(tmp_path: Path):
+    with TestClient(create_app(Settings(state_dir=tmp_path, auth=False))) as client:
+        assert client.post("/runs/x/cancel").status_code == 404
+        assert client.get("/health").json()["auth"] is False
+
+
+def test_a_too_large_body_is_refused_with_413(tmp_path: Path):
+    with TestClient(create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
+        answer = client.post("/runs", json={"yaml": "x" * 2000}, headers=AUTH)
+        assert answer.status_code == 413
+        assert "at most 1000 bytes" in answer.json()["detail"]
+
+
+def test_invalid_task_yaml_answers_422_with_file_and_line(client):
+    yaml = "task: t\ncell: ../robots/cells/servo_arm_table.yaml\nsteps:\n  - fly: {to: moon}\n"
+    answer = client.post("/runs", json={"yaml": yaml}, headers=AUTH)
+    assert answer.status_code == 422
+    body = answer.json()
+    assert body["location"].endswith("tasks/inline.yaml:4")
+    assert body["problems"][0]["line"] == 4 and "fly" in body["problems"][0]["message"]
+
+
+def test_a_task_naming_what_the_cell_lacks_answers_422_with_every_problem(client):
+    yaml = ("task: t\ncell: ../robots/cells/servo_arm_table.yaml\nsteps:\n"
+            "  - go: {group: arm, to: nowhere}\n  - pick: {arm: leg, object: cube}\n")
+    answer = client.post("/runs", json={"yaml": yaml, "backend": "mock"}, headers=AUTH)
+    assert answer.status_code == 422
+    lines = [p["line"] for p in answer.json()["problems"]]
+    assert lines == [4, 5, 5]
+    assert client.get("/runs").json() == []  # nothing started
+
+
+@pytest.mark.parametrize("body, fragment", [
+    ({}, "exactly one of 'task'"),
+    ({"task": "go_home", "yaml": "task: t"}, "exactly one of 'task'"),
+    ({"task": "go_home", "backend": "real"}, "backend"),
+    ({"task": "go_home", "colour": "red"}, "colour"),
+    ({"task": "../README.md"}, "file name in the tasks folder"),
+    ({"task": "no_such_task"}, "known: "),
+    ({"task": "pick_place", "parameters": {"pick_x": 9.0}}, "pick_x"),
+    ({"task": "go_home", "cell": "atlantis"}, "unknown cell 'atlantis'"),
+])
+def test_bad_run_requests_answer_4xx_with_the_reason(client, body, fragment):
+    answer = client.post("/runs", json=body, headers=AUTH)
+    assert answer.status_code in (404, 422)
+    assert fragment in str(answer.json()["detail"])
+
+
+def test_a_body_that_is_not_json_answers_422(client):
+    answer = client.post("/runs", content=b"{not json", headers={
+        **AUTH, "Content-Type": "application/json"})
+    assert answer.status_code == 422
+
+
+def test_openapi_schema_and_docs_are_served(client):
+    schema = client.get("/openapi.json").json()
+    assert {"/runs", "/runs/{run_id}", "/runs/{run_id}/cancel", "/runs/{run_id}/events",
+            "/tasks/check", "/cells", "/cells/{cell_id}", "/cells/{cell_id}/state",
+            "/health"} <= set(schema["paths"])
+    assert client.get("/docs").status_code == 200
+
+
+def test_the_token_must_be_long_enough():
+    with pytest.raises(ValueError, match="'token' must be at least 8 characters"):
+        Settings(token="short")
+    assert len(TOKEN) >= 8

@@ -1,0 +1,43 @@
+"""/plan: a timed trajectory from the cell's current state; nothing moves."""
+
+from __future__ import annotations
+
+import pytest
+
+
+def test_plan_to_a_named_pose_returns_a_timed_trajectory_and_nothing_moves(client):
+    before = client.get("/cells/servo_arm_table/state").json()["joints"]
+    answer = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                        "to": "Candle"})
+    assert answer.status_code == 200, answer.text
+    plan = answer.json()
+    assert plan["joint_names"] == ["Revolute 1", "Revolute 2", "Revolute 3", "Revolute 4",
+                                   "Revolute 5"]
+    assert plan["times"][0] == 0.0 and plan["times"][-1] == pytest.approx(plan["duration"])
+    assert len(plan["positions"]) == len(plan["times"])
+    assert plan["positions"][0] == pytest.approx([before[n] for n in plan["joint_names"]])
+    assert client.get("/cells/servo_arm_table/state").json()["joints"] == before
+
+
+def test_plan_to_joint_values_and_to_a_pose(client):
+    joints = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                        "joints": {"Revolute 1": 0.3}})
+    assert joints.status_code == 200
+    assert joints.json()["positions"][-1][0] == pytest.approx(0.3)
+    pose = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                      "pose": {"xyz": [0.19, 0.04, 0.85]}})
+    assert pose.status_code == 200, pose.text
+
+
+@pytest.mark.parametrize("body, code, fragment", [
+    ({"cell": "servo_arm_table", "group": "leg", "to": "home"}, 422, "unknown group 'leg'"),
+    ({"cell": "servo_arm_table", "group": "arm", "to": "nowhere"}, 422, "'nowhere'"),
+    ({"cell": "servo_arm_table", "group": "arm", "pose": {"xyz": [3.0, 0, 1]}}, 422,
+     "planning failed"),
+    ({"cell": "servo_arm_table", "group": "arm"}, 422, "exactly one goal"),
+    ({"cell": "atlantis", "group": "arm", "to": "home"}, 404, "unknown cell"),
+])
+def test_bad_plan_requests_answer_4xx_with_the_reason(client, body, code, fragment):
+    answer = client.post("/plan", json=body)
+    assert answer.status_code == code
+    assert fragment in str(answer.json()["detail"])
