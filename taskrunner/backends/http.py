@@ -1,0 +1,103 @@
+"""The servo firmware over HTTP (``POST /api/command``): :class:`HttpBackend`.
+
+Each command is one request with the JSON body ``{"cmd": "..."}`` and
+``Content-Type: application/json``; the answer ``{"reply": "..."}`` carries the reply line.
+Only idempotent commands (STATUS, PING, VERSION) are retried after a network error;
+``TRAJ``, ``MOVE`` and the others never are (a lost answer may hide a command that ran).
+"""
+
+from __future__ import annotations
+
+import json
+import time
+import urllib.error
+import urllib.request
+
+from taskrunner.backends.calibration import ServoCalibration
+from taskrunner.backends.servo_backend import ServoBackend, ServoOptions
+from taskrunner.backends.servo_protocol import IDEMPOTENT_COMMANDS, command_name
+from taskrunner.errors import BackendError
+
+__all__ = ["HttpBackend", "HttpTransport"]
+
+_RETRY_PAUSE = 0.02  # s between attempts of an idempotent command
+
+
+class HttpTransport:
+    """One command per POST to the firmware's command URL.
+
+    Args:
+        url: e.g. ``http://10.10.10.1/api/command``.
+        reply_timeout: seconds per request.
+        retries: extra attempts for STATUS, PING and VERSION.
+    """
+
+    def __init__(self, url: str, reply_timeout: float = 1.0, retries: int = 2) -> None:
+        if not url.startswith(("http://", "https://")):
+            raise BackendError(f"servo firmware URL must be http(s)://... (got {url!r})")
+        self._url = url
+        self._timeout = reply_timeout
+        self._retries = retries
+        self._opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))
+        self._closed = False
+
+    def exchange(self, line: str) -> str:
+        """POST ``line``; return the reply line.
+
+        Raises:
+            BackendError: closed, network error or timeout (after the retries of an
+                idempotent command), an HTTP error status or an answer without ``reply``.
+        """
+        if self._closed:
+            raise BackendError(f"HTTP link to {self._url} is closed")
+        attempts = 1 + (self._retries if command_name(line) in IDEMPOTENT_COMMANDS else 0)
+        body = json.dumps({"cmd": line}).encode()
+        for attempt in range(attempts):
+            request = urllib.request.Request(
+                self._url, data=body, method="POST",
+                headers={"Content-Type": "application/json"})
+            try:
+                with self._opener.open(request, timeout=self._timeout) as response:
+                    answer = response.read()
+                break
+            except urllib.error.HTTPError as exc:
+                with exc:
+                    raise BackendError(f"servo firmware at {self._url} answered HTTP {exc.code} "
+                                       f"to {line!r}: {exc.read()[:200]!r}") from None
+            except (urllib.error.URLError, OSError, TimeoutError) as exc:
+                if attempt + 1 >= attempts:
+                    raise BackendError(f"no answer from the servo firmware at {self._url} to "
+                                       f"{line!r} ({attempts} attempt(s)): {exc}") from None
+                time.sleep(_RETRY_PAUSE)
+        try:
+            reply = json.loads(answer)["reply"]
+        except (ValueError, KeyError, TypeError):
+            raise BackendError(f"garbage answer from {self._url} to {line!r}: "
+                               f"{answer[:200]!r}") from None
+        if not isinstance(reply, str):
+            raise BackendError(f"garbage answer from {self._url} to {line!r}: {answer[:200]!r}")
+        return reply
+
+    def close(self) -> None:
+        """Refuse further commands (idempotent)."""
+        self._closed = True
+
+
+class HttpBackend(ServoBackend):
+    """:class:`ServoBackend` over HTTP.
+
+    Args:
+        joint_names: joints driven (each calibrated).
+        calibration: the arm's calibration.
+        url: the command URL.
+        options: see :class:`ServoOptions` (use ``lead_ms`` >= 500 over WiFi).
+
+    Raises:
+        BackendError: bad URL, or the handshake failed.
+    """
+
+    def __init__(self, joint_names: tuple[str, ...] | list[str], calibration: ServoCalibration,
+                 url: str, options: ServoOptions | None = None) -> None:
+        options = options or ServoOptions()
+        super().__init__(joint_names, calibration,
+                         HttpTransport(url, options.reply_timeout, options.retries), options)

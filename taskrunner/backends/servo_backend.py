@@ -1,0 +1,310 @@
+"""A backend driving the servo firmware over any :class:`Transport` (serial or HTTP).
+
+A worker thread owns the streaming: it sends a trajectory's ``TRAJ`` points ahead of the
+firmware's clock (keeping ``buffered_ms`` above a lead), polls ``STATUS`` for progress and
+positions (commanded angles converted back to joints), and ends the execution when the
+firmware is idle after the last point. Cancel is ``STOP`` (the servos stay where they are).
+Any link failure, timeout or garbage reply fails the running execution with a
+:class:`BackendError` and closes the link: nothing more is sent. Units: rad, s; firmware
+angles in degrees, times in ms.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import threading
+import time
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from taskrunner.backends.base import BaseBackend, TrajectoryExecution, check_option
+from taskrunner.backends.calibration import ServoCalibration
+from taskrunner.backends.servo_protocol import (
+    ServoLink,
+    StreamPoint,
+    Transport,
+    error_code,
+    parse_traj_reply,
+    plan_points,
+)
+from taskrunner.errors import BackendBusyError, BackendError, UnknownNameError
+from taskrunner.types import JointTrajectory
+
+__all__ = ["ServoBackend", "ServoOptions"]
+
+_JOIN_TIMEOUT = 2.0  # s
+
+
+@dataclass(frozen=True)
+class ServoOptions:
+    """How :class:`ServoBackend` (and the serial/HTTP backends) talk to the firmware.
+
+    Attributes:
+        reply_timeout: seconds to wait for one reply line.
+        banner_timeout: seconds to wait for the boot banner after opening a serial port.
+        lead_ms: firmware ms of trajectory kept queued ahead of the servos (>= 3 ticks).
+        poll_period: seconds between STATUS polls while a trajectory runs.
+        idle_poll_period: seconds between STATUS polls when idle (fault detection).
+        time_scale: firmware seconds per wall-clock second (the host build's ``--speedup``).
+        retries: extra attempts of an idempotent HTTP command (STATUS, PING, VERSION).
+        start_tolerance: largest accepted distance (rad) between a trajectory's start and
+            the joints' positions (converted from the commanded servo angles).
+    """
+
+    reply_timeout: float = 1.0
+    banner_timeout: float = 2.0
+    lead_ms: int = 400
+    poll_period: float = 0.04
+    idle_poll_period: float = 0.2
+    time_scale: float = 1.0
+    retries: int = 2
+    start_tolerance: float = 2e-3
+
+    def __post_init__(self) -> None:
+        positive = (lambda v: 0 < v < math.inf, "a positive number")
+        for name in ("reply_timeout", "poll_period", "idle_poll_period", "time_scale"):
+            check_option(name, getattr(self, name), *positive)
+        check_option("banner_timeout", self.banner_timeout, lambda v: 0 <= v < math.inf,
+                     "a number >= 0")
+        check_option("lead_ms", self.lead_ms, lambda v: 0 < v <= 4000, "in (0, 4000] ms")
+        check_option("retries", self.retries, lambda v: v >= 0 and v == int(v),
+                     "an integer >= 0")
+        check_option("start_tolerance", self.start_tolerance, lambda v: v >= 0, "a number >= 0")
+
+
+@dataclass
+class _Stream:
+    execution: TrajectoryExecution
+    points: list[StreamPoint]
+    next: int = 0
+    buffered_ms: int = 0
+    buffered_at: float = 0.0  # wall time of the last buffered_ms
+    underruns: int = 0
+
+
+class ServoBackend(BaseBackend):
+    """Executes trajectories on the servo firmware over ``transport`` (one at a time).
+
+    Args:
+        joint_names: joints driven; each must be calibrated.
+        calibration: see :mod:`taskrunner.backends.calibration`.
+        transport: an open link; the handshake (PING, VERSION) runs here.
+        options: see :class:`ServoOptions`.
+
+    Raises:
+        UnknownNameError: a joint without calibration.
+        BackendError: handshake failure or incompatible firmware (the link is closed).
+    """
+
+    def __init__(self, joint_names: tuple[str, ...] | list[str], calibration: ServoCalibration,
+                 transport: Transport, options: ServoOptions | None = None) -> None:
+        self._options = options or ServoOptions()
+        self._calibration = calibration
+        for name in joint_names:
+            if name not in calibration.joint_names:
+                transport.close()
+                raise UnknownNameError("joint", name, calibration.joint_names)
+        self._link = ServoLink(transport)
+        try:
+            self._version = self._link.handshake(calibration)
+            status = self._link.status()
+        except BackendError:
+            self._link.close()
+            raise
+        super().__init__(joint_names, start_tolerance=self._options.start_tolerance)
+        self._tick_ms = int(self._version["tick_ms"])
+        self._status: dict[str, Any] = {}
+        self._status_seq = 0
+        self._apply_status(status, self._link.sequence)
+        self._stream: _Stream | None = None
+        self._wake = threading.Condition(self._lock)
+        self._thread = threading.Thread(target=self._run, name=f"ServoBackend-{id(self):x}",
+                                        daemon=True)
+        self._thread.start()
+
+    # -- public -------------------------------------------------------------------------
+
+    @property
+    def version(self) -> dict[str, Any]:
+        """The firmware's VERSION object."""
+        return dict(self._version)
+
+    @property
+    def calibration(self) -> ServoCalibration:
+        """The calibration in use."""
+        return self._calibration
+
+    def firmware_status(self) -> dict[str, Any]:
+        """The latest STATUS object the worker read (``pos`` in degrees, ``moving``, ...)."""
+        with self._lock:
+            return dict(self._status)
+
+    def execute(self, trajectory: JointTrajectory) -> TrajectoryExecution:
+        """Start ``trajectory``; refused (nothing sent) if any sample needs a servo angle
+        outside [0, 180]. See :meth:`BaseBackend.execute`.
+
+        Raises:
+            TrajectoryRejectedError: out of range (names joint and time), or see base.
+            BackendBusyError: another trajectory is running (the firmware has one queue).
+            BackendError: the link is down or the backend closed.
+        """
+        self._calibration.check_trajectory_in_range(trajectory)
+        with self._lock:
+            if self._executions:
+                raise BackendBusyError("the servo firmware streams one trajectory at a time; "
+                                       "another one is running")
+            return super().execute(trajectory)
+
+    def stop(self) -> None:
+        """Cancel the running trajectory and send STOP in any case (e.g. after a HOME)."""
+        with self._lock:
+            running = bool(self._executions)
+            super().stop()
+            if not running and not self._closed:
+                self._send_stop()
+
+    def close(self) -> None:
+        """Stop, end the worker and close the link (idempotent)."""
+        with self._lock:
+            super().close()
+            self._wake.notify_all()
+        if threading.current_thread() is not self._thread:
+            self._thread.join(_JOIN_TIMEOUT)
+        self._link.close()
+
+    # -- BaseBackend hooks (under self._lock) ---------------------------------------------
+
+    def _begin(self, execution: TrajectoryExecution) -> None:
+        base = np.array(self._status["pos"], dtype=float)
+        points = plan_points(execution.trajectory, self._calibration, base, self._tick_ms)
+        self._stream = _Stream(execution, points)
+        self._wake.notify_all()
+
+    def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
+        if execution.finished:
+            return
+        if self._stream is not None and self._stream.execution is execution:
+            self._stream = None  # the worker sends no more points of it
+        try:
+            self._send_stop()
+        except BackendError as exc:
+            self._finish(execution, "failed", f"{message}: STOP failed ({exc})", exc)
+            return
+        super()._cancel(execution, message)
+
+    # -- internals ------------------------------------------------------------------------
+
+    def _send_stop(self) -> None:
+        self._link.command("STOP")
+        status = self._link.status()
+        self._apply_status(status, self._link.sequence)
+
+    def _apply_status(self, status: dict[str, Any], sequence: int) -> None:
+        if sequence < self._status_seq:
+            return  # an older reply than what is already applied
+        degrees = np.asarray(status["pos"], dtype=float)
+        state = self._calibration.from_servo_degrees(degrees).as_dict()
+        for i, name in enumerate(self._names):
+            self._positions[i] = state[name]
+        self._status, self._status_seq = status, sequence
+
+    def _fail(self, exc: BackendError) -> None:
+        with self._lock:
+            self._link.kill(str(exc))
+            self._closed = True
+            self._closed_reason = f"stopped: the servo link failed ({exc})"
+            self._stream = None
+            for execution in list(self._executions):
+                message = f"servo link failed during the motion: {exc}"
+                self._finish(execution, "failed", message, BackendError(message))
+
+    def _run(self) -> None:
+        try:
+            while True:
+                with self._lock:
+                    if self._closed:
+                        return
+                    stream = self._stream
+                    period = (self._options.poll_period if stream is not None
+                              else self._options.idle_poll_period)
+                    if stream is None or not self._should_send(stream):
+                        self._wake.wait(period)
+                        if self._closed:
+                            return
+                        stream = self._stream
+                        if stream is not None and not self._should_send(stream):
+                            stream = None
+                if stream is not None:
+                    self._send_point(stream)
+                else:
+                    self._poll_status()
+        except BackendError as exc:
+            self._fail(exc)
+        except Exception as exc:  # noqa: BLE001 - no handle may wait forever
+            self._fail(BackendError(f"servo backend worker died: {exc!r}"))
+
+    def _should_send(self, stream: _Stream) -> bool:
+        if stream.next >= len(stream.points):
+            return False
+        drained = (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
+        return stream.next == 0 or stream.buffered_ms - drained < self._options.lead_ms
+
+    def _send_point(self, stream: _Stream) -> None:
+        point = stream.points[stream.next]
+        result = self._link.exchange(point.line, guard=lambda: self._stream is stream)
+        if result is None:
+            return
+        reply, _ = result
+        if error_code(reply) == 5:  # queue full: resend after a tick
+            with self._lock:
+                self._wake.wait(self._tick_ms / 1000.0 / self._options.time_scale)
+            return
+        queued, buffered = parse_traj_reply(self._link.checked(point.line, reply))
+        with self._lock:
+            if stream.next > 0 and queued == 1:
+                stream.underruns += 1
+            stream.next += 1
+            stream.buffered_ms, stream.buffered_at = buffered, time.monotonic()
+            if self._stream is stream:
+                sent_ms = point.at_ms
+                progress = max(0.0, (sent_ms - buffered) / 1000.0)
+                stream.execution.set_progress(min(progress, stream.execution.duration))
+
+    def _poll_status(self) -> None:
+        result = self._link.exchange("STATUS")
+        assert result is not None
+        reply, sequence = result
+        data = self._link.checked("STATUS", reply)
+        status = _decode_status(self._link, data)
+        with self._lock:
+            self._apply_status(status, sequence)
+            stream = self._stream
+            if stream is None or stream.execution.finished:
+                return
+            if stream.next > 0:
+                sent_ms = stream.points[stream.next - 1].at_ms
+                buffered = int(status.get("buffered_ms", 0))
+                stream.buffered_ms, stream.buffered_at = buffered, time.monotonic()
+                progress = (sent_ms - buffered) / 1000.0
+                stream.execution.set_progress(min(max(progress, 0.0), stream.execution.duration))
+            if stream.next >= len(stream.points) and not status.get("moving", True):
+                self._stream = None
+                stream.execution.set_progress(stream.execution.duration)
+                message = "trajectory executed"
+                if stream.underruns:
+                    message += f" ({stream.underruns} underrun(s): the motion was delayed)"
+                self._finish(stream.execution, "succeeded", message)
+
+
+def _decode_status(link: ServoLink, data: str) -> dict[str, Any]:
+    try:
+        status = json.loads(data)
+    except json.JSONDecodeError:
+        status = None
+    if not isinstance(status, dict) or not isinstance(status.get("pos"), list):
+        link.kill(f"garbage STATUS: {data!r}")
+        raise BackendError(f"garbage STATUS from the servo firmware: {data!r}")
+    return status
