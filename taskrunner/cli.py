@@ -9,6 +9,10 @@ Subcommands:
   it for collisions, plan a collision-free path there and time it.
 - ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
 - ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
+- ``run-task firmware-sim [--speedup X]``: build and start the host build of the ESP32
+  firmware; prints the pseudo-terminal path, then the HTTP URL.
+- ``run-task hw status|home|jog JOINT DEGREES (--port P | --url U)``: bench helpers for the
+  servo arm on its ESP32.
 - ``run-task serve [--host 127.0.0.1] [--port 8000] [--token T | --no-auth]``: the REST API
   (``api/``); with no token given or in ``TASKRUNNER_TOKEN``, one is made and printed.
 
@@ -26,7 +30,13 @@ from pathlib import Path
 
 import numpy as np
 
-from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
+from taskrunner.errors import (
+    BackendError,
+    InputError,
+    PlanningError,
+    TaskrunnerError,
+    UnknownNameError,
+)
 
 __all__ = ["main"]
 
@@ -34,7 +44,7 @@ REPO_ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_CELL = REPO_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
-COMMANDS = ("run", "check", "demo", "info", "collision-matrix", "serve")
+COMMANDS = ("run", "check", "demo", "info", "collision-matrix", "serve", "firmware-sim", "hw")
 
 
 def _load(path: Path):  # type: ignore[no-untyped-def]
@@ -160,7 +170,64 @@ def cmd_run(args: argparse.Namespace) -> int:
 
     return run_task_file(Path(args.file), backend=args.backend, parameters=_parameters(args.param),
                          speed=args.speed, seed=args.seed, runs_dir=Path(args.runs_dir),
-                         live=sys.stdout.isatty() and not args.plain, worker=not args.in_process)
+                         live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
+                         port=args.port, url=args.url, firmware_speedup=args.firmware_speedup)
+
+
+def cmd_firmware_sim(args: argparse.Namespace) -> int:
+    """Build the host firmware, start it, pass its two address lines through."""
+    import shutil
+    import subprocess
+
+    firmware = REPO_ROOT / "firmware"
+    if shutil.which("make") is None or shutil.which("g++") is None:
+        raise InputError("the host firmware needs make and g++ on PATH")
+    built = subprocess.run(["make", "-s", "-C", str(firmware), "host"], capture_output=True,
+                           text=True)
+    if built.returncode != 0:
+        raise InputError(f"building the host firmware failed:\n{built.stderr[-2000:]}")
+    command = [str(firmware / "build" / "taskrunner-servo-host"), "--speedup", str(args.speedup)]
+    if args.log:
+        command += ["--log", args.log]
+    process = subprocess.Popen(command)
+    try:
+        return process.wait()
+    except KeyboardInterrupt:
+        process.terminate()
+        return process.wait(5)
+
+
+def cmd_hw(args: argparse.Namespace) -> int:
+    """Bench helpers: the firmware's status, homing, jogging one joint."""
+    import math
+
+    from taskrunner.runtime.session import make_backend
+
+    cell = _load(Path(args.cell))
+    kind = "http" if args.url else "serial"
+    backend = make_backend(kind, cell, None, port=args.port, url=args.url,
+                           firmware_speedup=args.firmware_speedup)
+    try:
+        if args.action == "home":
+            backend.command("HOME")
+        elif args.action == "jog":
+            if args.joint is None or args.degrees is None:
+                raise InputError("jog needs JOINT and DEGREES (run-task hw jog 'Revolute 1' 10)")
+            calibration = backend.calibration
+            servo = calibration.servo_of(args.joint)
+            state = backend.joint_state().as_dict()
+            state[args.joint] += math.radians(args.degrees)
+            degrees = calibration.to_servo_degrees(state)
+            print(f"jog {args.joint!r} {args.degrees:+.1f}° (servo {servo}) → "
+                  f"MOVE:{','.join(f'{d:.2f}' for d in degrees)}")
+            backend.command("MOVE:" + ",".join(f"{d:.2f}" for d in degrees))
+        status = backend.firmware_status()
+        print(f"firmware {backend.version.get('firmware', '?')}: {status}")
+        for name, value in backend.joint_state().as_dict().items():
+            print(f"  {name}: {value:+.4f} rad ({math.degrees(value):+.1f}°)")
+    finally:
+        backend.close()
+    return EXIT_OK
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
@@ -201,7 +268,12 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
     run.add_argument("file", help="task file (YAML)")
-    run.add_argument("--backend", choices=("mock", "sim"), default="mock")
+    run.add_argument("--backend", choices=("mock", "sim", "serial", "http"), default="mock")
+    run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
+                                    "the robot's hardware.yaml)")
+    run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")
+    run.add_argument("--firmware-speedup", type=float, default=1.0,
+                     help="the host firmware's --speedup (firmware-sim), 1 for real hardware")
     run.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
                      help="override a task parameter (repeatable)")
     run.add_argument("--speed", type=float, default=None,
@@ -216,6 +288,17 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("file", help="task file (YAML)")
     check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE")
     check.add_argument("--seed", type=int, default=0)
+    sim = sub.add_parser("firmware-sim", help="start the host build of the ESP32 firmware")
+    sim.add_argument("--speedup", type=float, default=1.0, help="run its clock X times faster")
+    sim.add_argument("--log", help="CSV of every tick's servo angles")
+    hw = sub.add_parser("hw", help="bench helpers for the servo arm's ESP32")
+    hw.add_argument("action", choices=("status", "home", "jog"))
+    hw.add_argument("joint", nargs="?", help="joint to jog, e.g. 'Revolute 1'")
+    hw.add_argument("degrees", nargs="?", type=float, help="how far to jog (degrees)")
+    hw.add_argument("--port", help="serial port (default: the robot's hardware.yaml)")
+    hw.add_argument("--url", help="the ESP32's /api/command URL instead of serial")
+    hw.add_argument("--cell", default=str(DEFAULT_CELL), help="cell of the servo arm")
+    hw.add_argument("--firmware-speedup", type=float, default=1.0, help=argparse.SUPPRESS)
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
     demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL), help="cell file")
     demo.add_argument("--target", nargs=3, type=float, default=(0.2, 0.05, 0.08),
@@ -251,6 +334,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         argv = ["run", *argv]
     args = parser.parse_args(argv)
     commands = {"run": cmd_run, "check": cmd_check, "demo": cmd_demo, "info": cmd_info,
+                "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve}
     try:
         return commands[args.command](args)
@@ -260,6 +344,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except PlanningError as exc:
         print(f"planning failed: {exc}", file=sys.stderr)
         return EXIT_PLANNING
+    except BackendError as exc:
+        print(f"backend failed: {exc}", file=sys.stderr)
+        return EXIT_EXECUTION
     except TaskrunnerError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_INVALID

@@ -158,6 +158,30 @@ class ServoBackend(BaseBackend):
                                        "another one is running")
             return super().execute(trajectory)
 
+    def command(self, line: str, wait: float | None = 30.0) -> dict[str, Any]:
+        """Send one bench command (``HOME``, ``ZERO``, ``SPEED:n``, ``MOVE:a1,…``) while no
+        trajectory runs, then wait up to ``wait`` seconds (None: don't) for the servos to
+        stop; returns the last STATUS.
+
+        Raises:
+            BackendBusyError: a trajectory is running.
+            BackendError: an ``err`` reply (the firmware's reason), or the link is down.
+            TimeoutError: still moving after ``wait`` seconds.
+        """
+        with self._lock:
+            if self._executions:
+                raise BackendBusyError(f"cannot send {line!r} while a trajectory runs")
+        self._link.command(line)
+        deadline = None if wait is None else time.monotonic() + wait
+        while True:
+            self._poll_status()
+            status = self.firmware_status()
+            if not status.get("moving", False) or deadline is None:
+                return status
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"servos still moving {wait} s after {line!r}")
+            time.sleep(min(0.05, self._options.poll_period))
+
     def stop(self) -> None:
         """Cancel the running trajectory and send STOP in any case (e.g. after a HOME)."""
         with self._lock:

@@ -12,27 +12,74 @@ import threading
 from pathlib import Path
 from typing import TextIO
 
+from taskrunner.backends import (
+    HttpBackend,
+    MockBackend,
+    MockOptions,
+    SerialBackend,
+    ServoCalibration,
+    ServoOptions,
+    SimBackend,
+    SimOptions,
+    load_calibration,
+)
 from taskrunner.backends.base import Backend
-from taskrunner.backends.mock import MockBackend, MockOptions
-from taskrunner.backends.sim import SimBackend, SimOptions
+from taskrunner.errors import InputError
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
 from taskrunner.tasks.loader import load_task
 
-__all__ = ["make_backend", "run_task_file"]
+__all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
 
-def make_backend(kind: str, cell: Cell, speed: float | None) -> Backend:
-    """A mock or sim backend driving every joint of the cell, starting at its start state."""
+BACKENDS = ("mock", "sim", "serial", "http")
+
+
+def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
+                 url: str | None = None, firmware_speedup: float = 1.0) -> Backend:
+    """A backend driving every joint of the cell.
+
+    mock and sim start at the cell's start state; serial (``port``, default the one in
+    hardware.yaml) and http (``url``) drive the servos of the cell's one robot through its
+    hardware.yaml and start where the servos are. ``firmware_speedup`` matches a host
+    build of the firmware run faster than real time (``run-task firmware-sim --speedup``).
+
+    Raises:
+        InputError: a servo backend on a cell without exactly one calibrated robot, or
+            http without a URL.
+        BackendError: the port or URL does not answer as the firmware does.
+    """
     names = cell.model.joint_names
     start = dict(zip(names, cell.start_state()))
     if kind == "mock":
         return MockBackend(names, start, MockOptions(speed=speed))
     if kind == "sim":
         return SimBackend(names, start, SimOptions(speed=speed or 1.0))
-    raise ValueError(f"'backend' must be mock or sim (got {kind!r})")
+    if kind not in BACKENDS:
+        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
+    calibration = servo_calibration(cell)
+    options = ServoOptions(time_scale=firmware_speedup,
+                           lead_ms=min(4000, max(400, int(400 * firmware_speedup))),
+                           poll_period=min(0.04, 0.04 / firmware_speedup))
+    if kind == "serial":
+        return SerialBackend(names, calibration, port or calibration.port or "", options)
+    if not url:
+        raise InputError("the http backend needs --url (the ESP32's /api/command URL)")
+    return HttpBackend(names, calibration, url, options)
+
+
+def servo_calibration(cell: Cell) -> ServoCalibration:
+    """The hardware.yaml calibration of the cell's one robot."""
+    robots = cell.model.instances
+    if len(robots) != 1 or robots[0].prefix:
+        raise InputError(f"servo backends drive one robot without a name prefix; cell "
+                         f"{cell.name!r} has {', '.join(r.name for r in robots)}")
+    if robots[0].hardware_path is None:
+        raise InputError(f"robot {robots[0].name!r} has no hardware.yaml (servo calibration)",
+                         robots[0].source)
+    return load_calibration(robots[0].hardware_path, cell.model.joint_names)
 
 
 def _import_toppra() -> None:
@@ -60,7 +107,9 @@ def _log_line(event: RunEvent) -> str | None:
 
 def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] | None = None,
                   speed: float | None = None, seed: int = 0, runs_dir: Path | None = None,
-                  live: bool = False, worker: bool = True, out: TextIO | None = None) -> int:
+                  live: bool = False, worker: bool = True, out: TextIO | None = None,
+                  port: str | None = None, url: str | None = None,
+                  firmware_speedup: float = 1.0) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     Raises:
@@ -82,7 +131,11 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         from taskrunner.planning.service import InProcessPlanner
 
         planner_service = InProcessPlanner()
-    machine = make_backend(backend, cell, speed)
+    try:
+        machine = make_backend(backend, cell, speed, port, url, firmware_speedup)
+    except BaseException:
+        planner_service.close()
+        raise
     try:
         runner = Runner(spec, cell, machine, planner_service,
                         RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
