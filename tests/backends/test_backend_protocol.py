@@ -58,6 +58,8 @@ def test_public_names_are_pinned():
         "Backend", "BaseBackend", "ExecutionHandle", "ExecutionResult", "ExecutionStatus",
         "MockBackend", "MockOptions", "SimBackend", "SimOptions", "TrajectoryExecution",
         "check_trajectory", "sample_positions",
+        "HttpBackend", "SerialBackend", "ServoBackend", "ServoCalibration", "ServoOptions",
+        "load_calibration",
     ])
 
 
