@@ -11,8 +11,9 @@ Subcommands:
 - ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
 - ``run-task firmware-sim [--speedup X]``: build and start the host build of the ESP32
   firmware; prints the pseudo-terminal path, then the HTTP URL.
-- ``run-task hw status|home|jog JOINT DEGREES (--port P | --url U)``: bench helpers for the
-  servo arm on its ESP32.
+- ``run-task hw status|home|jog JOINT DEGREES|calibrate [JOINT] (--port P | --url U)``:
+  bench helpers for the servo arm on its ESP32 (calibrate writes zero_rad and direction to
+  hardware.yaml).
 - ``run-task serve [--host 127.0.0.1] [--port 8000] [--token T | --no-auth]``: the REST API
   (``api/``); with no token given or in ``TASKRUNNER_TOKEN``, one is made and printed.
 
@@ -198,7 +199,7 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
 
 
 def cmd_hw(args: argparse.Namespace) -> int:
-    """Bench helpers: the firmware's status, homing, jogging one joint."""
+    """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
     import math
 
     from taskrunner.runtime.session import make_backend
@@ -208,6 +209,14 @@ def cmd_hw(args: argparse.Namespace) -> int:
     backend = make_backend(kind, cell, None, port=args.port, url=args.url,
                            firmware_speedup=args.firmware_speedup)
     try:
+        if args.action == "calibrate":
+            from taskrunner.backends.calibrate import calibrate_servos
+
+            robot = cell.model.instances[0]
+            assert robot.hardware_path is not None  # make_backend checked it
+            calibrate_servos(backend, robot.hardware_path,
+                             [args.joint] if args.joint else None)
+            return EXIT_OK
         if args.action == "home":
             backend.command("HOME")
         elif args.action == "jog":
@@ -292,7 +301,7 @@ def _parser() -> argparse.ArgumentParser:
     sim.add_argument("--speedup", type=float, default=1.0, help="run its clock X times faster")
     sim.add_argument("--log", help="CSV of every tick's servo angles")
     hw = sub.add_parser("hw", help="bench helpers for the servo arm's ESP32")
-    hw.add_argument("action", choices=("status", "home", "jog"))
+    hw.add_argument("action", choices=("status", "home", "jog", "calibrate"))
     hw.add_argument("joint", nargs="?", help="joint to jog, e.g. 'Revolute 1'")
     hw.add_argument("degrees", nargs="?", type=float, help="how far to jog (degrees)")
     hw.add_argument("--port", help="serial port (default: the robot's hardware.yaml)")
