@@ -172,7 +172,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     return run_task_file(Path(args.file), backend=args.backend, parameters=_parameters(args.param),
                          speed=args.speed, seed=args.seed, runs_dir=Path(args.runs_dir),
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
-                         port=args.port, url=args.url, firmware_speedup=args.firmware_speedup)
+                         port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
+                         home=args.home)
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
@@ -281,6 +282,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
                                     "the robot's hardware.yaml)")
     run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")
+    run.add_argument("--home", action="store_true",
+                     help="serial/http: home the servos before the task starts")
     run.add_argument("--firmware-speedup", type=float, default=1.0,
                      help="the host firmware's --speedup (firmware-sim), 1 for real hardware")
     run.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",

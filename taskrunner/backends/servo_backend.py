@@ -52,6 +52,8 @@ class ServoOptions:
         retries: extra attempts of an idempotent HTTP command (STATUS, PING, VERSION).
         start_tolerance: largest accepted distance (rad) between a trajectory's start and
             the joints' positions (converted from the commanded servo angles).
+        home_on_start: send HOME once connected and wait until the servos stop there.
+        home_timeout: seconds to wait for the homing to finish.
     """
 
     reply_timeout: float = 1.0
@@ -62,6 +64,8 @@ class ServoOptions:
     time_scale: float = 1.0
     retries: int = 2
     start_tolerance: float = 2e-3
+    home_on_start: bool = False
+    home_timeout: float = 30.0
 
     def __post_init__(self) -> None:
         positive = (lambda v: 0 < v < math.inf, "a positive number")
@@ -124,6 +128,12 @@ class ServoBackend(BaseBackend):
         self._thread = threading.Thread(target=self._run, name=f"ServoBackend-{id(self):x}",
                                         daemon=True)
         self._thread.start()
+        if self._options.home_on_start:
+            try:
+                self.command("HOME", wait=self._options.home_timeout / self._options.time_scale)
+            except (BackendError, TimeoutError) as exc:
+                self.close()
+                raise BackendError(f"homing on start failed: {exc}") from None
 
     # -- public -------------------------------------------------------------------------
 

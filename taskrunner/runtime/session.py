@@ -38,7 +38,8 @@ BACKENDS = ("mock", "sim", "serial", "http")
 
 
 def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
-                 url: str | None = None, firmware_speedup: float = 1.0) -> Backend:
+                 url: str | None = None, firmware_speedup: float = 1.0,
+                 home: bool = False) -> Backend:
     """A backend driving every joint of the cell.
 
     mock and sim start at the cell's start state; serial (``port``, default the one in
@@ -60,7 +61,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if kind not in BACKENDS:
         raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     calibration = servo_calibration(cell)
-    options = ServoOptions(time_scale=firmware_speedup,
+    options = ServoOptions(time_scale=firmware_speedup, home_on_start=home,
                            lead_ms=min(4000, max(400, int(400 * firmware_speedup))),
                            poll_period=min(0.04, 0.04 / firmware_speedup))
     if kind == "serial":
@@ -109,7 +110,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   speed: float | None = None, seed: int = 0, runs_dir: Path | None = None,
                   live: bool = False, worker: bool = True, out: TextIO | None = None,
                   port: str | None = None, url: str | None = None,
-                  firmware_speedup: float = 1.0) -> int:
+                  firmware_speedup: float = 1.0, home: bool = False) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     Raises:
@@ -132,7 +133,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
 
         planner_service = InProcessPlanner()
     try:
-        machine = make_backend(backend, cell, speed, port, url, firmware_speedup)
+        machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home)
     except BaseException:
         planner_service.close()
         raise

@@ -85,3 +85,20 @@ def test_calibrate_walks_a_joint_and_writes_the_answers(tmp_path, firmware_pty):
     again = load_calibration(path, NAMES)
     assert again.raw_degrees("Revolute 1", math.radians(85)) == pytest.approx(90.0, abs=1e-3)
     assert again.raw_degrees("Revolute 1", math.radians(95)) == pytest.approx(80.0, abs=1e-3)
+
+
+def test_home_on_start_waits_until_the_servos_are_home(firmware_pty):
+    calibration = load_calibration(HARDWARE, NAMES)
+    options = ServoOptions(time_scale=50, poll_period=0.005)
+    first = SerialBackend(NAMES, calibration, firmware_pty, options)
+    try:
+        first.command("MOVE:120,60,90,90,90,90")
+    finally:
+        first.close()
+    homed = SerialBackend(NAMES, calibration, firmware_pty,
+                          ServoOptions(time_scale=50, poll_period=0.005, home_on_start=True))
+    try:
+        status = homed.firmware_status()
+        assert status["pos"] == pytest.approx([90.0] * 6) and not status["moving"]
+    finally:
+        homed.close()
