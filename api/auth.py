@@ -26,13 +26,13 @@ def _check(request: Request, credentials: HTTPAuthorizationCredentials | None) -
             headers={"WWW-Authenticate": "Bearer"})
 
 
-def require_write(request: Request,
+async def require_write(request: Request,
                   credentials: HTTPAuthorizationCredentials | None = Depends(_bearer)) -> None:
     """Dependency of endpoints that move a robot or change state."""
     _check(request, credentials)
 
 
-def require_read(request: Request,
+async def require_read(request: Request,
                  credentials: HTTPAuthorizationCredentials | None = Depends(_bearer)) -> None:
     """Dependency of read endpoints: checks the token only if reads require it."""
     if request.app.state.settings.read_requires_auth:

@@ -1,4 +1,8 @@
-"""Getting the app's shared objects into endpoints (``Depends``)."""
+"""Getting the app's shared objects into endpoints (``Depends``).
+
+The dependencies here and in :mod:`api.auth` are ``async``: they never block, and a
+plain ``def`` dependency would cost every request a hop through the thread pool.
+"""
 
 from __future__ import annotations
 
@@ -11,13 +15,13 @@ from api.settings import Settings
 __all__ = ["get_cells", "get_manager", "get_settings"]
 
 
-def get_settings(request: Request) -> Settings:
+async def get_settings(request: Request) -> Settings:
     return request.app.state.settings  # type: ignore[no-any-return]
 
 
-def get_manager(request: Request) -> RunManager:
+async def get_manager(request: Request) -> RunManager:
     return request.app.state.manager  # type: ignore[no-any-return]
 
 
-def get_cells(request: Request) -> CellRegistry:
+async def get_cells(request: Request) -> CellRegistry:
     return request.app.state.cells  # type: ignore[no-any-return]

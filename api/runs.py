@@ -29,6 +29,7 @@ from taskrunner.tasks.names import moved_groups
 from taskrunner.tasks.spec import TaskSpec
 
 from api.cells import BACKENDS, CellRegistry, CellSession
+from api.detail import RunDetailCache, RunListCache, StoredDetails
 from api.store import RunStore
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
@@ -72,6 +73,10 @@ class LiveRun:
     final_tree: str | None = None
     planner: Any = None
     done: threading.Event = field(default_factory=threading.Event)
+    detail: RunDetailCache = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        self.detail = RunDetailCache(self)
 
     @property
     def run_id(self) -> str:
@@ -107,6 +112,8 @@ class RunManager:
         self._claims: dict[int, tuple[CellSession, frozenset[str], str]] = {}
         self._lock = threading.Lock()
         self._stopping = False
+        self._stored = StoredDetails(store)
+        self.listing = RunListCache(store)
 
     # ----------------------------------------------------------------- starting
     def start(self, spec: TaskSpec, backend: str, seed: int = 0, task_text: str | None = None,
@@ -225,6 +232,34 @@ class RunManager:
         if record is None:
             raise RunNotFoundError(run_id)
         return record
+
+    def cached_detail(self, run_id: str) -> tuple[bytes | None, LiveRun | None]:
+        """The ``GET /runs/{id}`` body of a live run if it is cached and current, else
+        None; and the run if its tree is due a refresh (call ``live.detail.refresh()``
+        after answering), else None.
+
+        Cheap and non-blocking (no serialising, no database): fit for the event loop.
+        """
+        live = self.live(run_id)
+        if live is None:
+            return None, None
+        body, refresh = live.detail.fresh()
+        return body, live if refresh else None
+
+    def detail(self, run_id: str) -> bytes:
+        """The ``GET /runs/{id}`` body (JSON of :class:`~api.schemas.RunDetail`), rebuilt
+        only if the run changed since it was last built. May block (database, rendering).
+
+        Raises:
+            RunNotFoundError: no such run.
+        """
+        live = self.live(run_id)
+        if live is not None:
+            return live.detail.body()
+        body = self._stored.body(run_id)
+        if body is None:
+            raise RunNotFoundError(run_id)
+        return body
 
     def events_after(self, run_id: str, after: int) -> tuple[list[RunEvent], bool]:
         """Events with ``seq > after`` and whether more may come."""

@@ -43,6 +43,7 @@ class RunStore:
         self._db = sqlite3.connect(self.path, check_same_thread=False, isolation_level=None)
         self._db.execute("PRAGMA journal_mode=WAL")
         self._db.executescript(_SCHEMA)
+        self.version = 0  # bumped by every write (lets readers cache query results)
 
     def mark_interrupted(self) -> int:
         """Turn rows left ``running`` by a server that stopped into ``interrupted``;
@@ -70,9 +71,19 @@ class RunStore:
                                    (run_id,)).fetchone()
         return None if row is None else RunRecord.from_dict(json.loads(row[0]))
 
+    def load_text(self, run_id: str) -> str | None:
+        """The record of ``run_id`` as the JSON text stored, or None."""
+        with self._lock:
+            row = self._db.execute("SELECT record FROM runs WHERE run_id = ?",
+                                   (run_id,)).fetchone()
+        return None if row is None else str(row[0])
+
     def summaries(self, status: str | None = None, limit: int = 100) -> list[dict[str, object]]:
         """The newest runs first (without their events), optionally of one status."""
-        query = ("SELECT run_id, status, task, cell, backend, started, finished, record "
+        # The exit code and error come out of the JSON in SQLite: parsing every whole
+        # record (all its events) in Python made listing runs slow.
+        query = ("SELECT run_id, status, task, cell, backend, started, finished, "
+                 "json_extract(record, '$.exit_code'), json_extract(record, '$.error') "
                  "FROM runs")
         args: tuple[object, ...] = ()
         if status is not None:
@@ -82,11 +93,10 @@ class RunStore:
         with self._lock:
             rows = self._db.execute(query, (*args, limit)).fetchall()
         out = []
-        for run_id, st, task, cell, backend, started, finished, text in rows:
-            record = json.loads(text)
+        for run_id, st, task, cell, backend, started, finished, exit_code, error in rows:
             out.append({"run_id": run_id, "status": st, "task": task, "cell": cell,
                         "backend": backend, "started": started, "finished": finished,
-                        "exit_code": record.get("exit_code"), "error": record.get("error")})
+                        "exit_code": exit_code, "error": error})
         return out
 
     def close(self) -> None:
@@ -100,6 +110,7 @@ class RunStore:
             "finished, record) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
             (record.run_id, record.status, record.task, record.cell, record.backend,
              record.started, record.finished, text))
+        self.version += 1
 
 
 def _jsonable(value: object) -> object:

@@ -14,6 +14,7 @@ import argparse
 import http.client
 import json
 import os
+import shutil
 import socket
 import subprocess
 import sys
@@ -47,6 +48,9 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--clients", type=int, default=50)
     parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--planners", type=int, default=2,
+                        help="client threads keeping the planner busy with POST /plan "
+                             "(0: measure without that load)")
     args = parser.parse_args()
     port = _port()
     state = tempfile.mkdtemp(prefix="api-bench-")
@@ -79,7 +83,8 @@ def main() -> int:
                                               "pose": {"xyz": [0.0, 0.6, 0.8]},
                                               "planning_time": 1.0})
 
-        planners = [threading.Thread(target=keep_planning, daemon=True) for _ in range(2)]
+        planners = [threading.Thread(target=keep_planning, daemon=True)
+                    for _ in range(args.planners)]
         for t in planners:
             t.start()
         time.sleep(1.0)
@@ -100,16 +105,21 @@ def main() -> int:
         for t in clients:
             t.join()
         stop.set()
+        _, body = _call(http.client.HTTPConnection("127.0.0.1", port, timeout=10), "GET",
+                        f"/runs/{run_id}")
+        run = json.loads(body)
         ms = 1e3 * np.concatenate([np.array(s) for s in samples])
         p50, p95, p99 = np.percentile(ms, [50, 95, 99])
         print(f"GET /runs/{{id}}: {args.clients} clients, {len(ms)} requests in "
               f"{args.seconds:.0f} s ({len(ms) / args.seconds:.0f}/s) while a sim run and "
-              f"/plan requests plan: p50 {p50:.1f} ms, p95 {p95:.1f} ms, p99 {p99:.1f} ms, "
-              f"max {ms.max():.1f} ms")
+              f"{args.planners} /plan client(s) plan: p50 {p50:.1f} ms, p95 {p95:.1f} ms, "
+              f"p99 {p99:.1f} ms, max {ms.max():.1f} ms (the run: {run['status']}, "
+              f"{len(run['events'])} events, at the end)")
         return 0
     finally:
         server.terminate()
         server.wait(30)
+        shutil.rmtree(state, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -9,14 +9,15 @@ from typing import Annotated
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Request, Response, status
 from fastapi.responses import StreamingResponse
+from starlette.background import BackgroundTask
+from starlette.concurrency import run_in_threadpool
 
 from taskrunner.runtime.events import RunEvent
-from taskrunner.runtime.records import RunRecord
 
 from api.auth import require_read, require_write
 from api.cells import CellRegistry
 from api.dependencies import get_cells, get_manager, get_settings
-from api.runs import LiveRun, RunManager
+from api.runs import RunManager
 from api.schemas import ErrorBody, RunAccepted, RunCreate, RunDetail, RunStatus, RunSummary
 from api.settings import Settings
 from api.tasksource import load_request_task
@@ -54,22 +55,32 @@ def start_run(body: RunCreate, response: Response,
 
 @router.get("", response_model=list[RunSummary], dependencies=[Depends(require_read)],
             responses=_ERRORS)
-def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
-              status: RunStatus | None = None,
-              limit: Annotated[int, Query(ge=1, le=1000)] = 100) -> list[RunSummary]:
+async def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
+                    status: RunStatus | None = None,
+                    limit: Annotated[int, Query(ge=1, le=1000)] = 100) -> Response:
     """Runs, newest first, optionally of one status."""
-    return [RunSummary(**row) for row in manager.store.summaries(status, limit)]  # type: ignore[arg-type]
+    # Pre-serialised (the JSON of list[RunSummary]) and cached until a run is written;
+    # the database is only read off the event loop.
+    body = manager.listing.fresh(status, limit)
+    if body is None:
+        body = await run_in_threadpool(manager.listing.body, status, limit)
+    return Response(body, media_type="application/json")
 
 
 @router.get("/{run_id}", response_model=RunDetail, dependencies=[Depends(require_read)],
             responses=_ERRORS)
-def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> RunDetail:
+async def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> Response:
     """A run: status, the node running now (with its file:line), the tree, the events so
     far and the result."""
-    live = manager.live(run_id)
-    if live is not None:
-        return _detail(live.record, live)
-    return _detail(manager.record(run_id), None)
+    # Pre-serialised (the JSON of RunDetail): a body still current is answered straight
+    # from the event loop; building one (tree text, new events, database) runs off it.
+    # When only the clock says the tree is due a render, one request renders it after
+    # answering (a background task), and no request waits for it.
+    body, stale = manager.cached_detail(run_id)
+    if body is None:
+        body = await run_in_threadpool(manager.detail, run_id)
+    return Response(body, media_type="application/json",
+                    background=None if stale is None else BackgroundTask(stale.detail.refresh))
 
 
 @router.post("/{run_id}/cancel", status_code=status.HTTP_202_ACCEPTED,
@@ -137,15 +148,3 @@ async def _stream(manager: RunManager, run_id: str, after: int, poll: float,
 
 def _sse(event: RunEvent) -> str:
     return f"id: {event.seq}\nevent: {event.kind}\ndata: {json.dumps(event.as_dict())}\n\n"
-
-
-def _detail(record: RunRecord, live: LiveRun | None) -> RunDetail:
-    current = live.current() if live is not None else None
-    return RunDetail(
-        run_id=record.run_id, status=record.status, task=record.task,  # type: ignore[arg-type]
-        cell=record.cell, backend=record.backend, started=record.started,
-        finished=record.finished, exit_code=record.exit_code, error=record.error,
-        task_file=record.task_file, parameters=dict(record.parameters),
-        current=None if current is None else {"node": current[0], "location": current[1]},
-        tree=live.tree() if live is not None else None,
-        events=[e.as_dict() for e in list(record.events)])  # type: ignore[misc]
