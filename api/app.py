@@ -47,7 +47,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                         marked)
         registry = CellRegistry(settings.cells_dir,
                                 {"sim": settings.sim_speed, "mock": settings.mock_speed},
-                                settings.planner)
+                                settings.planner, store)
         manager = RunManager(registry, store, tick_hz=settings.tick_hz)
         app.state.cells, app.state.manager, app.state.store = registry, manager, store
         try:

@@ -9,6 +9,7 @@ does not wait for a process to load the model, and two runs never share one.
 
 from __future__ import annotations
 
+import logging
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -19,7 +20,9 @@ from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
 
-__all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession"]
+__all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession", "PoseConflictError"]
+
+log = logging.getLogger(__name__)
 
 BACKENDS = ("sim", "mock")
 
@@ -34,6 +37,11 @@ class CellNotFoundError(LookupError):
         super().__init__(f"unknown cell {cell_id!r}; known: {shown}")
 
 
+class PoseConflictError(RuntimeError):
+    """A pose cannot be taught now: the name belongs to the robot files, or runs move the
+    cell (HTTP 409)."""
+
+
 @dataclass
 class CellSession:
     """One loaded cell with its backends, its idle planners and its last scene."""
@@ -46,6 +54,13 @@ class CellSession:
     idle_planners: list[Any] = field(default_factory=list)
     last_scene: Scene | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
+    taught: set[tuple[str, str]] = field(default_factory=set)
+
+    def teach(self, group: str, name: str, joints: dict[str, float]) -> None:
+        """Make ``name`` a named pose of ``group`` in this cell's model (runs compiled from
+        now on resolve it here and send the joint values to the planner)."""
+        self.cell.model.named_states.setdefault(group, {})[name] = dict(joints)
+        self.taught.add((group, name))
 
     def backend(self, kind: str) -> Backend:
         """The cell's backend of ``kind``, made at the cell's start state on first use."""
@@ -94,8 +109,9 @@ class CellRegistry:
     """Cells by id (file name in ``cells_dir`` without ``.yaml``) and by path."""
 
     def __init__(self, cells_dir: Path, speeds: dict[str, float | None],
-                 planner_kind: str) -> None:
+                 planner_kind: str, store: Any = None) -> None:
         self.cells_dir = cells_dir
+        self._store = store
         self._speeds = speeds
         self._planner_kind = planner_kind
         self._sessions: dict[Path, CellSession] = {}
@@ -133,9 +149,19 @@ class CellRegistry:
         if session is not None:
             return session
         cell = load_cell(path)  # outside the lock: loading meshes takes a while
+        fresh = CellSession(path, cell, self._speeds, self._planner_kind)
+        if self._store is not None:
+            for group, name, joints, _ in self._store.poses(self.id_of(path)):
+                if group in cell.model.groups and all(
+                        j in cell.model.group(group).joint_names for j in joints) \
+                        and cell.model.within_limits(cell.model.state_with(
+                            cell.model.default_state(), joints)):
+                    fresh.teach(group, name, joints)
+                else:
+                    log.warning("taught pose %r of group %r no longer fits cell %s: skipped",
+                                name, group, path)
         with self._lock:
-            return self._sessions.setdefault(
-                path, CellSession(path, cell, self._speeds, self._planner_kind))
+            return self._sessions.setdefault(path, fresh)
 
     def by_id(self, cell_id: str) -> CellSession:
         return self.session(self.path_of(cell_id))

@@ -11,8 +11,9 @@ from fastapi import Request
 from api.cells import CellRegistry
 from api.runs import RunManager
 from api.settings import Settings
+from api.store import RunStore
 
-__all__ = ["get_cells", "get_manager", "get_settings"]
+__all__ = ["get_cells", "get_manager", "get_settings", "get_store"]
 
 
 async def get_settings(request: Request) -> Settings:
@@ -25,3 +26,7 @@ async def get_manager(request: Request) -> RunManager:
 
 async def get_cells(request: Request) -> CellRegistry:
     return request.app.state.cells  # type: ignore[no-any-return]
+
+
+async def get_store(request: Request) -> RunStore:
+    return request.app.state.store  # type: ignore[no-any-return]

@@ -27,7 +27,7 @@ from fastapi.responses import JSONResponse
 
 from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
 
-from api.cells import CellNotFoundError
+from api.cells import CellNotFoundError, PoseConflictError
 from api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
 
 __all__ = ["BodyLimit", "add_error_handlers", "problems_of"]
@@ -98,6 +98,7 @@ def add_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(RunNotFinishedError, _not_finished)
     app.add_exception_handler(RunNotFoundError, _not_found)
     app.add_exception_handler(CellNotFoundError, _not_found)
+    app.add_exception_handler(PoseConflictError, _not_finished)
     app.add_exception_handler(ValueError, _value_error)
 
 

@@ -213,3 +213,16 @@ class Health(_Strict):
     status: Literal["ok"]
     runs_in_flight: int
     auth: bool
+
+
+class TeachRequest(_Strict):
+    group: str = Field(description="the group whose joints the pose sets")
+    backend: str = Field(default="sim", description="whose joint state to store: sim or mock")
+
+
+class TaughtPose(_Strict):
+    cell: str
+    group: str
+    name: str
+    joints: dict[str, float] = Field(description="rad or m")
+    taught: str = Field(description="when (ISO 8601, UTC)")

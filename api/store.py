@@ -30,6 +30,14 @@ CREATE TABLE IF NOT EXISTS runs (
     record   TEXT NOT NULL
 );
 CREATE INDEX IF NOT EXISTS runs_status ON runs (status);
+CREATE TABLE IF NOT EXISTS taught_poses (
+    cell     TEXT NOT NULL,
+    grp      TEXT NOT NULL,
+    name     TEXT NOT NULL,
+    joints   TEXT NOT NULL,
+    taught   TEXT NOT NULL,
+    PRIMARY KEY (cell, grp, name)
+);
 """
 
 
@@ -44,6 +52,23 @@ class RunStore:
         self._db.execute("PRAGMA journal_mode=WAL")
         self._db.executescript(_SCHEMA)
         self.version = 0  # bumped by every write (lets readers cache query results)
+
+    def save_pose(self, cell: str, group: str, name: str, joints: dict[str, float]) -> str:
+        """Store (or replace) a taught named pose; returns when it was taught (ISO time)."""
+        now = datetime.now(timezone.utc).isoformat()
+        with self._lock:
+            self._db.execute(
+                "INSERT OR REPLACE INTO taught_poses VALUES (?, ?, ?, ?, ?)",
+                (cell, group, name, json.dumps(joints), now))
+        return now
+
+    def poses(self, cell: str) -> list[tuple[str, str, dict[str, float], str]]:
+        """The taught poses of ``cell``: (group, name, joints, taught)."""
+        with self._lock:
+            rows = self._db.execute(
+                "SELECT grp, name, joints, taught FROM taught_poses WHERE cell = ? "
+                "ORDER BY taught", (cell,)).fetchall()
+        return [(g, n, json.loads(j), t) for g, n, j, t in rows]
 
     def mark_interrupted(self) -> int:
         """Turn rows left ``running`` by a server that stopped into ``interrupted``;

@@ -2,16 +2,18 @@
 
 from __future__ import annotations
 
+import re
 from typing import Annotated
 
 import yaml
 from fastapi import APIRouter, Depends
 
-from api.auth import require_read
-from api.cells import BACKENDS, CellRegistry
-from api.dependencies import get_cells, get_manager
+from api.auth import require_read, require_write
+from api.cells import BACKENDS, CellRegistry, PoseConflictError
+from api.dependencies import get_cells, get_manager, get_store
 from api.runs import RunManager
-from api.schemas import CellDetail, CellState, CellSummary, ErrorBody
+from api.schemas import CellDetail, CellState, CellSummary, ErrorBody, TaughtPose, TeachRequest
+from api.store import RunStore
 
 __all__ = ["router"]
 
@@ -71,3 +73,43 @@ def cell_state(cell_id: str, cells: Annotated[CellRegistry, Depends(get_cells)],
                      joints={n: float(v) for n, v in zip(state.names, state.positions)},
                      attached=attached,  # type: ignore[arg-type]
                      running=[r.run_id for r in running])
+
+
+_POSE_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-]{0,63}$")
+
+
+@router.put("/{cell_id}/poses/{name}", response_model=TaughtPose,
+            responses={**_ERRORS, 409: {"model": ErrorBody}},
+            dependencies=[Depends(require_write)])
+def teach_pose(cell_id: str, name: str, body: TeachRequest,
+               cells: Annotated[CellRegistry, Depends(get_cells)],
+               manager: Annotated[RunManager, Depends(get_manager)],
+               store: Annotated[RunStore, Depends(get_store)]) -> TaughtPose:
+    """Teach: store the group's joints as the cell's backend reports them now as named
+    pose ``name`` (kept in the server's database, there after a restart). Tasks use it
+    like any named pose. A pose of the robot's own files cannot be replaced (409); a
+    taught one can. Refused while a run moves the group (409)."""
+    if not _POSE_NAME.match(name):
+        raise ValueError(f"'name' must be a letter or _ then letters, digits, _ or - "
+                         f"(got {name!r})")
+    if body.backend not in BACKENDS:
+        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {body.backend!r})")
+    session = cells.by_id(cell_id)
+    model = session.cell.model
+    group = model.group(body.group)
+    existing = model.named_states.get(group.name, {})
+    if name in existing and (group.name, name) not in session.taught:
+        raise PoseConflictError(f"named pose {name!r} of group {group.name!r} comes from the robot "
+                           "or cell files; pick another name")
+    busy = [r.run_id for r in manager.running_on(session)]
+    if busy:
+        raise PoseConflictError(f"runs {busy} are moving cell {cell_id!r}: teach when it is still")
+    reported = session.backend(body.backend).joint_state()
+    state = dict(zip(reported.names, reported.positions))
+    joints = {j: float(state[j]) for j in group.joint_names}
+    bad = model.limit_violations(model.state_with(model.default_state(), joints))
+    if bad:
+        raise ValueError("the current state is outside the joint limits: " + "; ".join(bad))
+    taught = store.save_pose(cell_id, group.name, name, joints)
+    session.teach(group.name, name, joints)
+    return TaughtPose(cell=cell_id, group=group.name, name=name, joints=joints, taught=taught)

@@ -26,7 +26,7 @@ from taskrunner.planning.cartesian import (
     CartesianPlanner,
     CartesianResult,
 )
-from taskrunner.planning.request import Goal, PlannerOptions, PlanRequest
+from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptions, PlanRequest
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.tree.context import ExecutedMotion, TaskContext
@@ -148,7 +148,8 @@ class MoveToGoal(_Executes):
         super().start()
         self.ticket = None
         try:
-            request = PlanRequest(self.group, self.goal(self.ctx), start=self.ctx.scene.state,
+            goal = _resolve_named(self.goal(self.ctx), self.ctx.scene.robot, self.group)
+            request = PlanRequest(self.group, goal, start=self.ctx.scene.state,
                                   options=replace(self.options, seed=self.ctx.next_seed()))
             self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
         except TaskrunnerError as exc:
@@ -174,6 +175,16 @@ class MoveToGoal(_Executes):
             self.ticket.cancel()
             self.ticket = None
         super().abort()
+
+
+def _resolve_named(goal, model, group: str):  # type: ignore[no-untyped-def]
+    """Named poses as joint values from this process's model, so poses added at run time
+    (taught through the API) reach a planner whose own copy of the model lacks them."""
+    if isinstance(goal, tuple):
+        return tuple(_resolve_named(g, model, group) for g in goal)
+    if isinstance(goal, NamedGoal):
+        return JointGoal(model.named_state(group, goal.name).as_dict())
+    return goal
 
 
 class MoveStraight(_Executes):
