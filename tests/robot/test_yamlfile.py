@@ -178,3 +178,11 @@ def test_empty_file_is_none(tmp_path):
 def test_text_without_path_is_labelled_string():
     with pytest.raises(YamlError, match=r"^<string>:2: duplicate key 'a'"):
         load_yaml_text("a: 1\na: 2\n")
+
+
+def test_a_control_character_is_a_yaml_error_with_its_line():
+    from taskrunner.errors import YamlError
+    from taskrunner.yamlfile import load_yaml_text
+
+    with pytest.raises(YamlError, match=r"^task.yaml:2: invalid YAML: character #x001f"):
+        load_yaml_text("a: 1\nb: \x1f\n", "task.yaml")
