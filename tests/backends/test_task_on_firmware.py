@@ -111,3 +111,29 @@ def test_pick_place_runs_on_the_firmware_and_the_servos_follow_the_plan(firmware
     assert len(ticks) > 100
     distance, _ = cKDTree(np.array(commanded)).query(ticks)
     assert distance.max() < 1.0, f"a tick strays {distance.max():.2f}° from the commanded motion"
+
+
+def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
+    import sys
+
+    proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
+                             "--speedup", "10"], stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, cwd=ROOT)
+    try:
+        data, deadline = b"", time.monotonic() + 20.0
+        while data.count(b"\n") < 2:
+            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
+            assert ready, f"printed {data!r}"
+            chunk = os.read(proc.stdout.fileno(), 4096)
+            assert chunk, "exited early"
+            data += chunk
+        pty, url = data.decode().splitlines()[:2]
+        assert pty.startswith("/dev/pts/") and url.startswith("http://127.0.0.1:")
+        assert status(url)["status"] == "ok"
+    finally:
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.wait(10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait(5)
