@@ -48,6 +48,10 @@ def test_no_generated_request_gets_a_server_error(case, client):
     kwargs["headers"] = {**(kwargs.get("headers") or {}), **AUTH}
     kwargs.pop("base_url", None)
     method, url = kwargs.pop("method"), kwargs.pop("url")
+    if not kwargs.get("cookies"):
+        kwargs.pop("cookies", None)  # the API reads no cookies; per-request ones are deprecated
+    if isinstance(kwargs.get("data"), (bytes, str)):
+        kwargs["content"] = kwargs.pop("data")  # raw bodies: httpx's name for them
     response = client.request(method, url, **kwargs)
     assert response.status_code < 500, (
         f"{method} {url} -> {response.status_code}: {response.text[:500]}")
