@@ -5,7 +5,11 @@ a long sim run of pick_place, keeps a planner busy with POST /plan requests, and
 client threads (one keep-alive connection each) poll GET /runs/{id} for ``--seconds``.
 Prints p50 / p95 / p99 / max in ms. Target (issue 5): p99 <= 20 ms.
 
-    python benchmarks/api_latency.py [--clients 50] [--seconds 10]
+    python benchmarks/api_latency.py [--clients 50] [--seconds 10] [--client python|wrk]
+
+``--client python`` (default) polls from 50 Python threads: their own GIL time is part of
+what they measure. ``--client wrk`` uses Debian's ``wrk`` load generator (C, 2 threads,
+50 connections), which measures the server alone (``apt-get install wrk``).
 """
 
 from __future__ import annotations
@@ -48,6 +52,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--clients", type=int, default=50)
     parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--client", choices=("python", "wrk"), default="python")
     parser.add_argument("--planners", type=int, default=2,
                         help="client threads keeping the planner busy with POST /plan "
                              "(0: measure without that load)")
@@ -88,6 +93,8 @@ def main() -> int:
         for t in planners:
             t.start()
         time.sleep(1.0)
+        if args.client == "wrk":
+            return _run_wrk(args, port, run_id, stop)
         samples: list[list[float]] = [[] for _ in range(args.clients)]
 
         def poll(k: int) -> None:
@@ -120,6 +127,38 @@ def main() -> int:
         server.terminate()
         server.wait(30)
         shutil.rmtree(state, ignore_errors=True)
+
+
+def _run_wrk(args: argparse.Namespace, port: int, run_id: str, stop: threading.Event) -> int:
+    if shutil.which("wrk") is None:
+        raise SystemExit("--client wrk needs wrk on PATH (apt-get install wrk)")
+    done = subprocess.run(
+        ["wrk", "-t2", f"-c{args.clients}", f"-d{args.seconds:.0f}s", "--latency",
+         "-H", f"Authorization: Bearer {TOKEN}", f"http://127.0.0.1:{port}/runs/{run_id}"],
+        capture_output=True, text=True, timeout=args.seconds + 60)
+    stop.set()
+    text = done.stdout
+    percentiles = {}
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[0].endswith("%") and parts[0][:-1].replace(".", "").isdigit():
+            percentiles[parts[0]] = _ms(parts[1])
+    rate = next((line.split()[1] for line in text.splitlines()
+                 if line.startswith("Requests/sec:")), "?")
+    errors = [line.strip() for line in text.splitlines() if "Non-2xx" in line or "errors" in line]
+    print(f"GET /runs/{{id}} (wrk, {args.clients} connections, {args.seconds:.0f} s, "
+          f"{args.planners} /plan client(s) planning, a sim run executing): {rate} req/s; "
+          + ", ".join(f"p{k[:-1]} {v:.1f} ms" for k, v in percentiles.items())
+          + (f"; {'; '.join(errors)}" if errors else ""))
+    return 0
+
+
+def _ms(value: str) -> float:
+    """wrk's '1.23ms' / '456.00us' / '1.02s' as milliseconds."""
+    for unit, scale in (("us", 1e-3), ("ms", 1.0), ("s", 1e3)):
+        if value.endswith(unit):
+            return float(value[: -len(unit)]) * scale
+    return float(value)
 
 
 if __name__ == "__main__":
