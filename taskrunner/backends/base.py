@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import threading
+from abc import ABC, abstractmethod
 import time
 from collections.abc import Callable, Mapping
 from typing import Any, Protocol, Self, runtime_checkable
@@ -196,7 +197,7 @@ def _initial_positions(names: tuple[str, ...],
     return positions
 
 
-class BaseBackend:
+class BaseBackend(ABC):
     """Joint positions, trajectory checks and joint bookkeeping shared by the backends.
 
     A subclass implements :meth:`_begin` (an execution was accepted) and, if its state
@@ -312,9 +313,9 @@ class BaseBackend:
         """Seconds since the backend was created, on its clock."""
         return self._clock() - self._t0
 
+    @abstractmethod
     def _begin(self, execution: TrajectoryExecution) -> None:
-        """An execution was accepted (called under the lock). Override."""
-        raise NotImplementedError
+        """An execution was accepted (called under the lock): start moving it."""
 
     def _refresh(self) -> None:
         """Bring positions and executions up to date (called under the lock). Override
