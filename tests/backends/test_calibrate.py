@@ -3,14 +3,11 @@
 from __future__ import annotations
 
 import math
-import os
-import select
 import shutil
-import subprocess
-import time
 from pathlib import Path
 
 import pytest
+from firmware_host import build_host, running_host
 
 from taskrunner.backends.calibrate import calibrate_servos, update_hardware_yaml
 from taskrunner.backends.calibration import load_calibration
@@ -46,23 +43,8 @@ def test_update_of_an_unknown_joint_names_it(tmp_path):
 
 @pytest.fixture
 def firmware_pty():
-    binary = ROOT / "firmware" / "build" / "taskrunner-servo-host"
-    if shutil.which("make") is None or shutil.which("g++") is None:
-        pytest.skip("the firmware host build needs make and g++")
-    subprocess.run(["make", "-s", "-C", str(ROOT / "firmware"), "host"], check=True,
-                   capture_output=True, timeout=300)
-    proc = subprocess.Popen([str(binary), "--speedup", "50"], stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL)
-    try:
-        data, deadline = b"", time.monotonic() + 5
-        while data.count(b"\n") < 2:
-            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
-            assert ready
-            data += os.read(proc.stdout.fileno(), 4096)
-        yield data.decode().splitlines()[0]
-    finally:
-        proc.terminate()
-        proc.wait(5)
+    with running_host(build_host(), 50) as host:
+        yield host.pty
 
 
 def test_calibrate_walks_a_joint_and_writes_the_answers(tmp_path, firmware_pty):

@@ -12,8 +12,6 @@ import csv
 import json
 import math
 import os
-import select
-import shutil
 import signal
 import subprocess
 import time
@@ -24,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from firmware_host import build_host, running_host
 
 from taskrunner.backends.calibration import ServoCalibration, load_calibration
 from taskrunner.backends.http import HttpBackend
@@ -274,40 +273,14 @@ class Host:
 
 @pytest.fixture(scope="module")
 def host_binary() -> Path:
-    missing = [tool for tool in ("make", "g++") if shutil.which(tool) is None]
-    if missing:
-        pytest.skip(f"the firmware host build needs {' and '.join(missing)}, not on PATH")
-    result = subprocess.run(["make", "--no-print-directory", "-j2", "-C", str(FIRMWARE), "host"],
-                            capture_output=True, text=True, timeout=300, check=False)
-    assert result.returncode == 0, result.stdout + result.stderr
-    return HOST_BIN
+    return build_host()
 
 
 @pytest.fixture
 def host(host_binary: Path, tmp_path: Path) -> Iterator[Host]:
-    log = tmp_path / "ticks.csv"
-    proc = subprocess.Popen([str(host_binary), "--speedup", str(SPEEDUP), "--log", str(log)],
-                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
-    try:
-        assert proc.stdout is not None
-        data, deadline = b"", time.monotonic() + 5.0
-        while data.count(b"\n") < 2:
-            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
-            assert ready, f"host firmware printed {data!r} in 5 s"
-            chunk = os.read(proc.stdout.fileno(), 4096)
-            assert chunk, "host firmware exited early"
-            data += chunk
-        pty, url = data.decode().splitlines()[:2]
-        yield Host(proc, pty, url, log)
-    finally:
-        if proc.poll() is None:
-            os.kill(proc.pid, signal.SIGCONT)
-            proc.terminate()
-        try:
-            proc.wait(5)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait(5)
+    with running_host(host_binary, SPEEDUP, tmp_path / "ticks.csv") as running:
+        assert running.log is not None
+        yield Host(running.proc, running.pty, running.url, running.log)
 
 
 def _open(kind: str, host: Host, calibration: ServoCalibration, **options: float) -> ServoBackend:

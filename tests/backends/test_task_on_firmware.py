@@ -10,17 +10,14 @@ from __future__ import annotations
 
 import csv
 import json
-import os
-import select
-import shutil
 import signal
 import subprocess
-import time
 import urllib.request
 from pathlib import Path
 
 import numpy as np
 import pytest
+from firmware_host import build_host, read_address_lines, running_host, stop_process
 from scipy.spatial import cKDTree
 
 from taskrunner.planning.service import InProcessPlanner
@@ -30,43 +27,18 @@ from taskrunner.runtime.session import make_backend, servo_calibration
 from taskrunner.tasks import load_task
 
 ROOT = Path(__file__).resolve().parents[2]
-FIRMWARE = ROOT / "firmware"
 SPEEDUP = 50.0
 
 
 @pytest.fixture(scope="module")
 def host_binary() -> Path:
-    missing = [tool for tool in ("make", "g++") if shutil.which(tool) is None]
-    if missing:
-        pytest.skip(f"the firmware host build needs {' and '.join(missing)}, not on PATH")
-    built = subprocess.run(["make", "--no-print-directory", "-j2", "-C", str(FIRMWARE), "host"],
-                           capture_output=True, text=True, timeout=300, check=False)
-    assert built.returncode == 0, built.stdout + built.stderr
-    return FIRMWARE / "build" / "taskrunner-servo-host"
+    return build_host()
 
 
 @pytest.fixture
 def firmware(host_binary, tmp_path):
-    log = tmp_path / "ticks.csv"
-    proc = subprocess.Popen([str(host_binary), "--speedup", str(SPEEDUP), "--log", str(log)],
-                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
-    try:
-        data, deadline = b"", time.monotonic() + 5.0
-        while data.count(b"\n") < 2:
-            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
-            assert ready, f"host firmware printed {data!r} in 5 s"
-            chunk = os.read(proc.stdout.fileno(), 4096)
-            assert chunk, "host firmware exited early"
-            data += chunk
-        pty, url = data.decode().splitlines()[:2]
-        yield pty, url, log
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(5)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait(5)
+    with running_host(host_binary, SPEEDUP, tmp_path / "ticks.csv") as host:
+        yield host.pty, host.url, host.log
 
 
 def status(url: str) -> dict:
@@ -120,20 +92,8 @@ def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
                              "--speedup", "10"], stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, cwd=ROOT)
     try:
-        data, deadline = b"", time.monotonic() + 20.0
-        while data.count(b"\n") < 2:
-            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
-            assert ready, f"printed {data!r}"
-            chunk = os.read(proc.stdout.fileno(), 4096)
-            assert chunk, "exited early"
-            data += chunk
-        pty, url = data.decode().splitlines()[:2]
+        pty, url = read_address_lines(proc, timeout=20.0)
         assert pty.startswith("/dev/pts/") and url.startswith("http://127.0.0.1:")
         assert status(url)["status"] == "ok"
     finally:
-        proc.send_signal(signal.SIGINT)
-        try:
-            proc.wait(10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait(5)
+        stop_process(proc, signal.SIGINT)

@@ -1,0 +1,78 @@
+"""Building and starting the host build of the ESP32 firmware for backend tests."""
+
+from __future__ import annotations
+
+import os
+import select
+import shutil
+import signal
+import subprocess
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+FIRMWARE = Path(__file__).resolve().parents[2] / "firmware"
+HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
+
+
+def build_host() -> Path:
+    """``make -C firmware host`` (skips the test when make or g++ is missing)."""
+    missing = [tool for tool in ("make", "g++") if shutil.which(tool) is None]
+    if missing:
+        pytest.skip(f"the firmware host build needs {' and '.join(missing)}, not on PATH")
+    built = subprocess.run(["make", "--no-print-directory", "-j2", "-C", str(FIRMWARE), "host"],
+                           capture_output=True, text=True, timeout=300, check=False)
+    assert built.returncode == 0, built.stdout + built.stderr
+    return HOST_BIN
+
+
+def read_address_lines(proc: subprocess.Popen[bytes], timeout: float = 5.0) -> tuple[str, str]:
+    """The pty path and the URL a firmware host prints on its first two lines."""
+    assert proc.stdout is not None
+    data, deadline = b"", time.monotonic() + timeout
+    while data.count(b"\n") < 2:
+        ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
+        assert ready, f"the firmware host printed {data!r} in {timeout} s"
+        chunk = os.read(proc.stdout.fileno(), 4096)
+        assert chunk, f"the firmware host exited early after printing {data!r}"
+        data += chunk
+    pty, url = data.decode().splitlines()[:2]
+    return pty, url
+
+
+def stop_process(proc: subprocess.Popen[bytes], sig: int = signal.SIGTERM) -> None:
+    """End ``proc`` (resuming it first if a test stopped it), killing it if it lingers."""
+    if proc.poll() is None:
+        os.kill(proc.pid, signal.SIGCONT)
+        proc.send_signal(sig)
+    try:
+        proc.wait(10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait(5)
+
+
+@dataclass
+class FirmwareHost:
+    proc: subprocess.Popen[bytes]
+    pty: str
+    url: str
+    log: Path | None
+
+
+@contextmanager
+def running_host(binary: Path, speedup: float, log: Path | None = None) -> Iterator[FirmwareHost]:
+    """A firmware host at ``speedup`` (ticks logged to ``log`` if given), stopped after."""
+    command = [str(binary), "--speedup", str(speedup)]
+    if log is not None:
+        command += ["--log", str(log)]
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    try:
+        pty, url = read_address_lines(proc)
+        yield FirmwareHost(proc, pty, url, log)
+    finally:
+        stop_process(proc)
