@@ -18,6 +18,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
+import pinocchio as pin
 
 from taskrunner.errors import (
     GoalInCollisionError,
@@ -41,7 +42,7 @@ from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
 from taskrunner.types import JointPath
 
-__all__ = ["MotionPlanner", "interpolate_path", "first_invalid_state"]
+__all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
 _REFINEMENTS = 3
 _SINGLE_GOAL = {"PRM", "PRMstar"}
@@ -216,53 +217,10 @@ class MotionPlanner:
             key = (group.name, goal.link)
             if key not in self._ik:
                 self._ik[key] = IkSolver(model, group.name, frame=goal.link)
-            settings = group.kinematics
-            ik_options = IkOptions(
-                tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
-                num_solutions=options.goal_samples,
-                # Several distinct solutions need more restarts than one does.
-                timeout=max(settings.timeout if settings else 0.0, 0.05),
-                attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
-            )
             # A pose in a link's or an object's frame is taken at the start state.
             target = self.scene.to_world(goal.pose, start)
-            solver = self._ik[key]
-            if goal.position_only is False and group.position_only_ik:
-                return self._full_pose_on_short_arm(solver, target, start, ik_options)
-            solutions = solver.solve_all(target, seed_q=start, options=ik_options)
-            return [s.q for s in solutions]
+            return pose_goal_states(self._ik[key], group, goal, target, start, options)
         raise TypeError(f"unsupported goal type {type(goal).__name__}")
-
-    @staticmethod
-    def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type: ignore[no-untyped-def]
-                                options: IkOptions) -> list[np.ndarray]:
-        """Full-pose IK for an arm with fewer than six joints (position-only by default).
-
-        The poses such an arm reaches form a thin set that random restarts rarely land
-        on; solving the position first and then the whole pose from there, locally, does.
-        """
-        from dataclasses import replace as replace_options
-
-        positions = solver.solve_all(target.translation, seed_q=start, options=replace_options(
-            options, position_only=True, num_solutions=4 * options.num_solutions))
-        found: list[np.ndarray] = []
-        best: IkFailedError | None = None
-        for candidate in positions:
-            try:
-                full = solver.solve(target, seed_q=candidate.q, options=replace_options(
-                    options, position_only=False, attempts=1, num_solutions=1))
-            except IkFailedError as exc:
-                best = exc if best is None or (exc.best_error or 0) < (best.best_error or 0) \
-                    else best
-                continue
-            if all(np.max(np.abs(full.q - q)) > options.min_distance for q in found):
-                found.append(full.q)
-            if len(found) >= options.num_solutions:
-                break
-        if not found:
-            assert best is not None
-            raise best
-        return found
 
     # ------------------------------------------------------------------ search
     def _validity(self, group: Group, start: np.ndarray) -> tuple[Callable[[np.ndarray], bool], list[int]]:
@@ -394,6 +352,58 @@ class MotionPlanner:
             if first_invalid_state(is_valid, candidate, options.validation_resolution) is None:
                 return candidate
         return None
+
+
+def pose_goal_states(solver: IkSolver, group: Group, goal: PoseGoal, target: pin.SE3,
+                     start: np.ndarray, options: PlannerOptions) -> list[np.ndarray]:
+    """The goal states a pose goal offers the planner: up to ``options.goal_samples``
+    distinct IK solutions of ``target`` (world) for ``solver``'s frame, from ``start``.
+
+    Raises:
+        IkFailedError: no solution.
+    """
+    settings = group.kinematics
+    ik_options = IkOptions(
+        tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
+        num_solutions=options.goal_samples,
+        # Several distinct solutions need more restarts than one does.
+        timeout=max(settings.timeout if settings else 0.0, 0.05),
+        attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
+    )
+    if goal.position_only is False and group.position_only_ik:
+        return _full_pose_on_short_arm(solver, target, start, ik_options)
+    return [s.q for s in solver.solve_all(target, seed_q=start, options=ik_options)]
+
+
+def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type: ignore[no-untyped-def]
+                        options: IkOptions) -> list[np.ndarray]:
+    """Full-pose IK for an arm with fewer than six joints (position-only by default).
+
+    The poses such an arm reaches form a thin set that random restarts rarely land
+    on; solving the position first and then the whole pose from there, locally, does.
+    """
+    from dataclasses import replace as replace_options
+
+    positions = solver.solve_all(target.translation, seed_q=start, options=replace_options(
+        options, position_only=True, num_solutions=4 * options.num_solutions))
+    found: list[np.ndarray] = []
+    best: IkFailedError | None = None
+    for candidate in positions:
+        try:
+            full = solver.solve(target, seed_q=candidate.q, options=replace_options(
+                options, position_only=False, attempts=1, num_solutions=1))
+        except IkFailedError as exc:
+            best = exc if best is None or (exc.best_error or 0) < (best.best_error or 0) \
+                else best
+            continue
+        if all(np.max(np.abs(full.q - q)) > options.min_distance for q in found):
+            found.append(full.q)
+        if len(found) >= options.num_solutions:
+            break
+    if not found:
+        assert best is not None
+        raise best
+    return found
 
 
 def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.ndarray,

@@ -60,9 +60,9 @@ from taskrunner.errors import (
     TaskrunnerError,
     TaskSpecError,
 )
-from taskrunner.kinematics import IkOptions, IkSolver
+from taskrunner.kinematics import IkSolver
 from taskrunner.planning.cartesian import CartesianPlanner
-from taskrunner.planning.planner import MotionPlanner, interpolate_path
+from taskrunner.planning.planner import interpolate_path, pose_goal_states
 from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.robot.cell import Cell, load_cell
@@ -533,18 +533,9 @@ class _DryRun:
                 continue
             assert isinstance(goal, PoseGoal)
             solver = self.solver(group, goal.link)
-            settings = group.kinematics
-            ik = IkOptions(
-                tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
-                num_solutions=options.goal_samples,
-                timeout=max(settings.timeout if settings else 0.0, 0.05),
-                attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples))
             world = scene.to_world(goal.pose, start)
             try:
-                if goal.position_only is False and group.position_only_ik:
-                    out += MotionPlanner._full_pose_on_short_arm(solver, world, start, ik)
-                else:
-                    out += [s.q for s in solver.solve_all(world, seed_q=start, options=ik)]
+                out += pose_goal_states(solver, group, goal, world, start, options)
             except IkFailedError as exc:
                 only = group.position_only_ik if goal.position_only is None \
                     else goal.position_only
