@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import gc
 import logging
 import secrets
 from collections.abc import AsyncIterator
@@ -10,7 +11,8 @@ from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
 
-from api.cells import CellRegistry
+from api.cells import CellRegistry, settle_heap
+from api.fastpath import RunDetailFastPath
 from api.handlers import BodyLimit, add_error_handlers
 from api.routers import cells, health, plan, runs, tasks
 from api.runs import RunManager
@@ -47,15 +49,17 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                         marked)
         registry = CellRegistry(settings.cells_dir,
                                 {"sim": settings.sim_speed, "mock": settings.mock_speed},
-                                settings.planner, store)
+                                settings.planner, store, settings.planner_nice)
         manager = RunManager(registry, store, tick_hz=settings.tick_hz)
         app.state.cells, app.state.manager, app.state.store = registry, manager, store
+        settle_heap()
         try:
             yield
         finally:
             manager.shutdown(settings.shutdown_timeout_s)
             registry.close()
             store.close()
+            gc.unfreeze()  # what settle_heap froze can be collected again
 
     app = FastAPI(
         title="taskrunner",
@@ -71,4 +75,5 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         app.include_router(module.router)
     add_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    app.add_middleware(RunDetailFastPath)  # outermost: polls skip the rest
     return app

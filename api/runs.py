@@ -233,19 +233,6 @@ class RunManager:
             raise RunNotFoundError(run_id)
         return record
 
-    def cached_detail(self, run_id: str) -> tuple[bytes | None, LiveRun | None]:
-        """The ``GET /runs/{id}`` body of a live run if it is cached and current, else
-        None; and the run if its tree is due a refresh (call ``live.detail.refresh()``
-        after answering), else None.
-
-        Cheap and non-blocking (no serialising, no database): fit for the event loop.
-        """
-        live = self.live(run_id)
-        if live is None:
-            return None, None
-        body, refresh = live.detail.fresh()
-        return body, live if refresh else None
-
     def detail(self, run_id: str) -> bytes:
         """The ``GET /runs/{id}`` body (JSON of :class:`~api.schemas.RunDetail`), rebuilt
         only if the run changed since it was last built. May block (database, rendering).

@@ -8,6 +8,7 @@ Environment variables (all optional):
 - ``TASKRUNNER_TASKS_DIR``, ``TASKRUNNER_CELLS_DIR``, ``TASKRUNNER_STATE_DIR``: folders.
 - ``TASKRUNNER_MAX_BODY_BYTES``: largest accepted request body (bytes).
 - ``TASKRUNNER_PLANNER``: ``worker`` (a planning process per run, default) or ``inprocess``.
+- ``TASKRUNNER_PLANNER_NICE``: how much lower the planning workers' CPU priority is (10).
 - ``TASKRUNNER_SIM_SPEED``: time scale of the simulated backend (2: twice real time).
 """
 
@@ -41,6 +42,9 @@ class Settings:
         planner: ``worker`` plans in a process per run (the event loop and the other runs
             keep going while OMPL searches); ``inprocess`` plans in the run's thread
             (tests: no process start-up).
+        planner_nice: how much lower the planning workers' CPU priority is than the
+            server's (Unix ``nice``, 0 to 19): planning gets the cycles the server and
+            the runs' execution leave, and cannot slow their answers.
         sim_speed: default time scale of the sim backend.
         mock_speed: default replay speed of the mock backend (None: motions end at once).
         tick_hz: behaviour-tree ticks per second.
@@ -56,6 +60,7 @@ class Settings:
     state_dir: Path = REPO_ROOT / "state"
     max_body_bytes: int = 1_000_000
     planner: str = "worker"
+    planner_nice: int = 10
     sim_speed: float = 1.0
     mock_speed: float | None = None
     tick_hz: float = 100.0
@@ -74,6 +79,10 @@ class Settings:
         if self.planner not in PLANNERS:
             raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} "
                              f"(got {self.planner!r})")
+        if isinstance(self.planner_nice, bool) or not isinstance(self.planner_nice, int) \
+                or not 0 <= self.planner_nice <= 19:
+            raise ValueError(f"'planner_nice' must be an integer from 0 to 19 "
+                             f"(got {self.planner_nice!r})")
         for name in ("sim_speed", "tick_hz", "sse_poll_s", "shutdown_timeout_s"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
@@ -101,10 +110,17 @@ class Settings:
                           ("STATE_DIR", "state_dir"), ("PLANNER", "planner")):
             if env.get(f"TASKRUNNER_{key}"):
                 values[name] = env[f"TASKRUNNER_{key}"]
-        if env.get("TASKRUNNER_MAX_BODY_BYTES"):
-            values["max_body_bytes"] = int(env["TASKRUNNER_MAX_BODY_BYTES"])
-        if env.get("TASKRUNNER_SIM_SPEED"):
-            values["sim_speed"] = float(env["TASKRUNNER_SIM_SPEED"])
+        for key, name, kind in (("MAX_BODY_BYTES", "max_body_bytes", int),
+                                ("PLANNER_NICE", "planner_nice", int),
+                                ("SIM_SPEED", "sim_speed", float)):
+            text = env.get(f"TASKRUNNER_{key}")
+            if text:
+                try:
+                    values[name] = kind(text)
+                except ValueError:
+                    raise ValueError(f"TASKRUNNER_{key} must be "
+                                     f"{'an integer' if kind is int else 'a number'} "
+                                     f"(got {text!r})") from None
         values.update({k: v for k, v in overrides.items() if v is not None})
         return cls(**values)  # type: ignore[arg-type]
 

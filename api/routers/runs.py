@@ -9,7 +9,6 @@ from typing import Annotated
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Request, Response, status
 from fastapi.responses import StreamingResponse
-from starlette.background import BackgroundTask
 from starlette.concurrency import run_in_threadpool
 
 from taskrunner.runtime.events import RunEvent
@@ -72,15 +71,10 @@ async def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
 async def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> Response:
     """A run: status, the node running now (with its file:line), the tree, the events so
     far and the result."""
-    # Pre-serialised (the JSON of RunDetail): a body still current is answered straight
-    # from the event loop; building one (tree text, new events, database) runs off it.
-    # When only the clock says the tree is due a render, one request renders it after
-    # answering (a background task), and no request waits for it.
-    body, stale = manager.cached_detail(run_id)
-    if body is None:
-        body = await run_in_threadpool(manager.detail, run_id)
-    return Response(body, media_type="application/json",
-                    background=None if stale is None else BackgroundTask(stale.detail.refresh))
+    # Polls of live runs are answered before routing, from their cached bodies
+    # (api.fastpath); what reaches this is a recorded run (database) or a first build.
+    body = await run_in_threadpool(manager.detail, run_id)
+    return Response(body, media_type="application/json")
 
 
 @router.post("/{run_id}/cancel", status_code=status.HTTP_202_ACCEPTED,

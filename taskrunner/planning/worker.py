@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import itertools
 import multiprocessing as mp
+import os
 import threading
 import time
 from dataclasses import replace
@@ -36,8 +37,10 @@ class WorkerDiedError(PlanningError):
     """The planning worker process ended while a request was in flight."""
 
 
-def _serve(source: str, conn: Connection, cancel: Any) -> None:
+def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
     """The worker process: load the model, then answer requests until told to stop."""
+    if nice and hasattr(os, "nice"):
+        os.nice(nice)
     from taskrunner.planning.planner import MotionPlanner
     from taskrunner.robot.cell import load_cell_or_robot
 
@@ -119,14 +122,21 @@ class PlanningWorker:
         start_timeout: seconds to wait for the worker to load the model.
         wait_ready: wait for the model to load now (True), or let the caller go on and
             wait at the first request (False: the load overlaps the caller's own work).
+        nice: how much lower than the caller's the worker's CPU priority is (0 to 19,
+            Unix ``nice``). Planning is throughput work: with 10, a busy worker leaves
+            the CPU to latency work (a server answering, a trajectory being streamed)
+            and still gets every cycle they leave idle.
 
     One request is in flight at a time; :meth:`submit` while one is running waits for it.
     Use several workers for parallel planning. Close with :meth:`close` or a ``with``.
     """
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
-                 wait_ready: bool = True) -> None:
+                 wait_ready: bool = True, nice: int = 0) -> None:
+        if isinstance(nice, bool) or not isinstance(nice, int) or not 0 <= nice <= 19:
+            raise ValueError(f"'nice' must be an integer from 0 to 19 (got {nice!r})")
         self.source = str(source)
+        self.nice = nice
         self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads
         self._cancel = self._ctx.Value("q", _NO_CANCEL, lock=False)
         self._ids = itertools.count(1)
@@ -147,8 +157,9 @@ class PlanningWorker:
         """Start the process; it loads the model while the caller goes on."""
         self._ready = False
         self._conn, child = self._ctx.Pipe()
-        self._process = self._ctx.Process(target=_serve, args=(self.source, child, self._cancel),
-                                          name="taskrunner-planner", daemon=True)
+        self._process = self._ctx.Process(
+            target=_serve, args=(self.source, child, self._cancel, self.nice),
+            name="taskrunner-planner", daemon=True)
         self._process.start()
         child.close()
 

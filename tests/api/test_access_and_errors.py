@@ -107,3 +107,27 @@ def test_the_token_must_be_long_enough():
     with pytest.raises(ValueError, match="'token' must be at least 8 characters"):
         Settings(token="short")
     assert len(TOKEN) >= 8
+
+
+@pytest.mark.parametrize("nice", [-1, 20, 2.5, True, "10"])
+def test_the_planners_niceness_must_be_an_integer_from_0_to_19(nice):
+    with pytest.raises(ValueError, match="'planner_nice' must be an integer from 0 to 19"):
+        Settings(planner_nice=nice)
+
+
+@pytest.mark.parametrize(("variable", "text", "message"), [
+    ("TASKRUNNER_PLANNER_NICE", "low", "TASKRUNNER_PLANNER_NICE must be an integer"),
+    ("TASKRUNNER_MAX_BODY_BYTES", "1e6", "TASKRUNNER_MAX_BODY_BYTES must be an integer"),
+    ("TASKRUNNER_SIM_SPEED", "fast", "TASKRUNNER_SIM_SPEED must be a number"),
+    ("TASKRUNNER_PLANNER_NICE", "25", "'planner_nice' must be an integer from 0 to 19")])
+def test_bad_environment_values_are_named(variable, text, message):
+    with pytest.raises(ValueError, match=message) as raised:
+        Settings.from_env({variable: text})
+    assert repr(text) in str(raised.value) or text in str(raised.value)
+
+
+def test_settings_from_the_environment():
+    settings = Settings.from_env({"TASKRUNNER_PLANNER_NICE": "5", "TASKRUNNER_SIM_SPEED": "2",
+                                  "TASKRUNNER_MAX_BODY_BYTES": "2048"})
+    assert (settings.planner_nice, settings.sim_speed, settings.max_body_bytes) == (5, 2.0, 2048)
+    assert Settings().planner_nice == 10

@@ -106,3 +106,17 @@ def test_a_worker_on_a_bad_file_fails_to_start_with_the_files_error(tmp_path):
     bad.write_text("name: x\nrobots: []\n")
     with pytest.raises(Exception, match=r"cell.yaml:2: robots"):
         PlanningWorker(bad)
+
+
+@pytest.mark.skipif(not hasattr(os, "getpriority"), reason="Unix priorities")
+def test_a_worker_can_run_at_a_lower_cpu_priority(robots_dir, example_robot_data):
+    own = os.getpriority(os.PRIO_PROCESS, 0)
+    with PlanningWorker(robots_dir / "panda", nice=5) as worker:
+        assert os.getpriority(os.PRIO_PROCESS, worker._process.pid) == min(own + 5, 19)
+        assert worker.nice == 5
+
+
+@pytest.mark.parametrize("nice", [-1, 20, 1.5, True])
+def test_a_workers_niceness_must_be_an_integer_from_0_to_19(tmp_path, nice):
+    with pytest.raises(ValueError, match="'nice' must be an integer from 0 to 19"):
+        PlanningWorker(tmp_path / "never-loaded", nice=nice)
