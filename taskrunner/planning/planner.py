@@ -38,6 +38,7 @@ from taskrunner.planning.request import (
     PlanResult,
     PoseGoal,
 )
+from taskrunner.planning.timing import parameterize_path
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
 from taskrunner.types import JointPath
@@ -92,7 +93,7 @@ class MotionPlanner:
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
-        """Plan a path for ``request``.
+        """Plan a path for ``request`` (and time it, with ``request.timing``).
 
         Args:
             request: group, goal(s), optional start state and options.
@@ -105,7 +106,15 @@ class MotionPlanner:
             IkFailedError: no goal pose is reachable.
             PlanningTimeoutError: no path within the time and attempts.
             PlanningCancelledError: ``should_stop`` said so.
+            PlanningError: the path cannot be timed (with ``request.timing``).
         """
+        result = self._plan(request, should_stop)
+        if request.timing is None:
+            return result
+        trajectory = parameterize_path(self.scene.robot, result.path, request.timing)
+        return replace(result, trajectory=trajectory)
+
+    def _plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None) -> PlanResult:
         t_start = time.perf_counter()
         model = self.scene.robot
         options = request.options

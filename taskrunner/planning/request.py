@@ -14,7 +14,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from taskrunner.types import JointPath, Pose
+from taskrunner.planning.timing import TimingOptions
+from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = [
     "Goal",
@@ -122,13 +123,16 @@ class PlannerOptions:
 class PlanRequest:
     """A request to plan ``group`` from ``start`` (default: the scene's state) to a goal.
 
-    ``goal`` may be a tuple of goals: the plan reaches whichever is found first.
+    ``goal`` may be a tuple of goals: the plan reaches whichever is found first. With
+    ``timing``, the planner also times the path (toppra) and the result carries the
+    trajectory: a planning worker then does that work too, not the caller's process.
     """
 
     group: str
     goal: Goal | tuple[Goal, ...]
     start: np.ndarray | None = None
     options: PlannerOptions = field(default_factory=PlannerOptions)
+    timing: TimingOptions | None = None
 
     @property
     def goals(self) -> tuple[Goal, ...]:
@@ -148,6 +152,7 @@ class PlanResult:
         simplify_time: seconds spent shortcutting the path.
         total_time: wall time of the whole request (goal sampling, checks included).
         checks: collision checks made while searching.
+        trajectory: the path timed with the request's ``timing`` (None without it).
     """
 
     path: JointPath
@@ -159,4 +164,5 @@ class PlanResult:
     simplify_time: float
     total_time: float
     checks: int
+    trajectory: JointTrajectory | None = None
 

@@ -93,9 +93,12 @@ class _Executes(TaskLeaf):
         self.handle = None
         self.trajectory = None
 
-    def execute_path(self, path: JointPath, planning_time: float) -> Status:
-        """Time ``path``, send it to the backend; RUNNING, or FAILURE with the reason."""
-        trajectory = parameterize_path(self.ctx.scene.robot, path, self.timing)
+    def execute_path(self, path: JointPath, planning_time: float,
+                     trajectory: JointTrajectory | None = None) -> Status:
+        """Time ``path`` (unless the planner did: ``trajectory``), send it to the backend;
+        RUNNING, or FAILURE with the reason."""
+        if trajectory is None:
+            trajectory = parameterize_path(self.ctx.scene.robot, path, self.timing)
         self.trajectory = trajectory
         self.ctx.events.emit(
             "planned", f"{len(path)} waypoints, {trajectory.duration:.2f} s",
@@ -149,8 +152,10 @@ class MoveToGoal(_Executes):
         self.ticket = None
         try:
             goal = _resolve_named(self.goal(self.ctx), self.ctx.scene.robot, self.group)
+            # The planner times the path too: in a worker, toppra runs there as well.
             request = PlanRequest(self.group, goal, start=self.ctx.scene.state,
-                                  options=replace(self.options, seed=self.ctx.next_seed()))
+                                  options=replace(self.options, seed=self.ctx.next_seed()),
+                                  timing=self.timing)
             self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
         except TaskrunnerError as exc:
             self.fail(str(exc))
@@ -165,7 +170,7 @@ class MoveToGoal(_Executes):
         try:
             result = self.ticket.result(0.0)
             self.ticket = None
-            return self.execute_path(result.path, result.planning_time)
+            return self.execute_path(result.path, result.planning_time, result.trajectory)
         except TaskrunnerError as exc:
             self.ticket = None
             return self.fail(str(exc))

@@ -4,13 +4,19 @@ from __future__ import annotations
 
 import pytest
 
+from api.schemas import PlanResponse
+
 
 def test_plan_to_a_named_pose_returns_a_timed_trajectory_and_nothing_moves(client):
     before = client.get("/cells/servo_arm_table/state").json()["joints"]
     answer = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
                                         "to": "Candle"})
     assert answer.status_code == 200, answer.text
+    assert answer.headers["content-type"] == "application/json"
     plan = answer.json()
+    PlanResponse.model_validate(plan)  # the documented model, field for field
+    assert set(plan) == set(PlanResponse.model_fields)
+    assert len(plan["velocities"]) == len(plan["times"]) and plan["waypoints"] >= 2
     assert plan["joint_names"] == ["Revolute 1", "Revolute 2", "Revolute 3", "Revolute 4",
                                    "Revolute 5"]
     assert plan["times"][0] == 0.0 and plan["times"][-1] == pytest.approx(plan["duration"])

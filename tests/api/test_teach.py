@@ -65,3 +65,21 @@ def test_teach_refusals(client):
     assert answer.status_code == 422 and "unknown group 'amr'" in answer.text
     answer = client.put("/cells/nowhere/poses/spot", json=body, headers=AUTH)
     assert answer.status_code == 404
+
+
+def test_plan_reaches_a_taught_pose_when_planning_in_worker_processes(tmp_path):
+    # The workers load the cell from its files; the taught pose exists only in the
+    # server's model, so /plan must send its joint values, not its name.
+    with TestClient(create_app(make_settings(tmp_path / "state", planner="worker"))) as client:
+        move_to_candle(client)
+        assert client.put("/cells/servo_arm_table/poses/bench_spot",
+                          json={"group": "arm", "backend": "mock"},
+                          headers=AUTH).status_code == 200
+        answer = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                            "to": "bench_spot", "backend": "mock"})
+        assert answer.status_code == 200, answer.text
+        plan = answer.json()
+        assert plan["positions"][-1][0] == pytest.approx(1.5708, abs=1e-6)
+        unknown = client.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                             "to": "nowhere", "backend": "mock"})
+        assert unknown.status_code == 422 and "bench_spot" in unknown.json()["detail"]

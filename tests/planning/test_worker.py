@@ -13,6 +13,7 @@ from plan_helpers import READY, SHELF, dense_states
 from taskrunner.errors import PlanningCancelledError, UnknownNameError
 from taskrunner.kinematics import frame_pose
 from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
+from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.planning.worker import PlanningWorker, WorkerDiedError
 from taskrunner.scene import Scene
 from taskrunner.shapes import Box
@@ -42,6 +43,18 @@ def test_worker_plans_the_same_path_as_in_process(worker, scene):
     result = worker.plan(scene, PlanRequest("arm", GOAL))
     assert np.array_equal(result.path.waypoints, expected.path.waypoints)
     assert worker.model_name == "panda"
+
+
+def test_the_worker_times_the_path_when_asked_as_toppra_would_here(worker, scene):
+    timing = TimingOptions(velocity_scaling=0.5)
+    result = worker.plan(scene, PlanRequest("arm", GOAL, timing=timing))
+    assert worker.plan(scene, PlanRequest("arm", GOAL)).trajectory is None
+    expected = parameterize_path(scene.robot, result.path, timing)
+    assert result.trajectory is not None
+    assert result.trajectory.names == expected.names
+    assert np.array_equal(result.trajectory.times, expected.times)
+    assert np.array_equal(result.trajectory.positions, expected.positions)
+    assert np.array_equal(result.trajectory.velocities, expected.velocities)
 
 
 def test_scene_edits_reach_the_worker(worker, scene):
