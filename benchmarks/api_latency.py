@@ -7,8 +7,9 @@ Starts ``run-task serve`` (planning in worker processes) on a free loopback port
 it under the load the target names:
 
 * a sim run of pick_place (at real speed: it plans and moves for the whole measurement);
-* ``--planners`` clients that keep planning workers busy with POST /plan (an unreachable
-  pose: each request searches for its full second);
+* ``--planners`` clients that keep planning workers busy with POST /plan, back to back:
+  two real motions of the pair cell's left arm and a pose out of its reach, in turn (the
+  ``plans`` column counts the answers in a window, ``planners`` the CPU the workers used);
 * ``--clients`` keep-alive connections, each sending GET /runs/{id} as soon as its last
   answer came (closed loop: the heaviest load that many clients can make).
 
@@ -45,8 +46,12 @@ REPO_ROOT = Path(__file__).resolve().parent.parent
 TOKEN = "bench-token-0123456789"
 HEADERS = {"Authorization": f"Bearer {TOKEN}", "Content-Type": "application/json"}
 TARGET_P99_MS = 20.0
-UNREACHABLE = {"cell": "servo_arm_pair", "group": "left_arm",
-               "pose": {"xyz": [0.0, 0.6, 0.8]}, "planning_time": 1.0}
+# What the planner clients ask for, in turn: two real motions (IK-free joint goals: OMPL,
+# shortcutting, toppra, the trajectory back as JSON) and a pose out of reach (the IK
+# tries all its restarts before the 422).
+PLAN_REQUESTS = [{"cell": "servo_arm_pair", "group": "left_arm", "planning_time": 1.0, **goal}
+                 for goal in ({"to": "HandOff"}, {"to": "PickUp"},
+                              {"pose": {"xyz": [0.0, 0.6, 0.8]}})]
 
 
 def _port() -> int:
@@ -69,7 +74,7 @@ class Planners:
     def __init__(self, port: int, count: int) -> None:
         self.port = port
         self.answered = [0] * count
-        self.codes: set[int] = set()
+        self.codes: dict[int, int] = {}
         self.stop = threading.Event()
         self.threads = [threading.Thread(target=self._loop, args=(k,), daemon=True)
                         for k in range(count)]
@@ -78,10 +83,12 @@ class Planners:
 
     def _loop(self, k: int) -> None:
         conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=120)
+        turn = k
         while not self.stop.is_set():
-            code, _ = _call(conn, "POST", "/plan", UNREACHABLE)
-            self.codes.add(code)
+            code, _ = _call(conn, "POST", "/plan", PLAN_REQUESTS[turn % len(PLAN_REQUESTS)])
+            self.codes[code] = self.codes.get(code, 0) + 1
             self.answered[k] += 1
+            turn += 1
 
     def wait_warm(self, timeout: float = 120.0) -> None:
         deadline = time.monotonic() + timeout
@@ -239,7 +246,7 @@ def main() -> int:
             if planners is None:
                 planners = Planners(port, args.planners)
                 planners.wait_warm()
-            planned = sum(planners.answered)
+            planned, codes = sum(planners.answered), dict(planners.codes)
             measure = _run_wrk if args.client == "wrk" else _run_python
             cpu0, t0 = _cpu_seconds(server.pid), time.monotonic()
             window = measure(port, f"/runs/{run_id}", args.clients, args.seconds)
@@ -248,6 +255,8 @@ def main() -> int:
             run = json.loads(body)
             window.update(run_status=run["status"], run_events=len(run["events"]),
                           plans_answered=sum(planners.answered) - planned,
+                          plan_codes={str(c): n - codes.get(c, 0)
+                                      for c, n in sorted(planners.codes.items())},
                           server_cpu=(cpu1[0] - cpu0[0]) / elapsed,
                           planners_cpu=(cpu1[1] - cpu0[1]) / elapsed)
             windows.append(window)
