@@ -11,7 +11,7 @@ made polling cost O(events) per request. Instead:
   one request after it has answered: the others meanwhile get the body with the tree
   as it was rendered last, so no request waits for a render that only the clock asked.
 * :class:`StoredDetails` keeps the bodies of recorded runs (not live on this server),
-  each valid for as long as its database row's text is unchanged.
+  each valid for as long as its database row (record and final tree) is unchanged.
 * :class:`RunListCache` keeps ``GET /runs`` bodies per query until the store is written.
 
 The bytes are exactly what FastAPI would produce from the response model (pydantic's
@@ -193,21 +193,22 @@ class StoredDetails:
         self.store = store
         self.size = size
         self._lock = threading.Lock()
-        self._cache: OrderedDict[str, tuple[str, bytes]] = OrderedDict()
+        self._cache: OrderedDict[str, tuple[tuple[str, str | None], bytes]] = OrderedDict()
 
     def body(self, run_id: str) -> bytes | None:
         """The body of recorded run ``run_id``, or None if there is no such run."""
-        text = self.store.load_text(run_id)
-        if text is None:
+        row = self.store.load_text(run_id)
+        if row is None:
             return None
         with self._lock:
             hit = self._cache.get(run_id)
-            if hit is not None and hit[0] == text:
+            if hit is not None and hit[0] == row:
                 self._cache.move_to_end(run_id)
                 return hit[1]
-        body = detail_body(RunRecord.from_dict(json.loads(text)))
+        text, tree = row
+        body = detail_body(RunRecord.from_dict(json.loads(text)), tree=tree)
         with self._lock:
-            self._cache[run_id] = (text, body)
+            self._cache[run_id] = (row, body)
             self._cache.move_to_end(run_id)
             while len(self._cache) > self.size:
                 self._cache.popitem(last=False)

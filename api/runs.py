@@ -64,7 +64,8 @@ class ArmBusyError(RuntimeError):
 
 @dataclass
 class LiveRun:
-    """A run this server started (kept after it ends, for its final tree)."""
+    """A run this server started (kept for a while after it ends: see
+    :class:`RunManager`'s ``keep_finished``)."""
 
     runner: Runner
     session: CellSession
@@ -101,12 +102,22 @@ class LiveRun:
 
 
 class RunManager:
-    """Starts runs, refuses those whose arms are in use, records every run."""
+    """Starts runs, refuses those whose arms are in use, records every run.
 
-    def __init__(self, cells: CellRegistry, store: RunStore, tick_hz: float = 100.0) -> None:
+    A run stays in memory while it runs and, once ended, among the ``keep_finished``
+    newest ended runs; older ones are answered from the database (record and final tree),
+    so a server that runs for months holds no more than that many runs' trees, scenes
+    and trajectories.
+    """
+
+    def __init__(self, cells: CellRegistry, store: RunStore, tick_hz: float = 100.0,
+                 keep_finished: int = 32) -> None:
+        if keep_finished < 0:
+            raise ValueError(f"'keep_finished' must be >= 0 (got {keep_finished})")
         self.cells = cells
         self.store = store
         self.tick_hz = tick_hz
+        self.keep_finished = keep_finished
         self._runs: dict[str, LiveRun] = {}
         # Joints claimed per run in flight (or being built): (session, joints, run id).
         self._claims: dict[int, tuple[CellSession, frozenset[str], str]] = {}
@@ -199,10 +210,18 @@ class RunManager:
             live.final_tree = live.runner.snapshot()
             live.session.last_scene = live.runner.scene
             live.session.give_planner(live.planner)
-            self.store.save(live.record)
+            self.store.save(live.record, tree=live.final_tree)
             with self._lock:
                 self._claims.pop(id(live), None)
             live.done.set()
+            self._forget_finished()
+
+    def _forget_finished(self) -> None:
+        """Drop the oldest ended runs beyond ``keep_finished`` (they are in the store)."""
+        with self._lock:
+            ended = [run_id for run_id, r in self._runs.items() if r.done.is_set()]
+            for run_id in ended[:max(0, len(ended) - self.keep_finished)]:
+                del self._runs[run_id]
 
     # ----------------------------------------------------------------- queries
     def live(self, run_id: str) -> LiveRun | None:
@@ -286,7 +305,7 @@ class RunManager:
             if not live.done.is_set():  # stuck: record it all the same
                 live.record.status = "interrupted"
                 live.record.error = "the server stopped while the run was in flight"
-                self.store.save(live.record)
+                self.store.save(live.record, tree=live.runner.snapshot())
 
 
 def resolve_task_file(tasks_dir: Path, name: str) -> Path:

@@ -27,7 +27,8 @@ CREATE TABLE IF NOT EXISTS runs (
     backend  TEXT NOT NULL,
     started  TEXT NOT NULL,
     finished TEXT,
-    record   TEXT NOT NULL
+    record   TEXT NOT NULL,
+    tree     TEXT
 );
 CREATE INDEX IF NOT EXISTS runs_status ON runs (status);
 CREATE TABLE IF NOT EXISTS taught_poses (
@@ -51,6 +52,9 @@ class RunStore:
         self._db = sqlite3.connect(self.path, check_same_thread=False, isolation_level=None)
         self._db.execute("PRAGMA journal_mode=WAL")
         self._db.executescript(_SCHEMA)
+        columns = {row[1] for row in self._db.execute("PRAGMA table_info(runs)")}
+        if "tree" not in columns:  # a database from before final trees were kept
+            self._db.execute("ALTER TABLE runs ADD COLUMN tree TEXT")
         self.version = 0  # bumped by every write (lets readers cache query results)
 
     def save_pose(self, cell: str, group: str, name: str, joints: dict[str, float]) -> str:
@@ -84,10 +88,11 @@ class RunStore:
                 self._write(record)
         return len(rows)
 
-    def save(self, record: RunRecord) -> None:
-        """Insert or replace ``record``."""
+    def save(self, record: RunRecord, tree: str | None = None) -> None:
+        """Insert or replace ``record``; with ``tree``, the behaviour tree as text at the
+        end of the run (kept when later saves give none)."""
         with self._lock:
-            self._write(record)
+            self._write(record, tree)
 
     def load(self, run_id: str) -> RunRecord | None:
         """The record of ``run_id``, or None."""
@@ -96,12 +101,12 @@ class RunStore:
                                    (run_id,)).fetchone()
         return None if row is None else RunRecord.from_dict(json.loads(row[0]))
 
-    def load_text(self, run_id: str) -> str | None:
-        """The record of ``run_id`` as the JSON text stored, or None."""
+    def load_text(self, run_id: str) -> tuple[str, str | None] | None:
+        """The record of ``run_id`` as the JSON text stored and its final tree, or None."""
         with self._lock:
-            row = self._db.execute("SELECT record FROM runs WHERE run_id = ?",
+            row = self._db.execute("SELECT record, tree FROM runs WHERE run_id = ?",
                                    (run_id,)).fetchone()
-        return None if row is None else str(row[0])
+        return None if row is None else (str(row[0]), row[1])
 
     def summaries(self, status: str | None = None, limit: int = 100) -> list[dict[str, object]]:
         """The newest runs first (without their events), optionally of one status."""
@@ -128,13 +133,17 @@ class RunStore:
         with self._lock:
             self._db.close()
 
-    def _write(self, record: RunRecord) -> None:
+    def _write(self, record: RunRecord, tree: str | None = None) -> None:
         text = json.dumps(record.as_dict(), default=_jsonable)
         self._db.execute(
-            "INSERT OR REPLACE INTO runs (run_id, status, task, cell, backend, started, "
-            "finished, record) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+            "INSERT INTO runs (run_id, status, task, cell, backend, started, finished, "
+            "record, tree) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (run_id) DO UPDATE "
+            "SET status = excluded.status, task = excluded.task, cell = excluded.cell, "
+            "backend = excluded.backend, started = excluded.started, "
+            "finished = excluded.finished, record = excluded.record, "
+            "tree = COALESCE(excluded.tree, runs.tree)",
             (record.run_id, record.status, record.task, record.cell, record.backend,
-             record.started, record.finished, text))
+             record.started, record.finished, text, tree))
         self.version += 1
 
 

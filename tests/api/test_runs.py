@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import textwrap
 import time
 from pathlib import Path
@@ -149,10 +150,12 @@ def test_records_survive_a_restart_and_a_run_in_flight_is_recorded_interrupted(t
         wait_for_event(client, flying, "planned")
     with TestClient(create_app(settings)) as client:
         again = client.get(f"/runs/{done}").json()
-        assert again["status"] == "succeeded" and again["tree"] is None
+        assert again["status"] == "succeeded"
+        assert again["tree"] == finished["tree"] and "[✓]" in again["tree"]
         assert again["events"] == finished["events"]
         stopped = client.get(f"/runs/{flying}").json()
         assert stopped["status"] == "interrupted" and stopped["finished"] is not None
+        assert stopped["tree"] and stopped["current"] is None
         replay = parse_sse(client.get(f"/runs/{done}/events").text)
         assert len(replay) == len(finished["events"])
 
@@ -167,3 +170,47 @@ def test_rows_left_running_by_a_dead_server_are_marked_interrupted(tmp_path: Pat
         run = client.get("/runs/r1").json()
     assert run["status"] == "interrupted"
     assert "server stopped" in run["error"]
+
+
+def test_only_the_newest_ended_runs_stay_in_memory_the_others_come_from_the_store(
+        tmp_path: Path):
+    settings = make_settings(tmp_path / "state")
+    with TestClient(create_app(settings)) as client:
+        manager = client.app.state.manager
+        manager.keep_finished = 2
+        runs = []
+        for _ in range(4):
+            run_id = client.post("/runs", json={"task": "go_home", "backend": "mock"},
+                                 headers=AUTH).json()["run_id"]
+            runs.append(wait_until_done(client, run_id))
+            manager.live(run_id).thread.join(10)  # its end is recorded, older runs dropped
+        assert [manager.live(r["run_id"]) is not None for r in runs] == \
+            [False, False, True, True]
+        for run in runs:  # the same answer, live or from the store
+            assert client.get(f"/runs/{run['run_id']}").json() == run
+        events = parse_sse(client.get(f"/runs/{runs[0]['run_id']}/events").text)
+        assert len(events) == len(runs[0]["events"])
+        assert [r["run_id"] for r in client.get("/runs").json()] == \
+            [r["run_id"] for r in reversed(runs)]
+
+
+def test_a_database_from_before_final_trees_were_kept_is_upgraded(tmp_path: Path):
+    import sqlite3
+
+    path = tmp_path / "runs.sqlite"
+    old = sqlite3.connect(path)
+    old.executescript("CREATE TABLE runs (run_id TEXT PRIMARY KEY, status TEXT NOT NULL, "
+                      "task TEXT NOT NULL, cell TEXT NOT NULL, backend TEXT NOT NULL, "
+                      "started TEXT NOT NULL, finished TEXT, record TEXT NOT NULL);")
+    record = RunRecord(run_id="r0", task="t", task_file="", cell="c", backend="sim",
+                       parameters={})
+    old.execute("INSERT INTO runs VALUES ('r0', 'succeeded', 't', 'c', 'sim', 'x', NULL, ?)",
+                (json.dumps(record.as_dict()),))
+    old.commit()
+    old.close()
+    store = RunStore(path)
+    assert store.load_text("r0")[1] is None
+    store.save(record, tree="-> root")
+    store.save(record)  # a later save without a tree keeps it
+    assert store.load_text("r0")[1] == "-> root"
+    store.close()
