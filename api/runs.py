@@ -95,7 +95,9 @@ class LiveRun:
         return self.final_tree if self.final_tree is not None else self.runner.snapshot()
 
     def current(self) -> tuple[str, str | None] | None:
-        if self.done.is_set():
+        """The leaf running now and its file:line; None once the run has ended (its
+        status set, even before its thread has finished recording it)."""
+        if self.done.is_set() or self.record.status != "running":
             return None
         leaf = self.runner.current_leaf()
         return None if leaf is None else (leaf.name, leaf.location)

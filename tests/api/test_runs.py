@@ -214,3 +214,19 @@ def test_a_database_from_before_final_trees_were_kept_is_upgraded(tmp_path: Path
     store.save(record)  # a later save without a tree keeps it
     assert store.load_text("r0")[1] == "-> root"
     store.close()
+
+
+def test_an_ended_run_shows_no_current_node_even_before_its_thread_has_finished():
+    from types import SimpleNamespace
+
+    from api.runs import LiveRun
+
+    record = RunRecord(run_id="r1", task="t", task_file="", cell="c", backend="sim",
+                       parameters={})
+    leaf = SimpleNamespace(name="go arm", location="t.yaml:4")
+    live = LiveRun(SimpleNamespace(record=record, current_leaf=lambda: leaf), None,
+                   frozenset())
+    record.status = "running"
+    assert live.current() == ("go arm", "t.yaml:4")
+    record.status = "succeeded"  # set by the runner; done is set a moment later
+    assert live.current() is None
