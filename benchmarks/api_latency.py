@@ -1,7 +1,8 @@
 """GET /runs/{id} latency with 50 concurrent clients on loopback while runs plan.
 
     python benchmarks/api_latency.py [--clients 50] [--seconds 10] [--repeats 3]
-                                     [--client python|wrk] [--planners 2] [--json]
+                                     [--client python|wrk] [--planners 2] [--rate HZ]
+                                     [--json]
 
 Starts ``run-task serve`` (planning in worker processes) on a free loopback port and puts
 it under the load the target names:
@@ -11,7 +12,8 @@ it under the load the target names:
   two real motions of the pair cell's left arm and a pose out of its reach, in turn (the
   ``plans`` column counts the answers in a window, ``planners`` the CPU the workers used);
 * ``--clients`` keep-alive connections, each sending GET /runs/{id} as soon as its last
-  answer came (closed loop: the heaviest load that many clients can make).
+  answer came (closed loop: the heaviest load that many clients can make), or, with
+  ``--rate``, that many times a second each (a dashboard or PLC polling).
 
 Before measuring, it waits until every planner client has had an answer (worker
 processes spawned, cells loaded) and polls for a second unrecorded. Each of
@@ -99,18 +101,31 @@ class Planners:
 
 
 async def _poll_async(port: int, path: str, clients: int, seconds: float,
-                      record: bool) -> np.ndarray:
-    """``clients`` connections polling ``path`` for ``seconds``; latencies in ms."""
+                      record: bool, rate_hz: float = 0.0) -> np.ndarray:
+    """``clients`` connections polling ``path`` for ``seconds``; latencies in ms.
+
+    ``rate_hz`` 0: each client asks again as soon as it has its answer (closed loop).
+    Otherwise each asks ``rate_hz`` times a second on a fixed schedule (seeded phases),
+    and a latency runs from when the request was due, not when it could be sent: a
+    stalled server is charged for the requests it kept waiting.
+    """
     request = (f"GET {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n"
                f"Authorization: Bearer {TOKEN}\r\n\r\n").encode()
     samples: list[float] = []
     end = time.monotonic() + seconds
 
-    async def one() -> None:
+    phases = np.random.default_rng(0).random(clients)
+
+    async def one(k: int) -> None:
         reader, writer = await asyncio.open_connection("127.0.0.1", port)
+        due = time.perf_counter() + (phases[k] / rate_hz if rate_hz else 0.0)
         try:
             while time.monotonic() < end:
-                t0 = time.perf_counter()
+                if rate_hz:
+                    await asyncio.sleep(max(0.0, due - time.perf_counter()))
+                    t0, due = due, due + 1.0 / rate_hz
+                else:
+                    t0 = time.perf_counter()
                 writer.write(request)
                 head = await reader.readuntil(b"\r\n\r\n")
                 status = head[9:12]
@@ -124,24 +139,26 @@ async def _poll_async(port: int, path: str, clients: int, seconds: float,
         finally:
             writer.close()
 
-    await asyncio.gather(*(one() for _ in range(clients)))
+    await asyncio.gather(*(one(k) for k in range(clients)))
     return 1e3 * np.array(samples)
 
 
-def _run_python(port: int, path: str, clients: int, seconds: float) -> dict:
+def _run_python(port: int, path: str, clients: int, seconds: float,
+                rate_hz: float = 0.0) -> dict:
     try:
         import uvloop
         runner = uvloop.run
     except ImportError:  # pragma: no cover - uvloop is a dependency of the API
         runner = asyncio.run
-    runner(_poll_async(port, path, clients, 1.0, record=False))  # warm-up
-    ms = runner(_poll_async(port, path, clients, seconds, record=True))
+    runner(_poll_async(port, path, clients, 1.0, False, rate_hz))  # warm-up
+    ms = runner(_poll_async(port, path, clients, seconds, True, rate_hz))
     p50, p90, p99 = np.percentile(ms, [50, 90, 99])
     return {"requests": int(ms.size), "req_per_s": ms.size / seconds, "p50_ms": p50,
             "p90_ms": p90, "p99_ms": p99, "max_ms": float(ms.max())}
 
 
-def _run_wrk(port: int, path: str, clients: int, seconds: float) -> dict:
+def _run_wrk(port: int, path: str, clients: int, seconds: float,
+             rate_hz: float = 0.0) -> dict:
     url = f"http://127.0.0.1:{port}{path}"
 
     def wrk(duration: float) -> str:
@@ -221,8 +238,13 @@ def main() -> int:
     parser.add_argument("--client", choices=("python", "wrk"), default="python")
     parser.add_argument("--planners", type=int, default=2,
                         help="clients keeping planners busy with POST /plan (2; 0: none)")
+    parser.add_argument("--rate", type=float, default=0.0,
+                        help="python client: polls per second per client on a fixed "
+                             "schedule (0, default: closed loop, as fast as answered)")
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
     args = parser.parse_args()
+    if args.rate < 0 or (args.rate and args.client == "wrk"):
+        raise SystemExit("--rate must be >= 0, and only with --client python")
     if args.client == "wrk" and shutil.which("wrk") is None:
         raise SystemExit("--client wrk needs wrk on PATH (apt-get install wrk)")
     port = _port()
@@ -249,7 +271,7 @@ def main() -> int:
             planned, codes = sum(planners.answered), dict(planners.codes)
             measure = _run_wrk if args.client == "wrk" else _run_python
             cpu0, t0 = _cpu_seconds(server.pid), time.monotonic()
-            window = measure(port, f"/runs/{run_id}", args.clients, args.seconds)
+            window = measure(port, f"/runs/{run_id}", args.clients, args.seconds, args.rate)
             cpu1, elapsed = _cpu_seconds(server.pid), time.monotonic() - t0
             _, body = control("GET", f"/runs/{run_id}")
             run = json.loads(body)
@@ -276,7 +298,8 @@ def main() -> int:
 
 
 def _report(args: argparse.Namespace, windows: list[dict]) -> None:
-    print(f"GET /runs/{{id}}: {args.clients} {args.client} clients (closed loop), "
+    pace = f"{args.rate:g} Hz each" if args.rate else "closed loop"
+    print(f"GET /runs/{{id}}: {args.clients} {args.client} clients ({pace}), "
           f"{args.seconds:.0f} s windows, {args.planners} POST /plan client(s) planning, "
           "a sim run of pick_place planning and moving")
     print(f"{'window':>6} {'req/s':>8} {'p50 ms':>7} {'p90 ms':>7} {'p99 ms':>7} "
@@ -294,7 +317,7 @@ def _report(args: argparse.Namespace, windows: list[dict]) -> None:
     print(f"target p99 <= {TARGET_P99_MS:.0f} ms: {verdict} (median window {median:.1f} ms, "
           f"worst {worst:.1f} ms)")
     if args.json:
-        print(json.dumps({"clients": args.clients, "client": args.client,
+        print(json.dumps({"clients": args.clients, "client": args.client, "rate_hz": args.rate,
                           "planners": args.planners, "seconds": args.seconds,
                           "windows": [{k: (round(v, 3) if isinstance(v, float) else v)
                                        for k, v in w.items()} for w in windows],
