@@ -38,7 +38,7 @@ from taskrunner.planning.request import (
     PlanResult,
     PoseGoal,
 )
-from taskrunner.planning.timing import parameterize_path
+from taskrunner.planning.timing import parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
 from taskrunner.types import JointPath
@@ -112,7 +112,8 @@ class MotionPlanner:
         if request.timing is None:
             return result
         trajectory = parameterize_path(self.scene.robot, result.path, request.timing)
-        return replace(result, trajectory=trajectory)
+        encoded = trajectory_json(trajectory) if request.trajectory_json else None
+        return replace(result, trajectory=trajectory, trajectory_json=encoded)
 
     def _plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None) -> PlanResult:
         t_start = time.perf_counter()

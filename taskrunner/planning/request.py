@@ -126,6 +126,9 @@ class PlanRequest:
     ``goal`` may be a tuple of goals: the plan reaches whichever is found first. With
     ``timing``, the planner also times the path (toppra) and the result carries the
     trajectory: a planning worker then does that work too, not the caller's process.
+    With ``timing`` and ``trajectory_json``, it also encodes the trajectory as JSON (a
+    slow arm's has thousands of samples: formatting them costs milliseconds that a
+    server answering other requests should not spend).
     """
 
     group: str
@@ -133,6 +136,7 @@ class PlanRequest:
     start: np.ndarray | None = None
     options: PlannerOptions = field(default_factory=PlannerOptions)
     timing: TimingOptions | None = None
+    trajectory_json: bool = False
 
     @property
     def goals(self) -> tuple[Goal, ...]:
@@ -153,6 +157,9 @@ class PlanResult:
         total_time: wall time of the whole request (goal sampling, checks included).
         checks: collision checks made while searching.
         trajectory: the path timed with the request's ``timing`` (None without it).
+        trajectory_json: with the request's ``trajectory_json``, the trajectory as one
+            JSON object: ``{"times": [...], "positions": [[...], ...], "velocities":
+            [[...], ...]}`` (s, rad or m, rad/s or m/s; one row per sample).
     """
 
     path: JointPath
@@ -165,4 +172,5 @@ class PlanResult:
     total_time: float
     checks: int
     trajectory: JointTrajectory | None = None
+    trajectory_json: bytes | None = None
 

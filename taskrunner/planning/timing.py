@@ -30,7 +30,7 @@ from taskrunner.errors import PlanningError
 from taskrunner.robot.model import JointInfo, RobotModel
 from taskrunner.types import JointPath, JointTrajectory
 
-__all__ = ["TimingOptions", "parameterize_path", "path_deviation"]
+__all__ = ["TimingOptions", "parameterize_path", "path_deviation", "trajectory_json"]
 
 _CHECKS_PER_STAGE = 6  # limit checks per toppra stage (residual overshoot between them ~0.5 %)
 _CURVE_ERROR = 3e-3  # rad: spline intervals are split until 0.5 |q''| ds² is below this
@@ -371,3 +371,22 @@ def _toppra_kit() -> SimpleNamespace:
                 *(StageInteriorLimits(v, a, f) for f in fractions)]
 
     return SimpleNamespace(toppra=toppra, Pchip=Pchip, constraints=constraints)
+
+
+def trajectory_json(trajectory: JointTrajectory) -> bytes:
+    """``trajectory`` as one JSON object: ``{"times": [...], "positions": [[...], ...],
+    "velocities": [[...], ...]}``, one row per sample.
+
+    Raises:
+        PlanningError: a value is not finite (JSON has no NaN; a timed trajectory
+            never should).
+    """
+    from pydantic_core import to_json
+
+    arrays = {"times": trajectory.times, "positions": trajectory.positions,
+              "velocities": trajectory.velocities}
+    for name, values in arrays.items():
+        if not np.isfinite(values).all():
+            raise PlanningError(f"the timed trajectory has non-finite {name}")
+    return to_json({name: np.asarray(values, dtype=float).tolist()
+                    for name, values in arrays.items()})

@@ -293,3 +293,19 @@ def test_a_short_straight_path_of_many_waypoints_is_timed(panda_model):
         trajectory = parameterize_path(panda_model, path)
         assert trajectory.positions[-1] == pytest.approx(path.waypoints[-1])
         assert 0.1 < trajectory.duration < 1.0
+
+
+def test_trajectory_json_is_exact_and_refuses_non_finite_values():
+    import json
+
+    from taskrunner.types import JointTrajectory
+
+    times = np.array([0.0, 0.1, 0.2])
+    rows = np.array([[0.1, -1e-7], [1 / 3, 2.5], [0.7, 1e300]])
+    traj = JointTrajectory(("a", "b"), times, rows, rows * 2, np.zeros_like(rows))
+    decoded = json.loads(timing.trajectory_json(traj))
+    assert list(decoded) == ["times", "positions", "velocities"]
+    assert decoded["times"] == times.tolist() and decoded["positions"] == rows.tolist()
+    bad = JointTrajectory(("a", "b"), times, rows, rows * np.nan, np.zeros_like(rows))
+    with pytest.raises(PlanningError, match="non-finite velocities"):
+        timing.trajectory_json(bad)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import time
@@ -55,6 +56,13 @@ def test_the_worker_times_the_path_when_asked_as_toppra_would_here(worker, scene
     assert np.array_equal(result.trajectory.times, expected.times)
     assert np.array_equal(result.trajectory.positions, expected.positions)
     assert np.array_equal(result.trajectory.velocities, expected.velocities)
+    encoded = worker.plan(scene, PlanRequest("arm", GOAL, timing=timing,
+                                             trajectory_json=True)).trajectory_json
+    assert encoded is not None and result.trajectory_json is None
+    decoded = json.loads(encoded)
+    assert np.array_equal(decoded["times"], expected.times)
+    assert np.array_equal(decoded["positions"], expected.positions)  # exact round trip
+    assert np.array_equal(decoded["velocities"], expected.velocities)
 
 
 def test_scene_edits_reach_the_worker(worker, scene):
