@@ -155,7 +155,8 @@ class RunManager:
             machine = session.backend(backend)
             planner = session.take_planner()
             runner = Runner(spec, session.cell, machine, planner,
-                            RunOptions(tick_hz=self.tick_hz, seed=seed, backend_name=backend),
+                            RunOptions(tick_hz=self.tick_hz, seed=seed, backend_name=backend,
+                                       planner_times=True),
                             events=EventLog())
         except BaseException:
             with self._lock:

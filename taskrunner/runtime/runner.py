@@ -47,6 +47,8 @@ class RunOptions:
         runs_dir: where run records are written (None: not written).
         backend_name: recorded in the run record.
         timing: default time parameterization (velocity / acceleration scaling).
+        planner_times: the planner times planned motions too (see
+            :class:`~taskrunner.tree.context.TaskContext`).
     """
 
     tick_hz: float = 100.0
@@ -54,6 +56,7 @@ class RunOptions:
     runs_dir: Path | None = None
     backend_name: str = "mock"
     timing: TimingOptions = field(default_factory=TimingOptions)
+    planner_times: bool = False
 
     def __post_init__(self) -> None:
         if not self.tick_hz > 0:
@@ -82,7 +85,8 @@ class Runner:
         self.events = events if events is not None else EventLog()
         self.scene = task_scene(spec, cell)
         self.ctx = TaskContext(cell, self.scene, planner, backend, self.events,
-                               self.options.timing, self.options.seed)
+                               self.options.timing, self.options.seed,
+                               planner_times=self.options.planner_times)
         self.ctx.sync_from_backend()
         self.tree = compile_task(spec, self.ctx)
         self._cancel = threading.Event()

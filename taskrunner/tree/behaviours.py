@@ -152,10 +152,9 @@ class MoveToGoal(_Executes):
         self.ticket = None
         try:
             goal = _resolve_named(self.goal(self.ctx), self.ctx.scene.robot, self.group)
-            # The planner times the path too: in a worker, toppra runs there as well.
             request = PlanRequest(self.group, goal, start=self.ctx.scene.state,
                                   options=replace(self.options, seed=self.ctx.next_seed()),
-                                  timing=self.timing)
+                                  timing=self.timing if self.ctx.planner_times else None)
             self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
         except TaskrunnerError as exc:
             self.fail(str(exc))

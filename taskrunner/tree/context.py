@@ -83,6 +83,10 @@ class TaskContext:
         timing: default time parameterization (scaling from the robot unless set).
         seed: seeds every planner call of the run (each call adds its own offset).
         executed: every trajectory sent to the backend, in order.
+        planner_times: planned motions are timed by the planner (in a worker process,
+            that work then leaves this process: a server keeps its GIL for answering);
+            False: timed here (a one-run CLI, whose process waits for the plan anyway,
+            spares the worker importing toppra on its critical path).
     """
 
     cell: Cell
@@ -93,6 +97,7 @@ class TaskContext:
     timing: TimingOptions = field(default_factory=TimingOptions)
     seed: int = 0
     executed: list[ExecutedMotion] = field(default_factory=list)
+    planner_times: bool = False
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
 

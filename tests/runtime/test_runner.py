@@ -111,3 +111,43 @@ def test_cli_exit_code_2_for_an_invalid_task(tmp_path, repo_root, capsys):
     path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, too: Candle}\n")
     assert main([str(path), "--in-process", "--runs-dir", str(tmp_path / "runs")]) == 2
     assert f"{path}:4: 'too' is not a field of 'go'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("planner_times", [False, True])
+def test_planned_motions_are_timed_where_the_run_options_say(tmp_path, repo_root,
+                                                               planner_times):
+    path = write_task(tmp_path, repo_root, """\
+        steps:
+          - go: {group: arm, to: Candle}
+          - go: {group: arm, to: home}
+        """)
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = MockBackend(names, dict(zip(names, cell.start_state())))
+    service = InProcessPlanner()
+    sent, returned = [], []
+    submit = service.submit
+
+    def recording_submit(scene, request):
+        sent.append(request)
+        ticket = submit(scene, request)
+        result = ticket.result
+
+        def recorded_result(timeout=None):
+            returned.append(result(timeout))
+            return returned[-1]
+
+        ticket.result = recorded_result
+        return ticket
+
+    service.submit = recording_submit
+    runner = Runner(spec, cell, backend, service, RunOptions(planner_times=planner_times))
+    assert runner.run().status == "succeeded"
+    assert len(sent) == 2
+    assert all((r.timing is not None) == planner_times for r in sent)
+    assert all((r.trajectory is not None) == planner_times for r in returned)
+    executed = [m.trajectory for m in runner.ctx.executed]
+    if planner_times:  # what ran is what the planner timed
+        assert [t for t in executed if len(t.times) > 1] == \
+            [r.trajectory for r in returned if len(r.trajectory.times) > 1]
