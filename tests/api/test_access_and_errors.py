@@ -54,6 +54,25 @@ def test_a_too_large_body_is_refused_with_413(tmp_path: Path):
         assert "at most 1000 bytes" in answer.json()["detail"]
 
 
+def _streamed(*parts: bytes):
+    """A request body sent in chunks, without Content-Length."""
+    yield from parts
+
+
+def test_a_streamed_body_over_the_limit_is_refused_with_413_and_one_under_it_is_read(
+        tmp_path: Path):
+    headers = {**AUTH, "content-type": "application/json"}
+    with TestClient(create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
+        big = _streamed(b'{"yaml": "', *[b"x" * 100] * 40, b'"}')
+        answer = client.post("/tasks/check", content=big, headers=headers)
+        assert answer.status_code == 413
+        assert "at most 1000 bytes" in answer.json()["detail"]
+        small = _streamed(b'{"task": ', b'"go_home"}')
+        answer = client.post("/tasks/check", content=small, headers=headers)
+        assert answer.status_code == 200, answer.text
+        assert answer.json()["ok"] is True
+
+
 def test_invalid_task_yaml_answers_422_with_file_and_line(client):
     yaml = "task: t\ncell: ../robots/cells/servo_arm_table.yaml\nsteps:\n  - fly: {to: moon}\n"
     answer = client.post("/runs", json={"yaml": yaml}, headers=AUTH)
