@@ -89,7 +89,7 @@ class RunDetailFastPath:
         it (each then checks it is current: a poll that came during a rebuild may need
         the next one)."""
         building = self._building.get(live.run_id)
-        if building is None:
+        if building is None or building.get_loop() is not asyncio.get_running_loop():
             building = asyncio.ensure_future(run_in_threadpool(live.detail.body))
             self._building[live.run_id] = building
             building.add_done_callback(lambda done: self._built(live.run_id, done))
