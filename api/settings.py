@@ -48,7 +48,6 @@ class Settings:
         sim_speed: default time scale of the sim backend.
         mock_speed: default replay speed of the mock backend (None: motions end at once).
         tick_hz: behaviour-tree ticks per second.
-        sse_poll_s: how often an event stream looks for new events (s).
         shutdown_timeout_s: how long shutdown waits for cancelled runs to stop (s).
     """
 
@@ -64,7 +63,6 @@ class Settings:
     sim_speed: float = 1.0
     mock_speed: float | None = None
     tick_hz: float = 100.0
-    sse_poll_s: float = 0.02
     shutdown_timeout_s: float = 10.0
 
     def __post_init__(self) -> None:
@@ -83,7 +81,7 @@ class Settings:
                 or not 0 <= self.planner_nice <= 19:
             raise ValueError(f"'planner_nice' must be an integer from 0 to 19 "
                              f"(got {self.planner_nice!r})")
-        for name in ("sim_speed", "tick_hz", "sse_poll_s", "shutdown_timeout_s"):
+        for name in ("sim_speed", "tick_hz", "shutdown_timeout_s"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise ValueError(f"'{name}' must be a positive number (got {value!r})")

@@ -7,7 +7,7 @@ import json
 from collections.abc import AsyncIterator
 from typing import Annotated
 
-from fastapi import APIRouter, Depends, Header, HTTPException, Query, Request, Response, status
+from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, status
 from fastapi.responses import StreamingResponse
 from starlette.concurrency import run_in_threadpool
 
@@ -92,9 +92,7 @@ def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]
             responses={**_ERRORS, 200: {"content": {"text/event-stream": {}},
                                         "description": "the run's events, as Server-Sent "
                                                        "Events, to the end of the run"}})
-async def run_events(run_id: str, request: Request,
-                     manager: Annotated[RunManager, Depends(get_manager)],
-                     settings: Annotated[Settings, Depends(get_settings)],
+async def run_events(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
                      last_event_id: Annotated[str | None, Header()] = None,
                      after: Annotated[int | None, Query(ge=0)] = None) -> StreamingResponse:
     """The run's events as Server-Sent Events (``id`` = the event's seq, ``event`` = its
@@ -110,34 +108,47 @@ async def run_events(run_id: str, request: Request,
         if start < 0:
             raise HTTPException(422, f"'Last-Event-ID' must be >= 0 (got {start})")
     manager.record(run_id)  # 404 before the stream starts
-    return StreamingResponse(_stream(manager, run_id, start, settings.sse_poll_s, request),
+    return StreamingResponse(_stream(manager, run_id, start),
                              media_type="text/event-stream",
                              headers={"Cache-Control": "no-cache", "X-Accel-Buffering": "no"})
 
 
-async def _stream(manager: RunManager, run_id: str, after: int, poll: float,
-                  request: Request) -> AsyncIterator[str]:
-    idle = 0.0
-    while True:
-        events, more = manager.events_after(run_id, after)
-        for event in events:
-            after = event.seq
-            yield _sse(event)
-            if event.kind == "run_finished":
-                return
-        if not more:
-            if not events:
-                return
-            continue  # events may have arrived between the read and the end
-        if events:
-            idle = 0.0
-        elif idle >= _KEEPALIVE_S:
-            idle = 0.0
-            yield ": keepalive\n\n"
-        if await request.is_disconnected():
-            return
-        await asyncio.sleep(poll)
-        idle += poll
+async def _stream(manager: RunManager, run_id: str, after: int) -> AsyncIterator[str]:
+    """The events after ``after`` as SSE, to ``run_finished``. It sleeps until the run
+    emits an event (the runner's thread wakes it), so an idle stream costs nothing; a
+    client that goes away cancels it (Starlette listens for the disconnect)."""
+    loop = asyncio.get_running_loop()
+    wake = asyncio.Event()
+
+    def arrived(_: RunEvent) -> None:  # in the runner's thread
+        try:
+            loop.call_soon_threadsafe(wake.set)
+        except RuntimeError:  # the loop has closed: the stream is gone
+            pass
+
+    live = manager.live(run_id)
+    if live is not None:
+        live.events.subscribe(arrived)
+    try:
+        while True:
+            wake.clear()  # before reading: an event from now on wakes the wait below
+            events, more = manager.events_after(run_id, after)
+            for event in events:
+                after = event.seq
+                yield _sse(event)
+                if event.kind == "run_finished":
+                    return
+            if not more:
+                if not events:
+                    return
+                continue  # events may have arrived between the read and the end
+            try:
+                await asyncio.wait_for(wake.wait(), _KEEPALIVE_S)
+            except TimeoutError:
+                yield ": keepalive\n\n"
+    finally:
+        if live is not None:
+            live.events.unsubscribe(arrived)
 
 
 def _sse(event: RunEvent) -> str:

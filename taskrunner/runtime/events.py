@@ -79,6 +79,12 @@ class EventLog:
         with self._lock:
             self._subscribers.append(callback)
 
+    def unsubscribe(self, callback: Callable[[RunEvent], None]) -> None:
+        """Stop calling ``callback`` (no error if it was not subscribed)."""
+        with self._lock:
+            if callback in self._subscribers:
+                self._subscribers.remove(callback)
+
     def emit(self, kind: str, message: str = "", *, node: str | None = None,
              location: str | None = None, status: str | None = None,
              **data: Any) -> RunEvent:

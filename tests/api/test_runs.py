@@ -139,6 +139,23 @@ def test_the_event_stream_replays_from_last_event_id_to_the_end(client):
     assert bad.status_code == 422
 
 
+def test_a_stream_sleeps_until_the_run_emits_and_lets_go_when_the_client_leaves(client):
+    run_id = client.post("/runs", json={"yaml": GO_CANDLE, "backend": "sim"},
+                         headers=AUTH).json()["run_id"]
+    live = client.app.state.manager.live(run_id)
+    before = len(live.events._subscribers)
+    with client.stream("GET", f"/runs/{run_id}/events") as stream:
+        lines = stream.iter_lines()
+        assert next(line for line in lines if line.startswith("event:")) == "event: run_started"
+        assert len(live.events._subscribers) == before + 1  # woken by the runner's thread
+    deadline = time.monotonic() + 5
+    while len(live.events._subscribers) > before and time.monotonic() < deadline:
+        time.sleep(0.01)
+    assert len(live.events._subscribers) == before  # the stream was cancelled, unsubscribed
+    client.post(f"/runs/{run_id}/cancel", headers=AUTH)
+    wait_until_done(client, run_id)
+
+
 def test_records_survive_a_restart_and_a_run_in_flight_is_recorded_interrupted(tmp_path: Path):
     settings = make_settings(tmp_path / "state")
     with TestClient(create_app(settings)) as client:

@@ -23,6 +23,17 @@ def test_events_are_numbered_timed_and_passed_to_subscribers():
     assert log.events(after=1) == seen[1:]
 
 
+def test_an_unsubscribed_callback_hears_no_more():
+    log = EventLog()
+    seen: list[RunEvent] = []
+    log.subscribe(seen.append)
+    log.emit("message", "one")
+    log.unsubscribe(seen.append)
+    log.unsubscribe(seen.append)  # twice: no error
+    log.emit("message", "two")
+    assert [e.message for e in seen] == ["one"]
+
+
 def test_an_unknown_event_kind_is_refused():
     with pytest.raises(ValueError, match="'kind' must be one of run_started"):
         EventLog().emit("node_exploded")
