@@ -2,7 +2,7 @@
 
     python benchmarks/api_latency.py [--clients 50] [--seconds 10] [--repeats 3]
                                      [--client python|wrk] [--planners 2] [--rate HZ]
-                                     [--json]
+                                     [--streams N] [--json]
 
 Starts ``run-task serve`` (planning in worker processes) on a free loopback port and puts
 it under the load the target names:
@@ -11,6 +11,7 @@ it under the load the target names:
 * ``--planners`` clients that keep planning workers busy with POST /plan, back to back:
   two real motions of the pair cell's left arm and a pose out of its reach, in turn (the
   ``plans`` column counts the answers in a window, ``planners`` the CPU the workers used);
+* ``--streams`` clients following the run's events (Server-Sent Events), if asked;
 * ``--clients`` keep-alive connections, each sending GET /runs/{id} as soon as its last
   answer came (closed loop: the heaviest load that many clients can make), or, with
   ``--rate``, that many times a second each (a dashboard or PLC polling).
@@ -68,6 +69,28 @@ def _call(conn: http.client.HTTPConnection, method: str, url: str,
                  headers=HEADERS)
     answer = conn.getresponse()
     return answer.status, answer.read()
+
+
+class Streams:
+    """Client threads following a run's events (GET /runs/{id}/events, SSE)."""
+
+    def __init__(self, port: int, run_id: str, count: int) -> None:
+        self.events = [0] * count
+        self.threads = [threading.Thread(target=self._follow, args=(port, run_id, k),
+                                         daemon=True) for k in range(count)]
+        for t in self.threads:
+            t.start()
+
+    def _follow(self, port: int, run_id: str, k: int) -> None:
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=600)
+        conn.request("GET", f"/runs/{run_id}/events", headers=HEADERS)
+        answer = conn.getresponse()
+        try:
+            for line in answer:
+                if line.startswith(b"event:"):
+                    self.events[k] += 1
+        except OSError:  # the server went away at the end
+            pass
 
 
 class Planners:
@@ -238,6 +261,8 @@ def main() -> int:
     parser.add_argument("--client", choices=("python", "wrk"), default="python")
     parser.add_argument("--planners", type=int, default=2,
                         help="clients keeping planners busy with POST /plan (2; 0: none)")
+    parser.add_argument("--streams", type=int, default=0,
+                        help="clients following the run's events (SSE) meanwhile (0)")
     parser.add_argument("--rate", type=float, default=0.0,
                         help="python client: polls per second per client on a fixed "
                              "schedule (0, default: closed loop, as fast as answered)")
@@ -268,6 +293,7 @@ def main() -> int:
             if planners is None:
                 planners = Planners(port, args.planners)
                 planners.wait_warm()
+            streams = Streams(port, run_id, args.streams)
             planned, codes = sum(planners.answered), dict(planners.codes)
             measure = _run_wrk if args.client == "wrk" else _run_python
             cpu0, t0 = _cpu_seconds(server.pid), time.monotonic()
@@ -280,7 +306,8 @@ def main() -> int:
                           plan_codes={str(c): n - codes.get(c, 0)
                                       for c, n in sorted(planners.codes.items())},
                           server_cpu=(cpu1[0] - cpu0[0]) / elapsed,
-                          planners_cpu=(cpu1[1] - cpu0[1]) / elapsed)
+                          planners_cpu=(cpu1[1] - cpu0[1]) / elapsed,
+                          streamed_events=sum(streams.events))
             windows.append(window)
             if run["status"] == "running":
                 control("POST", f"/runs/{run_id}/cancel")
@@ -301,6 +328,7 @@ def _report(args: argparse.Namespace, windows: list[dict]) -> None:
     pace = f"{args.rate:g} Hz each" if args.rate else "closed loop"
     print(f"GET /runs/{{id}}: {args.clients} {args.client} clients ({pace}), "
           f"{args.seconds:.0f} s windows, {args.planners} POST /plan client(s) planning, "
+          f"{args.streams} event stream(s), "
           "a sim run of pick_place planning and moving")
     print(f"{'window':>6} {'req/s':>8} {'p50 ms':>7} {'p90 ms':>7} {'p99 ms':>7} "
           f"{'max ms':>7} {'plans':>6} {'CPU server':>10} {'planners':>8} "
@@ -318,6 +346,7 @@ def _report(args: argparse.Namespace, windows: list[dict]) -> None:
           f"worst {worst:.1f} ms)")
     if args.json:
         print(json.dumps({"clients": args.clients, "client": args.client, "rate_hz": args.rate,
+                          "streams": args.streams,
                           "planners": args.planners, "seconds": args.seconds,
                           "windows": [{k: (round(v, 3) if isinstance(v, float) else v)
                                        for k, v in w.items()} for w in windows],
