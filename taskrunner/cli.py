@@ -28,6 +28,7 @@ import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
+from typing import cast
 
 import numpy as np
 
@@ -102,7 +103,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
     print(f"group {arm.name!r} at start {_fmt(start[arm.joint_indices])}: "
           f"{tip} at {_fmt(here.translation)} m")
     clearance = scene.min_distance()
-    print(f"start state collision-free; closest pair {clearance.pair[0]}–{clearance.pair[1]} "
+    pair = cast(tuple[str, str], clearance.pair)  # an arm's links give body pairs to check
+    print(f"start state collision-free; closest pair {pair[0]}–{pair[1]} "
           f"at {1e3 * clearance.distance:.1f} mm")
 
     # A point in front of the arm's base, a hand's height above the table.
@@ -203,12 +205,14 @@ def cmd_hw(args: argparse.Namespace) -> int:
     """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
     import math
 
+    from taskrunner.backends import ServoBackend
     from taskrunner.runtime.session import make_backend
 
     cell = _load(Path(args.cell))
     kind = "http" if args.url else "serial"
-    backend = make_backend(kind, cell, None, port=args.port, url=args.url,
-                           firmware_speedup=args.firmware_speedup)
+    # serial and http backends are servo backends
+    backend = cast(ServoBackend, make_backend(kind, cell, None, port=args.port, url=args.url,
+                                              firmware_speedup=args.firmware_speedup))
     try:
         if args.action == "calibrate":
             from taskrunner.backends.calibrate import calibrate_servos

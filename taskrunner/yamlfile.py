@@ -115,9 +115,9 @@ def load_yaml_text(text: str, path: str | Path | None = None) -> Any:
         # The reader checks the characters when it is made: keep it inside the try.
         loader = _Loader(text)
     except yaml.reader.ReaderError as exc:
-        line = text.count("\n", 0, exc.position) + 1
+        at = text.count("\n", 0, exc.position) + 1
         raise YamlError(f"invalid YAML: character #x{exc.character:04x} is not allowed",
-                        path, line) from None
+                        path, at) from None
     loader.name = str(path) if path is not None else "<string>"
     try:
         return loader.get_single_data()

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from typing import Annotated
+from typing import Annotated, Any
 
 import yaml
 from fastapi import APIRouter, Depends
@@ -18,7 +18,8 @@ from api.store import RunStore
 __all__ = ["router"]
 
 router = APIRouter(prefix="/cells", tags=["cells"], dependencies=[Depends(require_read)])
-_ERRORS = {401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 422: {"model": ErrorBody}}
+_ERRORS: dict[int | str, dict[str, Any]] = {
+    401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 422: {"model": ErrorBody}}
 
 
 @router.get("", response_model=list[CellSummary], responses=_ERRORS)

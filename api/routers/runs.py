@@ -5,7 +5,7 @@ from __future__ import annotations
 import asyncio
 import json
 from collections.abc import AsyncIterator
-from typing import Annotated
+from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, status
 from fastapi.responses import StreamingResponse
@@ -26,8 +26,9 @@ __all__ = ["router"]
 router = APIRouter(prefix="/runs", tags=["runs"])
 
 _KEEPALIVE_S = 10.0  # an idle stream sends a comment this often, so proxies keep it open
-_ERRORS = {401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
-           413: {"model": ErrorBody}, 422: {"model": ErrorBody}}
+_ERRORS: dict[int | str, dict[str, Any]] = {
+    401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
+    413: {"model": ErrorBody}, 422: {"model": ErrorBody}}
 
 
 @router.post("", status_code=status.HTTP_202_ACCEPTED, response_model=RunAccepted,

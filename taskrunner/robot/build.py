@@ -13,6 +13,7 @@ import logging
 import xml.etree.ElementTree as ET
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import cast
 
 import numpy as np
 import pinocchio as pin
@@ -20,7 +21,7 @@ import pinocchio as pin
 from taskrunner.errors import RobotDescriptionError, YamlError
 from taskrunner.robot.description import RobotDescription
 from taskrunner.robot.model import EndEffector, Group, JointInfo, Mimic, RobotInstance, RobotModel
-from taskrunner.robot.srdf import Srdf
+from taskrunner.robot.srdf import Srdf, SrdfEndEffector
 from taskrunner.robot.urdf import MOVABLE_TYPES, prefixed_copy
 
 __all__ = ["Placement", "build_model"]
@@ -155,6 +156,12 @@ def _origin(transform: pin.SE3) -> ET.Element:
     )
 
 
+def _joint_link(joint: ET.Element, role: str) -> str:
+    """The link named by a joint element's ``<parent>`` or ``<child>`` (``role``); both are
+    there by construction (the URDF's structure was checked when it was loaded)."""
+    return cast(str, cast(ET.Element, joint.find(role)).get("link"))
+
+
 def _premultiply_origin(joint: ET.Element, base: pin.SE3) -> None:
     origin = joint.find("origin")
     xyz = [float(v) for v in (origin.get("xyz", "0 0 0") if origin is not None else "0 0 0").split()]
@@ -212,8 +219,8 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
                 tree.links.append(element_name)
             elif element.tag == "joint":
                 tree.joint_elements[element_name] = element
-                parent = element.find("parent").get("link")  # type: ignore[union-attr]
-                child = element.find("child").get("link")  # type: ignore[union-attr]
+                parent = _joint_link(element, "parent")
+                child = _joint_link(element, "child")
                 tree.parent_of_link[child] = (element_name, parent)
             merged.append(element)
         if shares_world:
@@ -348,7 +355,7 @@ def _add_srdf(
     pre = p.prefix
     own_links = {link for link in tree.links if tree.owner.get(("link", link)) == p.name}
     own_joints = {j for j in tree.joint_elements if tree.owner.get(("joint", j)) == p.name}
-    eef_of_group = {}
+    eef_of_group: dict[str, SrdfEndEffector] = {}
     for eef in srdf.end_effectors:
         if pre + eef.parent_link not in own_links:
             raise srdf.error(eef.line, f"end_effector {eef.name!r}: parent_link "
@@ -392,7 +399,7 @@ def _add_srdf(
                 raise srdf.error(group.line, f"group {group_name!r}: joint {joint_name!r} is "
                                  "not a joint of the URDF")
             joint_list.append(pre + joint_name)
-            link_list.append(tree.joint_elements[pre + joint_name].find("child").get("link"))  # type: ignore[union-attr]
+            link_list.append(_joint_link(tree.joint_elements[pre + joint_name], "child"))
         for link in group.links:
             if pre + link not in own_links:
                 raise srdf.error(group.line, f"group {group_name!r}: link {link!r} is not a "
@@ -414,16 +421,16 @@ def _add_srdf(
             tip = tip or sub_tip
         if base is None:
             first = next((j for j in joint_list if j in tree.joint_elements), None)
-            base = (tree.joint_elements[first].find("parent").get("link")  # type: ignore[union-attr]
+            base = (_joint_link(tree.joint_elements[first], "parent")
                     if first else pre + p.description.urdf.root_link)
         resolved[group_name] = (joint_list, link_list, base, tip)
         return resolved[group_name]
 
     for group_name, group in srdf.groups.items():
         joint_list, link_list, base, tip = resolve(group_name, (group_name,))
-        eef = eef_of_group.get(group_name)
-        if tip is None and eef is not None:
-            tip = pre + eef.parent_link
+        group_eef = eef_of_group.get(group_name)
+        if tip is None and group_eef is not None:
+            tip = pre + group_eef.parent_link
         if tip is None and not group.subgroups:
             movable = [j for j in joint_list if j in joints]
             if movable and _is_serial(tree, movable):
@@ -441,7 +448,7 @@ def _add_srdf(
             base_link=base,
             tip_link=tip,
             subgroups=tuple(pre + s for s in group.subgroups),
-            end_effector=pre + eef.name if eef is not None else None,
+            end_effector=pre + group_eef.name if group_eef is not None else None,
             robot=p.name,
         )
 
@@ -449,7 +456,7 @@ def _add_srdf(
         if state.group not in srdf.groups:
             raise srdf.error(state.line, f"group_state {state.name!r}: group {state.group!r} "
                              "is not defined")
-        group = groups[pre + state.group]
+        model_group = groups[pre + state.group]
         group_joints = set(resolve(state.group, (state.group,))[0])
         values: dict[str, float] = {}
         for joint_name, value in state.values.items():
@@ -463,10 +470,10 @@ def _add_srdf(
             _check_in_limits(joints[full], value, lambda msg: srdf.error(line, msg),
                              f"group_state {state.name!r}")
             values[full] = value
-        if state.name in states.get(group.name, {}):
+        if state.name in states.get(model_group.name, {}):
             raise srdf.error(state.line, f"group_state {state.name!r} of group "
                              f"{state.group!r} is defined twice")
-        states.setdefault(group.name, {})[state.name] = values
+        states.setdefault(model_group.name, {})[state.name] = values
 
     for pair in srdf.disabled_collisions:
         a, b = pre + pair.link1, pre + pair.link2
@@ -495,8 +502,8 @@ def _is_serial(tree: _Tree, joint_names: list[str]) -> bool:
     """True if each joint's child link is an ancestor of the next joint."""
     ordered = joint_names
     for upper, lower in zip(ordered, ordered[1:]):
-        child = tree.joint_elements[upper].find("child").get("link")  # type: ignore[union-attr]
-        link = tree.joint_elements[lower].find("parent").get("link")  # type: ignore[union-attr]
+        child = _joint_link(tree.joint_elements[upper], "child")
+        link = _joint_link(tree.joint_elements[lower], "parent")
         while link != child:
             if link not in tree.parent_of_link:
                 return False

@@ -69,9 +69,10 @@ class PackageMap:
                 manifest = Path(dirpath) / "package.xml"
                 doc = read_xml(manifest)
                 name_el = doc.root.find("name")
-                if name_el is None or not (name_el.text or "").strip():
+                name = (name_el.text or "").strip() if name_el is not None else ""
+                if not name:
                     raise doc.error(doc.root, "package.xml has no <name>")
-                self._packages.setdefault(name_el.text.strip(), Path(dirpath).resolve())
+                self._packages.setdefault(name, Path(dirpath).resolve())
 
     def add(self, name: str, folder: str | Path) -> None:
         """Register (or replace) one package."""

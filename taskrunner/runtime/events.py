@@ -59,9 +59,9 @@ class RunEvent:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> RunEvent:
-        return cls(**{k: data.get(k) for k in ("seq", "time", "kind", "node", "location",
-                                                "status")},
-                   message=data.get("message", ""), data=dict(data.get("data") or {}))
+        fields: dict[str, Any] = {k: data.get(k) for k in ("seq", "time", "kind", "node",
+                                                           "location", "status")}
+        return cls(**fields, message=data.get("message", ""), data=dict(data.get("data") or {}))
 
 
 class EventLog:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import sys
 import threading
 from pathlib import Path
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from taskrunner.backends import (
     HttpBackend,
@@ -30,6 +30,10 @@ from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
 from taskrunner.tasks.loader import load_task
+
+if TYPE_CHECKING:
+    from taskrunner.planning.service import InProcessPlanner
+    from taskrunner.planning.worker import PlanningWorker
 
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
@@ -122,7 +126,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     # toppra takes most of a second to import: do it while the rest loads.
     threading.Thread(target=_import_toppra, daemon=True).start()
     events = EventLog()
-    planner_service = None
+    planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other
     if worker:
         from taskrunner.planning.worker import PlanningWorker
 

@@ -301,7 +301,7 @@ class SceneAction(TaskLeaf):
     """An instant change of the scene (attach, detach, add or remove an object)."""
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext,
-                 action: Callable[[TaskContext], None]) -> None:
+                 action: Callable[[TaskContext], object]) -> None:
         super().__init__(name, location, ctx)
         self.action = action
         self.outcome: Status = Status.RUNNING

@@ -10,13 +10,16 @@ parallel children run side by side on their own joints.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import pinocchio as pin
 import py_trees
 from py_trees.behaviour import Behaviour
 
 from taskrunner.errors import TaskSpecError
 from taskrunner.planning.cartesian import CartesianOptions
-from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
+from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptions, PoseGoal
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.shapes import Box, Cylinder, Mesh, Sphere
 from taskrunner.tasks import (
@@ -71,7 +74,7 @@ def _error(step: StepNode, message: str) -> TaskSpecError:
 
 def planner_options(step: MotionOptions) -> PlannerOptions:
     """Planner options of a motion step (the task's defaults already applied)."""
-    values = {}
+    values: dict[str, Any] = {}
     if step.planner is not None:
         values["planner"] = step.planner
     if step.planning_time is not None:
@@ -140,10 +143,10 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
                                 planner_options(step), timing_options(step, ctx))
         case HandoffStep():
             giver, receiver = _arm(step, ctx, step.from_arm), _arm(step, ctx, step.to_arm)
-            at = step.at if isinstance(step.at, str) else step.at.to_pose()
-            if isinstance(at, str) and at not in ctx.scene.robot.named_state_names(giver):
-                raise _error(step, f"'at': {at!r} is not a named pose of arm {giver!r}")
-            return idioms.handoff(ctx, name, where, step.object, giver, receiver, at,
+            meet = step.at if isinstance(step.at, str) else step.at.to_pose()
+            if isinstance(meet, str) and meet not in ctx.scene.robot.named_state_names(giver):
+                raise _error(step, f"'at': {meet!r} is not a named pose of arm {giver!r}")
+            return idioms.handoff(ctx, name, where, step.object, giver, receiver, meet,
                                   step.approach, step.retreat, planner_options(step),
                                   timing_options(step, ctx))
         case AttachStep():
@@ -203,6 +206,7 @@ def _position_only(target) -> bool | None:  # type: ignore[no-untyped-def]
 
 
 def _go_goal(step: GoStep):  # type: ignore[no-untyped-def]
+    goal: Goal
     if step.to is not None:
         goal = NamedGoal(step.to)
     elif step.joints is not None:
@@ -276,7 +280,7 @@ def _gripper(step: GripperStep, ctx: TaskContext) -> Behaviour:
                       timing=timing_options(step, ctx))
 
 
-def _attach(step: AttachStep, ctx: TaskContext):  # type: ignore[no-untyped-def]
+def _attach(step: AttachStep, ctx: TaskContext) -> Callable[[TaskContext], object]:
     obj = step.object
     if step.arm is not None:
         arm = ctx.arm(_arm(step, ctx, step.arm))
