@@ -176,6 +176,8 @@ class PlanBody(_Strict):
     planning_time: float = Field(default=1.0, gt=0, le=30)
     seed: int = Field(default=0, ge=0, le=2**31 - 1)
     velocity_scaling: float | None = Field(default=None, gt=0, le=1)
+    sample_rate_hz: float = Field(default=100.0, ge=1, le=1000,
+                                  description="samples per second of the trajectory")
 
     @model_validator(mode="after")
     def _one_goal(self) -> PlanBody:

@@ -56,7 +56,8 @@ def _plan(body: PlanBody, cells: CellRegistry) -> bytes:
     # process's GIL (the event loop answers other requests meanwhile).
     request = PlanRequest(group.name, goal, options=PlannerOptions(
         planning_time=body.planning_time, seed=body.seed),
-        timing=TimingOptions(velocity_scaling=body.velocity_scaling), trajectory_json=True)
+        timing=TimingOptions(velocity_scaling=body.velocity_scaling,
+                             sample_rate_hz=body.sample_rate_hz), trajectory_json=True)
     planner = session.take_planner()
     try:
         result = planner.submit(scene, request).result(_ANSWER_TIMEOUT_S)

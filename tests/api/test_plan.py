@@ -35,6 +35,17 @@ def test_plan_to_joint_values_and_to_a_pose(client):
     assert pose.status_code == 200, pose.text
 
 
+def test_plan_samples_the_trajectory_at_the_rate_asked_for(client):
+    body = {"cell": "servo_arm_table", "group": "arm", "to": "Candle", "backend": "mock"}
+    fine = client.post("/plan", json=body).json()
+    coarse = client.post("/plan", json={**body, "sample_rate_hz": 10}).json()
+    assert coarse["duration"] == pytest.approx(fine["duration"])
+    assert coarse["positions"][-1] == pytest.approx(fine["positions"][-1])
+    steps = [b - a for a, b in zip(coarse["times"], coarse["times"][1:])]
+    assert max(steps) == pytest.approx(0.1, abs=1e-6)
+    assert len(coarse["times"]) < len(fine["times"]) / 5
+
+
 @pytest.mark.parametrize("body, code, fragment", [
     ({"cell": "servo_arm_table", "group": "leg", "to": "home"}, 422, "unknown group 'leg'"),
     ({"cell": "servo_arm_table", "group": "arm", "to": "nowhere"}, 422, "'nowhere'"),
@@ -42,6 +53,8 @@ def test_plan_to_joint_values_and_to_a_pose(client):
      "planning failed"),
     ({"cell": "servo_arm_table", "group": "arm"}, 422, "exactly one goal"),
     ({"cell": "atlantis", "group": "arm", "to": "home"}, 404, "unknown cell"),
+    ({"cell": "servo_arm_table", "group": "arm", "to": "home", "sample_rate_hz": 0}, 422,
+     "sample_rate_hz"),
 ])
 def test_bad_plan_requests_answer_4xx_with_the_reason(client, body, code, fragment):
     answer = client.post("/plan", json=body)
