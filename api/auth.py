@@ -8,9 +8,15 @@ import secrets
 from fastapi import Depends, HTTPException, Request, status
 from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
 
-__all__ = ["require_read", "require_write"]
+__all__ = ["require_read", "require_write", "token_matches"]
 
 _bearer = HTTPBearer(auto_error=False, description="the server's token (printed at start)")
+
+
+def token_matches(given: bytes, token: str) -> bool:
+    """Whether the credentials ``given`` (as sent) are the server's token, compared in
+    constant time."""
+    return secrets.compare_digest(given, token.encode())
 
 
 def _check(request: Request, credentials: HTTPAuthorizationCredentials | None) -> None:
@@ -18,7 +24,7 @@ def _check(request: Request, credentials: HTTPAuthorizationCredentials | None) -
     if token is None:  # running open (--no-auth)
         return
     given = credentials.credentials if credentials is not None else ""
-    if not secrets.compare_digest(given.encode(), token.encode()):
+    if not token_matches(given.encode(), token):
         raise HTTPException(
             status.HTTP_401_UNAUTHORIZED,
             "a valid bearer token is required (Authorization: Bearer <token>)"

@@ -197,7 +197,7 @@ class StoredDetails:
 
     def body(self, run_id: str) -> bytes | None:
         """The body of recorded run ``run_id``, or None if there is no such run."""
-        row = self.store.load_text(run_id)
+        row = self.store.load_row(run_id)
         if row is None:
             return None
         with self._lock:

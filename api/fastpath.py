@@ -21,11 +21,12 @@ after answering, off the event loop, as the route does.
 from __future__ import annotations
 
 import asyncio
-import secrets
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
 from starlette.concurrency import run_in_threadpool
+
+from api.auth import token_matches
 
 __all__ = ["RunDetailFastPath"]
 
@@ -110,6 +111,5 @@ def _authorised(state: Any, scope: Scope) -> bool:
     for name, value in scope["headers"]:
         if name == b"authorization":
             scheme, _, given = value.partition(b" ")
-            return scheme.lower() == b"bearer" and secrets.compare_digest(
-                given.strip(), token.encode())
+            return scheme.lower() == b"bearer" and token_matches(given.strip(), token)
     return False

@@ -101,7 +101,7 @@ class RunStore:
                                    (run_id,)).fetchone()
         return None if row is None else RunRecord.from_dict(json.loads(row[0]))
 
-    def load_text(self, run_id: str) -> tuple[str, str | None] | None:
+    def load_row(self, run_id: str) -> tuple[str, str | None] | None:
         """The record of ``run_id`` as the JSON text stored and its final tree, or None."""
         with self._lock:
             row = self._db.execute("SELECT record, tree FROM runs WHERE run_id = ?",

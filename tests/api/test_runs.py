@@ -226,10 +226,10 @@ def test_a_database_from_before_final_trees_were_kept_is_upgraded(tmp_path: Path
     old.commit()
     old.close()
     store = RunStore(path)
-    assert store.load_text("r0")[1] is None
+    assert store.load_row("r0")[1] is None
     store.save(record, tree="-> root")
     store.save(record)  # a later save without a tree keeps it
-    assert store.load_text("r0")[1] == "-> root"
+    assert store.load_row("r0")[1] == "-> root"
     store.close()
 
 
