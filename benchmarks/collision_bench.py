@@ -15,6 +15,7 @@ Run alone::
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import argparse
 import gc
 import json
@@ -134,7 +135,7 @@ def run(quick: bool, seed: int = 0) -> dict:
         ``variants``: ``{label: {us_median, us_p95, collision_fraction, disagreements}}``
         (disagreements: states whose verdict differs from the scene's).
     """
-    robot = load_robot(ROOT / "robots" / "panda")
+    robot = load_robot(DATA_ROOT / "robots" / "panda")
     scene = build_cell(robot)
     rng = np.random.default_rng(seed)
     count, repeats = (1000, 1) if quick else (5000, 3)

@@ -41,6 +41,7 @@ if str(REPO_ROOT) not in sys.path:
 
 from taskrunner.errors import IkFailedError
 from taskrunner.kinematics import IkOptions, IkSolver, frame_pose
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import RobotModel, load_robot
 
 __all__ = ["CASES", "rows", "run"]
@@ -127,7 +128,7 @@ def _bench_case(path: Path, group: str, n_targets: int, seed: int) -> dict[str, 
 def _calibration_us() -> float:
     """Median time (µs) of a fixed small workload: one pinocchio FK of the Panda and two
     6x7 numpy products, the kind of call an IK iteration is made of."""
-    model = load_robot(REPO_ROOT / "robots/panda").model
+    model = load_robot(DATA_ROOT / "robots" / "panda").model
     data = model.createData()
     q = np.zeros(model.nq)
     J = np.ones((6, 7))
@@ -161,7 +162,7 @@ def run(quick: bool = False, seed: int = 0, targets: int | None = None) -> dict[
     n_targets = targets if targets is not None else QUICK_TARGETS if quick else FULL_TARGETS
     result: dict[str, float] = {"calibration_us": _calibration_us()}
     for key, folder, group, _ in CASES:
-        for name, value in _bench_case(REPO_ROOT / folder, group, n_targets, seed).items():
+        for name, value in _bench_case(DATA_ROOT / folder, group, n_targets, seed).items():
             result[f"{key}_{name}"] = value
     return result
 

@@ -30,6 +30,7 @@ Problems (world frame: z up, m; the Panda's base at the origin on its table top)
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -365,7 +366,7 @@ def panda_cage(robot: RobotModel, count: int, rng: np.random.Generator) -> Probl
 
 # ---------------------------------------------------------------------- servo arms
 def servo_table(count: int, rng: np.random.Generator) -> Problem:
-    cell = load_cell(ROOT / "robots" / "cells" / "servo_arm_table.yaml")
+    cell = load_cell(DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml")
     scene = scene_from_cell(cell)
     scene.add_object("cup", Cylinder(0.035, 0.10), Pose((0.22, 0.09, 0.80)))
     scene.add_object("post", Cylinder(0.012, 0.30), Pose((0.16, -0.10, 0.90)))
@@ -383,7 +384,7 @@ def servo_table(count: int, rng: np.random.Generator) -> Problem:
 
 
 def servo_pair_swap(count: int, rng: np.random.Generator) -> Problem:
-    cell = load_cell(ROOT / "robots" / "cells" / "servo_arm_pair.yaml")
+    cell = load_cell(DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml")
     scene = scene_from_cell(cell)
     model = scene.robot
     base = scene.state.copy()
@@ -452,7 +453,7 @@ def build_problems(count: int, seed: int = 0, names: Sequence[str] | None = None
     for name in names:
         if name not in BUILDERS:
             raise UnknownNameError("problem", name, list(PROBLEM_NAMES))
-    robot = load_robot(ROOT / "robots" / "panda")
+    robot = load_robot(DATA_ROOT / "robots" / "panda")
     problems = []
     for name in names:
         # panda_table_pick_pose shares panda_table_pick's poses: same generator.

@@ -7,6 +7,7 @@ planning in-process so the figure is pure planning work), repeated; "planning" i
 over the motion steps, the time from the step starting to its trajectory being ready
 (IK goal sampling, OMPL search, shortcut, fine re-check, Cartesian paths and toppra
 timing). Then the wall time of ``run-task tasks/pick_place.yaml --backend mock`` measured
+from taskrunner.resources import DATA_ROOT
 from process start to exit (planning in a worker process, as a user runs it).
 
 Prints a table and, as its last line with --json, one JSON object:
@@ -28,7 +29,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-TASKS = ROOT / "tasks"
+TASKS = DATA_ROOT / "tasks"
 TARGETS = {"pick_place": 150.0, "handoff": 500.0}
 WALL_TARGET_S = 3.0
 

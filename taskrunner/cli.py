@@ -24,6 +24,7 @@ Exit codes: 0 success, 2 invalid task or input, 3 planning failure, 4 execution 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 from collections.abc import Sequence
@@ -42,17 +43,18 @@ from taskrunner.errors import (
 
 __all__ = ["main"]
 
-REPO_ROOT = Path(__file__).resolve().parent.parent
-DEFAULT_CELL = REPO_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
+DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells)
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
-COMMANDS = ("run", "check", "demo", "info", "collision-matrix", "serve", "firmware-sim", "hw")
+COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
+            "firmware-sim", "hw")
 
 
-def _load(path: Path):  # type: ignore[no-untyped-def]
+def _load(name_or_path: str):  # type: ignore[no-untyped-def]
+    from taskrunner.resources import resolve_cell
     from taskrunner.robot.cell import load_cell_or_robot
 
-    return load_cell_or_robot(path)
+    return load_cell_or_robot(resolve_cell(name_or_path))
 
 
 def _fmt(values: np.ndarray) -> str:
@@ -60,7 +62,7 @@ def _fmt(values: np.ndarray) -> str:
 
 
 def cmd_info(args: argparse.Namespace) -> int:
-    cell = _load(Path(args.path))
+    cell = _load(args.path)
     model = cell.model
     out = [f"cell {cell.name}: {len(model.instances)} robot(s), {model.nq} joints"]
     for inst in model.instances:
@@ -88,7 +90,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from taskrunner.scene import scene_from_cell
 
     t0 = time.perf_counter()
-    cell = _load(Path(args.cell))
+    cell = _load(args.cell)
     model = cell.model
     scene = scene_from_cell(cell)
     print(f"loaded cell {cell.name!r} ({model.nq} joints, {len(cell.objects)} objects) "
@@ -158,7 +160,9 @@ def _parameters(pairs: Sequence[str]) -> dict[str, str]:
 def cmd_check(args: argparse.Namespace) -> int:
     from taskrunner.tree.check import check_task
 
-    report = check_task(Path(args.file), _parameters(args.param), seed=args.seed)
+    from taskrunner.resources import resolve_task
+
+    report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
     for problem in report.problems:
         print(problem, file=sys.stderr)
     if report.problems:
@@ -171,8 +175,12 @@ def cmd_check(args: argparse.Namespace) -> int:
 def cmd_run(args: argparse.Namespace) -> int:
     from taskrunner.runtime.session import run_task_file
 
-    return run_task_file(Path(args.file), backend=args.backend, parameters=_parameters(args.param),
-                         speed=args.speed, seed=args.seed, runs_dir=Path(args.runs_dir),
+    from taskrunner.resources import resolve_task
+
+    runs_dir = Path(args.runs_dir or os.environ.get("TASKRUNNER_RUNS_DIR") or "runs")
+    return run_task_file(resolve_task(args.file), backend=args.backend,
+                         parameters=_parameters(args.param),
+                         speed=args.speed, seed=args.seed, runs_dir=runs_dir,
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
                          port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
                          home=args.home)
@@ -180,17 +188,11 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
     """Build the host firmware, start it, pass its two address lines through."""
-    import shutil
     import subprocess
 
-    firmware = REPO_ROOT / "firmware"
-    if shutil.which("make") is None or shutil.which("g++") is None:
-        raise InputError("the host firmware needs make and g++ on PATH")
-    built = subprocess.run(["make", "-s", "-C", str(firmware), "host"], capture_output=True,
-                           text=True)
-    if built.returncode != 0:
-        raise InputError(f"building the host firmware failed:\n{built.stderr[-2000:]}")
-    command = [str(firmware / "build" / "taskrunner-servo-host"), "--speedup", str(args.speedup)]
+    from taskrunner.backends.host_firmware import build_host_firmware
+
+    command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
     if args.log:
         command += ["--log", args.log]
     process = subprocess.Popen(command)
@@ -208,7 +210,7 @@ def cmd_hw(args: argparse.Namespace) -> int:
     from taskrunner.backends import ServoBackend
     from taskrunner.runtime.session import make_backend
 
-    cell = _load(Path(args.cell))
+    cell = _load(args.cell)
     kind = "http" if args.url else "serial"
     # serial and http backends are servo backends
     backend = cast(ServoBackend, make_backend(kind, cell, None, port=args.port, url=args.url,
@@ -247,7 +249,7 @@ def cmd_hw(args: argparse.Namespace) -> int:
 def cmd_serve(args: argparse.Namespace) -> int:
     import uvicorn
 
-    from api import Settings, create_app
+    from taskrunner.api import Settings, create_app
 
     try:
         settings = Settings.from_env(token=args.token, planner=args.planner,
@@ -271,6 +273,32 @@ def cmd_serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_examples(args: argparse.Namespace) -> int:
+    """The shipped example tasks: name, cell, first line of the description."""
+    from taskrunner.resources import example_tasks
+    from taskrunner.yamlfile import load_yaml
+
+    rows = []
+    for name, path in example_tasks().items():
+        try:
+            data = load_yaml(path)
+        except TaskrunnerError as exc:  # a broken shipped file is a bug: say so, go on
+            rows.append((name, "?", f"unreadable: {exc}"))
+            continue
+        cell = Path(str(data.get("cell", "?"))).stem if isinstance(data, dict) else "?"
+        about = str(data.get("description", "")).strip().splitlines() if isinstance(
+            data, dict) else []
+        rows.append((name, cell, about[0] if about else ""))
+    width = max(len(r[0]) for r in rows)
+    cell_width = max(len(r[1]) for r in rows)
+    for name, cell, about in rows:
+        print(f"{name:<{width}}  {cell:<{cell_width}}  {about}".rstrip())
+    if args.paths:
+        for name, path in example_tasks().items():
+            print(f"{name}: {path}")
+    return EXIT_OK
+
+
 def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
     from taskrunner.scene import acm
 
@@ -278,11 +306,15 @@ def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
 
 
 def _parser() -> argparse.ArgumentParser:
+    from taskrunner import __version__
+
     parser = argparse.ArgumentParser(prog="run-task", description=__doc__.split("\n\n")[0])
-    sub = parser.add_subparsers(dest="command", required=True)
+    parser.add_argument("--version", action="version", version=f"run-task {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
-    run.add_argument("file", help="task file (YAML)")
-    run.add_argument("--backend", choices=("mock", "sim", "serial", "http"), default="mock")
+    run.add_argument("file", help="task file (YAML), or a shipped example's name (pick_place)")
+    run.add_argument("--backend", choices=("mock", "sim", "serial", "http"), default="mock",
+                     help="where the motion goes (mock)")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
                                     "the robot's hardware.yaml)")
     run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")
@@ -296,34 +328,44 @@ def _parser() -> argparse.ArgumentParser:
                      help="time scale of the motion (sim: 2 = twice real time; mock: replay "
                           "this many times faster instead of jumping to the end)")
     run.add_argument("--seed", type=int, default=0, help="planner seed (0)")
-    run.add_argument("--runs-dir", default="runs", help="where run records go (runs/)")
+    run.add_argument("--runs-dir", default=None,
+                     help="where run records go (TASKRUNNER_RUNS_DIR, else ./runs)")
     run.add_argument("--plain", action="store_true", help="log lines even in a terminal")
     run.add_argument("--in-process", action="store_true",
                      help="plan in this process instead of a worker process")
     check = sub.add_parser("check", help="check a task file; nothing moves")
-    check.add_argument("file", help="task file (YAML)")
-    check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE")
-    check.add_argument("--seed", type=int, default=0)
+    check.add_argument("file", help="task file (YAML), or a shipped example's name")
+    check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                       help="override a task parameter (repeatable)")
+    check.add_argument("--seed", type=int, default=0, help="IK and planner seed (0)")
+    examples = sub.add_parser("examples", help="list the shipped example tasks "
+                                               "(run one with: run-task NAME)")
+    examples.add_argument("--paths", action="store_true", help="also print each file's path")
     sim = sub.add_parser("firmware-sim", help="start the host build of the ESP32 firmware")
     sim.add_argument("--speedup", type=float, default=1.0, help="run its clock X times faster")
     sim.add_argument("--log", help="CSV of every tick's servo angles")
     hw = sub.add_parser("hw", help="bench helpers for the servo arm's ESP32")
-    hw.add_argument("action", choices=("status", "home", "jog", "calibrate"))
+    hw.add_argument("action", choices=("status", "home", "jog", "calibrate"),
+                    help="status: firmware and joint angles; home; jog JOINT DEGREES; "
+                         "calibrate [JOINT]: write zero_rad and direction to hardware.yaml")
     hw.add_argument("joint", nargs="?", help="joint to jog, e.g. 'Revolute 1'")
     hw.add_argument("degrees", nargs="?", type=float, help="how far to jog (degrees)")
     hw.add_argument("--port", help="serial port (default: the robot's hardware.yaml)")
     hw.add_argument("--url", help="the ESP32's /api/command URL instead of serial")
-    hw.add_argument("--cell", default=str(DEFAULT_CELL), help="cell of the servo arm")
+    hw.add_argument("--cell", default=str(DEFAULT_CELL),
+                    help=f"cell of the servo arm: a path or a shipped cell's name ({DEFAULT_CELL})")
     hw.add_argument("--firmware-speedup", type=float, default=1.0, help=argparse.SUPPRESS)
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
-    demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL), help="cell file")
+    demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL),
+                      help=f"cell or robot: a path or a shipped cell's name ({DEFAULT_CELL})")
     demo.add_argument("--target", nargs=3, type=float, default=(0.2, 0.05, 0.08),
                       metavar=("X", "Y", "Z"),
                       help="IK target in the first robot's base frame, m (0.2 0.05 0.08)")
-    demo.add_argument("--seed", type=int, default=0)
+    demo.add_argument("--seed", type=int, default=0, help="IK and planner seed (0)")
     info = sub.add_parser("info", help="describe a cell or robot")
-    info.add_argument("path")
-    serve = sub.add_parser("serve", help="serve the REST API (api/) with uvicorn")
+    info.add_argument("path", help="cell file, robot folder or file, MoveIt config package, "
+                                   "or a shipped cell's or robot's name")
+    serve = sub.add_parser("serve", help="serve the REST API with uvicorn")
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
     serve.add_argument("--port", type=int, default=8000, help="port (8000)")
     serve.add_argument("--token", default=None,
@@ -334,7 +376,7 @@ def _parser() -> argparse.ArgumentParser:
                        help="where the run database goes (TASKRUNNER_STATE_DIR, else state/)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
                        help="plan in a worker process per run (default) or in-process")
-    serve.add_argument("--log-level", default="info",
+    serve.add_argument("--log-level", default="info", help="uvicorn's log level (info)",
                        choices=("critical", "error", "warning", "info", "debug"))
     sub.add_parser("collision-matrix", add_help=False,
                    help="generate a robot's self-collision matrix (see --help)")
@@ -349,7 +391,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
         argv = ["run", *argv]
     args = parser.parse_args(argv)
-    commands = {"run": cmd_run, "check": cmd_check, "demo": cmd_demo, "info": cmd_info,
+    commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples,
+                "demo": cmd_demo, "info": cmd_info,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve}
     try:

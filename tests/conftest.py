@@ -8,6 +8,7 @@ time): treat them as read-only. A test that needs to change a model, or uses
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 from pathlib import Path
 
 import pytest
@@ -27,7 +28,7 @@ def repo_root() -> Path:
 @pytest.fixture(scope="session")
 def robots_dir(repo_root: Path) -> Path:
     """``robots/``: the robot folders (servo_arm, panda, ur5) and ``cells/``."""
-    return repo_root / "robots"
+    return DATA_ROOT / "robots"
 
 
 @pytest.fixture(scope="session")

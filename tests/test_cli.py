@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 from taskrunner.cli import EXIT_INVALID, EXIT_OK, EXIT_PLANNING, main
 
 
@@ -22,7 +23,7 @@ def test_demo_with_an_unreachable_target_is_a_planning_failure(capsys):
 
 
 def test_info_lists_groups_poses_and_objects(repo_root, capsys):
-    assert main(["info", str(repo_root / "robots" / "cells" / "servo_arm_pair.yaml")]) == EXIT_OK
+    assert main(["info", str(DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml")]) == EXIT_OK
     out = capsys.readouterr().out
     assert "robot 'left' prefix 'left_'" in out
     assert "both_arms: 10 joints" in out and "HandOff" in out
@@ -38,7 +39,7 @@ def test_info_on_a_bad_file_names_it_and_exits_2(tmp_path, capsys):
 
 
 def test_collision_matrix_prints_srdf_entries(repo_root, capsys):
-    code = main(["collision-matrix", str(repo_root / "robots" / "servo_arm"), "--samples", "300"])
+    code = main(["collision-matrix", str(DATA_ROOT / "robots" / "servo_arm"), "--samples", "300"])
     assert code == EXIT_OK
     out = capsys.readouterr().out
     assert '<disable_collisions link1="arm_link_1" link2="base_link_upper_1" reason="Adjacent"/>' in out

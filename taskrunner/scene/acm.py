@@ -274,7 +274,7 @@ def merge_disable_collisions(
 def main(argv: Sequence[str] | None = None) -> int:
     """``python -m taskrunner.scene.acm ROBOT [--samples N] [--seed S] [--write SRDF]``."""
     parser = argparse.ArgumentParser(
-        prog="python -m taskrunner.scene.acm",
+        prog="run-task collision-matrix",
         description="Generate a robot's self-collision matrix (SRDF disable_collisions).",
     )
     parser.add_argument("robot", help="robot.yaml, MoveIt config folder, URDF or xacro")

@@ -35,7 +35,7 @@ from taskrunner.tasks.steps import (
 
 __all__ = ["SCHEMA_PATH", "schema_text", "task_json_schema"]
 
-SCHEMA_PATH = Path(__file__).resolve().parents[2] / "tasks" / "task.schema.json"
+SCHEMA_PATH = Path(__file__).resolve().parents[1] / "data" / "tasks" / "task.schema.json"
 
 
 def _body_model(verb: str) -> type[BaseModel] | None:

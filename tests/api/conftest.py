@@ -9,7 +9,7 @@ import pytest
 from apitest import make_settings
 from fastapi.testclient import TestClient
 
-from api import Settings, create_app
+from taskrunner.api import Settings, create_app
 
 
 @pytest.fixture

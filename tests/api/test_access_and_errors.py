@@ -8,7 +8,7 @@ import pytest
 from apitest import AUTH, TOKEN, make_settings
 from fastapi.testclient import TestClient
 
-from api import Settings, create_app
+from taskrunner.api import Settings, create_app
 
 
 def test_endpoints_that_change_state_need_the_token(client):

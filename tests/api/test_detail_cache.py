@@ -10,9 +10,9 @@ from pathlib import Path
 from apitest import AUTH, wait_until_done
 from pydantic import TypeAdapter
 
-from api.detail import RunDetailCache, RunListCache, StoredDetails, detail_body
-from api.schemas import RunDetail, RunSummary
-from api.store import RunStore
+from taskrunner.api.detail import RunDetailCache, RunListCache, StoredDetails, detail_body
+from taskrunner.api.schemas import RunDetail, RunSummary
+from taskrunner.api.store import RunStore
 from taskrunner.runtime.events import EventLog
 from taskrunner.runtime.records import RunRecord
 

@@ -15,9 +15,9 @@ from apitest import AUTH, TOKEN, make_settings, wait_until_done
 from fastapi.testclient import TestClient
 from test_detail_cache import FakeClock, FakeRun, reference
 
-from api import create_app
-from api.detail import RunDetailCache
-from api.fastpath import RunDetailFastPath
+from taskrunner.api import create_app
+from taskrunner.api.detail import RunDetailCache
+from taskrunner.api.fastpath import RunDetailFastPath
 
 
 def fastpath_of(app: Any) -> RunDetailFastPath:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from api.schemas import PlanResponse
+from taskrunner.api.schemas import PlanResponse
 
 
 def test_plan_to_a_named_pose_returns_a_timed_trajectory_and_nothing_moves(client):

@@ -10,8 +10,8 @@ from pathlib import Path
 from apitest import AUTH, make_settings, parse_sse, wait_for_event, wait_until_done
 from fastapi.testclient import TestClient
 
-from api import create_app
-from api.store import RunStore
+from taskrunner.api import create_app
+from taskrunner.api.store import RunStore
 from taskrunner.runtime.records import RunRecord
 
 GO_CANDLE = textwrap.dedent("""\
@@ -236,7 +236,7 @@ def test_a_database_from_before_final_trees_were_kept_is_upgraded(tmp_path: Path
 def test_an_ended_run_shows_no_current_node_even_before_its_thread_has_finished():
     from types import SimpleNamespace
 
-    from api.runs import LiveRun
+    from taskrunner.api.runs import LiveRun
 
     record = RunRecord(run_id="r1", task="t", task_file="", cell="c", backend="sim",
                        parameters={})

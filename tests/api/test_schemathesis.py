@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, settings
 
 schemathesis = pytest.importorskip("schemathesis")
 
-from api import create_app  # noqa: E402
+from taskrunner.api import create_app  # noqa: E402
 
 _APP_SETTINGS = None
 

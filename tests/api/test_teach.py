@@ -7,7 +7,7 @@ import pytest
 from apitest import AUTH, make_settings, wait_until_done
 from fastapi.testclient import TestClient
 
-from api import create_app
+from taskrunner.api import create_app
 
 GO_TAUGHT = """\
 task: go_taught

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import os
 import select
 import shutil
@@ -15,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-FIRMWARE = Path(__file__).resolve().parents[2] / "firmware"
+FIRMWARE = DATA_ROOT / "firmware"
 HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
 
 

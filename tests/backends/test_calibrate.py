@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import math
 import shutil
 from pathlib import Path
@@ -16,7 +17,7 @@ from taskrunner.backends.serial import SerialBackend
 from taskrunner.errors import YamlError
 
 ROOT = Path(__file__).resolve().parents[2]
-HARDWARE = ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
+HARDWARE = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
 NAMES = tuple(f"Revolute {i}" for i in range(1, 8))
 
 

@@ -8,6 +8,7 @@ clock. Every wait is bounded. Protocol: firmware/PROTOCOL.md.
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import math
@@ -39,9 +40,9 @@ from taskrunner.robot import load_robot
 from taskrunner.types import JointTrajectory
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-FIRMWARE = REPO_ROOT / "firmware"
+FIRMWARE = DATA_ROOT / "firmware"
 HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
-HARDWARE_YAML = REPO_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
+HARDWARE_YAML = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
 NAMES = tuple(f"Revolute {i}" for i in range(1, 8))
 CANDLE = np.array([1.5708, -1.5708, -1.5708, -1.5708, -1.5708, -0.1, -0.1])
 OFFSET = np.array([0.3, 0.2, -0.25, 0.15, 0.1, 0.2, 0.2])  # Candle -> a nearby pose (rad)
@@ -69,7 +70,7 @@ def _trajectory(start: np.ndarray, end: np.ndarray, duration: float) -> JointTra
 
 
 def test_candle_pose_maps_to_90_degrees_on_every_servo(calibration: ServoCalibration) -> None:
-    robot = load_robot(REPO_ROOT / "robots" / "servo_arm")
+    robot = load_robot(DATA_ROOT / "robots" / "servo_arm")
     candle = robot.named_state("arm", "Candle").as_dict()
     candle.update({"Revolute 6": -0.1, "Revolute 7": -0.1})
     np.testing.assert_allclose(calibration.to_servo_degrees(candle), [90.0] * 6, atol=0.005)

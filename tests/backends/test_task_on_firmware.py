@@ -8,6 +8,7 @@ of the trajectories that were sent).
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import signal
@@ -52,7 +53,7 @@ def status(url: str) -> dict:
 @pytest.mark.parametrize("kind", ["serial", "http"])
 def test_pick_place_runs_on_the_firmware_and_the_servos_follow_the_plan(firmware, kind, tmp_path):
     pty, url, log = firmware
-    spec = load_task(ROOT / "tasks" / "pick_place.yaml")
+    spec = load_task(DATA_ROOT / "tasks" / "pick_place.yaml")
     cell = load_cell(spec.cell)
     backend = make_backend(kind, cell, None, port=pty, url=url, firmware_speedup=SPEEDUP)
     try:

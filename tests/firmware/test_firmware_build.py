@@ -10,6 +10,7 @@ Protocol: firmware/PROTOCOL.md.
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import os
@@ -30,9 +31,9 @@ import pytest
 import yaml
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-FIRMWARE = REPO_ROOT / "firmware"
+FIRMWARE = DATA_ROOT / "firmware"
 HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
-HARDWARE_YAML = REPO_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
+HARDWARE_YAML = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
 
 TICK_MS = 80
 SPEEDUP = 10.0  # one 80 ms tick every 8 ms of wall time

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import itertools
 
 import numpy as np
@@ -61,7 +62,7 @@ def blocked(scene):
 @pytest.fixture(scope="module")
 def servo(repo_root):
     """The servo-arm cell, arm at PickUp (tool0 3.5 cm above the table, pointing down)."""
-    scene = scene_from_cell(load_cell(repo_root / "robots" / "cells" / "servo_arm_table.yaml"))
+    scene = scene_from_cell(load_cell(DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
     model = scene.robot
     scene.set_state(model.state_with(scene.state, model.named_state("arm", "PickUp")))
     return scene

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import dataclasses
 import math
 import subprocess
@@ -87,8 +88,8 @@ def test_scaling_velocity_by_k_and_acceleration_by_k_squared_stretches_time_by_1
 
 def test_a_path_over_two_robots_uses_the_smallest_default_scaling():
     model = build_model([
-        Placement(load_description("robots/panda"), "left", "left_", pin.SE3.Identity()),
-        Placement(load_description("robots/servo_arm"), "right", "right_",
+        Placement(load_description(DATA_ROOT / "robots" / "panda"), "left", "left_", pin.SE3.Identity()),
+        Placement(load_description(DATA_ROOT / "robots" / "servo_arm"), "right", "right_",
                   pin.SE3(np.eye(3), np.array([1.0, 0.0, 0.0]))),
     ])
     names = ("left_panda_joint1", "right_Revolute 1")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import textwrap
 from pathlib import Path
 
@@ -14,7 +15,7 @@ from taskrunner.robot.cell import load_cell
 from taskrunner.shapes import Box
 
 ROOT = Path(__file__).resolve().parents[2]
-CELLS = ROOT / "robots" / "cells"
+CELLS = DATA_ROOT / "robots" / "cells"
 
 
 def tool_position(cell, q, frame):
@@ -107,7 +108,7 @@ def test_cell_with_a_typo_names_the_field_and_line(tmp_path):
         name: bad
         robots:
           - name: arm
-            robot: {ROOT / 'robots' / 'servo_arm'}
+            robot: {DATA_ROOT / 'robots' / 'servo_arm'}
             bsae: {{xyz: [0, 0, 0]}}
         """)
     with pytest.raises(YamlError) as err:
@@ -116,7 +117,7 @@ def test_cell_with_a_typo_names_the_field_and_line(tmp_path):
 
 
 def test_cell_with_two_robots_sharing_a_prefix_is_refused(tmp_path):
-    arm = ROOT / "robots" / "servo_arm"
+    arm = DATA_ROOT / "robots" / "servo_arm"
     path = write(tmp_path, f"""\
         name: clash
         robots:
@@ -132,7 +133,7 @@ def test_cell_pose_outside_the_limits_names_the_line(tmp_path):
         name: bad_pose
         robots:
           - name: arm
-            robot: {ROOT / 'robots' / 'servo_arm'}
+            robot: {DATA_ROOT / 'robots' / 'servo_arm'}
             poses:
               arm:
                 Reach: {{"Revolute 2": 0.5}}
@@ -148,7 +149,7 @@ def test_cell_object_needs_the_fields_of_its_shape(tmp_path):
     path = write(tmp_path, f"""\
         name: bad_object
         robots:
-          - {{name: arm, robot: {ROOT / 'robots' / 'servo_arm'}}}
+          - {{name: arm, robot: {DATA_ROOT / 'robots' / 'servo_arm'}}}
         objects:
           - name: post
             shape: cylinder
@@ -164,7 +165,7 @@ def test_cell_start_pose_must_exist(tmp_path):
     path = write(tmp_path, f"""\
         name: bad_start
         robots:
-          - {{name: arm, robot: {ROOT / 'robots' / 'servo_arm'}}}
+          - {{name: arm, robot: {DATA_ROOT / 'robots' / 'servo_arm'}}}
         start: {{arm: hoem}}
         """)
     with pytest.raises(YamlError, match=r"cell.yaml:4: start.arm: unknown named pose .*'home'"):
@@ -175,7 +176,7 @@ def test_cell_spanning_group_with_unknown_subgroup_is_refused(tmp_path):
     path = write(tmp_path, f"""\
         name: bad_group
         robots:
-          - {{name: arm, robot: {ROOT / 'robots' / 'servo_arm'}}}
+          - {{name: arm, robot: {DATA_ROOT / 'robots' / 'servo_arm'}}}
         groups:
           everything: [arm, elbow]
         """)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import textwrap
 import threading
 import time
@@ -20,7 +21,7 @@ from taskrunner.tasks import load_task
 
 def write_task(tmp_path, repo_root, body: str):
     path = tmp_path / "task.yaml"
-    cell = repo_root / "robots" / "cells" / "servo_arm_table.yaml"
+    cell = DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
     path.write_text(f"task: t\ncell: {cell}\n" + textwrap.dedent(body))
     return path
 

@@ -10,6 +10,7 @@ held by exactly one gripper at every moment.
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 from pathlib import Path
 
 import numpy as np
@@ -23,7 +24,7 @@ from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.scene import Scene
 from taskrunner.tasks import load_task
 
-TASKS = Path(__file__).resolve().parents[2] / "tasks"
+TASKS = DATA_ROOT / "tasks"
 
 
 def run_scenario(name: str, tmp_path: Path, parameters: dict | None = None,

@@ -3,6 +3,7 @@ taskrunner.tree.reach), checked on the shipped cells without planning."""
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import math
 from pathlib import Path
 
@@ -24,7 +25,7 @@ from taskrunner.tree.grasps import (
 )
 from taskrunner.tree.reach import approximate, orientation_error, wrist_roll
 
-CELLS = Path(__file__).resolve().parents[2] / "robots" / "cells"
+CELLS = DATA_ROOT / "robots" / "cells"
 BAR = Box((0.025, 0.025, 0.08))
 
 

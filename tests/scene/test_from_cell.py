@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import numpy as np
 import pytest
 
@@ -11,7 +12,7 @@ from taskrunner.scene import scene_from_cell
 
 @pytest.fixture(scope="module")
 def servo_scene(repo_root):
-    return scene_from_cell(load_cell(repo_root / "robots" / "cells" / "servo_arm_table.yaml"))
+    return scene_from_cell(load_cell(DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
 
 
 def test_cell_scene_has_the_objects_and_the_start_state(servo_scene):
@@ -33,6 +34,6 @@ def test_cell_scene_allows_the_base_on_the_table_but_not_the_gripper(servo_scene
 
 @pytest.mark.parametrize("cell", ["servo_arm_pair", "panda_table", "panda_pair"])
 def test_every_shipped_cell_starts_collision_free(repo_root, cell):
-    scene = scene_from_cell(load_cell(repo_root / "robots" / "cells" / f"{cell}.yaml"))
+    scene = scene_from_cell(load_cell(DATA_ROOT / "robots" / "cells" / f"{cell}.yaml"))
     assert not scene.in_collision()
     assert np.isfinite(scene.min_distance().distance)

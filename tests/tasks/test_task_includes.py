@@ -80,8 +80,8 @@ def test_a_file_including_itself_is_a_cycle(tmp_path: Path, robots_dir: Path):
 def test_an_included_task_for_another_cell_is_an_error(fixtures: Path):
     assert problems_of(fixtures / "include_other_cell.yaml") == [
         (fixtures / "include_other_cell.yaml", 4,
-         "'panda_part.yaml' is a task for cell '../../../robots/cells/panda_table.yaml', "
-         "not this task's cell '../../../robots/cells/servo_arm_table.yaml'")]
+         "'panda_part.yaml' is a task for cell '../../../taskrunner/data/robots/cells/panda_table.yaml', "
+         "not this task's cell '../../../taskrunner/data/robots/cells/servo_arm_table.yaml'")]
 
 
 def test_include_problems_point_at_the_include_or_into_the_included_file(fixtures: Path):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import textwrap
 from pathlib import Path
 
@@ -60,7 +61,7 @@ def test_example_task_loads_with_its_values_typed(fixtures: Path, repo_root: Pat
     assert spec.name == "pick_place"
     assert spec.description == "Move a cube from one spot to another."
     assert spec.path == fixtures / "pick_place.yaml"
-    assert spec.cell == repo_root / "robots" / "cells" / "servo_arm_table.yaml"
+    assert spec.cell == DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
     [cube] = spec.objects
     assert cube.name == "cube" and cube.shape == "box" and cube.size == (0.025, 0.025, 0.025)
     assert cube.pose.xyz == (0.2, 0.05, 0.7625)
@@ -163,7 +164,7 @@ def test_a_loaded_task_round_trips_through_its_document(fixtures: Path, tmp_path
 def test_text_is_loaded_with_paths_relative_to_the_file_it_stands_for(fixtures: Path):
     text = textwrap.dedent("""\
         task: inline
-        cell: ../../../robots/cells/servo_arm_table.yaml
+        cell: ../../../taskrunner/data/robots/cells/servo_arm_table.yaml
         steps:
           - include: {file: open_part.yaml}
         """)

@@ -48,7 +48,7 @@ def test_valid_tasks_have_no_name_problems(fixtures: Path, cells: Cells, name: s
 def test_problems_in_an_included_file_point_into_it(fixtures: Path, cells: Cells):
     text = textwrap.dedent("""\
         task: t
-        cell: ../../../robots/cells/servo_arm_table.yaml
+        cell: ../../../taskrunner/data/robots/cells/servo_arm_table.yaml
         steps:
           - include: {file: parts/place_part.yaml, parameters: {object: ghost}}
         """)

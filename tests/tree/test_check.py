@@ -7,6 +7,7 @@ residuals). A fixture line without such a comment must produce no problem.
 
 from __future__ import annotations
 
+from taskrunner.resources import DATA_ROOT
 import re
 import time
 from pathlib import Path
@@ -20,7 +21,7 @@ from taskrunner.tasks import Problem, load_task
 from taskrunner.tree.check import CheckReport, _start_scene, check_task
 
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
-TASKS = Path(__file__).resolve().parents[2] / "tasks"
+TASKS = DATA_ROOT / "tasks"
 _EXPECT = re.compile(r"#\s*expect:\s*")
 
 

@@ -13,10 +13,10 @@ from taskrunner.planning.timing import TimingOptions
 from taskrunner.scene import scene_from_cell
 from taskrunner.types import pose_from_xyz_rpy
 
-from api.auth import require_read
-from api.cells import CellRegistry
-from api.dependencies import get_cells
-from api.schemas import ErrorBody, PlanBody, PlanResponse
+from taskrunner.api.auth import require_read
+from taskrunner.api.cells import CellRegistry
+from taskrunner.api.dependencies import get_cells
+from taskrunner.api.schemas import ErrorBody, PlanBody, PlanResponse
 
 __all__ = ["router"]
 

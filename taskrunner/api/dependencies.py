@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from fastapi import Request
 
-from api.cells import CellRegistry
-from api.runs import RunManager
-from api.settings import Settings
-from api.store import RunStore
+from taskrunner.api.cells import CellRegistry
+from taskrunner.api.runs import RunManager
+from taskrunner.api.settings import Settings
+from taskrunner.api.store import RunStore
 
 __all__ = ["get_cells", "get_manager", "get_settings", "get_store"]
 

@@ -26,7 +26,7 @@ from typing import Any
 
 from starlette.concurrency import run_in_threadpool
 
-from api.auth import token_matches
+from taskrunner.api.auth import token_matches
 
 __all__ = ["RunDetailFastPath"]
 

@@ -8,12 +8,12 @@ from typing import Annotated, Any
 import yaml
 from fastapi import APIRouter, Depends
 
-from api.auth import require_read, require_write
-from api.cells import BACKENDS, CellRegistry, PoseConflictError
-from api.dependencies import get_cells, get_manager, get_store
-from api.runs import RunManager
-from api.schemas import CellDetail, CellState, CellSummary, ErrorBody, TaughtPose, TeachRequest
-from api.store import RunStore
+from taskrunner.api.auth import require_read, require_write
+from taskrunner.api.cells import BACKENDS, CellRegistry, PoseConflictError
+from taskrunner.api.dependencies import get_cells, get_manager, get_store
+from taskrunner.api.runs import RunManager
+from taskrunner.api.schemas import CellDetail, CellState, CellSummary, ErrorBody, TaughtPose, TeachRequest
+from taskrunner.api.store import RunStore
 
 __all__ = ["router"]
 

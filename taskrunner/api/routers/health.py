@@ -6,9 +6,9 @@ from typing import Annotated
 
 from fastapi import APIRouter, Depends, Request
 
-from api.dependencies import get_manager
-from api.runs import RunManager
-from api.schemas import Health
+from taskrunner.api.dependencies import get_manager
+from taskrunner.api.runs import RunManager
+from taskrunner.api.schemas import Health
 
 __all__ = ["router"]
 

@@ -31,11 +31,11 @@ from pydantic import TypeAdapter
 
 from taskrunner.runtime.records import RunRecord
 
-from api.schemas import EventOut, RunDetail, RunSummary
+from taskrunner.api.schemas import EventOut, RunDetail, RunSummary
 
 if TYPE_CHECKING:
-    from api.runs import LiveRun
-    from api.store import RunStore
+    from taskrunner.api.runs import LiveRun
+    from taskrunner.api.store import RunStore
 
 __all__ = ["RunDetailCache", "RunListCache", "StoredDetails", "detail_body"]
 

@@ -28,9 +28,9 @@ from taskrunner.tasks import check_names, raise_for_problems
 from taskrunner.tasks.names import moved_groups
 from taskrunner.tasks.spec import TaskSpec
 
-from api.cells import BACKENDS, CellRegistry, CellSession
-from api.detail import RunDetailCache, RunListCache, StoredDetails
-from api.store import RunStore
+from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
+from taskrunner.api.detail import RunDetailCache, RunListCache, StoredDetails
+from taskrunner.api.store import RunStore
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
 

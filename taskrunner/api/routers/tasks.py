@@ -9,12 +9,12 @@ from starlette.concurrency import run_in_threadpool
 
 from taskrunner.tree.check import check_task
 
-from api.auth import require_read
-from api.dependencies import get_settings
-from api.handlers import problem_out
-from api.schemas import CheckRequest, CheckResponse, ErrorBody
-from api.settings import Settings
-from api.tasksource import inline_path, task_file_for_check
+from taskrunner.api.auth import require_read
+from taskrunner.api.dependencies import get_settings
+from taskrunner.api.handlers import problem_out
+from taskrunner.api.schemas import CheckRequest, CheckResponse, ErrorBody
+from taskrunner.api.settings import Settings
+from taskrunner.api.tasksource import inline_path, task_file_for_check
 
 __all__ = ["router"]
 

@@ -11,13 +11,13 @@ from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
 
-from api.cells import CellRegistry, settle_heap
-from api.fastpath import RunDetailFastPath
-from api.handlers import BodyLimit, add_error_handlers
-from api.routers import cells, health, plan, runs, tasks
-from api.runs import RunManager
-from api.settings import Settings
-from api.store import RunStore
+from taskrunner.api.cells import CellRegistry, settle_heap
+from taskrunner.api.fastpath import RunDetailFastPath
+from taskrunner.api.handlers import BodyLimit, add_error_handlers
+from taskrunner.api.routers import cells, health, plan, runs, tasks
+from taskrunner.api.runs import RunManager
+from taskrunner.api.settings import Settings
+from taskrunner.api.store import RunStore
 
 __all__ = ["create_app", "new_token"]
 

@@ -17,12 +17,13 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["REPO_ROOT", "Settings"]
+from taskrunner import resources
 
-REPO_ROOT = Path(__file__).resolve().parent.parent
+__all__ = ["Settings"]
+
 PLANNERS = ("worker", "inprocess")
 
 
@@ -54,9 +55,9 @@ class Settings:
     token: str | None = None
     auth: bool = True
     read_requires_auth: bool = False
-    tasks_dir: Path = REPO_ROOT / "tasks"
-    cells_dir: Path = REPO_ROOT / "robots" / "cells"
-    state_dir: Path = REPO_ROOT / "state"
+    tasks_dir: Path = field(default_factory=resources.tasks_dir)
+    cells_dir: Path = field(default_factory=resources.cells_dir)
+    state_dir: Path = Path("state")
     max_body_bytes: int = 1_000_000
     planner: str = "worker"
     planner_nice: int = 10

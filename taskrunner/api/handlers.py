@@ -27,8 +27,8 @@ from fastapi.responses import JSONResponse
 
 from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
 
-from api.cells import CellNotFoundError, PoseConflictError
-from api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
+from taskrunner.api.cells import CellNotFoundError, PoseConflictError
+from taskrunner.api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
 
 __all__ = ["BodyLimit", "add_error_handlers", "problems_of"]
 
