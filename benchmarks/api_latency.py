@@ -283,7 +283,7 @@ def main() -> int:
                          url, body)
 
         windows = []
-        for k in range(args.repeats):
+        for _ in range(args.repeats):
             # A fresh run per window, so each one plans and moves (pick_place at real
             # speed lasts longer than a window).
             status, body = control("POST", "/runs",

@@ -15,7 +15,6 @@ Run alone::
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import argparse
 import gc
 import json
@@ -26,16 +25,18 @@ from pathlib import Path
 
 import numpy as np
 
+from taskrunner.resources import DATA_ROOT
+
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-import pinocchio as pin  # noqa: E402
+import pinocchio as pin
 
-from taskrunner.robot import RobotModel, load_robot  # noqa: E402
-from taskrunner.scene import Scene, SceneOptions  # noqa: E402
-from taskrunner.shapes import Box  # noqa: E402
-from taskrunner.types import Pose  # noqa: E402
+from taskrunner.robot import RobotModel, load_robot
+from taskrunner.scene import Scene, SceneOptions
+from taskrunner.shapes import Box
+from taskrunner.types import Pose
 
 __all__ = ["TABLE_AND_SHELF", "build_cell", "rows", "run"]
 
@@ -114,7 +115,7 @@ def _raw_check(
     broadphase = getattr(pin, f"BroadPhaseManager_{manager}CollisionManager")(
         model, geometry, geometry_data
     )
-    check = lambda q: pin.computeCollisions(model, data, broadphase, q, True)  # noqa: E731
+    check = lambda q: pin.computeCollisions(model, data, broadphase, q, True)
     check.keep_alive = (geometry, geometry_data, broadphase)  # type: ignore[attr-defined]
     return check
 

@@ -25,8 +25,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import collision_bench  # noqa: E402
-import ik_bench  # noqa: E402
+import collision_bench
+import ik_bench
 
 TARGETS = {
     "panda_collision_us_median": ("<=", 25.0),

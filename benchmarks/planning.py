@@ -49,12 +49,12 @@ sys.path.insert(0, str(BENCH))
 if str(BENCH.parent) not in sys.path:
     sys.path.insert(0, str(BENCH.parent))
 
-import ik_bench  # noqa: E402
-import planning_scenes  # noqa: E402
+import ik_bench
+import planning_scenes
 
-from taskrunner.errors import PlanningError  # noqa: E402
-from taskrunner.planning import MotionPlanner, PlannerOptions, PlanRequest, PoseGoal  # noqa: E402
-from taskrunner.planning.planner import interpolate_path  # noqa: E402
+from taskrunner.errors import PlanningError
+from taskrunner.planning import MotionPlanner, PlannerOptions, PlanRequest, PoseGoal
+from taskrunner.planning.planner import interpolate_path
 
 try:  # toppra timing is optional: without it the duration columns are left out
     from taskrunner.planning.timing import parameterize_path

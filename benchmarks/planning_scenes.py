@@ -30,7 +30,6 @@ Problems (world frame: z up, m; the Panda's base at the origin on its table top)
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -43,6 +42,7 @@ from taskrunner.errors import IkFailedError, SceneError, UnknownNameError
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.planning import Goal, JointGoal, PoseGoal
 from taskrunner.planning.planner import interpolate_path
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import RobotModel, load_robot
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import Scene, scene_from_cell

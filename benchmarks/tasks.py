@@ -29,7 +29,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-TASKS = DATA_ROOT / "tasks"
+TASKS = ROOT / "taskrunner" / "data" / "tasks"
 TARGETS = {"pick_place": 150.0, "handoff": 500.0}
 WALL_TARGET_S = 3.0
 
@@ -51,7 +51,7 @@ def bench_task(path: Path, repeats: int, seed: int) -> dict:
     from taskrunner.backends.mock import MockBackend
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.robot.cell import load_cell
-    from taskrunner.runtime.runner import RunOptions, Runner
+    from taskrunner.runtime.runner import Runner, RunOptions
     from taskrunner.tasks import load_task
 
     spec = load_task(path)

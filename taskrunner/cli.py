@@ -158,9 +158,8 @@ def _parameters(pairs: Sequence[str]) -> dict[str, str]:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from taskrunner.tree.check import check_task
-
     from taskrunner.resources import resolve_task
+    from taskrunner.tree.check import check_task
 
     report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
     for problem in report.problems:
@@ -173,9 +172,8 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from taskrunner.runtime.session import run_task_file
-
     from taskrunner.resources import resolve_task
+    from taskrunner.runtime.session import run_task_file
 
     runs_dir = Path(args.runs_dir or os.environ.get("TASKRUNNER_RUNS_DIR") or "runs")
     return run_task_file(resolve_task(args.file), backend=args.backend,
@@ -286,9 +284,9 @@ def cmd_examples(args: argparse.Namespace) -> int:
             rows.append((name, "?", f"unreadable: {exc}"))
             continue
         cell = Path(str(data.get("cell", "?"))).stem if isinstance(data, dict) else "?"
-        about = str(data.get("description", "")).strip().splitlines() if isinstance(
+        lines = str(data.get("description", "")).strip().splitlines() if isinstance(
             data, dict) else []
-        rows.append((name, cell, about[0] if about else ""))
+        rows.append((name, cell, lines[0] if lines else ""))
     width = max(len(r[0]) for r in rows)
     cell_width = max(len(r[1]) for r in rows)
     for name, cell, about in rows:

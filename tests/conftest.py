@@ -8,11 +8,11 @@ time): treat them as read-only. A test that needs to change a model, or uses
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 from pathlib import Path
 
 import pytest
 
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import RobotModel, load_robot
 from taskrunner.robot.packages import example_robot_data_dir
 

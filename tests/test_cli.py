@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 from taskrunner.cli import EXIT_INVALID, EXIT_OK, EXIT_PLANNING, main
+from taskrunner.resources import DATA_ROOT
 
 
 def test_demo_solves_ik_checks_collisions_and_plans(capsys):

@@ -29,9 +29,8 @@ from typing import TYPE_CHECKING, Any
 
 from pydantic import TypeAdapter
 
-from taskrunner.runtime.records import RunRecord
-
 from taskrunner.api.schemas import EventOut, RunDetail, RunSummary
+from taskrunner.runtime.records import RunRecord
 
 if TYPE_CHECKING:
     from taskrunner.api.runs import LiveRun

@@ -25,10 +25,9 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse
 
-from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
-
 from taskrunner.api.cells import CellNotFoundError, PoseConflictError
 from taskrunner.api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
+from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
 
 __all__ = ["BodyLimit", "add_error_handlers", "problems_of"]
 

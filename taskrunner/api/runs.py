@@ -20,17 +20,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from taskrunner.errors import TaskrunnerError
-from taskrunner.runtime.events import EventLog, RunEvent
-from taskrunner.runtime.records import RunRecord
-from taskrunner.runtime.runner import RunOptions, Runner
-from taskrunner.tasks import check_names, raise_for_problems
-from taskrunner.tasks.names import moved_groups
-from taskrunner.tasks.spec import TaskSpec
-
 from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
 from taskrunner.api.detail import RunDetailCache, RunListCache, StoredDetails
 from taskrunner.api.store import RunStore
+from taskrunner.errors import TaskrunnerError
+from taskrunner.runtime.events import EventLog, RunEvent
+from taskrunner.runtime.records import RunRecord
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.tasks import check_names, raise_for_problems
+from taskrunner.tasks.names import moved_groups
+from taskrunner.tasks.spec import TaskSpec
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
 
@@ -198,7 +197,7 @@ class RunManager:
         if event.kind in _SAVE_AT:
             try:
                 self.store.save(live.record)
-            except Exception:  # noqa: BLE001 - a failed progress write must not kill the run
+            except Exception:  # a failed progress write must not kill the run
                 pass
 
     def _run(self, live: LiveRun) -> None:

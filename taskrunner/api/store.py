@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 import sqlite3
 import threading
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from taskrunner.runtime.records import RunRecord
@@ -59,7 +59,7 @@ class RunStore:
 
     def save_pose(self, cell: str, group: str, name: str, joints: dict[str, float]) -> str:
         """Store (or replace) a taught named pose; returns when it was taught (ISO time)."""
-        now = datetime.now(timezone.utc).isoformat()
+        now = datetime.now(UTC).isoformat()
         with self._lock:
             self._db.execute(
                 "INSERT OR REPLACE INTO taught_poses VALUES (?, ?, ?, ?, ?)",
@@ -77,7 +77,7 @@ class RunStore:
     def mark_interrupted(self) -> int:
         """Turn rows left ``running`` by a server that stopped into ``interrupted``;
         returns how many."""
-        now = datetime.now(timezone.utc).isoformat()
+        now = datetime.now(UTC).isoformat()
         with self._lock:
             rows = self._db.execute("SELECT record FROM runs WHERE status = 'running'").fetchall()
             for (text,) in rows:

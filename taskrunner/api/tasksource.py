@@ -9,10 +9,9 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from taskrunner.api.runs import resolve_task_file
 from taskrunner.tasks import load_task, load_task_text
 from taskrunner.tasks.spec import TaskSpec
-
-from taskrunner.api.runs import resolve_task_file
 
 __all__ = ["INLINE_NAME", "inline_path", "load_request_task", "task_file_for_check"]
 

@@ -13,13 +13,13 @@ from taskrunner.backends.base import (
     ExecutionHandle,
     check_trajectory,
 )
+from taskrunner.backends.calibration import ServoCalibration, load_calibration
 from taskrunner.backends.execution import (
     ExecutionResult,
     ExecutionStatus,
     TrajectoryExecution,
     sample_positions,
 )
-from taskrunner.backends.calibration import ServoCalibration, load_calibration
 from taskrunner.backends.http import HttpBackend
 from taskrunner.backends.mock import MockBackend, MockOptions
 from taskrunner.backends.serial import SerialBackend

@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import math
 import threading
-from abc import ABC, abstractmethod
 import time
+from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
 from typing import Any, Protocol, Self, runtime_checkable
 

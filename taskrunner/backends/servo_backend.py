@@ -277,7 +277,7 @@ class ServoBackend(BaseBackend):
                     self._poll_status()
         except BackendError as exc:
             self._fail(exc)
-        except Exception as exc:  # noqa: BLE001 - no handle may wait forever
+        except Exception as exc:  # no handle may wait forever
             self._fail(BackendError(f"servo backend worker died: {exc!r}"))
 
     def _should_send(self, stream: _Stream) -> bool:

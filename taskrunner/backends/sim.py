@@ -138,7 +138,7 @@ class SimBackend(BaseBackend):
                     self._tick(now)
                     next_tick += period
                     self._wake.wait_for(lambda: self._closed, max(0.0, next_tick - self._now()))
-            except Exception as exc:  # noqa: BLE001 - no handle may wait forever
+            except Exception as exc:  # no handle may wait forever
                 self._closed = True
                 self._closed_reason = f"stopped: its controller thread died ({exc!r})"
                 for execution in list(self._executions):

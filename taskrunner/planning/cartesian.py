@@ -110,7 +110,7 @@ class CartesianOptions:
                 or self.jump_threshold < 0):
             raise ValueError(f"'jump_threshold' must be a number >= 0 (got {self.jump_threshold!r})")
         if not isinstance(self.avoid_collisions, bool):  # ValueError like every option check
-            raise ValueError(  # noqa: TRY004
+            raise ValueError(
                 f"'avoid_collisions' must be a bool (got {self.avoid_collisions!r})")
         if self.position_only is not None and not isinstance(self.position_only, bool):
             raise ValueError(

@@ -70,7 +70,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
             conn.send(("ok", request_id, result))
         except TaskrunnerError as exc:
             conn.send(("error", request_id, exc))
-        except Exception as exc:  # noqa: BLE001 - report, never kill the worker silently
+        except Exception as exc:  # report, never kill the worker silently
             conn.send(("error", request_id, PlanningError(f"{type(exc).__name__}: {exc}")))
 
 

@@ -12,7 +12,7 @@ import os
 import tempfile
 import uuid
 from dataclasses import dataclass, field
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
@@ -25,7 +25,7 @@ STATUSES = ("running", "succeeded", "failed", "cancelled", "interrupted")
 
 def new_run_id() -> str:
     """A sortable, unique run id: UTC time plus a random suffix."""
-    stamp = datetime.now(timezone.utc).strftime("%Y%m%dT%H%M%S")
+    stamp = datetime.now(UTC).strftime("%Y%m%dT%H%M%S")
     return f"{stamp}-{uuid.uuid4().hex[:6]}"
 
 
@@ -50,7 +50,7 @@ class RunRecord:
     status: str = "running"
     exit_code: int | None = None
     error: str | None = None
-    started: str = field(default_factory=lambda: datetime.now(timezone.utc).isoformat())
+    started: str = field(default_factory=lambda: datetime.now(UTC).isoformat())
     finished: str | None = None
     events: list[RunEvent] = field(default_factory=list)
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import threading
 import time
-from datetime import datetime, timezone
 from dataclasses import dataclass, field
+from datetime import UTC, datetime
 from pathlib import Path
 
 import py_trees
@@ -161,7 +161,7 @@ class Runner:
         self.record.exit_code = code
         self.record.error = error
         self.events.emit("run_finished", error or status, status=status, exit_code=code)
-        self.record.finished = datetime.now(timezone.utc).isoformat()
+        self.record.finished = datetime.now(UTC).isoformat()
         self._save()
         return self.record
 

@@ -28,7 +28,7 @@ from taskrunner.errors import InputError
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
-from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
+from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks.loader import load_task
 
 if TYPE_CHECKING:

@@ -7,8 +7,8 @@ its own: :mod:`taskrunner.scene.acm` (``python -m taskrunner.scene.acm ROBOT``).
 from __future__ import annotations
 
 from taskrunner.scene.collision import Clearance, Contact
-from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.from_cell import scene_from_cell
+from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.scene import Scene, SceneOptions
 
 __all__ = [

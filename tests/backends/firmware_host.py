@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import os
 import select
 import shutil
@@ -16,19 +15,16 @@ from pathlib import Path
 
 import pytest
 
-FIRMWARE = DATA_ROOT / "firmware"
-HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
+from taskrunner.backends.host_firmware import build_host_firmware
 
 
 def build_host() -> Path:
-    """``make -C firmware host`` (skips the test when make or g++ is missing)."""
+    """The host firmware, built as ``run-task firmware-sim`` builds it (one cached build
+    shared by the tests and the CLI); skips the test when make or g++ is missing."""
     missing = [tool for tool in ("make", "g++") if shutil.which(tool) is None]
     if missing:
         pytest.skip(f"the firmware host build needs {' and '.join(missing)}, not on PATH")
-    built = subprocess.run(["make", "--no-print-directory", "-j2", "-C", str(FIRMWARE), "host"],
-                           capture_output=True, text=True, timeout=300, check=False)
-    assert built.returncode == 0, built.stdout + built.stderr
-    return HOST_BIN
+    return build_host_firmware(timeout_s=300)
 
 
 def read_address_lines(proc: subprocess.Popen[bytes], timeout: float = 5.0) -> tuple[str, str]:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import math
 import shutil
 from pathlib import Path
@@ -12,9 +11,10 @@ from firmware_host import build_host, running_host
 
 from taskrunner.backends.calibrate import calibrate_servos, update_hardware_yaml
 from taskrunner.backends.calibration import load_calibration
-from taskrunner.backends.servo_backend import ServoOptions
 from taskrunner.backends.serial import SerialBackend
+from taskrunner.backends.servo_backend import ServoOptions
 from taskrunner.errors import YamlError
+from taskrunner.resources import DATA_ROOT
 
 ROOT = Path(__file__).resolve().parents[2]
 HARDWARE = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"

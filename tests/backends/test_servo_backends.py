@@ -8,7 +8,6 @@ clock. Every wait is bounded. Protocol: firmware/PROTOCOL.md.
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import math
@@ -36,12 +35,12 @@ from taskrunner.errors import (
     TrajectoryRejectedError,
     YamlError,
 )
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import load_robot
 from taskrunner.types import JointTrajectory
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 FIRMWARE = DATA_ROOT / "firmware"
-HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
 HARDWARE_YAML = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
 NAMES = tuple(f"Revolute {i}" for i in range(1, 8))
 CANDLE = np.array([1.5708, -1.5708, -1.5708, -1.5708, -1.5708, -0.1, -0.1])

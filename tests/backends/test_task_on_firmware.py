@@ -8,7 +8,6 @@ of the trajectories that were sent).
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import signal
@@ -22,8 +21,9 @@ from firmware_host import build_host, read_address_lines, running_host, stop_pro
 from scipy.spatial import cKDTree
 
 from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
-from taskrunner.runtime.runner import RunOptions, Runner
+from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.runtime.session import make_backend, servo_calibration
 from taskrunner.tasks import load_task
 

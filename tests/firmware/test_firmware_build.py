@@ -10,7 +10,6 @@ Protocol: firmware/PROTOCOL.md.
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import csv
 import json
 import os
@@ -29,6 +28,8 @@ from typing import Any
 
 import pytest
 import yaml
+
+from taskrunner.resources import DATA_ROOT
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 FIRMWARE = DATA_ROOT / "firmware"

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import itertools
 
 import numpy as np
@@ -24,6 +23,7 @@ from taskrunner.planning.cartesian import (
     relative_pose,
 )
 from taskrunner.planning.planner import interpolate_path
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.shapes import Box

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pinocchio as pin
 import pytest
-
 from plan_helpers import READY, dense_states
+
 from taskrunner.errors import (
     GoalInCollisionError,
     IkFailedError,

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import dataclasses
 import math
 import subprocess
@@ -15,6 +14,7 @@ import pytest
 from taskrunner.errors import PlanningError, UnknownNameError
 from taskrunner.planning import timing
 from taskrunner.planning.timing import TimingOptions, parameterize_path, path_deviation
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import Placement, RobotModel, build_model, load_description
 from taskrunner.types import JointPath, JointTrajectory
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import textwrap
 from pathlib import Path
 
@@ -11,6 +10,7 @@ import pinocchio as pin
 import pytest
 
 from taskrunner.errors import RobotDescriptionError, YamlError
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.shapes import Box
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import textwrap
 import threading
 import time
@@ -14,8 +13,9 @@ from taskrunner.backends.mock import MockBackend, MockOptions
 from taskrunner.backends.sim import SimBackend, SimOptions
 from taskrunner.cli import main
 from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
-from taskrunner.runtime.runner import EXIT_CODES, RunOptions, Runner
+from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks import load_task
 
 

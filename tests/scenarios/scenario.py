@@ -10,7 +10,6 @@ held by exactly one gripper at every moment.
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 from pathlib import Path
 
 import numpy as np
@@ -18,6 +17,7 @@ import pinocchio as pin
 
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.records import load_record
 from taskrunner.runtime.runner import Runner, RunOptions

@@ -3,14 +3,13 @@ taskrunner.tree.reach), checked on the shipped cells without planning."""
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import math
-from pathlib import Path
 
 import numpy as np
 import pinocchio as pin
 import pytest
 
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import scene_from_cell
 from taskrunner.shapes import Box, Cylinder

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import numpy as np
 import pytest
 
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import scene_from_cell
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import textwrap
 from pathlib import Path
 
@@ -14,6 +13,7 @@ from pydantic import ValidationError
 
 import taskrunner.tasks as tasks
 from taskrunner.errors import TaskSpecError
+from taskrunner.resources import DATA_ROOT
 from taskrunner.tasks import (
     AddObjectStep,
     AttachStep,

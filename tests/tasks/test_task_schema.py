@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import json
 from pathlib import Path
 
 import pytest
 import yaml
 
+from taskrunner.resources import DATA_ROOT
 from taskrunner.tasks import STEP_TYPES
 from taskrunner.tasks.schema import SCHEMA_PATH, main, schema_text, task_json_schema
 

@@ -7,7 +7,6 @@ residuals). A fixture line without such a comment must produce no problem.
 
 from __future__ import annotations
 
-from taskrunner.resources import DATA_ROOT
 import re
 import time
 from pathlib import Path
@@ -15,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from taskrunner.cli import EXIT_INVALID, EXIT_OK, main
+from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import task_scene
 from taskrunner.tasks import Problem, load_task

@@ -12,7 +12,14 @@ from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import BACKENDS, CellRegistry, PoseConflictError
 from taskrunner.api.dependencies import get_cells, get_manager, get_store
 from taskrunner.api.runs import RunManager
-from taskrunner.api.schemas import CellDetail, CellState, CellSummary, ErrorBody, TaughtPose, TeachRequest
+from taskrunner.api.schemas import (
+    CellDetail,
+    CellState,
+    CellSummary,
+    ErrorBody,
+    TaughtPose,
+    TeachRequest,
+)
 from taskrunner.api.store import RunStore
 
 __all__ = ["router"]

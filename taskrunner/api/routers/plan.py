@@ -8,15 +8,14 @@ from fastapi import APIRouter, Depends, Response
 from pydantic_core import to_json
 from starlette.concurrency import run_in_threadpool
 
-from taskrunner.planning.request import JointGoal, PlannerOptions, PlanRequest, PoseGoal
-from taskrunner.planning.timing import TimingOptions
-from taskrunner.scene import scene_from_cell
-from taskrunner.types import pose_from_xyz_rpy
-
 from taskrunner.api.auth import require_read
 from taskrunner.api.cells import CellRegistry
 from taskrunner.api.dependencies import get_cells
 from taskrunner.api.schemas import ErrorBody, PlanBody, PlanResponse
+from taskrunner.planning.request import JointGoal, PlannerOptions, PlanRequest, PoseGoal
+from taskrunner.planning.timing import TimingOptions
+from taskrunner.scene import scene_from_cell
+from taskrunner.types import pose_from_xyz_rpy
 
 __all__ = ["router"]
 

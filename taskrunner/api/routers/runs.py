@@ -11,15 +11,21 @@ from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, 
 from fastapi.responses import StreamingResponse
 from starlette.concurrency import run_in_threadpool
 
-from taskrunner.runtime.events import RunEvent
-
 from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import CellRegistry
 from taskrunner.api.dependencies import get_cells, get_manager, get_settings
 from taskrunner.api.runs import RunManager
-from taskrunner.api.schemas import ErrorBody, RunAccepted, RunCreate, RunDetail, RunStatus, RunSummary
+from taskrunner.api.schemas import (
+    ErrorBody,
+    RunAccepted,
+    RunCreate,
+    RunDetail,
+    RunStatus,
+    RunSummary,
+)
 from taskrunner.api.settings import Settings
 from taskrunner.api.tasksource import load_request_task
+from taskrunner.runtime.events import RunEvent
 
 __all__ = ["router"]
 

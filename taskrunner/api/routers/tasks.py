@@ -7,14 +7,13 @@ from typing import Annotated
 from fastapi import APIRouter, Depends
 from starlette.concurrency import run_in_threadpool
 
-from taskrunner.tree.check import check_task
-
 from taskrunner.api.auth import require_read
 from taskrunner.api.dependencies import get_settings
 from taskrunner.api.handlers import problem_out
 from taskrunner.api.schemas import CheckRequest, CheckResponse, ErrorBody
 from taskrunner.api.settings import Settings
 from taskrunner.api.tasksource import inline_path, task_file_for_check
+from taskrunner.tree.check import check_task
 
 __all__ = ["router"]
 
