@@ -36,6 +36,7 @@ import pinocchio as pin
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
+from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
 from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import load_description
 from taskrunner.robot.model import RobotModel
@@ -166,13 +167,25 @@ def _resolve_robot(value: str, cell_dir: Path) -> Path:
     raise FileNotFoundError(", ".join(str(c) for c in candidates))
 
 
-def load_cell(path: str | Path, packages: PackageMap | None = None) -> Cell:
+def load_cell(path: str | Path, packages: PackageMap | None = None,
+              policy: FolderPolicy | None = None) -> Cell:
     """Load a cell file (see the module docstring).
+
+    Args:
+        path: the cell file.
+        packages: the package map of its robots (default: packages found next to it).
+        policy: the folders the cell and its robots may come from (default: the active
+            policy, if any; none: anything loads). Robots outside the policy's robot
+            folders are refused before any of their files is read (xacro runs code).
 
     Raises:
         YamlError: the file does not match the cell schema (with file:line).
         RobotDescriptionError: a robot's files are invalid, or names clash.
+        PathNotAllowedError: the cell or one of its robots is outside the policy.
     """
+    policy = policy or active_policy()
+    if policy is not None:
+        policy.check(path, FileKind.CELL)
     path = Path(path).resolve()
     node = load_yaml(path)
     spec = validate_node(CellSpec, node, path)
@@ -196,6 +209,12 @@ def load_cell(path: str | Path, packages: PackageMap | None = None) -> Cell:
         except FileNotFoundError as exc:
             raise YamlError(f"robots[{i}].robot: {robot.robot!r} not found (looked at {exc})",
                             path, line_of(item, "robot")) from None
+        if policy is not None:
+            try:
+                policy.check(robot_path, FileKind.ROBOT, robot.robot)
+            except PathNotAllowedError as exc:
+                raise PathNotAllowedError(f"robots[{i}].robot: {exc.reason}", path,
+                                          line_of(item, "robot")) from None
         robot_dir = robot_path if robot_path.is_dir() else robot_path.parent
         packages.discover(robot_dir)
         lines: dict[tuple[str, str], tuple[str, int | None]] = {}

@@ -24,6 +24,7 @@ from typing import Any, cast
 from pydantic import BaseModel, ValidationError
 
 from taskrunner.errors import YamlError
+from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
 from taskrunner.tasks.nodes import Location, ObjectSpec, location_of
 from taskrunner.tasks.parameters import Binding, bind_parameters, declare_parameters, substitute
 from taskrunner.tasks.problem import (
@@ -53,7 +54,8 @@ __all__ = ["MAX_INCLUDE_DEPTH", "load_task", "load_task_text"]
 MAX_INCLUDE_DEPTH = 16
 
 
-def load_task(path: str | Path, parameters: Mapping[str, object] | None = None) -> TaskSpec:
+def load_task(path: str | Path, parameters: Mapping[str, object] | None = None,
+              policy: FolderPolicy | None = None) -> TaskSpec:
     """Load a task file.
 
     Args:
@@ -61,21 +63,26 @@ def load_task(path: str | Path, parameters: Mapping[str, object] | None = None) 
         parameters: values for the task's parameters, overriding the defaults: strings
             (from a command line) are parsed to the parameter's type, other values
             (from an API) must already have it.
+        policy: the folders the task, its includes, its cell and its meshes may come
+            from (default: the active policy, if any; none: anything loads).
 
     Raises:
         TaskSpecError: the file (or an included one) is invalid; the message lists every
             problem with its file:line.
     """
     path = Path(path).resolve()
-    return _Loader(path).load_root(path, None, parameters or {})
+    return _Loader(path, policy=policy or active_policy()).load_root(path, None, parameters or {})
 
 
 def load_task_text(text: str, path: str | Path,
-                   parameters: Mapping[str, object] | None = None) -> TaskSpec:
+                   parameters: Mapping[str, object] | None = None,
+                   policy: FolderPolicy | None = None) -> TaskSpec:
     """Load a task from YAML text; ``path`` is the file it stands for (need not exist):
-    messages name it and relative paths (cell, includes, meshes) start from its folder."""
+    messages name it and relative paths (cell, includes, meshes) start from its folder.
+    ``policy``: as for :func:`load_task`."""
     path = Path(path).resolve()
-    return _Loader(path).load_root(path, text, parameters or {})
+    return _Loader(path, policy=policy or active_policy()).load_root(path, text,
+                                                                    parameters or {})
 
 
 @dataclass
@@ -101,6 +108,7 @@ class _Loader:
     problems: list[Problem] = field(default_factory=list)
     objects: list[ObjectSpec] = field(default_factory=list)
     root_cell: Path | None = None
+    policy: FolderPolicy | None = None
 
     def add(self, file: Path | None, line: int | None, message: str) -> None:
         self.problems.append(Problem(file, line, message))
@@ -120,8 +128,37 @@ class _Loader:
         reference: its cause (an unknown or broken parameter) is reported already."""
         self.problems += [p for p in problems if "(got '${" not in p.message]
 
+    def refused(self, path: Path, kind: FileKind, written: str, file: Path,
+                line: int | None) -> bool:
+        """Whether the policy refuses ``path`` (then the problem is added)."""
+        if self.policy is None:
+            return False
+        try:
+            self.policy.check(path, kind, written)
+        except PathNotAllowedError as exc:
+            self.add(file, line, exc.reason)
+            return True
+        return False
+
+    def refused_meshes(self, objects: Any, file: Path) -> bool:
+        """Whether the policy refuses the mesh file of one of ``objects``."""
+        refused = False
+        for obj in objects:
+            if self.policy is None or obj is None or getattr(obj, "file", None) is None:
+                continue
+            line = obj.loc.line_of("file") if obj.loc is not None else None
+            if "://" in obj.file:  # package:// paths may climb out with '..'
+                self.add(file, line, f"mesh {obj.file!r}: a task served over the API names "
+                         "its meshes by path, not by URI")
+                refused = True
+            else:
+                refused |= self.refused(Path(obj.file), FileKind.MESH, obj.file, file, line)
+        return refused
+
     # ------------------------------------------------------------------------- files
     def load_root(self, path: Path, text: str | None, overrides: Mapping[str, object]) -> TaskSpec:
+        if text is None and self.refused(path, FileKind.TASK, str(path), path, None):
+            raise problems_error(self.problems)
         result = self.load_file(path, text, Binding(overrides, None, None), (path,), root=True)
         objects = tuple(self.unique_objects())
         spec = None
@@ -141,6 +178,8 @@ class _Loader:
                   stack: tuple[Path, ...], root: bool = False) -> _FileResult | None:
         """Load one file (``text``: its content, if not to be read); problems are
         collected; None when the file cannot be read as a mapping at all."""
+        if text is None and self.policy is not None:
+            text = self.policy.text_of(path)  # a file held in memory
         try:
             node = load_yaml(path) if text is None else load_yaml_text(text, path)
         except YamlError as exc:
@@ -161,7 +200,7 @@ class _Loader:
         top = self.validate(TaskFile, {k: v for k, v in tree.items() if k != "parameters"}
                             | {"parameters": {}}, tree, path, ())
         cell = self.resolve_cell(tree, path, root)
-        if top is not None:
+        if top is not None and not self.refused_meshes(top.objects, path):
             self.objects += top.objects
         defaults = top.defaults if top is not None else None
         steps_node = tree.get("steps")
@@ -182,6 +221,8 @@ class _Loader:
                 self.add(path, tree.line, "a task file needs 'cell' (the cell file it runs in)")
             return None
         cell = (path.parent / value).resolve()
+        if self.refused(cell, FileKind.CELL, value, path, line_of(tree, "cell")):
+            return None
         if not cell.is_file():
             self.add(path, line_of(tree, "cell"), f"cell file not found: {_shown(cell, path)}")
         if root:
@@ -224,7 +265,8 @@ class _Loader:
             step = self.build_include(body, verb_line, file, stack)
         elif cls is AddObjectStep:
             obj = self.validate(ObjectSpec, body, body, file, (verb,), verb_line)
-            step = AddObjectStep(object=obj) if obj is not None else None
+            step = AddObjectStep(object=obj) if obj is not None \
+                and not self.refused_meshes([obj], file) else None
         else:
             step = self.validate(cls, body, body, file, (verb,), verb_line)
         if step is None:
@@ -282,6 +324,8 @@ class _Loader:
             return None
         if len(stack) > MAX_INCLUDE_DEPTH:
             self.add(file, file_line, f"includes nested deeper than {MAX_INCLUDE_DEPTH}")
+            return None
+        if self.refused(target, FileKind.TASK, include.file, file, file_line):
             return None
         if not target.is_file():
             self.add(file, file_line, f"included file not found: {_shown(target, file)}")
