@@ -167,7 +167,7 @@ def test_missing_file_is_a_yaml_error(tmp_path):
 def test_file_that_is_not_utf8_is_a_yaml_error(tmp_path):
     path = tmp_path / "latin1.yaml"
     path.write_bytes("name: caf\xe9\n".encode("latin-1"))
-    with pytest.raises(YamlError, match=r"latin1.yaml: file is not UTF-8 text"):
+    with pytest.raises(YamlError, match=r"latin1.yaml:1: file is not UTF-8 text \(invalid byte 0xe9\)"):
         load_yaml(path)
 
 
