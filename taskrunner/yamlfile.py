@@ -245,20 +245,20 @@ class _Builder:
             self.count_node(line)
             key = _MERGE if (event.value == "<<" and event.tag is None
                              and event.implicit[0]) else None
-            value = key if key is _MERGE else self.scalar(event, line)
-            self.add(value, line or 0, 1, event.anchor)
+            scalar = key if key is _MERGE else self.scalar(event, line)
+            self.add(scalar, line or 0, 1, event.anchor)
         elif isinstance(event, (ev.MappingStartEvent, ev.SequenceStartEvent)):
             self.count_node(line)
             if len(self.stack) >= self.limits.max_depth:
                 raise self.error(f"YAML nested deeper than {self.limits.max_depth} levels",
                                  line)
             self.check_collection_tag(event, line)
-            value: LineDict | LineList = (LineDict() if isinstance(event, ev.MappingStartEvent)
-                                          else LineList())
-            value.line = line
+            node: LineDict | LineList = (LineDict() if isinstance(event, ev.MappingStartEvent)
+                                         else LineList())
+            node.line = line
             if event.anchor is not None:
                 self.open_anchors.add(event.anchor)
-            self.stack.append(_Frame(value, event.anchor, line or 0))
+            self.stack.append(_Frame(node, event.anchor, line or 0))
         elif isinstance(event, (ev.MappingEndEvent, ev.SequenceEndEvent)):
             frame = self.stack.pop()
             if frame.anchor is not None:
