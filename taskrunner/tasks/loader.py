@@ -23,7 +23,7 @@ from typing import Any, cast
 
 from pydantic import BaseModel, ValidationError
 
-from taskrunner.errors import YamlError
+from taskrunner.errors import TaskSpecError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
 from taskrunner.tasks.nodes import Location, ObjectSpec, location_of
 from taskrunner.tasks.parameters import Binding, bind_parameters, declare_parameters, substitute
@@ -47,11 +47,18 @@ from taskrunner.tasks.steps import (
     _DoComposite,
     _ListComposite,
 )
+from taskrunner.textfile import resolve_path
 from taskrunner.yamlfile import LineDict, LineList, line_of, load_yaml, load_yaml_text
 
-__all__ = ["MAX_INCLUDE_DEPTH", "load_task", "load_task_text"]
+__all__ = ["MAX_INCLUDE_DEPTH", "MAX_INCLUDES", "MAX_STEP_DEPTH", "load_task", "load_task_text"]
 
 MAX_INCLUDE_DEPTH = 16
+MAX_INCLUDES = 64
+"""Included files loaded for one task, counting each ``include`` step that is reached:
+a file included twice by each of a chain of files would otherwise expand 2^n times."""
+MAX_STEP_DEPTH = 40
+"""Nesting of steps (composites and includes together), far below Python's recursion
+limit in every later stage (compiler, checker)."""
 
 
 def load_task(path: str | Path, parameters: Mapping[str, object] | None = None,
@@ -70,7 +77,7 @@ def load_task(path: str | Path, parameters: Mapping[str, object] | None = None,
         TaskSpecError: the file (or an included one) is invalid; the message lists every
             problem with its file:line.
     """
-    path = Path(path).resolve()
+    path = resolve_path(path, TaskSpecError)
     return _Loader(path, policy=policy or active_policy()).load_root(path, None, parameters or {})
 
 
@@ -80,7 +87,7 @@ def load_task_text(text: str, path: str | Path,
     """Load a task from YAML text; ``path`` is the file it stands for (need not exist):
     messages name it and relative paths (cell, includes, meshes) start from its folder.
     ``policy``: as for :func:`load_task`."""
-    path = Path(path).resolve()
+    path = resolve_path(path, TaskSpecError)
     return _Loader(path, policy=policy or active_policy()).load_root(path, text,
                                                                     parameters or {})
 
@@ -109,6 +116,8 @@ class _Loader:
     objects: list[ObjectSpec] = field(default_factory=list)
     root_cell: Path | None = None
     policy: FolderPolicy | None = None
+    includes: int = 0
+    depth: int = 0
 
     def add(self, file: Path | None, line: int | None, message: str) -> None:
         self.problems.append(Problem(file, line, message))
@@ -220,7 +229,11 @@ class _Loader:
             if root and "cell" not in tree:
                 self.add(path, tree.line, "a task file needs 'cell' (the cell file it runs in)")
             return None
-        cell = (path.parent / value).resolve()
+        try:
+            cell = resolve_path(path.parent / value, TaskSpecError, path, line_of(tree, "cell"))
+        except TaskSpecError as exc:
+            self.add(exc.path, exc.line, exc.reason)
+            return None
         if self.refused(cell, FileKind.CELL, value, path, line_of(tree, "cell")):
             return None
         if not cell.is_file():
@@ -246,6 +259,19 @@ class _Loader:
     # ------------------------------------------------------------------------- steps
     def build_step(self, container: LineList, index: int, file: Path,
                    stack: tuple[Path, ...]) -> Step | None:
+        if self.depth >= MAX_STEP_DEPTH:
+            if not any("steps nested deeper" in p.message for p in self.problems):
+                self.add(file, line_of(container, index), f"steps nested deeper than "
+                         f"{MAX_STEP_DEPTH} levels (composites and includes together)")
+            return None
+        self.depth += 1
+        try:
+            return self._build_step(container, index, file, stack)
+        finally:
+            self.depth -= 1
+
+    def _build_step(self, container: LineList, index: int, file: Path,
+                    stack: tuple[Path, ...]) -> Step | None:
         item, line = container[index], line_of(container, index)
         if not isinstance(item, LineDict) or len(item) != 1:
             self.add(file, line, _bad_step_message(item))
@@ -315,8 +341,18 @@ class _Loader:
         include = self.validate(IncludeBody, body, body, file, ("include",), line)
         if include is None:
             return None
-        target = (file.parent / include.file).resolve()
         file_line = line_of(body, "file")
+        try:
+            target = resolve_path(file.parent / include.file, TaskSpecError, file, file_line)
+        except TaskSpecError as exc:
+            self.add(exc.path, exc.line, exc.reason)
+            return None
+        self.includes += 1
+        if self.includes > MAX_INCLUDES:
+            if self.includes == MAX_INCLUDES + 1:  # said once, not for each one after
+                self.add(file, file_line, f"more than {MAX_INCLUDES} includes in one task "
+                         "(a file included many times over?)")
+            return None
         if target in stack:
             chain = stack[stack.index(target):] + (target,)
             shown = " → ".join(_shown(p, self.root) for p in chain)
