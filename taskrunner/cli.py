@@ -18,7 +18,7 @@ Subcommands:
   (``api/``); with no token given or in ``TASKRUNNER_TOKEN``, one is made and printed.
 
 Exit codes: 0 success, 2 invalid task or input, 3 planning failure, 4 execution failure,
-130 cancelled (Ctrl-C).
+130 cancelled (Ctrl-C), 143 cancelled by SIGTERM.
 """
 
 from __future__ import annotations
@@ -407,6 +407,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except TaskrunnerError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_INVALID
+    except KeyboardInterrupt:  # a run turns Ctrl-C into a cancel; this is anything else
+        print("interrupted", file=sys.stderr)
+        return EXIT_CANCELLED
 
 
 if __name__ == "__main__":

@@ -17,6 +17,7 @@ from __future__ import annotations
 import itertools
 import multiprocessing as mp
 import os
+import signal
 import threading
 import time
 from dataclasses import replace
@@ -38,7 +39,14 @@ class WorkerDiedError(PlanningError):
 
 
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
-    """The worker process: load the model, then answer requests until told to stop."""
+    """The worker process: load the model, then answer requests until told to stop.
+
+    Ctrl-C in a terminal reaches the whole process group: the worker ignores it and is
+    stopped by its parent, which decides what a Ctrl-C means (cancel the run, close the
+    worker). A parent in its main thread starts it with SIGINT ignored already (see
+    :meth:`PlanningWorker._launch`), so one arriving while it imports is ignored too.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     if nice and hasattr(os, "nice"):
         os.nice(nice)
     from taskrunner.planning.planner import MotionPlanner
@@ -160,7 +168,17 @@ class PlanningWorker:
         self._process = self._ctx.Process(
             target=_serve, args=(self.source, child, self._cancel, self.nice),
             name="taskrunner-planner", daemon=True)
-        self._process.start()
+        # An ignored signal stays ignored across exec (and Python then installs no
+        # KeyboardInterrupt handler): a Ctrl-C while the child imports cannot end it with a
+        # traceback. Only the main thread may set handlers; a SIGINT in the few ms of
+        # start() is lost for the parent too.
+        main = threading.current_thread() is threading.main_thread()
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+        try:
+            self._process.start()
+        finally:
+            if main:
+                signal.signal(signal.SIGINT, previous)
         child.close()
 
     def _await_ready(self, timeout: float) -> None:

@@ -1,15 +1,25 @@
 """Run records: what was run, with which parameters, every event, and how it ended.
 
 A record is a JSON file (``<runs_dir>/<run_id>.json``) written when the run starts and
-again when it ends, so a run that dies halfway still leaves its task, parameters and the
-events up to then. Writes are atomic (temporary file, then rename).
+again when it ends; writes are atomic (temporary file, fsync, rename). While the run
+goes, a :class:`RecordFile` also appends every event to ``<run_id>.events.jsonl`` beside
+it (one JSON object a line, after a header line naming the process that writes it) and
+fsyncs it before the event is passed on, so a run killed at any point (SIGKILL, power
+loss) leaves every event it announced. The journal is removed once the final JSON is on
+disk.
+
+:func:`load_record` merges a journal left behind into the record, and reports a record
+still ``running`` whose writing process is gone as ``interrupted`` (the file itself still
+says ``running``: nobody was left to rewrite it).
 """
 
 from __future__ import annotations
 
 import json
 import os
+import socket
 import tempfile
+import threading
 import uuid
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -18,7 +28,8 @@ from typing import Any
 
 from taskrunner.runtime.events import RunEvent
 
-__all__ = ["RunRecord", "load_record", "new_run_id", "save_record"]
+__all__ = ["RecordFile", "RunRecord", "journal_path", "load_record", "new_run_id",
+           "save_record"]
 
 STATUSES = ("running", "succeeded", "failed", "cancelled", "interrupted")
 
@@ -34,8 +45,10 @@ class RunRecord:
     """Everything about one run.
 
     Attributes:
-        status: running, succeeded, failed, cancelled or interrupted.
-        exit_code: the CLI's exit code for this outcome (0, 3, 4, 130), None while running.
+        status: running, succeeded, failed, cancelled or interrupted (the process running
+            it ended before the run did: killed, or a server stopped).
+        exit_code: the CLI's exit code for this outcome (0, 3, 4, 130 cancelled, 143
+            ended by SIGTERM), None while running.
         task_text: the task file's text as it was run (includes are listed by path).
         error: the failure's message (with file:line), if it failed.
     """
@@ -66,7 +79,8 @@ class RunRecord:
 
 
 def save_record(record: RunRecord, runs_dir: str | Path) -> Path:
-    """Write ``record`` to ``runs_dir/<run_id>.json`` atomically; returns the path."""
+    """Write ``record`` to ``runs_dir/<run_id>.json`` atomically and durably (fsync'd
+    before the rename, the folder after); returns the path."""
     runs_dir = Path(runs_dir)
     runs_dir.mkdir(parents=True, exist_ok=True)
     path = runs_dir / f"{record.run_id}.json"
@@ -74,17 +88,141 @@ def save_record(record: RunRecord, runs_dir: str | Path) -> Path:
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as out:
             json.dump(record.as_dict(), out, indent=1, default=_jsonable)
+            out.flush()
+            os.fsync(out.fileno())
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+    _fsync_dir(runs_dir)
     return path
 
 
+def journal_path(record_path: str | Path) -> Path:
+    """The event journal beside a record: ``<run_id>.events.jsonl``."""
+    record_path = Path(record_path)
+    return record_path.with_name(record_path.stem + ".events.jsonl")
+
+
+class RecordFile:
+    """A run's record on disk while it runs: the JSON plus an fsync'd event journal.
+
+    ``append`` is safe from several threads (events come from the tick thread and the
+    backend's); each event is on disk when it returns.
+    """
+
+    def __init__(self, record: RunRecord, runs_dir: str | Path) -> None:
+        self.record = record
+        self.path = save_record(record, runs_dir)
+        self.journal = journal_path(self.path)
+        self._lock = threading.Lock()
+        self._out = open(self.journal, "a", encoding="utf-8")  # held open: one line an event
+        header = {"journal": 1, "run_id": record.run_id, "host": socket.gethostname(),
+                  "pid": os.getpid(), "process_start": _process_start(os.getpid())}
+        self._write(header)
+        for event in record.events:
+            self._write(event.as_dict())
+        _fsync_dir(self.path.parent)
+
+    def append(self, event: RunEvent) -> None:
+        """Append ``event`` to the journal and fsync it."""
+        with self._lock:
+            if not self._out.closed:
+                self._write(event.as_dict())
+
+    def finish(self) -> Path:
+        """Write the final record (atomically), then drop the journal."""
+        with self._lock:
+            self._out.close()
+        path = save_record(self.record, self.path.parent)
+        self.journal.unlink(missing_ok=True)
+        return path
+
+    def _write(self, data: dict[str, Any]) -> None:
+        self._out.write(json.dumps(data, default=_jsonable) + "\n")
+        self._out.flush()
+        os.fsync(self._out.fileno())
+
+
 def load_record(path: str | Path) -> RunRecord:
-    """Read a record written by :func:`save_record`."""
+    """Read a record written by :func:`save_record` or a :class:`RecordFile`.
+
+    Events in a journal left beside the record (the run was killed, or is still going)
+    are merged in; a record still ``running`` whose writer process is gone is returned
+    as ``interrupted``, with the reason in ``error``.
+    """
     with open(path, encoding="utf-8") as f:
-        return RunRecord.from_dict(json.load(f))
+        record = RunRecord.from_dict(json.load(f))
+    journal = journal_path(path)
+    if not journal.is_file():
+        return record
+    header, events = _read_journal(journal)
+    known = {e.seq for e in record.events}
+    record.events = sorted([*record.events, *(e for e in events if e.seq not in known)],
+                           key=lambda e: e.seq)
+    if record.status == "running" and header and not _writer_alive(header):
+        record.status = "interrupted"
+        last = record.events[-1].time if record.events else 0.0
+        record.error = (f"the process running it (pid {header.get('pid')}) ended without "
+                        f"finishing the run; {len(record.events)} events recorded, the "
+                        f"last at {last:.2f} s")
+    return record
+
+
+def _read_journal(path: Path) -> tuple[dict[str, Any], list[RunEvent]]:
+    header: dict[str, Any] = {}
+    events: list[RunEvent] = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            try:
+                data = json.loads(line)
+            except json.JSONDecodeError:  # a line cut short by the kill: nothing after it
+                break
+            if "journal" in data:
+                header = data
+            else:
+                events.append(RunEvent.from_dict(data))
+    return header, events
+
+
+def _writer_alive(header: dict[str, Any]) -> bool:
+    """Whether the process that wrote a journal still runs (unknown on another host:
+    assumed alive)."""
+    if header.get("host") != socket.gethostname():
+        return True
+    pid = header.get("pid")
+    if not isinstance(pid, int):
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass
+    started = header.get("process_start")
+    return started is None or _process_start(pid) == started
+
+
+def _process_start(pid: int) -> int | None:
+    """The process's start time in clock ticks since boot (Linux), to tell a reused pid."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return None
+    return int(stat.rpartition(")")[2].split()[19])
+
+
+def _fsync_dir(folder: Path) -> None:
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
 
 
 def _jsonable(value: Any) -> Any:

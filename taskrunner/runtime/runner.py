@@ -3,8 +3,13 @@
 A :class:`Runner` owns one run: the scene built from the cell and the task's objects, the
 plan service, the backend, the event log and the run record. :meth:`Runner.run` ticks the
 tree at ``tick_hz`` until it succeeds, fails or is cancelled (``cancel()`` from another
-thread, or Ctrl-C in the CLI): cancelling stops the tree, which cancels any plan in flight
-and stops the motion where it is, and records the run as cancelled.
+thread, or Ctrl-C / SIGTERM in the CLI): cancelling stops the tree, which cancels any plan
+in flight and stops the motion where it is, and records the run as cancelled with the
+reason and its exit code (130 for a cancel or Ctrl-C, 143 for SIGTERM).
+
+With ``runs_dir`` set, every event is on disk (fsync'd, see
+:class:`~taskrunner.runtime.records.RecordFile`) before the step that announced it goes
+on, so a run killed outright leaves everything it announced.
 """
 
 from __future__ import annotations
@@ -24,7 +29,7 @@ from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import EventLog
-from taskrunner.runtime.records import RunRecord, new_run_id, save_record
+from taskrunner.runtime.records import RecordFile, RunRecord, new_run_id
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.tasks.spec import TaskSpec
 from taskrunner.tree.behaviours import TaskLeaf
@@ -33,8 +38,9 @@ from taskrunner.tree.context import TaskContext
 
 __all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
 
-# Exit codes of run-task, by outcome.
-EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130}
+# Exit codes of run-task, by outcome ("terminated": cancelled by SIGTERM, 128 + 15).
+EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130,
+              "terminated": 143}
 
 
 @dataclass(frozen=True)
@@ -90,6 +96,8 @@ class Runner:
         self.ctx.sync_from_backend()
         self.tree = compile_task(spec, self.ctx)
         self._cancel = threading.Event()
+        self._cancel_reason = ("cancelled", EXIT_CODES["cancelled"])
+        self._file: RecordFile | None = None
         self.record = RunRecord(
             run_id=new_run_id(), task=spec.name, task_file=str(spec.path or ""),
             cell=cell.name, backend=self.options.backend_name,
@@ -98,9 +106,18 @@ class Runner:
         self.events.subscribe(self.record.events.append)
         self.failure_kind: str | None = None
 
-    def cancel(self) -> None:
-        """Stop the run (safe from any thread): the motion stops where it is."""
+    def cancel(self, reason: str = "cancelled", exit_code: int = EXIT_CODES["cancelled"]) -> None:
+        """Stop the run (safe from any thread, and from a signal handler): the motion stops
+        where it is and the run ends ``cancelled`` with ``reason`` as its error and
+        ``exit_code``. The first cancel's reason is kept."""
+        if not self._cancel.is_set():
+            self._cancel_reason = (reason, exit_code)
         self._cancel.set()
+
+    @property
+    def cancelled(self) -> bool:
+        """Whether :meth:`cancel` was called."""
+        return self._cancel.is_set()
 
     def current_leaf(self) -> TaskLeaf | None:
         """The leaf running now, if any."""
@@ -117,7 +134,7 @@ class Runner:
                          status="running", task=self.spec.name, cell=self.cell.name,
                          backend=self.options.backend_name,
                          parameters=dict(self.record.parameters))
-        self._save()
+        self._open_record()
         period = 1.0 / self.options.tick_hz
         status = Status.RUNNING
         try:
@@ -134,8 +151,14 @@ class Runner:
         except TaskrunnerError as exc:  # a leaf let one of ours escape: fail, don't crash
             self.tree.stop(Status.INVALID)
             return self._finish("failed", 3, str(exc))
+        except Exception as exc:  # a bug: stop the motion and record it, then let it show
+            self.tree.stop(Status.INVALID)
+            self._finish("failed", EXIT_CODES["planning"],
+                         f"internal error: {type(exc).__name__}: {exc}")
+            raise
         if self._cancel.is_set() and status not in (Status.SUCCESS, Status.FAILURE):
-            return self._finish("cancelled", EXIT_CODES["cancelled"], "cancelled")
+            reason, code = self._cancel_reason
+            return self._finish("cancelled", code, reason)
         if status == Status.SUCCESS:
             return self._finish("succeeded", 0, None)
         leaf = self._failed_leaf()
@@ -160,11 +183,15 @@ class Runner:
         self.record.status = status
         self.record.exit_code = code
         self.record.error = error
-        self.events.emit("run_finished", error or status, status=status, exit_code=code)
         self.record.finished = datetime.now(UTC).isoformat()
-        self._save()
+        self.events.emit("run_finished", error or status, status=status, exit_code=code)
+        if self._file is not None:
+            self.events.unsubscribe(self._file.append)
+            self._file.finish()
         return self.record
 
-    def _save(self) -> None:
+    def _open_record(self) -> None:
+        """Write the record as it starts and journal every event from now on."""
         if self.options.runs_dir is not None:
-            save_record(self.record, self.options.runs_dir)
+            self._file = RecordFile(self.record, self.options.runs_dir)
+            self.events.subscribe(self._file.append)

@@ -1,15 +1,22 @@
 """One ``run-task FILE`` session: load, build the backend and the planner, run, report.
 
 The run itself happens on a worker thread; the main thread shows progress (a live tree in
-a terminal, plain log lines otherwise) and turns Ctrl-C into a cancel, so the motion stops
-where it is and the run is recorded as cancelled.
+a terminal, plain log lines otherwise) and turns Ctrl-C (SIGINT) and SIGTERM into a cancel:
+the motion stops where it is, the planning worker is stopped, the summary is printed and
+the run is recorded as ``cancelled`` with the reason, exit code 130 for Ctrl-C and 143
+(128 + SIGTERM) for SIGTERM. A signal that arrives while the task still loads cancels the
+run before anything moves. A third Ctrl-C gives up waiting for the motion to stop.
 """
 
 from __future__ import annotations
 
+import signal
 import sys
 import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
+from types import FrameType
 from typing import TYPE_CHECKING, TextIO
 
 from taskrunner.backends import (
@@ -117,52 +124,117 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   firmware_speedup: float = 1.0, home: bool = False) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
+    Called from the main thread, Ctrl-C and SIGTERM cancel the run (see the module
+    docstring) instead of raising.
+
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
             cell; the CLI maps it to exit code 2.
     """
     out = out or sys.stdout
-    spec = load_task(path, parameters or {})
-    # toppra takes most of a second to import: do it while the rest loads.
-    threading.Thread(target=_import_toppra, daemon=True).start()
-    events = EventLog()
-    planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other
-    if worker:
-        from taskrunner.planning.worker import PlanningWorker
+    stop = _StopSignals(out)
+    with stop.installed():
+        spec = load_task(path, parameters or {})
+        # toppra takes most of a second to import: do it while the rest loads.
+        threading.Thread(target=_import_toppra, daemon=True).start()
+        events = EventLog()
+        planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other
+        if worker:
+            from taskrunner.planning.worker import PlanningWorker
 
-        planner_service = PlanningWorker(spec.cell, wait_ready=False)
-    cell = load_cell(spec.cell)
-    if not worker:
-        from taskrunner.planning.service import InProcessPlanner
+            planner_service = PlanningWorker(spec.cell, wait_ready=False)
+        try:
+            cell = load_cell(spec.cell)
+            if not worker:
+                from taskrunner.planning.service import InProcessPlanner
 
-        planner_service = InProcessPlanner()
-    try:
-        machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home)
-    except BaseException:
-        planner_service.close()
-        raise
-    try:
-        runner = Runner(spec, cell, machine, planner_service,
-                        RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
-                        events=events)
-        if not live:
-            def log(event: RunEvent) -> None:
-                line = _log_line(event)
-                if line:
-                    print(line, file=out, flush=True)
-            events.subscribe(log)
-        record = _run_with_display(runner, live, out)
-    finally:
-        machine.close()
-        planner_service.close()
+                planner_service = InProcessPlanner()
+            machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home)
+        except BaseException:
+            planner_service.close()
+            raise
+        try:
+            runner = Runner(spec, cell, machine, planner_service,
+                            RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
+                            events=events)
+            if not live:
+                def log(event: RunEvent) -> None:
+                    line = _log_line(event)
+                    if line:
+                        print(line, file=out, flush=True)
+                events.subscribe(log)
+            stop.attach(runner)
+            record = _run_with_display(runner, live, out)
+        finally:
+            machine.close()
+            planner_service.close()
     _summary(record, runner, runs_dir, out)
     return record.exit_code if record.exit_code is not None else EXIT_CODES["planning"]
 
 
+class _StopSignals:
+    """Ctrl-C and SIGTERM as a cancel of the run (main thread only; elsewhere a no-op).
+
+    The handlers never raise (a KeyboardInterrupt in the middle of ``Thread.join`` leaves
+    the thread's lock in a state where the next ``join`` returns at once, CPython 3.11):
+    they ask the runner to stop, or remember the request until there is a runner.
+    """
+
+    _REASONS = {signal.SIGINT: ("cancelled (Ctrl-C)", EXIT_CODES["cancelled"]),
+                signal.SIGTERM: ("cancelled (SIGTERM)", EXIT_CODES["terminated"])}
+
+    def __init__(self, out: TextIO) -> None:
+        self.out = out
+        self.runner: Runner | None = None
+        self.pending: tuple[str, int] | None = None
+        self.count = 0
+
+    @contextmanager
+    def installed(self) -> Iterator[None]:
+        if threading.current_thread() is not threading.main_thread():
+            yield
+            return
+        previous: dict[int, Callable[[int, FrameType | None], object] | int | None] = {}
+        for signum in self._REASONS:
+            previous[signum] = signal.signal(signum, self._handle)
+        try:
+            yield
+        finally:
+            for number, handler in previous.items():
+                signal.signal(number, handler)
+
+    def attach(self, runner: Runner) -> None:
+        self.runner = runner
+        if self.pending is not None:
+            runner.cancel(*self.pending)
+
+    def _handle(self, signum: int, frame: FrameType | None) -> None:
+        self.count += 1
+        reason, code = self._REASONS[signal.Signals(signum)]
+        if self.count == 1:
+            print(f"\n{reason}: stopping the motion where it is …", file=self.out, flush=True)
+        elif signum == signal.SIGINT and self.count >= 3:
+            raise KeyboardInterrupt  # the user insists: stop waiting for the motion to stop
+        else:
+            print("still stopping the motion (Ctrl-C twice more to stop waiting) …",
+                  file=self.out, flush=True)
+        if self.runner is not None:
+            self.runner.cancel(reason, code)
+        elif self.pending is None:
+            self.pending = (reason, code)
+
+
 def _run_with_display(runner: Runner, live: bool, out: TextIO) -> RunRecord:
     result: list[RunRecord] = []
-    thread = threading.Thread(target=lambda: result.append(runner.run()), name="task-run",
-                              daemon=True)
+    failure: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            result.append(runner.run())
+        except BaseException as exc:  # handed to the main thread, raised there
+            failure.append(exc)
+
+    thread = threading.Thread(target=run, name="task-run", daemon=True)
     thread.start()
     try:
         while thread.is_alive():
@@ -170,9 +242,10 @@ def _run_with_display(runner: Runner, live: bool, out: TextIO) -> RunRecord:
             if live:
                 _draw(runner, out)
     except KeyboardInterrupt:
-        print("\ncancelling: stopping the motion where it is …", file=out, flush=True)
-        runner.cancel()
-        thread.join()
+        runner.cancel(*_StopSignals._REASONS[signal.SIGINT])
+        raise
+    if failure:
+        raise failure[0]
     if live:
         _draw(runner, out)
     return result[0]
