@@ -1,0 +1,623 @@
+"""A workcell handle: load robots and cells, plan, time, execute, run tasks.
+
+What ``moveit_py`` / MoveIt Commander give a ROS user, for a taskrunner cell::
+
+    import taskrunner
+
+    cell = taskrunner.load_workcell("servo_arm_table")   # a shipped name, a path, a package
+    cell.connect("mock")                                  # or "sim", "serial", "http"
+    plan = cell.plan("arm", to="Candle")                  # named pose, joints, pose, position
+    cell.execute(plan)
+    line = cell.plan_cartesian("arm", by=(0.0, 0.0, -0.03), frame="world")
+    print(line.fraction)                                  # computeCartesianPath's fraction
+    result = cell.run_task("pick_place", parameters={"place_y": -0.1})
+
+A :class:`Workcell` keeps a planning scene (the cell's robots and fixed objects) whose
+robot state is the *current state*: the cell's start state at first, then where the
+connected backend says the joints are after every execution. Plans start there unless
+given ``start=``. Frames: poses are in the world frame of the cell unless their
+``frame`` names a link or a scene object; lengths in metres, angles in radians, times in
+seconds.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+
+from taskrunner.backends.base import Backend, ExecutionHandle
+from taskrunner.builder import Task
+from taskrunner.errors import InputError
+from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner, relative_pose
+from taskrunner.planning.planner import MotionPlanner
+from taskrunner.planning.request import (
+    Goal,
+    JointGoal,
+    NamedGoal,
+    PlannerOptions,
+    PlanRequest,
+    PoseGoal,
+)
+from taskrunner.planning.timing import TimingOptions, parameterize_path
+from taskrunner.resources import resolve_cell, resolve_task
+from taskrunner.robot.cell import Cell, load_cell_or_robot
+from taskrunner.robot.model import RobotModel
+from taskrunner.robot.packages import PackageMap
+from taskrunner.runtime.events import RunEvent
+from taskrunner.runtime.session import BACKENDS, make_backend
+from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.taskrun import RunResult, TaskRun, start_run
+from taskrunner.tasks.loader import load_task
+from taskrunner.tasks.spec import TaskSpec
+from taskrunner.types import JointPath, JointState, JointTrajectory, Pose
+
+__all__ = ["Plan", "Workcell", "load_workcell", "run_task", "start_task"]
+
+BackendKind = Literal["mock", "sim", "serial", "http"]
+StateLike = JointState | Mapping[str, float]
+Position = Sequence[float]
+TaskLike = str | os.PathLike[str] | Task
+"""A task file, a shipped example's name, or a :class:`~taskrunner.Task`."""
+
+
+@dataclass(frozen=True)
+class Plan:
+    """A planned, timed motion of one group.
+
+    Attributes:
+        group: the planning group that moves.
+        path: the geometric path over the group's joints (rad or m), start first.
+        trajectory: the path timed by toppra (s, rad, rad/s, rad/s²), rest to rest.
+        start: every joint of the cell where the motion starts.
+        end: every joint of the cell where the motion ends (the last point reached).
+        fraction: share of a Cartesian path achieved, in [0, 1] (MoveIt's
+            ``computeCartesianPath`` fraction, weighted by length); 1.0 for a motion
+            planned to a goal.
+        message: why a Cartesian path stopped short (empty when complete).
+        planning_time: seconds spent computing the path (timing not included).
+    """
+
+    group: str
+    path: JointPath
+    trajectory: JointTrajectory
+    start: JointState
+    end: JointState
+    fraction: float = 1.0
+    message: str = ""
+    planning_time: float = 0.0
+
+    @property
+    def duration(self) -> float:
+        """Duration of the timed motion (s)."""
+        return self.trajectory.duration
+
+    @property
+    def complete(self) -> bool:
+        """True unless a Cartesian path stopped short of its last waypoint."""
+        return self.fraction >= 1.0
+
+
+def load_workcell(source: str | os.PathLike[str], *,
+                  packages: PackageMap | None = None) -> Workcell:
+    """Load a cell or a robot as a :class:`Workcell`.
+
+    Args:
+        source: a shipped cell's or robot's name (``"servo_arm_table"``,
+            ``"servo_arm_pair"``, ``"panda"``), a cell file, a robot manifest
+            (``robot.yaml``) or its folder, a MoveIt config package (a folder with
+            ``.setup_assistant``), or a ``.urdf`` / ``.xacro`` file. A robot becomes a
+            one-robot cell with no objects, at the world origin.
+        packages: where ``package://`` and ``$(find pkg)`` resolve (default: folders
+            with a ``package.xml`` near the files).
+
+    Raises:
+        InputError: ``source`` is neither a file or folder nor a shipped name.
+        RobotDescriptionError, YamlError: the cell or a robot's files are invalid (with
+            file:line).
+    """
+    return Workcell(load_cell_or_robot(resolve_cell(source), packages))
+
+
+class Workcell:
+    """A cell's robots and objects, ready to plan, execute and run tasks.
+
+    Args:
+        cell: a loaded cell (see :func:`load_workcell`, the usual way to make one).
+    """
+
+    def __init__(self, cell: Cell) -> None:
+        self._cell = cell
+        self._scene = scene_from_cell(cell)
+        self._planner: MotionPlanner | None = None
+        self._cartesian: CartesianPlanner | None = None
+        self._backend: Backend | None = None
+        self._backend_kind = "mock"
+
+    def __repr__(self) -> str:
+        return f"Workcell({self.name!r}, groups={list(self.groups)})"
+
+    # ------------------------------------------------------------------ description
+    @property
+    def name(self) -> str:
+        """The cell's name (a robot's name for a robot loaded alone)."""
+        return self._cell.name
+
+    @property
+    def path(self) -> Path | None:
+        """The file or folder the cell was loaded from."""
+        return self._cell.path
+
+    @property
+    def cell(self) -> Cell:
+        """The loaded cell (robots, fixed objects, start poses)."""
+        return self._cell
+
+    @property
+    def model(self) -> RobotModel:
+        """The kinematic model of every robot of the cell (joints, links, groups, limits)."""
+        return self._cell.model
+
+    @property
+    def scene(self) -> Scene:
+        """The planning scene: robots at the current state, fixed and added objects."""
+        return self._scene
+
+    @property
+    def groups(self) -> tuple[str, ...]:
+        """The planning groups (SRDF groups, prefixed per robot, and the cell's own)."""
+        return tuple(self.model.groups)
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """Every joint of the cell, in state-vector order."""
+        return tuple(self.model.joint_names)
+
+    def named_poses(self, group: str) -> list[str]:
+        """The named poses of ``group`` (SRDF ``group_state`` and the cell's poses), sorted.
+
+        Raises:
+            UnknownNameError: no such group.
+        """
+        return self.model.named_state_names(group)
+
+    def link_pose(self, link: str, state: StateLike | None = None) -> Pose:
+        """World pose of a link (or any model frame): at the current state, or at
+        ``state`` (joints left out keep their current values).
+
+        Raises:
+            UnknownNameError: no such link or joint.
+        """
+        if state is None:
+            return self._scene.link_pose(link)
+        scene = self._scene.copy()
+        scene.set_state(self._state_vector(state))
+        return scene.link_pose(link)
+
+    # ------------------------------------------------------------------ state
+    @property
+    def backend(self) -> Backend | None:
+        """The connected backend (None before :meth:`connect`)."""
+        return self._backend
+
+    def connect(self, kind: BackendKind = "mock", *, speed: float | None = None,
+                port: str | None = None, url: str | None = None,
+                firmware_speedup: float = 1.0, home: bool = False) -> Backend:
+        """Create the backend that executes this cell's motions, and use it from now on.
+
+        The backend is built from the cell the way ``run-task --backend`` builds it: mock
+        and sim drive every joint and start at the cell's start state; serial and http
+        drive the servos of the cell's one robot through its ``hardware.yaml`` and start
+        where the servos are. The current state then becomes the backend's. A backend
+        connected before is closed.
+
+        Args:
+            kind: ``"mock"`` (motions complete at once, or replay at ``speed``),
+                ``"sim"`` (a controller playing trajectories in real time, ``speed``
+                times faster), ``"serial"`` or ``"http"`` (the ESP32 firmware).
+            speed: replay speed, a multiple of real time (mock: None jumps to the end).
+            port: serial device (default: the one in ``hardware.yaml``).
+            url: the ESP32's ``/api/command`` URL (http).
+            firmware_speedup: a host build of the firmware running this much faster
+                than real time (``run-task firmware-sim --speedup``).
+            home: send the servos home before the first motion (serial, http).
+
+        Raises:
+            ValueError: an unknown ``kind``.
+            InputError: a servo backend on a cell without exactly one calibrated robot,
+                or http without a URL.
+            BackendError: the port or URL does not answer as the firmware does.
+        """
+        if kind not in BACKENDS:
+            raise ValueError(f"'kind' must be one of {', '.join(BACKENDS)} (got {kind!r})")
+        backend = make_backend(kind, self._cell, speed, port, url, firmware_speedup, home)
+        self.disconnect()
+        self._backend, self._backend_kind = backend, kind
+        self.sync()
+        return backend
+
+    def disconnect(self) -> None:
+        """Close the connected backend, if any (the current state stays where it was)."""
+        if self._backend is not None:
+            backend, self._backend = self._backend, None
+            backend.close()
+
+    def close(self) -> None:
+        """Close the connected backend (the same as :meth:`disconnect`)."""
+        self.disconnect()
+
+    def __enter__(self) -> Workcell:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def sync(self) -> JointState:
+        """Make the current state what the connected backend reports; returns it."""
+        if self._backend is not None:
+            state = self._backend.joint_state()
+            self._scene.set_state(dict(zip(state.names, state.positions)))
+        return self.joint_state()
+
+    def joint_state(self) -> JointState:
+        """Every joint's current position (rad or m): the backend's last report after
+        an execution, else the planning state (the cell's start state at first)."""
+        return JointState(self.joint_names, self._scene.state)
+
+    def set_joint_state(self, values: StateLike) -> None:
+        """Set joints of the planning state without moving anything (e.g. to plan from
+        elsewhere before connecting); joints left out keep their values.
+
+        Raises:
+            UnknownNameError: a joint the cell does not have.
+        """
+        self._scene.set_state(self._state_vector(values))
+
+    # ------------------------------------------------------------------ planning
+    def plan(self, group: str, *, to: str | None = None,
+             joints: Mapping[str, float] | None = None, pose: Pose | None = None,
+             position: Position | None = None, link: str | None = None,
+             start: StateLike | None = None, planner: str = "RRTConnect",
+             planning_time: float = 1.0, seed: int = 0,
+             velocity_scaling: float | None = None,
+             acceleration_scaling: float | None = None) -> Plan:
+        """Plan a collision-free motion of ``group`` to one target, and time it.
+
+        Give exactly one target: ``to`` (a named pose, MoveIt's ``set_named_target``),
+        ``joints`` (``set_joint_value_target``; joints of the group left out keep their
+        start values), ``pose`` (``set_pose_target``: a pose of ``link`` in the world or
+        in ``pose.frame``) or ``position`` (``set_position_target``: x, y, z of
+        ``link`` in the world frame, orientation free; what a 5-DOF arm can reach).
+        A ``pose`` for a group with ``position_only_ik`` is reached in position only.
+
+        Args:
+            group: the planning group that moves.
+            link: the link placed at ``pose`` / ``position`` (default: the group's tip).
+            start: where the motion starts (default: the current state); joints left
+                out keep their current values. ``start=previous_plan.end`` chains plans.
+            planner: an OMPL planner (see :data:`taskrunner.planning.PLANNERS`).
+            planning_time: seconds allowed per attempt.
+            seed: seeds OMPL and the IK goal sampling (same seed, same motion).
+            velocity_scaling: fraction of the joints' velocity limits, in (0, 1]
+                (default: the robot's ``default_velocity_scaling_factor``).
+            acceleration_scaling: fraction of the acceleration limits, in (0, 1].
+
+        Raises:
+            ValueError: not exactly one target, or an invalid option.
+            UnknownNameError: an unknown group, joint, link or named pose.
+            PlanningError: no motion (IkFailedError, StartInCollisionError,
+                GoalInCollisionError, PlanningTimeoutError, …: the message says why).
+        """
+        goal = self._goal(to, joints, pose, position, link)
+        timing = TimingOptions(velocity_scaling=velocity_scaling,
+                               acceleration_scaling=acceleration_scaling)
+        request = PlanRequest(group, goal, self._state_vector(start) if start is not None
+                              else None, PlannerOptions(planner=planner,
+                                                        planning_time=planning_time, seed=seed))
+        if self._planner is None:
+            self._planner = MotionPlanner(self._scene)
+        result = self._planner.plan(request)
+        trajectory = parameterize_path(self.model, result.path, timing)
+        return Plan(group, result.path, trajectory, self._full(result.start),
+                    self._full(result.end), planning_time=result.total_time)
+
+    def plan_cartesian(self, group: str, waypoints: Pose | Position | Sequence[Pose | Position]
+                       | None = None, *, by: Position | None = None,
+                       frame: Literal["world", "link"] = "world", link: str | None = None,
+                       start: StateLike | None = None, eef_step: float = 0.005,
+                       jump_threshold: float = 0.0, avoid_collisions: bool = True,
+                       velocity_scaling: float | None = None,
+                       acceleration_scaling: float | None = None) -> Plan:
+        """Move ``link`` in straight lines, MoveIt's ``computeCartesianPath``.
+
+        The link moves from where it is at the start through each waypoint in turn,
+        in steps of at most ``eef_step``; each step is solved by IK from the one
+        before. A path that cannot be completed (no IK solution, a collision, a joint
+        jump) is cut short, never raised: :attr:`Plan.fraction` says how much of the
+        path's length was achieved and :attr:`Plan.message` why it stopped. The part
+        achieved is timed and can be executed.
+
+        Args:
+            group: the planning group that moves.
+            waypoints: a pose or several (world frame, or their ``frame``), or x, y, z
+                positions (world, m): a position keeps the link's start orientation, or
+                leaves it free on a position-only arm.
+            by: instead of waypoints, one straight move by this offset (m), along the
+                world's axes (``frame="world"``) or the link's (``frame="link"``).
+            link: the link that follows the lines (default: the group's tip).
+            start: where the path starts (default: the current state).
+            eef_step: largest move of the link between IK points (m).
+            jump_threshold: MoveIt's relative jump test (0 disables it).
+            avoid_collisions: stop before the first state in collision.
+            velocity_scaling: fraction of the velocity limits, in (0, 1].
+            acceleration_scaling: fraction of the acceleration limits, in (0, 1].
+
+        Raises:
+            ValueError: neither or both of ``waypoints`` and ``by``; an invalid option.
+            UnknownNameError: an unknown group, link or frame.
+            StartInCollisionError: the start collides (with ``avoid_collisions``).
+        """
+        if (waypoints is None) == (by is None):
+            raise ValueError("'plan_cartesian' needs one of 'waypoints' or 'by'")
+        options = CartesianOptions(eef_step=eef_step, jump_threshold=jump_threshold,
+                                   avoid_collisions=avoid_collisions)
+        timing = TimingOptions(velocity_scaling=velocity_scaling,
+                               acceleration_scaling=acceleration_scaling)
+        if self._cartesian is None:
+            self._cartesian = CartesianPlanner(self._scene)
+        q = self._state_vector(start if start is not None else {})
+        frame_link = link or self.model.group(group).tip_link
+        if frame_link is None:
+            raise ValueError(f"group {group!r} has no tip link: give 'link'")
+        if by is not None:
+            target = relative_pose(self._scene, frame_link, _xyz("by", by), frame=frame, start=q)
+            targets: list[Pose] = [target]
+        else:
+            here = self.link_pose(frame_link, JointState(self.joint_names, q))
+            assert waypoints is not None
+            targets = [_waypoint(w, here) for w in _waypoint_list(waypoints)]
+        result = self._cartesian.compute(group, targets, link, options, q)
+        trajectory = parameterize_path(self.model, result.path, timing)
+        return Plan(group, result.path, trajectory, self._full(result.start),
+                    self._full(result.end), result.fraction, result.message, result.elapsed)
+
+    def time_path(self, path: JointPath | Plan, *, velocity_scaling: float | None = None,
+                  acceleration_scaling: float | None = None,
+                  sample_rate_hz: float = 100.0) -> JointTrajectory:
+        """Time a path rest to rest with toppra, within the scaled joint limits.
+
+        Args:
+            path: a :class:`JointPath`, or a plan (its path is timed again: e.g. slower).
+            velocity_scaling: fraction of the velocity limits, in (0, 1] (default: the
+                robot's ``default_velocity_scaling_factor``).
+            acceleration_scaling: fraction of the acceleration limits, in (0, 1].
+            sample_rate_hz: samples per second of the trajectory (Hz).
+
+        Raises:
+            ValueError: an invalid option or path.
+            PlanningError: the path cannot be timed (the message names joint and time).
+        """
+        joint_path = path.path if isinstance(path, Plan) else path
+        return parameterize_path(self.model, joint_path, TimingOptions(
+            velocity_scaling=velocity_scaling, acceleration_scaling=acceleration_scaling,
+            sample_rate_hz=sample_rate_hz))
+
+    # ------------------------------------------------------------------ execution
+    def execute(self, motion: Plan | JointTrajectory, *, wait: bool = True,
+                timeout: float | None = None) -> ExecutionHandle:
+        """Execute a plan or a trajectory on the connected backend (a mock backend is
+        connected first if there is none).
+
+        Args:
+            motion: what to execute; it must start where the joints are.
+            wait: block until the motion ends, then update the current state.
+            timeout: seconds to wait at most (None: as long as the motion takes).
+
+        Returns:
+            The execution's handle (done when ``wait``; else poll it, ``wait()`` on it
+            or ``cancel()`` it, then call :meth:`sync`).
+
+        Raises:
+            TrajectoryRejectedError: refused before anything moved (an unknown joint, a
+                start away from the current state, a servo angle out of range).
+            BackendBusyError: joints already moving under another trajectory.
+            BackendError: the motion failed (``wait`` only); ExecutionCancelledError
+                when it was stopped.
+        """
+        trajectory = motion.trajectory if isinstance(motion, Plan) else motion
+        backend = self._backend if self._backend is not None else self.connect("mock")
+        handle = backend.execute(trajectory)
+        if wait:
+            try:
+                handle.wait(timeout)
+            finally:
+                self.sync()
+        return handle
+
+    def stop(self) -> None:
+        """Stop every motion of the connected backend where it is."""
+        if self._backend is not None:
+            self._backend.stop()
+            self.sync()
+
+    # ------------------------------------------------------------------ tasks
+    def start_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
+                   backend: BackendKind | None = None, speed: float | None = None,
+                   seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
+                   on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
+        """Start a task on this cell in a background thread; returns at once.
+
+        The task is loaded and checked first (structure, then every name it uses
+        against the cell), so an invalid task raises here, before anything moves.
+
+        Args:
+            task: a task file, a shipped example's name (``"pick_place"``), or a
+                :class:`~taskrunner.Task` built in Python.
+            parameters: values of the task's parameters (a file task's; strings are
+                parsed as on the command line).
+            backend: connect this backend first (see :meth:`connect`); default the
+                connected one, or mock.
+            speed: with ``backend``: its replay speed.
+            seed: seeds every planner call of the run.
+            runs_dir: write the run record there as ``<run_id>.json`` (None: not written).
+            on_event: called with every event of the run, in the run's thread.
+
+        Raises:
+            TaskSpecError: the task is invalid (every problem listed, each at its task
+                file's line, or the line of the Python step).
+            InputError: a task file written for another cell.
+        """
+        spec = self._spec(task, parameters)
+        return self._start(spec, task.to_text(self._cell) if isinstance(task, Task) else None,
+                           backend, speed, seed, runs_dir, on_event)
+
+    def _start(self, spec: TaskSpec, text: str | None, backend: BackendKind | None,
+               speed: float | None, seed: int, runs_dir: str | os.PathLike[str] | None,
+               on_event: Callable[[RunEvent], None] | None) -> TaskRun:
+        if backend is not None:
+            self.connect(backend, speed=speed)
+        machine = self._backend if self._backend is not None else self.connect("mock")
+        return start_run(spec, self._cell, machine, seed=seed, backend_name=self._backend_kind,
+                         runs_dir=Path(runs_dir) if runs_dir is not None else None,
+                         on_event=on_event, on_end=self.sync, task_text=text)
+
+    def run_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
+                 backend: BackendKind | None = None, speed: float | None = None,
+                 seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
+                 on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
+        """Run a task on this cell to its end; returns its result (see
+        :meth:`start_task` for the arguments). A failed run is a result with
+        ``status == "failed"``, not an exception; an invalid task raises."""
+        return self.start_task(task, parameters=parameters, backend=backend, speed=speed,
+                               seed=seed, runs_dir=runs_dir, on_event=on_event).wait()
+
+    # ------------------------------------------------------------------ internals
+    def _spec(self, task: TaskLike, parameters: Mapping[str, object] | None) -> TaskSpec:
+        if isinstance(task, Task):
+            if parameters:
+                raise ValueError("'parameters' are for task files; a Task built in Python "
+                                 "takes its values directly")
+            return task.spec(self._cell)
+        if not isinstance(task, (str, os.PathLike)):
+            raise ValueError(f"'task' must be a task file, an example's name or a Task "
+                             f"(got {task!r})")
+        spec = load_task(resolve_task(task), parameters)
+        if self.path is None or spec.cell.resolve() != self.path.resolve():
+            raise InputError(f"task {spec.name!r} is written for cell {str(spec.cell)!r}, "
+                             f"not for this workcell ({self.name!r}, {self.path}); "
+                             "use taskrunner.run_task() to run it in its own cell",
+                             spec.path, spec.loc.line if spec.loc else None)
+        from taskrunner.tasks.names import check_names
+        from taskrunner.tasks.problem import raise_for_problems
+
+        raise_for_problems(check_names(spec, self._cell))
+        return spec
+
+    def _goal(self, to: str | None, joints: Mapping[str, float] | None, pose: Pose | None,
+              position: Position | None, link: str | None) -> Goal:
+        given = [name for name, value in (("to", to), ("joints", joints), ("pose", pose),
+                                          ("position", position)) if value is not None]
+        if len(given) != 1:
+            got = f" (got {' and '.join(repr(g) for g in given)})" if given else ""
+            raise ValueError(f"'plan' needs exactly one of 'to', 'joints', 'pose' or "
+                             f"'position'{got}")
+        if to is not None:
+            return NamedGoal(to)
+        if joints is not None:
+            return JointGoal(joints)
+        if pose is not None:
+            if not isinstance(pose, Pose):
+                raise ValueError(f"'pose' must be a taskrunner.Pose (got {pose!r})")
+            return PoseGoal(pose, link)
+        assert position is not None
+        return PoseGoal(Pose(_xyz("position", position)), link, position_only=True)
+
+    def _state_vector(self, values: StateLike) -> np.ndarray:
+        return self.model.state_with(self._scene.state, values)
+
+    def _full(self, q: np.ndarray) -> JointState:
+        return JointState(self.joint_names, q)
+
+
+def _xyz(name: str, values: Position) -> tuple[float, float, float]:
+    try:
+        x, y, z = (float(v) for v in values)
+    except (TypeError, ValueError):
+        raise ValueError(f"'{name}' must be 3 numbers x, y, z in metres (got {values!r})") from None
+    return (x, y, z)
+
+
+def _waypoint_list(waypoints: Pose | Position | Sequence[Pose | Position]) -> list[Pose | Position]:
+    if isinstance(waypoints, Pose):
+        return [waypoints]
+    items: list[Any] = list(waypoints)
+    if items and all(isinstance(v, (int, float)) for v in items):
+        return [tuple(items)]  # one x, y, z position
+    return items
+
+
+def _waypoint(value: Pose | Position, here: Pose) -> Pose:
+    """A waypoint pose: a Pose as given; a position with the link's start orientation."""
+    if isinstance(value, Pose):
+        return value
+    return Pose(_xyz("waypoints", value), here.quat)
+
+
+def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
+             backend: BackendKind = "mock", speed: float | None = None, seed: int = 0,
+             runs_dir: str | os.PathLike[str] | None = None,
+             on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
+    """Run a task in its own cell, like ``run-task TASK``; returns its result.
+
+    Args:
+        task: a task file or a shipped example's name (the cell is the one the file
+            names), or a :class:`~taskrunner.Task` built with a ``cell``.
+        parameters: values of the task file's parameters.
+        backend: ``"mock"``, ``"sim"``, ``"serial"`` or ``"http"`` (serial on the port
+            in ``hardware.yaml``; for other settings use :meth:`Workcell.connect`).
+        speed: replay speed of mock or sim, a multiple of real time.
+        seed: seeds every planner call.
+        runs_dir: write the run record there (None: not written).
+        on_event: called with every event of the run.
+
+    Raises:
+        TaskSpecError: the task is invalid (every problem with its file:line).
+    """
+    with _workcell_of(task, parameters) as cell:
+        return cell.run_task(task, parameters=parameters, backend=backend, speed=speed,
+                             seed=seed, runs_dir=runs_dir, on_event=on_event)
+
+
+def start_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
+               backend: BackendKind = "mock", speed: float | None = None, seed: int = 0,
+               runs_dir: str | os.PathLike[str] | None = None,
+               on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
+    """Start a task in its own cell in a background thread (see :func:`run_task`);
+    iterate over :meth:`TaskRun.events`, ``cancel()`` or ``wait()`` for the result.
+    The run's backend is closed when the run ends."""
+    cell = _workcell_of(task, parameters)
+    try:
+        run = cell.start_task(task, parameters=parameters, backend=backend, speed=speed,
+                              seed=seed, runs_dir=runs_dir, on_event=on_event)
+    except BaseException:
+        cell.close()
+        raise
+    run.add_done_callback(cell.close)
+    return run
+
+
+def _workcell_of(task: TaskLike, parameters: Mapping[str, object] | None) -> Workcell:
+    """A new workcell for the cell ``task`` is written for."""
+    if isinstance(task, Task):
+        if task.cell is None:
+            raise ValueError(f"task {task.name!r} has no 'cell': build it with "
+                             "Task(..., cell=...) or run it with Workcell.run_task")
+        return load_workcell(task.cell)
+    if not isinstance(task, (str, os.PathLike)):
+        raise ValueError(f"'task' must be a task file, an example's name or a Task "
+                         f"(got {task!r})")
+    return load_workcell(load_task(resolve_task(task), parameters).cell)
