@@ -217,9 +217,13 @@ def _time_curve(kit: SimpleNamespace, curve: Any, ss: np.ndarray, vmax: np.ndarr
     v_lim, a_lim = vmax / margin, amax / margin
     constraints = kit.constraints(tuple(v_lim), tuple(a_lim))
     for _ in range(_REFINEMENTS + 1):
-        algorithm = kit.toppra.algorithm.TOPPRA(constraints, curve, gridpoints=grid,
-                                                solver_wrapper="seidel")
-        _, sd, _ = algorithm.compute_parameterization(0.0, 0.0)
+        try:
+            algorithm = kit.toppra.algorithm.TOPPRA(constraints, curve, gridpoints=grid,
+                                                    solver_wrapper="seidel")
+            _, sd, _ = algorithm.compute_parameterization(0.0, 0.0)
+        except (ValueError, ArithmeticError, IndexError) as exc:  # toppra's own complaints
+            raise PlanningError(f"toppra could not time the path of {ss[-1]:.4g} rad over "
+                                f"{len(grid) - 1} stages: {type(exc).__name__}: {exc}") from exc
         if sd is None or not np.all(np.isfinite(sd)):
             code = algorithm.problem_data.return_code
             raise PlanningError(f"toppra could not time the path ({code})")
@@ -245,7 +249,10 @@ def _gridpoints(curve: Any, ss: np.ndarray) -> np.ndarray:
     points, last = [0.0], 0.0
     for k, n in enumerate(splits):
         if n > 1:
-            points.extend(ss[k] + h[k] * np.arange(1, n + 1) / n)
+            # ss[k] + h[k] can differ from ss[k + 1] by one float step: end on ss[k + 1]
+            # itself (toppra wants the last gridpoint to be exactly the path's end).
+            points.extend(ss[k] + h[k] * np.arange(1, n) / n)
+            points.append(ss[k + 1])
         elif k + 1 == len(h) or splits[k + 1] > 1 or ss[k + 1] + h[k + 1] - last > _MAX_STAGE:
             points.append(ss[k + 1])
         else:
@@ -255,7 +262,15 @@ def _gridpoints(curve: Any, ss: np.ndarray) -> np.ndarray:
         # Merging straight intervals can leave a short path with a single stage, which
         # cannot go rest to rest: keep at least _MIN_STAGES stages.
         points = sorted(set(points) | set(np.linspace(0.0, ss[-1], _MIN_STAGES + 1)))
-    return np.array(points)
+    grid = np.array(points)
+    # The union above can hold two points a float step apart: keep stages of real length.
+    keep = np.concatenate([[True], np.diff(grid) > _SAME * max(1.0, ss[-1])])
+    keep[-1] = True
+    grid = grid[keep]
+    if len(grid) > 2 and grid[-1] - grid[-2] <= _SAME * max(1.0, ss[-1]):
+        grid = np.delete(grid, -2)
+    grid[0], grid[-1] = ss[0], ss[-1]
+    return grid
 
 
 def _sample(curve: Any, grid: np.ndarray, sd: np.ndarray, rate: float) -> tuple[np.ndarray, ...]:

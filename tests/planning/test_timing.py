@@ -310,3 +310,66 @@ def test_trajectory_json_is_exact_and_refuses_non_finite_values():
     bad = JointTrajectory(("a", "b"), times, rows, rows * np.nan, np.zeros_like(rows))
     with pytest.raises(PlanningError, match="non-finite velocities"):
         timing.trajectory_json(bad)
+
+
+# ------------------------------------------------------------------ short motions
+# Regression: this 0.07 rad Panda move once gave a toppra grid ending one float step past
+# the path's end ("Invalid manually supplied gridpoints", a raw ValueError).
+_GRID_PAST_THE_END = (
+    [0.6605690515989162, -0.8771198328386813, -1.719534844242001, -0.7946537706799608,
+     -0.5078457760317465, 2.534682025332808, -0.25804133327866374],
+    [0.7022318647988337, -0.9449850878947278, -1.772486651735211, -0.8354888484307719,
+     -0.48869198887938464, 2.5410778867174195, -0.24757713298894984])
+
+
+def test_a_short_move_whose_grid_could_end_past_the_path_is_timed(panda_model):
+    names = panda_model.group("arm").joint_names
+    trajectory = parameterize_path(panda_model, JointPath(names, np.array(_GRID_PAST_THE_END)))
+    assert np.allclose(trajectory.positions[-1], _GRID_PAST_THE_END[1], atol=0, rtol=0)
+
+
+def test_a_toppra_value_error_is_a_planning_error_naming_toppra(panda_model, monkeypatch):
+    kit = timing._toppra_kit()
+
+    class Refusing:
+        def __init__(self, *args, **kwargs):
+            raise ValueError("Invalid manually supplied gridpoints.")
+
+    monkeypatch.setattr(kit.toppra.algorithm, "TOPPRA", Refusing)
+    path = _random_path(panda_model, "arm", 3, seed=5)
+    with pytest.raises(PlanningError, match="toppra could not time the path .*ValueError: "
+                                            "Invalid manually supplied gridpoints"):
+        parameterize_path(panda_model, path)
+
+
+@pytest.mark.parametrize("robot", ["servo_arm", "panda"])
+def test_random_short_motions_are_always_timed(robot, request):
+    """Property: any straight move of 0.001-0.2 rad well inside the limits is timed, ends
+    exactly on its goal and respects the scaled limits (seeded, 400 cases per robot)."""
+    from hypothesis import HealthCheck, given, settings
+    from hypothesis import strategies as st
+
+    model = request.getfixturevalue(f"{robot}_model")
+    names = model.group("arm").joint_names
+    idx = model.indices(names)
+    lower, upper = model.lower[idx], model.upper[idx]
+    vmax, amax = _limits(model, names, model.instances[0].velocity_scaling,
+                         model.instances[0].acceleration_scaling)
+    unit = st.floats(0.0, 1.0, allow_nan=False)
+
+    @settings(max_examples=400, derandomize=True, deadline=None, database=None,
+              suppress_health_check=list(HealthCheck))
+    @given(start=st.lists(unit, min_size=len(names), max_size=len(names)),
+           direction=st.lists(st.floats(-1.0, 1.0), min_size=len(names), max_size=len(names)),
+           length=st.floats(0.001, 0.2))
+    def short_move_is_timed(start, direction, length):
+        d = np.array(direction)
+        if np.max(np.abs(d)) < 1e-3:
+            d[0] = 1.0
+        a = lower + (0.2 + 0.6 * np.array(start)) * (upper - lower)
+        b = a + length * d / np.max(np.abs(d))
+        trajectory = parameterize_path(model, JointPath(names, np.vstack([a, b])))
+        assert np.array_equal(trajectory.positions[-1], b)
+        _assert_within(trajectory, vmax, amax)
+
+    short_move_is_timed()
