@@ -18,7 +18,8 @@ from __future__ import annotations
 
 import importlib
 import os as _os
-from typing import TYPE_CHECKING, Any
+
+TYPE_CHECKING = False  # typing itself takes milliseconds to import; type checkers know this name
 
 # Small matrices everywhere: OpenBLAS spreading a product over threads costs 10-50 ms per
 # call on a loaded 2-core machine (measured in toppra's setup). Set before numpy loads;
@@ -28,6 +29,8 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 __version__ = "0.1.0"
 
 if TYPE_CHECKING:
+    from typing import Any
+
     from taskrunner.builder import (
         AddObject,
         Attach,
