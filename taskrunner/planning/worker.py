@@ -277,6 +277,11 @@ class PlanningWorker:
                     handle._outcome = (kind, payload)
                     self._pending = None
                     self._cancel.value = _NO_CANCEL
+                    if kind != "ok":
+                        # The worker may have failed while restoring the scene we sent:
+                        # send the whole scene again with the next request, so one failed
+                        # plan never leaves the worker planning in a stale world.
+                        self._sent_scene = None
                     return
             elif not self._process.is_alive():
                 self._died(handle)

@@ -152,3 +152,38 @@ def test_planned_motions_are_timed_where_the_run_options_say(tmp_path, repo_root
     if planner_times:  # what ran is what the planner timed
         assert [t for t in executed if len(t.times) > 1] == \
             [r.trajectory for r in returned if len(r.trajectory.times) > 1]
+
+
+def test_a_failed_timing_fails_the_run_cleanly_and_the_cell_stays_usable(tmp_path, repo_root,
+                                                                        monkeypatch):
+    """toppra raising (as it did with a grid ending past the path) is a planning failure
+    with file:line, not a ValueError out of the run; the next run, with the same planning
+    worker and backend, plans and moves."""
+    from taskrunner.planning import timing
+    from taskrunner.planning.worker import PlanningWorker
+
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle}\n")
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = MockBackend(names, dict(zip(names, cell.start_state())))
+    kit = timing._toppra_kit()
+    real = kit.toppra.algorithm.TOPPRA
+    calls = []
+
+    def refusing_once(*args, **kwargs):
+        calls.append(1)
+        if len(calls) == 1:
+            raise ValueError("Invalid manually supplied gridpoints.")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(kit.toppra.algorithm, "TOPPRA", refusing_once)
+    with PlanningWorker(spec.cell) as worker:
+        failed = Runner(spec, cell, backend, worker, RunOptions(runs_dir=tmp_path / "runs")).run()
+        assert (failed.status, failed.exit_code) == ("failed", EXIT_CODES["planning"])
+        assert failed.error.startswith(f"{path}:4: toppra could not time the path")
+        again = Runner(load_task(path), cell, backend, worker).run()
+    assert again.status == "succeeded", again.error
+    candle = cell.model.named_state("arm", "Candle").as_dict()
+    state = backend.joint_state().as_dict()
+    assert all(abs(state[name] - value) < 1e-6 for name, value in candle.items())
