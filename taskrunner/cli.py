@@ -2,8 +2,9 @@
 
 Subcommands:
 
-- ``run-task FILE [--backend mock|sim] [--param k=v]... [--speed X] [--seed N]``: run a
-  task; a live tree in a terminal, plain log lines otherwise, a summary at the end.
+- ``run-task FILE [--backend mock|sim] [--param k=v]... [--speed X] [--seed N]``: check a
+  task as ``check`` does (``--no-check`` skips it; nothing moves when it finds a problem),
+  then run it; a live tree in a terminal, plain log lines otherwise, a summary at the end.
 - ``run-task check FILE``: report every problem of a task at once, with file:line.
 - ``run-task demo [CELL]``: load a cell, solve IK for a point in front of the arm, check
   it for collisions, plan a collision-free path there and time it.
@@ -162,26 +163,45 @@ def cmd_check(args: argparse.Namespace) -> int:
     from taskrunner.tree.check import check_task
 
     report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
-    for problem in report.problems:
-        print(problem, file=sys.stderr)
     if report.problems:
-        print(f"{args.file}: {len(report.problems)} problem(s)", file=sys.stderr)
+        _print_problems(args.file, report.problems)
         return EXIT_INVALID
     print(f"{args.file}: ok ({report.steps} steps checked against cell {report.cell!r})")
     return EXIT_OK
 
 
+def _print_problems(file: str, problems: Sequence[object], tail: str = "") -> None:
+    for problem in problems:
+        print(problem, file=sys.stderr)
+    print(f"{file}: {len(problems)} problem(s){tail}", file=sys.stderr)
+
+
 def cmd_run(args: argparse.Namespace) -> int:
+    from taskrunner.errors import TaskSpecError
     from taskrunner.resources import resolve_task
+    from taskrunner.runtime.preflight import check_before_run
     from taskrunner.runtime.session import run_task_file
 
+    if args.speed is not None and not (args.speed > 0 and np.isfinite(args.speed)):
+        raise InputError(f"'--speed' must be a positive number (got {args.speed})")
+    path = resolve_task(args.file)
+    parameters = _parameters(args.param)
+    if not args.no_check:
+        started = time.perf_counter()
+        try:
+            report = check_before_run(path, parameters, seed=args.seed)
+        except TaskSpecError as exc:
+            problems = getattr(exc, "problems", None) or [exc]
+            _print_problems(args.file, problems, "; nothing moved (--no-check runs anyway)")
+            return EXIT_INVALID
+        print(f"{args.file}: checked {report.steps} steps in "
+              f"{time.perf_counter() - started:.2f} s", flush=True)
     runs_dir = Path(args.runs_dir or os.environ.get("TASKRUNNER_RUNS_DIR") or "runs")
-    return run_task_file(resolve_task(args.file), backend=args.backend,
-                         parameters=_parameters(args.param),
+    return run_task_file(path, backend=args.backend, parameters=parameters,
                          speed=args.speed, seed=args.seed, runs_dir=runs_dir,
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
                          port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
-                         home=args.home)
+                         home=args.home, check=False)
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
@@ -245,15 +265,16 @@ def cmd_hw(args: argparse.Namespace) -> int:
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
-    import uvicorn
+    import shlex
 
     from taskrunner.api import Settings, create_app
+    from taskrunner.api.serving import serve
 
     try:
         settings = Settings.from_env(token=args.token, planner=args.planner,
-                                     state_dir=args.state_dir)
+                                     data_dir=args.data_dir)
         if args.no_auth:
-            settings = Settings(**{**vars(settings), "auth": False, "token": None})
+            settings = settings.replaced(auth=False, token=None)
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_INVALID
@@ -264,10 +285,12 @@ def cmd_serve(args: argparse.Namespace) -> int:
               "(--no-auth)", flush=True)
     else:
         made = "" if settings.token else " (made for this session; set TASKRUNNER_TOKEN to fix it)"
+        reads = ("reads are open (TASKRUNNER_OPEN_READS)" if settings.open_reads
+                 else "every endpoint but /health and /docs needs it")
         print(f"taskrunner API at {base} (docs: {base}/docs)\n"
-              f"  token{made}:\n    {app.state.token}\n"
-              f"  send it as: Authorization: Bearer <token>", flush=True)
-    uvicorn.run(app, host=args.host, port=args.port, log_level=args.log_level)
+              f"  token{made}; {reads}; for curl, paste:\n"
+              f"export TASKRUNNER_TOKEN={shlex.quote(app.state.token)}", flush=True)
+    serve(app, settings, args.host, args.port, args.log_level)
     return EXIT_OK
 
 
@@ -331,6 +354,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--plain", action="store_true", help="log lines even in a terminal")
     run.add_argument("--in-process", action="store_true",
                      help="plan in this process instead of a worker process")
+    run.add_argument("--no-check", action="store_true",
+                     help="skip the check run before anything moves (run-task check)")
     check = sub.add_parser("check", help="check a task file; nothing moves")
     check.add_argument("file", help="task file (YAML), or a shipped example's name")
     check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
@@ -370,8 +395,9 @@ def _parser() -> argparse.ArgumentParser:
                        help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
     serve.add_argument("--no-auth", action="store_true",
                        help="run open: no endpoint needs a token")
-    serve.add_argument("--state-dir", default=None,
-                       help="where the run database goes (TASKRUNNER_STATE_DIR, else state/)")
+    serve.add_argument("--data-dir", "--state-dir", dest="data_dir", default=None,
+                       help="where the server keeps its data, the run database "
+                            "(TASKRUNNER_DATA_DIR, else state/)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
                        help="plan in a worker process per run (default) or in-process")
     serve.add_argument("--log-level", default="info", help="uvicorn's log level (info)",

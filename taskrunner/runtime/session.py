@@ -10,6 +10,7 @@ run before anything moves. A third Ctrl-C gives up waiting for the motion to sto
 
 from __future__ import annotations
 
+import math
 import signal
 import sys
 import threading
@@ -34,6 +35,7 @@ from taskrunner.backends.base import Backend
 from taskrunner.errors import InputError
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.events import EventLog, RunEvent
+from taskrunner.runtime.preflight import check_before_run
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks.loader import load_task
@@ -59,16 +61,18 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     build of the firmware run faster than real time (``run-task firmware-sim --speedup``).
 
     Raises:
-        InputError: a servo backend on a cell without exactly one calibrated robot, or
-            http without a URL.
+        InputError: a speed that is not a positive number, a servo backend on a cell
+            without exactly one calibrated robot, or http without a URL.
         BackendError: the port or URL does not answer as the firmware does.
     """
+    if speed is not None and not (isinstance(speed, (int, float)) and 0 < speed < math.inf):
+        raise InputError(f"'speed' must be a positive number (got {speed!r})")
     names = cell.model.joint_names
     start = dict(zip(names, cell.start_state()))
     if kind == "mock":
         return MockBackend(names, start, MockOptions(speed=speed))
     if kind == "sim":
-        return SimBackend(names, start, SimOptions(speed=speed or 1.0))
+        return SimBackend(names, start, SimOptions(speed=1.0 if speed is None else speed))
     if kind not in BACKENDS:
         raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     calibration = servo_calibration(cell)
@@ -121,17 +125,22 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   speed: float | None = None, seed: int = 0, runs_dir: Path | None = None,
                   live: bool = False, worker: bool = True, out: TextIO | None = None,
                   port: str | None = None, url: str | None = None,
-                  firmware_speedup: float = 1.0, home: bool = False) -> int:
+                  firmware_speedup: float = 1.0, home: bool = False,
+                  check: bool = True) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
-    Called from the main thread, Ctrl-C and SIGTERM cancel the run (see the module
-    docstring) instead of raising.
+    With ``check``, the task is checked first (:func:`check_before_run`) and nothing
+    moves when the check finds a problem. Called from the main thread, Ctrl-C and
+    SIGTERM cancel the run (see the module docstring) instead of raising.
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
-            cell; the CLI maps it to exit code 2.
+            cell, or a check that found problems (all in the TaskSpecError's
+            ``problems``); the CLI maps it to exit code 2.
     """
     out = out or sys.stdout
+    if check:
+        check_before_run(path, parameters, seed=seed)
     stop = _StopSignals(out)
     with stop.installed():
         spec = load_task(path, parameters or {})
