@@ -165,14 +165,18 @@ class TaskRun:
             result = _result(record)
         except BaseException as exc:  # handed to wait(): a run's thread must not die silently
             error = exc
-        for callback in self._done_callbacks:
-            try:
-                callback()
-            except Exception as exc:  # a failing callback must not hide the run's result
-                error = error or exc
-        with self._changed:
-            self._result, self._error = result, error
-            self._changed.notify_all()
+        while True:  # callbacks added while others run are called too, before wait() returns
+            with self._changed:
+                callbacks, self._done_callbacks = self._done_callbacks, []
+                if not callbacks:
+                    self._result, self._error = result, error
+                    self._changed.notify_all()
+                    return
+            for callback in callbacks:
+                try:
+                    callback()
+                except Exception as exc:  # e.g. reading a dead backend: wait() raises it
+                    error = error or exc
 
 
 def _result(record: RunRecord) -> RunResult:

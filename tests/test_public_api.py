@@ -75,6 +75,14 @@ def test_a_workcell_loads_from_a_shipped_name_a_path_or_a_robot(table):
         taskrunner.load_workcell("no_such_cell")
 
 
+def test_a_moveit_config_package_loads_and_plans():
+    package = Path(__file__).parent / "robot" / "fixtures" / "ws" / "src" / "mini_moveit_config"
+    mini = taskrunner.load_workcell(package)
+    assert mini.name == "mini" and "arm" in mini.groups
+    plan = mini.plan("arm", to="home")
+    assert plan.duration > 0 and plan.trajectory.names == mini.model.group("arm").joint_names
+
+
 def test_plan_to_a_named_pose_is_timed_and_executes_on_the_mock(cell):
     plan = cell.plan("arm", to="PickUp", velocity_scaling=1.0)
     assert plan.group == "arm" and plan.fraction == 1.0 and plan.complete
