@@ -16,7 +16,6 @@ pydantic load when a workcell or a step is first made).
 
 from __future__ import annotations
 
-import importlib
 import os as _os
 
 TYPE_CHECKING = False  # typing itself takes milliseconds to import; type checkers know this name
@@ -112,6 +111,8 @@ def __getattr__(name: str) -> Any:
     home = _HOMES.get(name)
     if home is None:
         raise AttributeError(f"module 'taskrunner' has no attribute {name!r}")
+    import importlib
+
     value = getattr(importlib.import_module(home), name)
     globals()[name] = value  # later lookups skip this function
     return value
