@@ -14,6 +14,7 @@ from fastapi import FastAPI
 from taskrunner.api.cells import CellRegistry, settle_heap
 from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
+from taskrunner.api.requestwork import RequestWork
 from taskrunner.api.routers import cells, health, plan, runs, tasks
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
@@ -49,13 +50,19 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                         marked)
         registry = CellRegistry(settings.cells_dir,
                                 {"sim": settings.sim_speed, "mock": settings.mock_speed},
-                                settings.planner, store, settings.planner_nice)
+                                settings.planner, store, settings.planner_nice,
+                                policy=settings.folder_policy())
         manager = RunManager(registry, store, tick_hz=settings.tick_hz)
+        work = RequestWork(settings.check_isolation, settings.check_timeout_s,
+                           settings.check_memory_mb, settings.check_workers)
+        work.start()
         app.state.cells, app.state.manager, app.state.store = registry, manager, store
+        app.state.work = work
         settle_heap()
         try:
             yield
         finally:
+            work.close()
             manager.shutdown(settings.shutdown_timeout_s)
             registry.close()
             store.close()
@@ -65,8 +72,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         title="taskrunner",
         version="0.1.0",
         description="Run robot-cell tasks, follow them live, cancel them, check them, plan "
-                    "motions. Endpoints that move a robot or change state need the bearer "
-                    "token.",
+                    "motions. Every endpoint but /health and these docs needs the bearer "
+                    "token (reads too, unless the server opens them: TASKRUNNER_OPEN_READS).",
         lifespan=lifespan,
     )
     app.state.settings = settings

@@ -1,5 +1,5 @@
-"""Bearer-token checks: every endpoint that moves a robot or changes state needs the token;
-reads need it when ``read_requires_auth`` is set; ``auth`` off runs open."""
+"""Bearer-token checks: every endpoint but ``/health`` (and the OpenAPI docs) needs the
+token; reads answer without it only when ``open_reads`` is set; ``auth`` off runs open."""
 
 from __future__ import annotations
 
@@ -40,6 +40,6 @@ async def require_write(request: Request,
 
 async def require_read(request: Request,
                  credentials: HTTPAuthorizationCredentials | None = Depends(_bearer)) -> None:
-    """Dependency of read endpoints: checks the token only if reads require it."""
-    if request.app.state.settings.read_requires_auth:
+    """Dependency of read endpoints: checks the token unless reads are open."""
+    if not request.app.state.settings.open_reads:
         _check(request, credentials)

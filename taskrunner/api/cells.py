@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from taskrunner.backends.base import Backend
+from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
@@ -123,8 +124,10 @@ class CellRegistry:
     """Cells by id (file name in ``cells_dir`` without ``.yaml``) and by path."""
 
     def __init__(self, cells_dir: Path, speeds: dict[str, float | None],
-                 planner_kind: str, store: Any = None, planner_nice: int = 0) -> None:
+                 planner_kind: str, store: Any = None, planner_nice: int = 0,
+                 policy: FolderPolicy | None = None) -> None:
         self.cells_dir = cells_dir
+        self.policy = policy
         self._store = store
         self._speeds = speeds
         self._planner_kind = planner_kind
@@ -163,7 +166,9 @@ class CellRegistry:
             session = self._sessions.get(path)
         if session is not None:
             return session
-        cell = load_cell(path)  # outside the lock: loading meshes takes a while
+        # Outside the lock (loading meshes takes a while); under the folder policy: a
+        # task may name any cell file, only those of the allowed folders load.
+        cell = load_cell(path, policy=self.policy)
         fresh = CellSession(path, cell, self._speeds, self._planner_kind, self._planner_nice)
         if self._store is not None:
             for group, name, joints, _ in self._store.poses(self.id_of(path)):

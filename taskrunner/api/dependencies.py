@@ -9,11 +9,12 @@ from __future__ import annotations
 from fastapi import Request
 
 from taskrunner.api.cells import CellRegistry
+from taskrunner.api.requestwork import RequestWork
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
 
-__all__ = ["get_cells", "get_manager", "get_settings", "get_store"]
+__all__ = ["get_cells", "get_manager", "get_settings", "get_store", "get_work"]
 
 
 async def get_settings(request: Request) -> Settings:
@@ -30,3 +31,7 @@ async def get_cells(request: Request) -> CellRegistry:
 
 async def get_store(request: Request) -> RunStore:
     return request.app.state.store  # type: ignore[no-any-return]
+
+
+async def get_work(request: Request) -> RequestWork:
+    return request.app.state.work  # type: ignore[no-any-return]

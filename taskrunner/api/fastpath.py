@@ -106,7 +106,7 @@ def _authorised(state: Any, scope: Scope) -> bool:
     reads need no token, or the request carries the right one. False means: let the app
     check it (and answer 401)."""
     token: str | None = state.token
-    if token is None or not state.settings.read_requires_auth:
+    if token is None or state.settings.open_reads:
         return True
     for name, value in scope["headers"]:
         if name == b"authorization":

@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
@@ -309,22 +308,3 @@ class RunManager:
                 live.record.error = "the server stopped while the run was in flight"
                 self.store.save(live.record, tree=live.runner.snapshot())
 
-
-def resolve_task_file(tasks_dir: Path, name: str) -> Path:
-    """The task file ``name`` (a plain file name, ``.yaml`` optional) in ``tasks_dir``.
-
-    Raises:
-        InputError: a path rather than a file name, or no such file.
-    """
-    from taskrunner.errors import InputError
-
-    if not name or "/" in name or "\\" in name or name.startswith("."):
-        raise InputError(f"'task' must be a file name in the tasks folder (got {name!r})")
-    path = tasks_dir / name
-    if not path.suffix:
-        path = path.with_suffix(".yaml")
-    if not path.is_file():
-        known = ", ".join(sorted(p.name for p in tasks_dir.glob("*.yaml"))) or "none"
-        raise InputError(f"'task' must name a task file of the tasks folder (got {name!r}; "
-                         f"known: {known})")
-    return path

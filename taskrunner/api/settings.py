@@ -1,63 +1,79 @@
-"""Settings of the API server, built once from arguments or the environment.
+"""Settings of the API server: one :class:`Settings`, from arguments or ``TASKRUNNER_*``.
 
-Environment variables (all optional):
-
-- ``TASKRUNNER_TOKEN``: the bearer token; with none, :func:`api.app.create_app` makes one.
-- ``TASKRUNNER_NO_AUTH=1``: run open (no token at all).
-- ``TASKRUNNER_READ_REQUIRES_AUTH=1``: GET endpoints need the token too.
-- ``TASKRUNNER_TASKS_DIR``, ``TASKRUNNER_CELLS_DIR``, ``TASKRUNNER_STATE_DIR``: folders.
-- ``TASKRUNNER_MAX_BODY_BYTES``: largest accepted request body (bytes).
-- ``TASKRUNNER_PLANNER``: ``worker`` (a planning process per run, default) or ``inprocess``.
-- ``TASKRUNNER_PLANNER_NICE``: how much lower the planning workers' CPU priority is (10).
-- ``TASKRUNNER_SIM_SPEED``: time scale of the simulated backend (2: twice real time).
+Every field is settable from the environment as ``TASKRUNNER_<FIELD>`` (upper case):
+``TASKRUNNER_TOKEN``, ``TASKRUNNER_OPEN_READS=1``, ``TASKRUNNER_DATA_DIR``,
+``TASKRUNNER_ROBOTS_DIRS`` (folders separated by ``:``), ``TASKRUNNER_CHECK_TIMEOUT_S`` …
+Two older names are still read: ``TASKRUNNER_NO_AUTH=1`` (``auth`` off) and
+``TASKRUNNER_STATE_DIR`` (``data_dir``).
 """
 
 from __future__ import annotations
 
+import contextvars
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Annotated, Any
+
+from pydantic import ValidationError, field_validator, model_validator
+from pydantic_settings import BaseSettings, EnvSettingsSource, NoDecode, SettingsConfigDict
 
 from taskrunner import resources
+from taskrunner.folders import FolderPolicy
 
 __all__ = ["Settings"]
 
 PLANNERS = ("worker", "inprocess")
+ISOLATIONS = ("process", "inprocess")
+_FLAG_TRUE = ("1", "true", "yes", "on")
 
 
-@dataclass(frozen=True)
-class Settings:
+class Settings(BaseSettings):
     """How the server runs.
 
     Attributes:
-        token: the bearer token required by endpoints that move a robot or change state;
-            None with ``auth`` on: the app makes one at start (``app.state.token``).
+        token: the bearer token; None with ``auth`` on: the app makes one at start
+            (``app.state.token``).
         auth: False runs open (the CLI's ``--no-auth``): no endpoint needs a token.
-        read_requires_auth: GET endpoints need the token too.
-        tasks_dir: task files that ``POST /runs`` and ``/tasks/check`` name by file name.
-        cells_dir: cell files; a cell's id is its file name without ``.yaml``.
-        state_dir: where the run database lives (``runs.sqlite``).
+        open_reads: reads (``GET`` runs, cells, events) answer without the token. Off by
+            default: every endpoint but ``/health`` and the OpenAPI docs needs it.
+        tasks_dir: task files that ``POST /runs`` and ``/tasks/check`` name by file
+            name; tasks and their includes load only from here.
+        cells_dir: cell files (a cell's id is its file name without ``.yaml``); cells
+            load only from here.
+        robots_dirs: the only folders robots (URDF, xacro: code) load from; default:
+            the shipped robots. The cells folder is allowed too.
+        data_dir: where the server keeps its data (the run database ``runs.sqlite``).
         max_body_bytes: larger request bodies are refused with 413.
-        planner: ``worker`` plans in a process per run (the event loop and the other runs
-            keep going while OMPL searches); ``inprocess`` plans in the run's thread
-            (tests: no process start-up).
-        planner_nice: how much lower the planning workers' CPU priority is than the
-            server's (Unix ``nice``, 0 to 19): planning gets the cycles the server and
-            the runs' execution leave, and cannot slow their answers.
+        planner: ``worker`` plans in a process per run; ``inprocess`` in the run's
+            thread (tests: no process start-up).
+        planner_nice: how much lower the planning workers' CPU priority is (0 to 19).
         sim_speed: default time scale of the sim backend.
         mock_speed: default replay speed of the mock backend (None: motions end at once).
         tick_hz: behaviour-tree ticks per second.
         shutdown_timeout_s: how long shutdown waits for cancelled runs to stop (s).
+        check_timeout_s: longest a request's task loading or check may take (s); past
+            it the request answers 422 and the work is stopped.
+        check_memory_mb: most memory a check process may use (MiB).
+        check_isolation: ``process`` loads and checks request tasks in a worker
+            process that is killed past the time limit; ``inprocess`` in a thread (the
+            answer comes on time, the work runs on: tests).
+        check_workers: how many checks run at once (more wait, within the time limit).
+        plan_timeout_s: longest a ``/plan`` may take, planner start-up included (s).
+        header_timeout_s: a connection must send its request headers within this (s).
     """
+
+    model_config = SettingsConfigDict(env_prefix="TASKRUNNER_", frozen=True, extra="forbid",
+                                      case_sensitive=False)
 
     token: str | None = None
     auth: bool = True
-    read_requires_auth: bool = False
-    tasks_dir: Path = field(default_factory=resources.tasks_dir)
-    cells_dir: Path = field(default_factory=resources.cells_dir)
-    state_dir: Path = Path("state")
+    open_reads: bool = False
+    tasks_dir: Path = resources.tasks_dir()
+    cells_dir: Path = resources.cells_dir()
+    robots_dirs: Annotated[tuple[Path, ...], NoDecode] = (resources.robots_dir(),)
+    data_dir: Path = Path("state")
     max_body_bytes: int = 1_000_000
     planner: str = "worker"
     planner_nice: int = 10
@@ -65,64 +81,228 @@ class Settings:
     mock_speed: float | None = None
     tick_hz: float = 100.0
     shutdown_timeout_s: float = 10.0
+    check_timeout_s: float = 20.0
+    check_memory_mb: int = 2048
+    check_isolation: str = "process"
+    check_workers: int = 2
+    plan_timeout_s: float = 60.0
+    header_timeout_s: float = 10.0
 
-    def __post_init__(self) -> None:
-        for name in ("tasks_dir", "cells_dir", "state_dir"):
-            object.__setattr__(self, name, Path(getattr(self, name)).resolve())
-        if self.token is not None and len(self.token) < 8:
-            raise ValueError(f"'token' must be at least 8 characters (got {len(self.token)})")
-        if isinstance(self.max_body_bytes, bool) or not isinstance(self.max_body_bytes, int) \
-                or self.max_body_bytes < 1:
-            raise ValueError(f"'max_body_bytes' must be a positive integer "
-                             f"(got {self.max_body_bytes!r})")
-        if self.planner not in PLANNERS:
-            raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} "
-                             f"(got {self.planner!r})")
-        if isinstance(self.planner_nice, bool) or not isinstance(self.planner_nice, int) \
-                or not 0 <= self.planner_nice <= 19:
-            raise ValueError(f"'planner_nice' must be an integer from 0 to 19 "
-                             f"(got {self.planner_nice!r})")
-        for name in ("sim_speed", "tick_hz", "shutdown_timeout_s"):
-            value = getattr(self, name)
-            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-                raise ValueError(f"'{name}' must be a positive number (got {value!r})")
-        if self.mock_speed is not None and not self.mock_speed > 0:
-            raise ValueError(f"'mock_speed' must be a positive number (got {self.mock_speed!r})")
+    @model_validator(mode="before")
+    @classmethod
+    def _old_names(cls, data: Any) -> Any:
+        if isinstance(data, dict) and "state_dir" in data:
+            data = dict(data)
+            value = data.pop("state_dir")
+            data.setdefault("data_dir", value)
+        return data
+
+    @classmethod
+    def settings_customise_sources(cls, settings_cls: type[BaseSettings], init_settings: Any,
+                                   env_settings: Any, dotenv_settings: Any,
+                                   file_secret_settings: Any) -> tuple[Any, ...]:
+        environ = _ENVIRON.get()
+        if environ is not None:  # from_env(environ): that mapping, not the process's
+            env_settings = _MappingSource(settings_cls, environ)
+        return init_settings, env_settings, _OldEnvNames(settings_cls, environ)
+
+    # ------------------------------------------------------------------ checks
+    @field_validator("token")
+    @classmethod
+    def _token(cls, value: str | None) -> str | None:
+        if value is not None and len(value) < 8:
+            raise ValueError(f"'token' must be at least 8 characters (got {len(value)})")
+        return value or None
+
+    @field_validator("auth", "open_reads", mode="before")
+    @classmethod
+    def _flag(cls, value: Any) -> Any:
+        if isinstance(value, str):
+            return value.strip().lower() in _FLAG_TRUE
+        return value
+
+    @field_validator("tasks_dir", "cells_dir", "data_dir")
+    @classmethod
+    def _folder(cls, value: Path) -> Path:
+        return Path(value).resolve()
+
+    @field_validator("robots_dirs", mode="before")
+    @classmethod
+    def _folders(cls, value: Any) -> Any:
+        if isinstance(value, str | Path):
+            value = [p for p in str(value).split(os.pathsep) if p]
+        return tuple(Path(p).resolve() for p in value)
+
+    @field_validator("max_body_bytes", "check_memory_mb", "check_workers", mode="before")
+    @classmethod
+    def _positive_int(cls, value: Any, info: Any) -> Any:
+        number = _integer(value)
+        if number is None or number < 1:
+            raise ValueError(f"'{info.field_name}' must be a positive integer (got {value!r})")
+        return number
+
+    @field_validator("planner_nice", mode="before")
+    @classmethod
+    def _nice(cls, value: Any) -> Any:
+        number = _integer(value)
+        if number is None or not 0 <= number <= 19:
+            raise ValueError(f"'planner_nice' must be an integer from 0 to 19 (got {value!r})")
+        return number
+
+    @field_validator("sim_speed", "tick_hz", "shutdown_timeout_s", "check_timeout_s",
+                     "plan_timeout_s", "header_timeout_s", mode="before")
+    @classmethod
+    def _positive(cls, value: Any, info: Any) -> Any:
+        number = _number(value)
+        if number is None or not number > 0:
+            raise ValueError(f"'{info.field_name}' must be a positive number (got {value!r})")
+        return number
+
+    @field_validator("mock_speed", mode="before")
+    @classmethod
+    def _optional_positive(cls, value: Any) -> Any:
+        if value is None or value == "":
+            return None
+        number = _number(value)
+        if number is None or not number > 0:
+            raise ValueError(f"'mock_speed' must be a positive number (got {value!r})")
+        return number
+
+    @field_validator("planner")
+    @classmethod
+    def _planner(cls, value: str) -> str:
+        if value not in PLANNERS:
+            raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {value!r})")
+        return value
+
+    @field_validator("check_isolation")
+    @classmethod
+    def _isolation(cls, value: str) -> str:
+        if value not in ISOLATIONS:
+            raise ValueError(f"'check_isolation' must be one of {', '.join(ISOLATIONS)} "
+                             f"(got {value!r})")
+        return value
+
+    # ------------------------------------------------------------------ derived
+    @property
+    def state_dir(self) -> Path:
+        """The older name of :attr:`data_dir`."""
+        return self.data_dir
 
     @property
     def db_path(self) -> Path:
         """The SQLite file of the run records."""
-        return self.state_dir / "runs.sqlite"
+        return self.data_dir / "runs.sqlite"
+
+    @property
+    def allowed_robots(self) -> tuple[Path, ...]:
+        """The folders robots may load from: ``robots_dirs`` and the cells folder."""
+        return (*self.robots_dirs, self.cells_dir)
+
+    def folder_policy(self) -> FolderPolicy:
+        """What requests may make the server load: tasks from the tasks folder, cells
+        from the cells folder, robots from the robot folders."""
+        return FolderPolicy(tasks=(self.tasks_dir,), cells=(self.cells_dir,),
+                            robots=self.allowed_robots)
+
+    def replaced(self, **changes: Any) -> Settings:
+        """These settings with ``changes`` (validated)."""
+        values = {name: getattr(self, name) for name in type(self).model_fields}
+        values.update(changes)
+        token = _ENVIRON.set({})
+        try:
+            return type(self)(**values)
+        finally:
+            _ENVIRON.reset(token)
 
     @classmethod
     def from_env(cls, environ: Mapping[str, str] | None = None, **overrides: object) -> Settings:
-        """Settings from ``TASKRUNNER_*`` variables; ``overrides`` win over them."""
-        env = os.environ if environ is None else environ
-        values: dict[str, object] = {}
-        if env.get("TASKRUNNER_TOKEN"):
-            values["token"] = env["TASKRUNNER_TOKEN"]
-        if "TASKRUNNER_NO_AUTH" in env:
-            values["auth"] = not _flag(env["TASKRUNNER_NO_AUTH"])
-        if "TASKRUNNER_READ_REQUIRES_AUTH" in env:
-            values["read_requires_auth"] = _flag(env["TASKRUNNER_READ_REQUIRES_AUTH"])
-        for key, name in (("TASKS_DIR", "tasks_dir"), ("CELLS_DIR", "cells_dir"),
-                          ("STATE_DIR", "state_dir"), ("PLANNER", "planner")):
-            if env.get(f"TASKRUNNER_{key}"):
-                values[name] = env[f"TASKRUNNER_{key}"]
-        for key, name, kind in (("MAX_BODY_BYTES", "max_body_bytes", int),
-                                ("PLANNER_NICE", "planner_nice", int),
-                                ("SIM_SPEED", "sim_speed", float)):
-            text = env.get(f"TASKRUNNER_{key}")
-            if text:
-                try:
-                    values[name] = kind(text)
-                except ValueError:
-                    raise ValueError(f"TASKRUNNER_{key} must be "
-                                     f"{'an integer' if kind is int else 'a number'} "
-                                     f"(got {text!r})") from None
-        values.update({k: v for k, v in overrides.items() if v is not None})
-        return cls(**values)  # type: ignore[arg-type]
+        """Settings from ``TASKRUNNER_*`` variables (``environ``, default ``os.environ``);
+        ``overrides`` that are not None win over them.
+
+        Raises:
+            ValueError: a bad value; the message names the variable and the expectation.
+        """
+        given = {k: v for k, v in overrides.items() if v is not None}
+        token = _ENVIRON.set(None if environ is None else dict(environ))
+        try:
+            return cls(**given)  # type: ignore[arg-type]
+        except ValidationError as exc:
+            raise ValueError(_messages(exc)) from None
+        finally:
+            _ENVIRON.reset(token)
 
 
-def _flag(value: str) -> bool:
-    return value.strip().lower() in ("1", "true", "yes", "on")
+# The environment from_env reads (None: the process's), for settings_customise_sources.
+_ENVIRON: contextvars.ContextVar[Mapping[str, str] | None] = contextvars.ContextVar(
+    "taskrunner_settings_environ", default=None)
+
+
+def _messages(exc: ValidationError) -> str:
+    """The messages of ``exc``, one per line, each naming its variable."""
+    lines = []
+    for error in exc.errors():
+        field = ".".join(str(p) for p in error["loc"])
+        text = str(error["msg"]).removeprefix("Value error, ")
+        variable = f"TASKRUNNER_{field.upper()}"
+        if text.startswith("'"):
+            lines.append(f"{variable}: {text}")
+        else:
+            lines.append(f"{variable}: '{field}' {text} (got {error.get('input')!r})")
+    return "; ".join(lines)
+
+
+def _integer(value: Any) -> int | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int):
+        return value
+    if isinstance(value, str):
+        text = value.strip()
+        if text.lstrip("-").isdigit():
+            return int(text)
+    return None
+
+
+def _number(value: Any) -> float | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int | float):
+        number = float(value)
+    elif isinstance(value, str):
+        try:
+            number = float(value)
+        except ValueError:
+            return None
+    else:
+        return None
+    return number if math.isfinite(number) else None
+
+
+class _MappingSource(EnvSettingsSource):
+    """``TASKRUNNER_*`` values from a mapping instead of the process environment."""
+
+    def __init__(self, settings_cls: type[BaseSettings], environ: Mapping[str, str]) -> None:
+        self._given = {k.lower(): v for k, v in environ.items()}
+        super().__init__(settings_cls)
+
+    def _load_env_vars(self) -> Mapping[str, str | None]:
+        return self._given
+
+
+class _OldEnvNames:
+    """``TASKRUNNER_NO_AUTH`` and ``TASKRUNNER_STATE_DIR``, the older names of ``auth``
+    (inverted) and ``data_dir``."""
+
+    def __init__(self, settings_cls: type[BaseSettings],
+                 environ: Mapping[str, str] | None = None) -> None:
+        self.environ = os.environ if environ is None else environ
+
+    def __call__(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        if self.environ.get("TASKRUNNER_NO_AUTH"):
+            out["auth"] = self.environ["TASKRUNNER_NO_AUTH"].strip().lower() not in _FLAG_TRUE
+        if self.environ.get("TASKRUNNER_STATE_DIR") and not self.environ.get(
+                "TASKRUNNER_DATA_DIR"):
+            out["data_dir"] = self.environ["TASKRUNNER_STATE_DIR"]
+        return out

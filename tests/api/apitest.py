@@ -12,11 +12,13 @@ from taskrunner.api import Settings
 
 TOKEN = "test-token-0123456789"
 AUTH = {"Authorization": f"Bearer {TOKEN}"}
+NO_TOKEN = {"Authorization": ""}  # overrides a client's default token
 
 
 def make_settings(state_dir: Path, **overrides: Any) -> Settings:
-    values: dict[str, Any] = {"token": TOKEN, "state_dir": state_dir, "planner": "inprocess",
-                              "shutdown_timeout_s": 10.0}
+    values: dict[str, Any] = {"token": TOKEN, "data_dir": state_dir, "planner": "inprocess",
+                              "shutdown_timeout_s": 10.0,
+                              "check_isolation": "inprocess"}
     values.update(overrides)
     return Settings(**values)
 

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from apitest import make_settings
+from apitest import AUTH, make_settings
 from fastapi.testclient import TestClient
 
 from taskrunner.api import Settings, create_app
@@ -19,5 +19,7 @@ def settings(tmp_path: Path) -> Settings:
 
 @pytest.fixture
 def client(settings: Settings) -> Iterator[TestClient]:
-    with TestClient(create_app(settings)) as c:
+    # Every endpoint but /health needs the token: the client sends it (tests of the
+    # answers without it send their own headers).
+    with TestClient(create_app(settings), headers=AUTH) as c:
         yield c

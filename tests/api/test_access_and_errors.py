@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from apitest import AUTH, TOKEN, make_settings
+from apitest import AUTH, NO_TOKEN, TOKEN, make_settings
 from fastapi.testclient import TestClient
 
 from taskrunner.api import Settings, create_app
@@ -13,22 +13,36 @@ from taskrunner.api import Settings, create_app
 
 def test_endpoints_that_change_state_need_the_token(client):
     for method, url in (("post", "/runs"), ("post", "/runs/x/cancel")):
-        answer = client.request(method, url, json={"task": "go_home"})
+        answer = client.request(method, url, json={"task": "go_home"}, headers=NO_TOKEN)
         assert answer.status_code == 401, url
         assert answer.headers["www-authenticate"] == "Bearer"
     wrong = client.post("/runs", json={"task": "go_home"}, headers={"Authorization": "Bearer no"})
     assert wrong.status_code == 401 and wrong.json()["detail"] == "invalid bearer token"
 
 
-def test_reads_are_open_unless_the_setting_says_otherwise(tmp_path: Path):
-    with TestClient(create_app(make_settings(tmp_path / "a"))) as client:
-        assert client.get("/runs").status_code == 200
-    strict = make_settings(tmp_path / "b", read_requires_auth=True)
-    with TestClient(create_app(strict)) as client:
-        for url in ("/runs", "/cells", "/cells/servo_arm_table", "/runs/x"):
-            assert client.get(url).status_code == 401, url
+def test_reads_need_the_token_unless_the_setting_opens_them(tmp_path: Path):
+    with TestClient(headers=AUTH, app=create_app(make_settings(tmp_path / "a"))) as client:
+        for method, url, body in (
+                ("get", "/runs", None), ("get", "/cells", None),
+                ("get", "/cells/servo_arm_table", None), ("get", "/runs/x", None),
+                ("get", "/runs/x/events", None), ("get", "/cells/servo_arm_table/state", None),
+                ("post", "/tasks/check", {"task": "go_home"}),
+                ("post", "/plan", {"cell": "servo_arm_table", "group": "arm", "to": "home"})):
+            assert client.request(method, url, json=body, headers=NO_TOKEN).status_code \
+                == 401, url
         assert client.get("/runs", headers=AUTH).status_code == 200
-        assert client.get("/health").status_code == 200  # never needs a token
+        assert client.get("/health", headers=NO_TOKEN).status_code == 200  # never needs one
+        assert client.get("/openapi.json", headers=NO_TOKEN).status_code == 200  # docs: open
+    opened = make_settings(tmp_path / "b", open_reads=True)
+    with TestClient(headers=AUTH, app=create_app(opened)) as client:
+        assert client.get("/runs", headers=NO_TOKEN).status_code == 200
+        assert client.post("/runs", json={"task": "go_home"}, headers=NO_TOKEN).status_code \
+            == 401
+
+
+def test_open_reads_is_settable_from_the_environment():
+    assert Settings.from_env({}).open_reads is False
+    assert Settings.from_env({"TASKRUNNER_OPEN_READS": "1"}).open_reads is True
 
 
 def test_without_a_configured_token_the_app_makes_one(tmp_path: Path):
@@ -36,19 +50,19 @@ def test_without_a_configured_token_the_app_makes_one(tmp_path: Path):
     token = app.state.token
     assert isinstance(token, str) and len(token) >= 32
     with TestClient(app) as client:
-        assert client.post("/runs/x/cancel").status_code == 401
+        assert client.post("/runs/x/cancel", headers=NO_TOKEN).status_code == 401
         answer = client.post("/runs/x/cancel", headers={"Authorization": f"Bearer {token}"})
         assert answer.status_code == 404
 
 
 def test_running_open_needs_no_token(tmp_path: Path):
-    with TestClient(create_app(Settings(state_dir=tmp_path, auth=False))) as client:
+    with TestClient(headers=AUTH, app=create_app(Settings(state_dir=tmp_path, auth=False))) as client:
         assert client.post("/runs/x/cancel").status_code == 404
         assert client.get("/health").json()["auth"] is False
 
 
 def test_a_too_large_body_is_refused_with_413(tmp_path: Path):
-    with TestClient(create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
+    with TestClient(headers=AUTH, app=create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
         answer = client.post("/runs", json={"yaml": "x" * 2000}, headers=AUTH)
         assert answer.status_code == 413
         assert "at most 1000 bytes" in answer.json()["detail"]
@@ -62,7 +76,7 @@ def _streamed(*parts: bytes):
 def test_a_streamed_body_over_the_limit_is_refused_with_413_and_one_under_it_is_read(
         tmp_path: Path):
     headers = {**AUTH, "content-type": "application/json"}
-    with TestClient(create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
+    with TestClient(headers=AUTH, app=create_app(make_settings(tmp_path, max_body_bytes=1000))) as client:
         big = _streamed(b'{"yaml": "', *[b"x" * 100] * 40, b'"}')
         answer = client.post("/tasks/check", content=big, headers=headers)
         assert answer.status_code == 413
@@ -128,16 +142,20 @@ def test_the_token_must_be_long_enough():
     assert len(TOKEN) >= 8
 
 
-@pytest.mark.parametrize("nice", [-1, 20, 2.5, True, "10"])
+@pytest.mark.parametrize("nice", [-1, 20, 2.5, True, "ten"])
 def test_the_planners_niceness_must_be_an_integer_from_0_to_19(nice):
     with pytest.raises(ValueError, match="'planner_nice' must be an integer from 0 to 19"):
         Settings(planner_nice=nice)
 
 
 @pytest.mark.parametrize(("variable", "text", "message"), [
-    ("TASKRUNNER_PLANNER_NICE", "low", "TASKRUNNER_PLANNER_NICE must be an integer"),
-    ("TASKRUNNER_MAX_BODY_BYTES", "1e6", "TASKRUNNER_MAX_BODY_BYTES must be an integer"),
-    ("TASKRUNNER_SIM_SPEED", "fast", "TASKRUNNER_SIM_SPEED must be a number"),
+    ("TASKRUNNER_PLANNER_NICE", "low", "TASKRUNNER_PLANNER_NICE: 'planner_nice' must be an "
+                                       "integer"),
+    ("TASKRUNNER_MAX_BODY_BYTES", "1e6", "TASKRUNNER_MAX_BODY_BYTES: 'max_body_bytes' must be "
+                                         "a positive integer"),
+    ("TASKRUNNER_SIM_SPEED", "fast", "TASKRUNNER_SIM_SPEED: 'sim_speed' must be a positive "
+                                     "number"),
+    ("TASKRUNNER_CHECK_TIMEOUT_S", "-1", "'check_timeout_s' must be a positive number"),
     ("TASKRUNNER_PLANNER_NICE", "25", "'planner_nice' must be an integer from 0 to 19")])
 def test_bad_environment_values_are_named(variable, text, message):
     with pytest.raises(ValueError, match=message) as raised:

@@ -11,7 +11,7 @@ from types import SimpleNamespace
 from typing import Any
 
 import pytest
-from apitest import AUTH, TOKEN, make_settings, wait_until_done
+from apitest import AUTH, NO_TOKEN, TOKEN, make_settings, wait_until_done
 from fastapi.testclient import TestClient
 from test_detail_cache import FakeClock, FakeRun, reference
 
@@ -79,10 +79,10 @@ def test_other_methods_go_to_the_app(client):
 
 def test_a_recorded_run_not_live_on_this_server_is_read_by_the_route(tmp_path: Path):
     settings = make_settings(tmp_path / "state")
-    with TestClient(create_app(settings)) as first:
+    with TestClient(headers=AUTH, app=create_app(settings)) as first:
         run_id = finished_run(first)
         expected = first.get(f"/runs/{run_id}").json()
-    with TestClient(create_app(settings)) as second:
+    with TestClient(headers=AUTH, app=create_app(settings)) as second:
         answer = second.get(f"/runs/{run_id}")
         fast = fastpath_of(second.app)
         assert answer.status_code == 200 and fast.served == 0
@@ -95,13 +95,13 @@ def test_a_recorded_run_not_live_on_this_server_is_read_by_the_route(tmp_path: P
     (None, 401), ("Bearer wrong-token-000", 401), (f"Basic {TOKEN}", 401),
     (f"Bearer  {TOKEN}", 200), (f"Bearer {TOKEN}", 200), (f"bearer {TOKEN}", 200)])
 def test_when_reads_need_the_token_the_answer_is_the_apps(tmp_path: Path, header, code):
-    settings = make_settings(tmp_path / "state", read_requires_auth=True)
-    with TestClient(create_app(settings)) as client:
+    settings = make_settings(tmp_path / "state", open_reads=False)
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         run_id = finished_run(client)
         fast = fastpath_of(client.app)
         served = fast.served
         answer = client.get(f"/runs/{run_id}",
-                            headers={} if header is None else {"Authorization": header})
+                            headers=NO_TOKEN if header is None else {"Authorization": header})
         assert answer.status_code == code
         assert fast.served == served + (code == 200)
         if code == 401:
@@ -109,18 +109,24 @@ def test_when_reads_need_the_token_the_answer_is_the_apps(tmp_path: Path, header
             assert "token" in answer.json()["detail"]
 
 
-def test_with_reads_open_no_token_is_needed(client):
+def test_with_reads_open_no_token_is_needed(tmp_path: Path):
+    settings = make_settings(tmp_path / "state", open_reads=True)
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
+        _no_token_needed(client)
+
+
+def _no_token_needed(client: TestClient) -> None:
     run_id = finished_run(client)
-    assert client.get(f"/runs/{run_id}").status_code == 200
+    assert client.get(f"/runs/{run_id}", headers=NO_TOKEN).status_code == 200
     assert client.get(f"/runs/{run_id}", headers={"Authorization": "Bearer x"}).status_code \
         == 200
 
 
 # ---------------------------------------------------------------- at the ASGI level
 def _app_with(run: SimpleNamespace, token: str | None = None,
-              read_requires_auth: bool = False) -> SimpleNamespace:
+              open_reads: bool = True) -> SimpleNamespace:
     manager = SimpleNamespace(live=lambda run_id: run if run_id == run.run_id else None)
-    settings = SimpleNamespace(read_requires_auth=read_requires_auth)
+    settings = SimpleNamespace(open_reads=open_reads)
     return SimpleNamespace(state=SimpleNamespace(manager=manager, token=token,
                                                  settings=settings))
 
@@ -190,7 +196,7 @@ def test_the_tree_is_refreshed_once_per_period_after_answering():
 def test_the_token_is_checked_by_the_fast_path_too():
     fake = FakeRun()
     app = _app_with(SimpleNamespace(run_id="r1", detail=RunDetailCache(fake)),
-                    token=TOKEN, read_requires_auth=True)
+                    token=TOKEN, open_reads=False)
     fast = RunDetailFastPath(_not_found_app)
     assert asyncio.run(_get(fast, app, "/runs/r1")) == (404, b"from the app")
     assert fast.served == 0
@@ -198,7 +204,7 @@ def test_the_token_is_checked_by_the_fast_path_too():
 
 # ---------------------------------------------------------------- the heap
 def test_the_server_freezes_its_long_lived_objects_and_thaws_them_at_shutdown(settings):
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         assert gc.get_freeze_count() > 10_000
         finished_run(client)  # loads a cell: frozen too
         assert gc.get_freeze_count() > 10_000

@@ -104,7 +104,7 @@ def test_a_run_needing_an_arm_in_use_is_refused_with_409(client):
 
 
 def test_runs_on_different_arms_of_one_cell_run_at_once_on_one_backend(tmp_path: Path):
-    with TestClient(create_app(make_settings(tmp_path / "state", sim_speed=40.0))) as client:
+    with TestClient(headers=AUTH, app=create_app(make_settings(tmp_path / "state", sim_speed=40.0))) as client:
         _run_both_arms(client)
 
 
@@ -158,14 +158,14 @@ def test_a_stream_sleeps_until_the_run_emits_and_lets_go_when_the_client_leaves(
 
 def test_records_survive_a_restart_and_a_run_in_flight_is_recorded_interrupted(tmp_path: Path):
     settings = make_settings(tmp_path / "state")
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         done = client.post("/runs", json={"task": "go_home", "backend": "mock"},
                            headers=AUTH).json()["run_id"]
         finished = wait_until_done(client, done)
         flying = client.post("/runs", json={"yaml": GO_CANDLE, "backend": "sim"},
                              headers=AUTH).json()["run_id"]
         wait_for_event(client, flying, "planned")
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         again = client.get(f"/runs/{done}").json()
         assert again["status"] == "succeeded"
         assert again["tree"] == finished["tree"] and "[✓]" in again["tree"]
@@ -183,7 +183,7 @@ def test_rows_left_running_by_a_dead_server_are_marked_interrupted(tmp_path: Pat
     store.save(RunRecord(run_id="r1", task="t", task_file="", cell="c", backend="sim",
                          parameters={}))
     store.close()
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         run = client.get("/runs/r1").json()
     assert run["status"] == "interrupted"
     assert "server stopped" in run["error"]
@@ -192,7 +192,7 @@ def test_rows_left_running_by_a_dead_server_are_marked_interrupted(tmp_path: Pat
 def test_only_the_newest_ended_runs_stay_in_memory_the_others_come_from_the_store(
         tmp_path: Path):
     settings = make_settings(tmp_path / "state")
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         manager = client.app.state.manager
         manager.keep_finished = 2
         runs = []

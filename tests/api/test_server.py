@@ -41,7 +41,8 @@ def follow_events(port: int, run_id: str, timeout: float) -> list[dict]:
     conn = http.client.HTTPConnection("127.0.0.1", port, timeout=timeout)
     events: list[dict] = []
     try:
-        conn.request("GET", f"/runs/{run_id}/events", headers={"Accept": "text/event-stream"})
+        conn.request("GET", f"/runs/{run_id}/events",
+                     headers={"Accept": "text/event-stream", "Authorization": f"Bearer {TOKEN}"})
         answer = conn.getresponse()
         assert answer.status == 200
         assert answer.getheader("content-type").startswith("text/event-stream")
@@ -88,7 +89,8 @@ def test_a_real_server_runs_pick_place_and_streams_it_to_the_end(tmp_path: Path)
     finally:
         server.terminate()
         output, _ = server.communicate(timeout=30)
-    assert f"token:\n    {TOKEN}\n" in output and "made for this session" not in output
+    assert f"\nexport TASKRUNNER_TOKEN={TOKEN}\n" in output
+    assert "made for this session" not in output
     with sqlite3.connect(tmp_path / "runs.sqlite") as db:
         stored = json.loads(db.execute("SELECT record FROM runs WHERE run_id = ?",
                                        (run_id,)).fetchone()[0])
@@ -109,8 +111,10 @@ def test_serve_makes_and_prints_a_token_when_none_is_configured(tmp_path, monkey
     out = capsys.readouterr().out
     [(app, options)] = served
     assert options["host"] == "127.0.0.1" and options["port"] == 8123
-    assert f"token (made for this session; set TASKRUNNER_TOKEN to fix it):\n    " \
-           f"{app.state.token}\n" in out
+    assert "token (made for this session; set TASKRUNNER_TOKEN to fix it)" in out
+    # a line to paste into a shell, so that the README's curl lines work as written
+    assert f"\nexport TASKRUNNER_TOKEN={app.state.token}\n" in out
+    assert options["http"].__name__ == "HeaderTimeoutProtocol"
     assert main(["serve", "--no-auth", "--state-dir", str(tmp_path)]) == 0
     assert served[1][0].state.token is None and "OPEN: no token needed" in capsys.readouterr().out
     assert main(["serve", "--token", "short", "--state-dir", str(tmp_path)]) == 2

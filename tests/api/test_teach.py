@@ -4,7 +4,7 @@ keep it across a restart; refusals for protected names, bad names and busy cells
 from __future__ import annotations
 
 import pytest
-from apitest import AUTH, make_settings, wait_until_done
+from apitest import AUTH, NO_TOKEN, make_settings, wait_until_done
 from fastapi.testclient import TestClient
 
 from taskrunner.api import create_app
@@ -43,12 +43,12 @@ def test_teach_stores_the_backends_state_and_tasks_use_it(client):
 
 
 def test_taught_poses_survive_a_restart(settings):
-    with TestClient(create_app(settings)) as client:
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
         move_to_candle(client)
         assert client.put("/cells/servo_arm_table/poses/bench_spot",
                           json={"group": "arm", "backend": "mock"},
                           headers=AUTH).status_code == 200
-    with TestClient(create_app(make_settings(settings.state_dir))) as client:
+    with TestClient(headers=AUTH, app=create_app(make_settings(settings.state_dir))) as client:
         run = client.post("/runs", json={"yaml": GO_TAUGHT, "backend": "mock"}, headers=AUTH)
         assert run.status_code == 202, run.text
         assert wait_until_done(client, run.json()["run_id"])["status"] == "succeeded"
@@ -56,7 +56,8 @@ def test_taught_poses_survive_a_restart(settings):
 
 def test_teach_refusals(client):
     body = {"group": "arm", "backend": "mock"}
-    assert client.put("/cells/servo_arm_table/poses/x", json=body).status_code == 401
+    assert client.put("/cells/servo_arm_table/poses/x", json=body,
+                      headers=NO_TOKEN).status_code == 401
     answer = client.put("/cells/servo_arm_table/poses/home", json=body, headers=AUTH)
     assert answer.status_code == 409 and "robot or cell files" in answer.text
     answer = client.put("/cells/servo_arm_table/poses/9lives", json=body, headers=AUTH)
@@ -70,7 +71,7 @@ def test_teach_refusals(client):
 def test_plan_reaches_a_taught_pose_when_planning_in_worker_processes(tmp_path):
     # The workers load the cell from its files; the taught pose exists only in the
     # server's model, so /plan must send its joint values, not its name.
-    with TestClient(create_app(make_settings(tmp_path / "state", planner="worker"))) as client:
+    with TestClient(headers=AUTH, app=create_app(make_settings(tmp_path / "state", planner="worker"))) as client:
         move_to_candle(client)
         assert client.put("/cells/servo_arm_table/poses/bench_spot",
                           json={"group": "arm", "backend": "mock"},

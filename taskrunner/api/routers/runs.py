@@ -13,7 +13,8 @@ from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells, get_manager, get_settings
+from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_work
+from taskrunner.api.requestwork import RequestWork, load_request
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
     ErrorBody,
@@ -24,7 +25,6 @@ from taskrunner.api.schemas import (
     RunSummary,
 )
 from taskrunner.api.settings import Settings
-from taskrunner.api.tasksource import load_request_task
 from taskrunner.runtime.events import RunEvent
 
 __all__ = ["router"]
@@ -42,14 +42,17 @@ _ERRORS: dict[int | str, dict[str, Any]] = {
 def start_run(body: RunCreate, response: Response,
               settings: Annotated[Settings, Depends(get_settings)],
               manager: Annotated[RunManager, Depends(get_manager)],
-              cells: Annotated[CellRegistry, Depends(get_cells)]) -> RunAccepted:
+              cells: Annotated[CellRegistry, Depends(get_cells)],
+              work: Annotated[RequestWork, Depends(get_work)]) -> RunAccepted:
     """Start a task (a file of the tasks folder, or inline YAML) on a cell's backend.
 
     Answers 202 at once with the run id; the run goes on in the background. A run that
     needs an arm (joints) a run in flight moves is refused with 409: runs are not queued.
     """
-    spec, task_file, text = load_request_task(settings.tasks_dir, body.task, body.yaml,
-                                              body.parameters)
+    # Loaded within the limits (time, memory) and folders of request work.
+    spec, task_file, text = work.call(load_request, settings.folder_policy(),
+                                      settings.tasks_dir, body.task, body.yaml,
+                                      body.parameters)
     if body.cell is not None:
         spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
     live = manager.start(spec, body.backend, seed=body.seed, task_text=text,
