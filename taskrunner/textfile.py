@@ -24,7 +24,7 @@ from pathlib import Path
 
 from taskrunner.errors import InputError
 
-__all__ = ["DEFAULT_MAX_BYTES", "read_text_file", "resolve_path"]
+__all__ = ["DEFAULT_MAX_BYTES", "file_problem", "read_text_file", "resolve_path"]
 
 DEFAULT_MAX_BYTES = 4 * 1024 * 1024
 """Default size limit of a user's text file (bytes): far above any real task, cell or
@@ -79,6 +79,26 @@ def resolve_path(path: str | Path, error: type[InputError] = InputError,
         reason = _os_reason(exc)
         raise error(f"{str(path)!r}: {reason}" if where is not None else reason,
                     where if where is not None else path, line) from None
+
+
+def file_problem(path: str | Path) -> str | None:
+    """Why ``path`` cannot be read as a regular file ("file not found", "not a regular
+    file (a FIFO (named pipe))", "symlink loop …", "path too long"), or None if it can.
+    Never opens the file, never raises."""
+    try:
+        info = os.stat(path)
+    except ValueError:
+        return "invalid path (it holds a NUL character)"
+    except OSError as exc:
+        return _os_reason(exc)
+    if not stat.S_ISREG(info.st_mode):
+        kind = next((name for test, name in _KINDS if test(info.st_mode)), "not a file")
+        return f"not a regular file ({kind})"
+    absolute = os.path.realpath(path)
+    for root in _PSEUDO_ROOTS:
+        if absolute == root or absolute.startswith(root + "/"):
+            return f"not a regular file (a pseudo-file under {root})"
+    return None
 
 
 def read_text_file(path: str | Path, error: type[InputError] = InputError,

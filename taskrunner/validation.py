@@ -8,17 +8,71 @@ as ``cell.yaml:12: robots[0].base.xyz: …``, every problem at once.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Annotated, Any, TypeVar
 
-from pydantic import BaseModel, ValidationError
+from pydantic import AfterValidator, BaseModel, Field, ValidationError
 
 from taskrunner.errors import YamlError
 from taskrunner.yamlfile import line_of
 
-__all__ = ["locate", "validate_node"]
+__all__ = ["MAX_METRES", "MAX_RADIANS", "Metres", "NonNegativeMetres", "PositiveMetres",
+           "Radians", "Scale", "check_number", "locate", "validate_node"]
 
 M = TypeVar("M", bound=BaseModel)
+
+MAX_METRES = 1000.0
+"""Largest coordinate, size or distance a file may give (m): a cell is not a kilometre
+wide, and a bound keeps later arithmetic (path lengths, step counts) finite."""
+MAX_RADIANS = 100.0
+"""Largest angle a file may give (rad, about 16 turns)."""
+
+
+def check_number(value: float, low: float, high: float, unit: str = "",
+                 low_open: bool = False) -> str | None:
+    """What is wrong with ``value`` as a finite number in [low, high] (``(low, high]``
+    when ``low_open``), as the end of an attrs-style message, or None if nothing is.
+
+    >>> check_number(float("nan"), 0, 1000, "m", low_open=True)
+    'must be a finite number > 0 and ≤ 1000 m (got nan)'
+    """
+    unit = f" {unit}" if unit else ""
+    if low == -high:
+        expected = f"a finite number within ±{high:g}{unit}"
+    else:
+        expected = f"a finite number {'>' if low_open else '≥'} {low:g} and ≤ {high:g}{unit}"
+    ok = math.isfinite(value) and (value > low if low_open else value >= low) and value <= high
+    return None if ok else f"must be {expected} (got {value!r})"
+
+
+def _bounded(low: float, high: float, unit: str, low_open: bool = False) -> Callable[[float], float]:
+    def check(value: float) -> float:
+        problem = check_number(value, low, high, unit, low_open)
+        if problem is not None:
+            raise ValueError(problem)
+        return value
+    return check
+
+
+# The JSON-schema bounds tell editors; the validators give the messages.
+Metres = Annotated[float, AfterValidator(_bounded(-MAX_METRES, MAX_METRES, "m")),
+                   Field(json_schema_extra={"minimum": -MAX_METRES, "maximum": MAX_METRES})]
+"""A coordinate (m): finite, within ±:data:`MAX_METRES`."""
+Radians = Annotated[float, AfterValidator(_bounded(-MAX_RADIANS, MAX_RADIANS, "rad")),
+                    Field(json_schema_extra={"minimum": -MAX_RADIANS, "maximum": MAX_RADIANS})]
+"""An angle (rad): finite, within ±:data:`MAX_RADIANS`."""
+PositiveMetres = Annotated[float, AfterValidator(_bounded(0.0, MAX_METRES, "m", low_open=True)),
+                           Field(json_schema_extra={"exclusiveMinimum": 0,
+                                                    "maximum": MAX_METRES})]
+"""A size, radius or length (m): finite, > 0, at most :data:`MAX_METRES`."""
+NonNegativeMetres = Annotated[float, AfterValidator(_bounded(0.0, MAX_METRES, "m")),
+                              Field(json_schema_extra={"minimum": 0, "maximum": MAX_METRES})]
+"""A distance (m): finite, ≥ 0, at most :data:`MAX_METRES`."""
+Scale = Annotated[float, AfterValidator(_bounded(0.0, 1e6, "", low_open=True)),
+                  Field(json_schema_extra={"exclusiveMinimum": 0, "maximum": 1e6})]
+"""A mesh scale factor: finite, > 0."""
 
 
 def locate(node: Any, loc: tuple[Any, ...]) -> int | None:
@@ -63,6 +117,16 @@ def validate_node(model: type[M], node: Any, path: str | Path | None) -> M:
             loc = tuple(k for k in loc if not (isinstance(k, str) and k[:1].isupper()))
             line = locate(node, loc)
             message = error["msg"]
+            if error["type"] == "value_error" and loc:
+                # Our own checks say what they expect and what they got (attrs style).
+                reason = str((error.get("ctx") or {}).get("error", message))
+                problems.append((line, f"'{_dotted(loc)}' {reason}" if reason.startswith(
+                    "must be") else f"{_dotted(loc)}: {reason}"))
+                continue
+            if error["type"] == "finite_number":
+                problems.append((line, f"'{_dotted(loc)}' must be a finite number "
+                                       f"(got {error.get('input')!r})"))
+                continue
             if error["type"] == "extra_forbidden":
                 message = "unknown field"
             elif error["type"] == "missing":

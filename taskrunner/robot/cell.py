@@ -42,21 +42,32 @@ from taskrunner.robot.description import load_description
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.packages import PackageMap
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
-from taskrunner.validation import validate_node
+from taskrunner.textfile import resolve_path
+from taskrunner.validation import (
+    Metres,
+    PositiveMetres,
+    Radians,
+    Scale,
+    validate_node,
+)
 from taskrunner.yamlfile import LineDict, line_of, load_yaml
 
 __all__ = ["Cell", "CellObject", "load_cell", "load_cell_or_robot"]
 
-Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
+Position = Annotated[list[Metres], Field(min_length=3, max_length=3)]
+Angles = Annotated[list[Radians], Field(min_length=3, max_length=3)]
+Size = Annotated[list[PositiveMetres], Field(min_length=3, max_length=3)]
+Scales = Annotated[list[Scale], Field(min_length=3, max_length=3)]
 
 
 class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    # Every number of a cell file is finite (joint values of named poses too).
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class PoseSpec(_Strict):
-    xyz: Vec3 = [0.0, 0.0, 0.0]
-    rpy: Vec3 = [0.0, 0.0, 0.0]
+    xyz: Position = [0.0, 0.0, 0.0]
+    rpy: Angles = [0.0, 0.0, 0.0]
     frame: str = WORLD
 
     def se3(self) -> pin.SE3:
@@ -74,11 +85,11 @@ class RobotSpec(_Strict):
 class ObjectSpec(_Strict):
     name: str = Field(min_length=1)
     shape: Literal["box", "cylinder", "sphere", "mesh"]
-    size: Vec3 | None = None
-    radius: float | None = Field(default=None, gt=0)
-    length: float | None = Field(default=None, gt=0)
+    size: Size | None = None
+    radius: PositiveMetres | None = None
+    length: PositiveMetres | None = None
     file: str | None = None
-    scale: Vec3 = [1.0, 1.0, 1.0]
+    scale: Scales = [1.0, 1.0, 1.0]
     pose: PoseSpec = PoseSpec()
     touch_links: list[str] = []
 
@@ -186,7 +197,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
     policy = policy or active_policy()
     if policy is not None:
         policy.check(path, FileKind.CELL)
-    path = Path(path).resolve()
+    path = resolve_path(path, YamlError)
     node = load_yaml(path)
     spec = validate_node(CellSpec, node, path)
     robots_node = node["robots"]

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import io
+import math
 import threading
 import xml.etree.ElementTree as ET
 from contextlib import redirect_stderr, redirect_stdout
@@ -22,6 +23,8 @@ from xml.parsers import expat
 from taskrunner.errors import MissingMeshError, RobotDescriptionError
 from taskrunner.robot.packages import PackageMap
 from taskrunner.robot.xmldoc import XmlDocument, parse_xml
+from taskrunner.textfile import read_text_file
+from taskrunner.validation import MAX_METRES, MAX_RADIANS, check_number
 
 __all__ = ["UrdfDescription", "expand_xacro", "read_urdf"]
 
@@ -43,6 +46,25 @@ _NUMERIC_ATTRIBUTES = {
     "mass": {"value": 1},
     "inertia": dict.fromkeys(("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), 1),
 }
+
+# What each numeric attribute must be besides finite: (low, high, unit, low excluded).
+_M, _RAD = MAX_METRES, MAX_RADIANS
+_RANGES: dict[tuple[str, str], tuple[float, float, str, bool]] = {
+    ("origin", "xyz"): (-_M, _M, "m", False),
+    ("origin", "rpy"): (-_RAD, _RAD, "rad", False),
+    ("box", "size"): (0.0, _M, "m", True),
+    ("cylinder", "radius"): (0.0, _M, "m", True),
+    ("cylinder", "length"): (0.0, _M, "m", True),
+    ("sphere", "radius"): (0.0, _M, "m", True),
+    ("mesh", "scale"): (0.0, 1e6, "", True),
+    ("mass", "value"): (0.0, 1e6, "kg", False),
+    ("inertia", "ixx"): (0.0, 1e6, "kg·m²", False),
+    ("inertia", "iyy"): (0.0, 1e6, "kg·m²", False),
+    ("inertia", "izz"): (0.0, 1e6, "kg·m²", False),
+    ("limit", "effort"): (0.0, math.inf, "", False),
+    ("limit", "velocity"): (0.0, math.inf, "", False),
+}
+_ANY = (-1e9, 1e9, "", False)
 
 # xacro keeps its state in module globals: one expansion at a time.
 _XACRO_LOCK = threading.Lock()
@@ -159,13 +181,7 @@ def read_urdf(
         # Lines of the expanded text mean nothing to the user: report elements by name.
         doc._lines.clear()
     else:
-        try:
-            text = path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            raise RobotDescriptionError("file not found", path) from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise RobotDescriptionError(f"cannot read file: {exc}", path) from None
-        doc = parse_xml(text, path)
+        doc = parse_xml(read_text_file(path, RobotDescriptionError), path)
     return check_urdf(doc, path, packages)
 
 
@@ -277,6 +293,15 @@ def _check_numbers(doc: XmlDocument) -> None:
                         f"{owner.tag} {owner.get('name')!r}: <{element.tag}> '{attribute}' "
                         f"must be {expected} (got {value!r})",
                     )
+                low, high, unit, low_open = _RANGES.get((element.tag, attribute), _ANY)
+                for number in numbers:
+                    problem = check_number(number, low, high, unit, low_open)
+                    if problem is not None:
+                        shown = f" (got {value!r})" if count > 1 else ""
+                        raise doc.error(
+                            element,
+                            f"{owner.tag} {owner.get('name')!r}: <{element.tag}> "
+                            f"'{attribute}' {problem}{shown}")
 
 
 def _check_acyclic(

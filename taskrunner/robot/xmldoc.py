@@ -12,8 +12,17 @@ from pathlib import Path
 from xml.parsers import expat
 
 from taskrunner.errors import RobotDescriptionError
+from taskrunner.textfile import read_text_file
 
-__all__ = ["XmlDocument", "parse_xml", "read_xml"]
+__all__ = ["MAX_XML_DEPTH", "XmlDocument", "parse_xml", "read_xml"]
+
+MAX_XML_DEPTH = 64
+"""Nesting of elements: a URDF or SRDF needs about 6; copying and walking a tree much
+deeper would reach Python's recursion limit."""
+
+
+class _TooDeep(Exception):
+    pass
 
 
 @dataclass
@@ -43,13 +52,23 @@ def parse_xml(text: str, path: str | Path | None = None) -> XmlDocument:
     builder = ET.TreeBuilder()
     parser = expat.ParserCreate()
     lines: dict[int, int] = {}
+    depth = 0
 
     def start(tag: str, attrs: dict[str, str]) -> None:
+        nonlocal depth
+        depth += 1
+        if depth > MAX_XML_DEPTH:
+            raise _TooDeep(parser.CurrentLineNumber)
         element = builder.start(tag, attrs)
         lines[id(element)] = parser.CurrentLineNumber
 
+    def end(tag: str) -> None:
+        nonlocal depth
+        depth -= 1
+        builder.end(tag)
+
     parser.StartElementHandler = start
-    parser.EndElementHandler = builder.end
+    parser.EndElementHandler = end
     parser.CharacterDataHandler = builder.data
     label = Path(path) if path is not None else None
     try:
@@ -59,6 +78,9 @@ def parse_xml(text: str, path: str | Path | None = None) -> XmlDocument:
         raise RobotDescriptionError(
             f"invalid XML: {expat.ErrorString(exc.code)}", label, exc.lineno
         ) from None
+    except _TooDeep as exc:
+        raise RobotDescriptionError(f"XML nested deeper than {MAX_XML_DEPTH} elements",
+                                    label, exc.args[0]) from None
     except AssertionError:
         raise RobotDescriptionError("invalid XML: no root element", label) from None
     return XmlDocument(root, label, lines)
@@ -71,10 +93,4 @@ def read_xml(path: str | Path) -> XmlDocument:
         RobotDescriptionError: the file is missing, unreadable or not well-formed.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise RobotDescriptionError("file not found", path) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise RobotDescriptionError(f"cannot read file: {exc}", path) from None
-    return parse_xml(text, path)
+    return parse_xml(read_text_file(path, RobotDescriptionError), path)

@@ -47,7 +47,7 @@ from taskrunner.tasks.steps import (
     _DoComposite,
     _ListComposite,
 )
-from taskrunner.textfile import resolve_path
+from taskrunner.textfile import file_problem, resolve_path
 from taskrunner.yamlfile import LineDict, LineList, line_of, load_yaml, load_yaml_text
 
 __all__ = ["MAX_INCLUDE_DEPTH", "MAX_INCLUDES", "MAX_STEP_DEPTH", "load_task", "load_task_text"]
@@ -236,8 +236,10 @@ class _Loader:
             return None
         if self.refused(cell, FileKind.CELL, value, path, line_of(tree, "cell")):
             return None
-        if not cell.is_file():
-            self.add(path, line_of(tree, "cell"), f"cell file not found: {_shown(cell, path)}")
+        problem = file_problem(cell)
+        if problem is not None:
+            self.add(path, line_of(tree, "cell"), f"cell file not found: {_shown(cell, path)}"
+                     if problem == "file not found" else f"cell {_shown(cell, path)}: {problem}")
         if root:
             self.root_cell = cell
         return cell
@@ -363,8 +365,11 @@ class _Loader:
             return None
         if self.refused(target, FileKind.TASK, include.file, file, file_line):
             return None
-        if not target.is_file():
-            self.add(file, file_line, f"included file not found: {_shown(target, file)}")
+        problem = file_problem(target)
+        if problem is not None:
+            self.add(file, file_line, f"included file not found: {_shown(target, file)}"
+                     if problem == "file not found"
+                     else f"included file {_shown(target, file)}: {problem}")
             return None
         binding = Binding(include.parameters, file, body.get("parameters") or body)
         result = self.load_file(target, None, binding, stack + (target,))

@@ -31,6 +31,7 @@ from pydantic import (
 )
 
 from taskrunner.types import Pose
+from taskrunner.validation import Metres, PositiveMetres, Radians, Scale
 from taskrunner.yamlfile import LineDict
 
 __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transform", "Vec2",
@@ -38,9 +39,13 @@ __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transfor
 
 WORLD = "world"
 
-Vec2 = Annotated[tuple[float, ...], Field(min_length=2, max_length=2)]
+Vec2 = Annotated[tuple[Metres, ...], Field(min_length=2, max_length=2)]
 Vec3 = Annotated[tuple[float, ...], Field(min_length=3, max_length=3)]
 Vec4 = Annotated[tuple[float, ...], Field(min_length=4, max_length=4)]
+Position = Annotated[tuple[Metres, ...], Field(min_length=3, max_length=3)]
+Angles = Annotated[tuple[Radians, ...], Field(min_length=3, max_length=3)]
+Size = Annotated[tuple[PositiveMetres, ...], Field(min_length=3, max_length=3)]
+Scales = Annotated[tuple[Scale, ...], Field(min_length=3, max_length=3)]
 
 
 @dataclass(frozen=True)
@@ -96,7 +101,9 @@ class Node(BaseModel):
     per-occurrence map by ``id(node)``.
     """
 
-    model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
+    # allow_inf_nan=False: every number of a task file is finite (inf, nan, 1e400 refused).
+    model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True,
+                              allow_inf_nan=False)
 
     _loc: Location | None = PrivateAttr(default=None)
 
@@ -141,9 +148,9 @@ def _check_quat(value: tuple[float, ...] | None) -> tuple[float, ...] | None:
 class Transform(Node):
     """A rigid transform: translation and an optional orientation (``rpy`` or ``quat``)."""
 
-    xyz: Vec3 = (0.0, 0.0, 0.0)
+    xyz: Position = (0.0, 0.0, 0.0)
     """Translation (m)."""
-    rpy: Vec3 | None = None
+    rpy: Angles | None = None
     """Orientation as roll, pitch, yaw (rad, fixed axes X then Y then Z); not with 'quat'."""
     quat: Vec4 | None = None
     """Orientation as a unit quaternion [x, y, z, w]; not with 'rpy'."""
@@ -213,15 +220,15 @@ class ObjectSpec(Node):
     """Unique name of the object."""
     shape: Shape
     """box (size), cylinder (radius, length along z), sphere (radius) or mesh (file, scale)."""
-    size: Vec3 | None = None
+    size: Size | None = None
     """Full lengths of a box along x, y, z (m)."""
-    radius: float | None = Field(default=None, gt=0)
+    radius: PositiveMetres | None = None
     """Radius of a cylinder or sphere (m)."""
-    length: float | None = Field(default=None, gt=0)
+    length: PositiveMetres | None = None
     """Length of a cylinder along its z axis (m)."""
     file: str | None = None
     """Mesh file: a package:// URI or a path relative to the task file."""
-    scale: Vec3 | None = None
+    scale: Scales | None = None
     """Scale of a mesh along x, y, z (default 1, 1, 1)."""
     pose: PoseSpec = PoseSpec()
     """Placement of the object's centre (mesh origin)."""

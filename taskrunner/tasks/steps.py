@@ -34,6 +34,7 @@ from pydantic import (
 )
 
 from taskrunner.tasks.nodes import Node, ObjectSpec, PoseSpec, TargetPose, Transform, Vec2
+from taskrunner.validation import MAX_METRES
 
 __all__ = [
     "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "FallbackStep", "GoStep",
@@ -46,7 +47,7 @@ __all__ = [
 STEP_LIST_SCHEMA = {"type": "array", "items": {"$ref": "#/$defs/Step"}, "minItems": 1}
 StepList = Annotated[tuple["Step", ...], WithJsonSchema(STEP_LIST_SCHEMA)]
 Scaling = Annotated[float, Field(gt=0, le=1)]
-Distance = Annotated[float, Field(ge=0)]
+Distance = Annotated[float, Field(ge=0, le=MAX_METRES)]
 
 
 def _exactly_one(node: Node, *names: str) -> None:

@@ -87,5 +87,6 @@ def test_missing_file_is_a_robot_description_error(tmp_path):
 def test_file_that_is_not_utf8_is_a_robot_description_error(tmp_path):
     path = tmp_path / "latin1.urdf"
     path.write_bytes('<robot name="caf\xe9"/>'.encode("latin-1"))
-    with pytest.raises(RobotDescriptionError, match=r"latin1.urdf: cannot read file"):
+    with pytest.raises(RobotDescriptionError,
+                       match=r"latin1.urdf:1: file is not UTF-8 text \(invalid byte 0xe9\)"):
         read_xml(path)
