@@ -35,6 +35,7 @@ from taskrunner.tasks.spec import TaskSpec
 from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.timeout import TaskTimeout
 
 __all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
 
@@ -167,14 +168,14 @@ class Runner:
         message = leaf.feedback_message if leaf is not None else "the task failed"
         return self._finish("failed", EXIT_CODES[kind], message)
 
-    def _failed_leaf(self) -> TaskLeaf | None:
-        """The leaf whose failure ended the run: the last one that failed."""
+    def _failed_leaf(self) -> TaskLeaf | TaskTimeout | None:
+        """The node whose failure ended the run: the last leaf (or ``timeout:``) that failed."""
         failed = [e for e in self.record.events
                   if e.kind == "node_finished" and e.status == Status.FAILURE.value]
         if not failed:
             return None
         for node in self.tree.iterate():
-            if isinstance(node, TaskLeaf) and node.name == failed[-1].node \
+            if isinstance(node, TaskLeaf | TaskTimeout) and node.name == failed[-1].node \
                     and node.feedback_message == failed[-1].message:
                 return node
         return None

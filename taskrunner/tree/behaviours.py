@@ -107,6 +107,7 @@ class _Executes(TaskLeaf):
         if len(trajectory.times) < 2:
             return Status.SUCCESS  # already there
         self.handle = self.ctx.backend.execute(trajectory)
+        self.ctx.clock.track(self.handle)
         self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory,
                                                 self.ctx.scene.snapshot()))
         return Status.RUNNING
@@ -117,6 +118,7 @@ class _Executes(TaskLeaf):
             self.ctx.sync_from_backend()
             return Status.RUNNING
         self.ctx.sync_from_backend()
+        self.ctx.clock.update()
         try:
             self.handle.wait(0.0)
         except TaskrunnerError as exc:

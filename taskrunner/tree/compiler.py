@@ -48,6 +48,7 @@ from taskrunner.tasks import (
 from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
 
 __all__ = ["compile_task", "object_shape", "planner_options", "timing_options"]
@@ -118,7 +119,7 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
         case RetryStep():
             return py_trees.decorators.Retry(name, _body(step, ctx), num_failures=step.times)
         case TimeoutStep():
-            return py_trees.decorators.Timeout(name, _body(step, ctx), duration=step.seconds)
+            return TaskTimeout(name, _body(step, ctx), step.seconds, where, ctx)
         case RepeatStep():
             return py_trees.decorators.Repeat(name, _body(step, ctx), num_success=step.times)
         case ParallelStep():

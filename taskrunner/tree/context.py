@@ -17,6 +17,7 @@ from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import EventLog
 from taskrunner.scene import Scene, SceneSnapshot
+from taskrunner.tree.clock import TaskClock
 from taskrunner.types import JointTrajectory
 
 __all__ = ["Arm", "ExecutedMotion", "TaskContext", "resolve_arm"]
@@ -83,6 +84,8 @@ class TaskContext:
         timing: default time parameterization (scaling from the robot unless set).
         seed: seeds every planner call of the run (each call adds its own offset).
         executed: every trajectory sent to the backend, in order.
+        clock: the run's task time, which ``timeout:`` counts (motions at their trajectory
+            time on every backend; see :class:`~taskrunner.tree.clock.TaskClock`).
         planner_times: planned motions are timed by the planner (in a worker process,
             that work then leaves this process: a server keeps its GIL for answering);
             False: timed here (a one-run CLI, whose process waits for the plan anyway,
@@ -98,6 +101,7 @@ class TaskContext:
     seed: int = 0
     executed: list[ExecutedMotion] = field(default_factory=list)
     planner_times: bool = False
+    clock: TaskClock = field(default_factory=TaskClock)
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
 
