@@ -221,6 +221,19 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
         return process.wait(5)
 
 
+def _ask_terminal(prompt: str) -> str:
+    """``input`` for an interactive helper; no input (closed, or ended) is an InputError."""
+    if sys.stdin is None or sys.stdin.closed:
+        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
+                         "(standard input is closed)")
+    try:
+        return input(prompt)
+    except EOFError:
+        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
+                         "(standard input ended before every answer was given; nothing "
+                         "was written)") from None
+
+
 def cmd_hw(args: argparse.Namespace) -> int:
     """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
     import math
@@ -228,6 +241,8 @@ def cmd_hw(args: argparse.Namespace) -> int:
     from taskrunner.backends import ServoBackend
     from taskrunner.runtime.session import make_backend
 
+    if args.action == "calibrate" and (sys.stdin is None or sys.stdin.closed):
+        _ask_terminal("")  # refuses before anything is connected or moved
     cell = _load(args.cell)
     kind = "http" if args.url else "serial"
     # serial and http backends are servo backends
@@ -240,7 +255,7 @@ def cmd_hw(args: argparse.Namespace) -> int:
             robot = cell.model.instances[0]
             assert robot.hardware_path is not None  # make_backend checked it
             calibrate_servos(backend, robot.hardware_path,
-                             [args.joint] if args.joint else None)
+                             [args.joint] if args.joint else None, ask=_ask_terminal)
             return EXIT_OK
         if args.action == "home":
             backend.command("HOME")

@@ -85,3 +85,82 @@ def test_a_speed_that_is_not_positive_is_a_clean_error_on_every_backend(tmp_path
                          "--runs-dir", str(tmp_path / "runs")])
             assert code == EXIT_INVALID, (backend, speed)
             assert "'--speed' must be a positive number" in capsys.readouterr().err
+
+
+class _Board:
+    """Stands in for a servo backend: hw calibrate only needs it closed at the end."""
+
+    closed = False
+
+    def close(self) -> None:
+        self.closed = True
+
+
+def test_hw_calibrate_without_input_is_a_clean_error(monkeypatch, capsys):
+    import io
+
+    import taskrunner.backends.calibrate
+    import taskrunner.runtime.session
+
+    board = _Board()
+    monkeypatch.setattr(taskrunner.runtime.session, "make_backend", lambda *a, **k: board)
+
+    def calibrate(backend, path, joints, ask=input, say=print):
+        ask("  angle of Revolute 1 now, in degrees: ")
+
+    monkeypatch.setattr(taskrunner.backends.calibrate, "calibrate_servos", calibrate)
+    monkeypatch.setattr("sys.stdin", io.StringIO(""))  # input ended: EOF at the first question
+    assert main(["hw", "calibrate", "--port", "/dev/null"]) == EXIT_INVALID
+    err = capsys.readouterr().err
+    assert "error: hw calibrate asks a question for each joint: run it in a terminal" in err
+    assert board.closed
+    monkeypatch.setattr("sys.stdin", None)  # started with stdin closed: refused up front
+    assert main(["hw", "calibrate", "--port", "/dev/null"]) == EXIT_INVALID
+    assert "standard input is closed" in capsys.readouterr().err
+
+
+def test_the_straight_move_fallback_note_does_not_read_like_an_error(monkeypatch):
+    from types import SimpleNamespace
+
+    from taskrunner.planning.cartesian import CartesianOptions
+    from taskrunner.runtime.events import EventLog
+    from taskrunner.tree import behaviours
+
+    results = iter([SimpleNamespace(stop_reason="ik", message="no IK solution at 40 %"),
+                    SimpleNamespace(stop_reason=None, message="")])
+
+    class Planner:
+        def __init__(self, scene):
+            pass
+
+        def compute(self, group, waypoints, link=None, options=None):
+            return next(results)
+
+    monkeypatch.setattr(behaviours, "CartesianPlanner", Planner)
+    ctx = SimpleNamespace(events=EventLog(), scene=None, timing=None)
+    leaf = behaviours.MoveStraight("retreat", "task.yaml:9", ctx, "arm", lambda c: [],
+                                   fallback=CartesianOptions(position_only=True))
+    leaf.compute(ctx)
+    (note,) = ctx.events.events()
+    assert note.message == ("note: the tool's full pose cannot be held along this line (no IK "
+                            "solution at 40 %); following the line by the position of its "
+                            "tool only")
+
+
+def test_a_bad_parameter_default_or_value_is_one_problem_not_two(tmp_path, capsys):
+    cell = DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
+    cases = [("{default: 0.5, type: float, min: -0.15, max: 0.15}", [],
+              "default of 'place_y' must be <= 0.15 (got 0.5)"),
+             ("{default: abc, type: float, min: -0.15, max: 0.15}", [],
+              "default of 'place_y' must be a float (got 'abc')"),
+             ("{type: float, min: -0.15, max: 0.15}", [],
+              "parameter 'place_y' has no default and is not given (--param)"),
+             ("{type: float}", ["--param", "place_y=abc"], "'place_y' must be a float (got 'abc')")]
+    for declaration, extra, message in cases:
+        path = tmp_path / "task.yaml"
+        path.write_text(f"task: p\ncell: {cell}\nparameters:\n  place_y: {declaration}\n"
+                        "steps:\n  - go: {group: arm, pose: {xyz: [0.14, \"${place_y}\", 0.8]}}\n")
+        assert main(["check", str(path), *extra]) == EXIT_INVALID
+        err = capsys.readouterr().err
+        assert f"{path}:4: {message}" in err
+        assert "1 problem(s)" in err, err

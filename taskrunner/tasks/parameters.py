@@ -167,7 +167,9 @@ def declare_parameters(raw: Any, tree: Any, path: Path,
             except ValueError as exc:
                 problems.append(Problem(path, line, f"default of {exc}"))
                 default = None
-        declared[name] = param.model_copy(update={"default": default, "value": default}).located(
+        # A default reported above stands in as a valid value (see _stand_in).
+        value = _stand_in(param) if default is None and decl.default is not None else default
+        declared[name] = param.model_copy(update={"default": default, "value": value}).located(
             location_of(spec, path, line))
         if default is not None or decl.default is None:
             broken.discard(name)
@@ -199,9 +201,10 @@ def bind_parameters(declared: dict[str, Parameter], broken: set[str], binding: B
             _check_bounds(param, value)
         except ValueError as exc:
             problems.append(Problem(*where, str(exc)))
+            bound[name] = param.model_copy(update={"value": _stand_in(param)})
             continue
         bound[name] = param.model_copy(update={"value": value})
-    for param in bound.values():
+    for name, param in list(bound.items()):
         if param.value is None and param.name not in broken:
             if binding.file is not None:  # the including file must give it
                 problems.append(Problem(binding.file, line_of(binding.node),
@@ -211,7 +214,20 @@ def bind_parameters(declared: dict[str, Parameter], broken: set[str], binding: B
                 problems.append(Problem(path, param.loc.line if param.loc else None,
                                         f"parameter {param.name!r} has no default and is not "
                                         "given (--param)"))
+            bound[name] = param.model_copy(update={"value": _stand_in(param)})
     return bound
+
+
+def _stand_in(param: Parameter) -> Any:
+    """A valid value of ``param``'s type and range, put where a parameter whose value was
+    reported as a problem is used: the steps are then checked for their own mistakes
+    only, not for a ``${name}`` left in a number's place (one problem, not two). It
+    never reaches a run: a task with problems does not load."""
+    if param.min is not None:
+        return math.ceil(param.min) if param.type == "int" else param.min
+    if param.max is not None:
+        return math.floor(param.max) if param.type == "int" else param.max
+    return {"float": 1.0, "int": 1, "bool": False, "str": "stand-in"}[param.type]
 
 
 def _text(value: Any) -> str:

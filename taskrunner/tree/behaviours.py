@@ -224,9 +224,11 @@ class MoveStraight(_Executes):
         waypoints = list(self.waypoints(ctx))
         result = planner.compute(self.group, waypoints, link=self.link, options=self.options)
         if result.stop_reason == "ik" and self.fallback is not None:
-            ctx.events.emit("message", f"straight move stopped ({result.message}); "
-                            "following it with the fallback options", node=self.name,
-                            location=self.location)
+            how = ("by the position of its tool only" if self.fallback.position_only
+                   else "with relaxed IK options")
+            ctx.events.emit("message", f"note: the tool's full pose cannot be held along this "
+                            f"line ({result.message}); following the line {how}",
+                            node=self.name, location=self.location)
             result = planner.compute(self.group, waypoints, link=self.link,
                                      options=self.fallback)
         return result
