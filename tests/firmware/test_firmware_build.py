@@ -29,11 +29,15 @@ from typing import Any
 import pytest
 import yaml
 
-from taskrunner.resources import DATA_ROOT
+from taskrunner.backends.host_firmware import firmware_source_hash
+from taskrunner.resources import DATA_ROOT, user_cache_dir
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 FIRMWARE = DATA_ROOT / "firmware"
-HOST_BIN = FIRMWARE / "build" / "taskrunner-servo-host"
+# The same build folder as run-task firmware-sim (outside the package: nothing built lands
+# in the source tree, so a wheel built afterwards holds no binaries).
+BUILD_DIR = user_cache_dir() / f"firmware-{firmware_source_hash()}"
+HOST_BIN = BUILD_DIR / "taskrunner-servo-host"
 HARDWARE_YAML = DATA_ROOT / "robots" / "servo_arm" / "config" / "hardware.yaml"
 
 TICK_MS = 80
@@ -54,7 +58,8 @@ def _make(target: str) -> subprocess.CompletedProcess[str]:
     jobs = str(max(1, min(os.cpu_count() or 1, 8)))
     try:
         return subprocess.run(
-            ["make", "--no-print-directory", "-j", jobs, "-C", str(FIRMWARE), target],
+            ["make", "--no-print-directory", "-j", jobs, "-C", str(FIRMWARE), f"BUILD={BUILD_DIR}",
+             target],
             check=False,  # the caller reports the output
             capture_output=True,
             text=True,
