@@ -148,8 +148,10 @@ class Go(GoStep):
         position_only: reach the position only (default: the group's IK setting, or
             True for a pose without orientation).
         name: a label for displays and events.
-        planner: OMPL planner name; velocity_scaling, acceleration_scaling: fractions
-            in (0, 1] of the joint limits; planning_time: seconds to plan.
+        planner: OMPL planner name (default: the task's, else RRTConnect).
+        velocity_scaling: fraction in (0, 1] of the joint velocity limits.
+        acceleration_scaling: fraction in (0, 1] of the joint acceleration limits.
+        planning_time: seconds the planner may search.
     """
 
     def __init__(self, group: str, to: str | None = None, *,
@@ -175,8 +177,11 @@ class Move(MoveStep):
         by_frame: axes of ``by``: the moved link's (``"tool"``) or the world's.
         link: the link to move (default: the group's tip).
         cartesian: straight line in Cartesian space (default: True with ``by``).
-        name, planner, velocity_scaling, acceleration_scaling, planning_time: as
-            for :class:`Go`.
+        name: a label for displays and events.
+        planner: OMPL planner name (default: the task's, else RRTConnect).
+        velocity_scaling: fraction in (0, 1] of the joint velocity limits.
+        acceleration_scaling: fraction in (0, 1] of the joint acceleration limits.
+        planning_time: seconds the planner may search.
     """
 
     def __init__(self, group: str, pose: PoseLike | None = None, *,
@@ -223,8 +228,11 @@ class Pick(PickStep):
         grasp: ``"top"``, ``"side"``, or the tool's pose in the object's frame.
         approach: length of the straight approach to the grasp (m).
         retreat: length of the straight retreat after grasping (m).
-        name, planner, velocity_scaling, acceleration_scaling, planning_time: as
-            for :class:`Go`.
+        name: a label for displays and events.
+        planner: OMPL planner name (default: the task's, else RRTConnect).
+        velocity_scaling: fraction in (0, 1] of the joint velocity limits.
+        acceleration_scaling: fraction in (0, 1] of the joint acceleration limits.
+        planning_time: seconds the planner may search.
     """
 
     def __init__(self, arm: str, object: str, *,
@@ -250,8 +258,11 @@ class Place(PlaceStep):
         offset: with ``on``: x, y from the surface's centre (m, surface frame).
         approach: length of the straight approach to the release pose (m).
         retreat: length of the straight retreat after releasing (m).
-        name, planner, velocity_scaling, acceleration_scaling, planning_time: as
-            for :class:`Go`.
+        name: a label for displays and events.
+        planner: OMPL planner name (default: the task's, else RRTConnect).
+        velocity_scaling: fraction in (0, 1] of the joint velocity limits.
+        acceleration_scaling: fraction in (0, 1] of the joint acceleration limits.
+        planning_time: seconds the planner may search.
     """
 
     def __init__(self, arm: str, object: str, at: PoseLike | None = None, *,
@@ -277,8 +288,11 @@ class Handoff(HandoffStep):
             the hand-over.
         approach: length of the taking arm's straight approach (m).
         retreat: length both arms retreat after the exchange (m).
-        name, planner, velocity_scaling, acceleration_scaling, planning_time: as
-            for :class:`Go`.
+        name: a label for displays and events.
+        planner: OMPL planner name (default: the task's, else RRTConnect).
+        velocity_scaling: fraction in (0, 1] of the joint velocity limits.
+        acceleration_scaling: fraction in (0, 1] of the joint acceleration limits.
+        planning_time: seconds the planner may search.
     """
 
     def __init__(self, object: str, from_arm: str, to_arm: str, at: str | PoseLike, *,
@@ -422,9 +436,11 @@ class Task:
         cell: the cell it is written for (a shipped name or a path), for
             :func:`taskrunner.run_task`; a workcell runs it on its own cell.
         description: what the task does.
-        planner, velocity_scaling, acceleration_scaling, planning_time: defaults
-            for every motion step that does not set its own (a task file's
-            ``defaults``).
+        planner: default OMPL planner of every motion step that sets none (a task
+            file's ``defaults``).
+        velocity_scaling: default velocity scaling, in (0, 1].
+        acceleration_scaling: default acceleration scaling, in (0, 1].
+        planning_time: default planning time of a motion step (s).
 
     Raises:
         TaskSpecError: a step is not a step, or an invalid default (at this line).
