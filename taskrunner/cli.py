@@ -205,7 +205,13 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
-    """Build the host firmware, start it, pass its two address lines through."""
+    """Build the host firmware, start it, pass its two address lines through.
+
+    SIGTERM is passed on to the firmware process (Ctrl-C reaches it from the terminal);
+    this command ends when it has: no firmware is left behind. Exit code: the firmware's,
+    128 + N when a signal N ended it.
+    """
+    import signal
     import subprocess
 
     from taskrunner.backends.host_firmware import build_host_firmware
@@ -214,11 +220,27 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     if args.log:
         command += ["--log", args.log]
     process = subprocess.Popen(command)
+
+    def forward(signum: int, frame: object) -> None:
+        if process.poll() is None:
+            process.send_signal(signum)
+
+    previous = signal.signal(signal.SIGTERM, forward)
     try:
-        return process.wait()
-    except KeyboardInterrupt:
-        process.terminate()
-        return process.wait(5)
+        while True:
+            try:
+                code = process.wait()
+                break
+            except KeyboardInterrupt:  # the firmware had its own SIGINT: give it a moment
+                try:
+                    code = process.wait(5)
+                except subprocess.TimeoutExpired:
+                    process.kill()
+                    code = process.wait()
+                break
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+    return 128 - code if code < 0 else code
 
 
 def _ask_terminal(prompt: str) -> str:

@@ -164,3 +164,54 @@ def test_a_bad_parameter_default_or_value_is_one_problem_not_two(tmp_path, capsy
         err = capsys.readouterr().err
         assert f"{path}:4: {message}" in err
         assert "1 problem(s)" in err, err
+
+
+def test_firmware_sim_passes_sigterm_on_and_leaves_no_firmware_behind():
+    import os
+    import select
+    import shutil
+    import signal
+    import subprocess
+    import sys
+    import time
+    from pathlib import Path
+
+    import pytest
+
+    if shutil.which("make") is None or shutil.which("g++") is None:
+        pytest.skip("the firmware host build needs make and g++")
+    from taskrunner.backends.host_firmware import build_host_firmware
+
+    build_host_firmware(timeout_s=300)  # built (or cached) before the clock starts
+    proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
+                             "--speedup", "10"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, start_new_session=True)
+    try:
+        data, deadline = b"", time.monotonic() + 60
+        while data.count(b"\n") < 2 and time.monotonic() < deadline:  # its pty, its URL
+            ready, _, _ = select.select([proc.stdout], [], [], 1.0)
+            if ready:
+                chunk = os.read(proc.stdout.fileno(), 4096)
+                assert chunk, f"firmware-sim exited early: {data!r}"
+                data += chunk
+        assert data.count(b"\n") >= 2, data
+        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
+        assert len(children) == 1
+        firmware = int(children[0])
+        proc.send_signal(signal.SIGTERM)  # to the CLI only, as `kill PID` does
+        assert proc.wait(30) in (0, 128 + signal.SIGTERM)  # the firmware's own exit code
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline:
+            try:
+                state = Path(f"/proc/{firmware}/stat").read_text().rpartition(")")[2].split()[0]
+            except OSError:
+                break  # gone
+            if state == "Z":
+                break  # ended, waiting to be reaped by init
+            time.sleep(0.05)
+        else:
+            pytest.fail(f"firmware process {firmware} still runs after firmware-sim ended")
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait(10)
