@@ -11,17 +11,14 @@ visual-only mesh is a warning and that visual is dropped, since the model stays 
 from __future__ import annotations
 
 import copy
-import io
 import math
-import threading
 import xml.etree.ElementTree as ET
-from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
 from pathlib import Path
-from xml.parsers import expat
 
 from taskrunner.errors import MissingMeshError, RobotDescriptionError
 from taskrunner.robot.packages import PackageMap
+from taskrunner.robot.xacrofile import XacroOptions, expand_xacro
 from taskrunner.robot.xmldoc import XmlDocument, parse_xml
 from taskrunner.textfile import read_text_file
 from taskrunner.validation import MAX_METRES, MAX_RADIANS, check_number
@@ -66,9 +63,6 @@ _RANGES: dict[tuple[str, str], tuple[float, float, str, bool]] = {
 }
 _ANY = (-1e9, 1e9, "", False)
 
-# xacro keeps its state in module globals: one expansion at a time.
-_XACRO_LOCK = threading.Lock()
-
 
 @dataclass
 class UrdfDescription:
@@ -101,73 +95,16 @@ class UrdfDescription:
         return ET.tostring(self.doc.root, encoding="unicode")
 
 
-def expand_xacro(
-    path: str | Path, packages: PackageMap, mappings: dict[str, str] | None = None
-) -> str:
-    """Expand a xacro file to URDF text, resolving ``$(find pkg)`` through ``packages``.
-
-    Args:
-        path: the ``.xacro`` file.
-        packages: where ``$(find pkg)`` looks packages up.
-        mappings: xacro arguments (``name:=value`` on the xacro command line).
-
-    Raises:
-        RobotDescriptionError: xacro reports an error (the message names the file).
-    """
-    import xacro
-    import xacro.substitution_args as substitution_args
-
-    path = Path(path)
-    if not path.is_file():
-        raise RobotDescriptionError("file not found", path)
-
-    lookup_errors: list[RobotDescriptionError] = []
-
-    def find(pkg: str) -> str:
-        try:
-            return str(packages.find(pkg))
-        except RobotDescriptionError as exc:
-            lookup_errors.append(exc)
-            raise
-
-    with _XACRO_LOCK:
-        saved_find = substitution_args._eval_find
-        substitution_args._eval_find = find
-        chatter = io.StringIO()
-        try:
-            with redirect_stdout(chatter), redirect_stderr(chatter):
-                document = xacro.process_file(str(path), mappings=dict(mappings or {}))
-        except Exception as exc:  # xacro raises plain exceptions of many kinds
-            # Report the file xacro was reading when it failed (maybe an included one).
-            stack = [f for f in (xacro.filestack or []) if f]
-            where = Path(stack[-1]) if stack else path
-            if lookup_errors:
-                raise RobotDescriptionError(
-                    f"$(find …): {lookup_errors[0].reason}", where
-                ) from None
-            if isinstance(exc, expat.ExpatError):
-                raise RobotDescriptionError(
-                    f"invalid XML: {expat.ErrorString(exc.code)}", where, exc.lineno
-                ) from None
-            detail = str(exc).strip() or type(exc).__name__
-            chatter_text = " ".join(chatter.getvalue().split())
-            if chatter_text:
-                detail = f"{detail} ({chatter_text})"
-            if where != path:
-                detail = f"{detail} (included from {path})"
-            raise RobotDescriptionError(f"xacro expansion failed: {detail}", where) from None
-        finally:
-            substitution_args._eval_find = saved_find
-            xacro.init_stacks(None)
-    return str(document.toprettyxml(indent="  "))
-
-
 def read_urdf(
     path: str | Path,
     packages: PackageMap | None = None,
     xacro_args: dict[str, str] | None = None,
+    xacro_options: XacroOptions | None = None,
 ) -> UrdfDescription:
     """Read a URDF (``.urdf``) or xacro (``.xacro``, ``.urdf.xacro``) file and check it.
+
+    xacro is expanded in a child process bounded in time and memory
+    (:func:`~taskrunner.robot.xacrofile.expand_xacro`, ``xacro_options``).
 
     Raises:
         RobotDescriptionError: unreadable, not well-formed, or structurally invalid.
@@ -176,7 +113,7 @@ def read_urdf(
     path = Path(path)
     packages = packages or PackageMap()
     if path.name.endswith(".xacro"):
-        text = expand_xacro(path, packages, xacro_args)
+        text = expand_xacro(path, packages, xacro_args, xacro_options)
         doc = parse_xml(text, path)
         # Lines of the expanded text mean nothing to the user: report elements by name.
         doc._lines.clear()

@@ -1,0 +1,229 @@
+"""Expanding xacro files, bounded in time and memory.
+
+xacro evaluates Python expressions (``${10**10**8}``), expands macros without limit (a
+macro calling another twice, 24 deep, is 2^24 elements) and opens whatever its includes
+name (a FIFO blocks forever). A robot file must not be able to hang or exhaust the
+process that loads it, so :func:`expand_xacro` runs xacro in a child process: a fork of
+the current one (the xacro module and the package map are already there, so the child
+costs a few milliseconds, not an interpreter start), with an address-space limit
+(``RLIMIT_AS``) and a wall-clock limit enforced by the parent, which kills the child
+when time is up. In the child, every file xacro includes is first checked like any
+other user file (:func:`taskrunner.textfile.read_text_file`: a regular UTF-8 file under
+the size limit), so an include of a FIFO or ``/dev/zero`` is refused at once.
+
+This bounds the damage of a hostile file; it is not a sandbox: xacro's expressions run
+with the rights of the process. Load xacro only from folders the operator owns.
+"""
+
+from __future__ import annotations
+
+import io
+import multiprocessing
+import os
+import resource
+import threading
+from collections.abc import Callable
+from contextlib import redirect_stderr, redirect_stdout
+from dataclasses import dataclass
+from multiprocessing.connection import Connection
+from pathlib import Path
+from typing import Any
+from xml.parsers import expat
+
+from taskrunner.errors import RobotDescriptionError
+from taskrunner.robot.packages import PackageMap
+from taskrunner.textfile import DEFAULT_MAX_BYTES, file_problem, read_text_file
+
+__all__ = ["XacroOptions", "expand_xacro"]
+
+
+@dataclass(frozen=True)
+class XacroOptions:
+    """Bounds on one xacro expansion.
+
+    Attributes:
+        time_limit_s: wall-clock time for the whole expansion (s).
+        memory_limit_mb: address space the child may add to what it inherits (MiB).
+        max_bytes: size limit of the xacro file and of each file it includes (bytes).
+        in_process: expand in this process, unbounded (for debugging xacro itself).
+    """
+
+    time_limit_s: float = 3.0
+    memory_limit_mb: int = 256
+    max_bytes: int = DEFAULT_MAX_BYTES
+    in_process: bool = False
+
+    def __post_init__(self) -> None:
+        if not self.time_limit_s > 0:
+            raise ValueError(f"'time_limit_s' must be > 0 (got {self.time_limit_s!r})")
+        if self.memory_limit_mb < 16:
+            raise ValueError(f"'memory_limit_mb' must be ≥ 16 (got {self.memory_limit_mb!r})")
+
+
+# xacro keeps its state in module globals: one in-process expansion at a time.
+_XACRO_LOCK = threading.Lock()
+
+
+def expand_xacro(path: str | Path, packages: PackageMap, mappings: dict[str, str] | None = None,
+                 options: XacroOptions | None = None) -> str:
+    """Expand a xacro file to URDF text, resolving ``$(find pkg)`` through ``packages``.
+
+    Args:
+        path: the ``.xacro`` file.
+        packages: where ``$(find pkg)`` looks packages up.
+        mappings: xacro arguments (``name:=value`` on the xacro command line).
+        options: time and memory bounds (default :class:`XacroOptions`).
+
+    Raises:
+        RobotDescriptionError: xacro reports an error, an included file is refused, or
+            the expansion runs out of time or memory (the message names the file).
+    """
+    options = options or XacroOptions()
+    path = Path(path)
+    problem = file_problem(path)
+    if problem is not None:
+        raise RobotDescriptionError(problem, path)
+    if options.in_process:
+        return _expand(path, packages, mappings, options.max_bytes)
+    return _expand_in_child(path, packages, mappings, options)
+
+
+def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
+                     options: XacroOptions) -> str:
+    context = multiprocessing.get_context("fork")
+    receiver, sender = context.Pipe(duplex=False)
+    child = context.Process(target=_child_main, daemon=True,
+                            args=(sender, path, packages, mappings, options))
+    child.start()
+    sender.close()
+    try:
+        if not receiver.poll(options.time_limit_s):
+            raise RobotDescriptionError(
+                f"xacro expansion took longer than {options.time_limit_s:g} s "
+                "(a runaway expression or macro?)", path)
+        try:
+            kind, value = receiver.recv()
+        except (EOFError, OSError):
+            child.join(1.0)
+            raise RobotDescriptionError(
+                f"xacro expansion failed: its process ended (exit code {child.exitcode}); "
+                f"out of memory (limit +{options.memory_limit_mb} MiB)?", path) from None
+    finally:
+        receiver.close()
+        if child.is_alive():
+            child.kill()
+        child.join()
+    if kind == "error":
+        raise value
+    return str(value)
+
+
+def _child_main(sender: Connection, path: Path, packages: PackageMap,
+                mappings: dict[str, str] | None, options: XacroOptions) -> None:
+    """The child: limit the address space, expand, send ("text", str) or ("error", exc)."""
+    try:
+        _limit_address_space(options.memory_limit_mb)
+        result: tuple[str, Any] = ("text", _expand(path, packages, mappings, options.max_bytes))
+    except RobotDescriptionError as exc:
+        result = ("error", exc)
+    except MemoryError:
+        result = ("error", RobotDescriptionError(
+            f"xacro expansion needs more memory than its limit "
+            f"(+{options.memory_limit_mb} MiB): a runaway expression or macro?", path))
+    except BaseException as exc:  # anything else is reported, never raised in the child
+        result = ("error", RobotDescriptionError(
+            f"xacro expansion failed: {type(exc).__name__}: {exc}", path))
+    try:
+        sender.send(result)
+    except MemoryError:
+        os._exit(3)
+    finally:
+        sender.close()
+
+
+def _limit_address_space(extra_mb: int) -> None:
+    with open("/proc/self/status") as status:
+        used = next((int(line.split()[1]) * 1024 for line in status
+                     if line.startswith("VmSize:")), 0)
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    limit = used + extra_mb * 2**20
+    if hard != resource.RLIM_INFINITY:
+        limit = min(limit, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+
+
+def _guarded_includes(xacro: Any, max_bytes: int) -> tuple[Callable[..., Any], Callable[..., Any]]:
+    """Wrap xacro's file readers so every file it opens is checked first; returns the
+    originals to restore."""
+    original_parse, original_load_yaml = xacro.parse, xacro.load_yaml
+
+    def parse(inp: Any, filename: str | None = None) -> Any:
+        if inp is None and filename is not None:
+            full = os.path.join(xacro.root_dir or "", filename)
+            if file_problem(full) == "file not found":  # xacro's own message names it
+                return original_parse(inp, filename)
+            try:
+                inp = read_text_file(full, RobotDescriptionError, max_bytes)
+            except RobotDescriptionError as exc:
+                raise xacro.XacroException(exc.reason) from None
+        return original_parse(inp, filename)
+
+    def load_yaml(filename: str) -> Any:
+        problem = file_problem(xacro.abs_filename_spec(filename))
+        if problem is not None:
+            raise xacro.XacroException(f"{filename}: {problem}")
+        return original_load_yaml(filename)
+
+    xacro.parse, xacro.load_yaml = parse, load_yaml
+    return original_parse, original_load_yaml
+
+
+def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
+            max_bytes: int) -> str:
+    """Expand in this process (unbounded; see :func:`expand_xacro`)."""
+    import xacro
+    import xacro.substitution_args as substitution_args
+
+    lookup_errors: list[RobotDescriptionError] = []
+
+    def find(pkg: str) -> str:
+        try:
+            return str(packages.find(pkg))
+        except RobotDescriptionError as exc:
+            lookup_errors.append(exc)
+            raise
+
+    with _XACRO_LOCK:
+        saved_find = substitution_args._eval_find
+        substitution_args._eval_find = find
+        saved_readers = _guarded_includes(xacro, max_bytes)
+        chatter = io.StringIO()
+        try:
+            with redirect_stdout(chatter), redirect_stderr(chatter):
+                document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            return str(document.toprettyxml(indent="  "))
+        except MemoryError:
+            raise
+        except Exception as exc:  # xacro raises plain exceptions of many kinds
+            # Report the file xacro was reading when it failed (maybe an included one).
+            stack = [f for f in (xacro.filestack or []) if f]
+            where = Path(stack[-1]) if stack else path
+            if lookup_errors:
+                raise RobotDescriptionError(
+                    f"$(find …): {lookup_errors[0].reason}", where
+                ) from None
+            if isinstance(exc, expat.ExpatError):
+                raise RobotDescriptionError(
+                    f"invalid XML: {expat.ErrorString(exc.code)}", where, exc.lineno
+                ) from None
+            detail = " ".join(str(exc).split()) or type(exc).__name__
+            chatter_text = " ".join(chatter.getvalue().split())
+            if chatter_text:
+                detail = f"{detail} ({chatter_text})"
+            if where != path:
+                detail = f"{detail} (included from {path})"
+            raise RobotDescriptionError(f"xacro expansion failed: {detail}", where) from None
+        finally:
+            substitution_args._eval_find = saved_find
+            xacro.parse, xacro.load_yaml = saved_readers
+            xacro.init_stacks(None)
