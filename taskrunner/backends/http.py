@@ -4,14 +4,17 @@ Each command is one request with the JSON body ``{"cmd": "..."}`` and
 ``Content-Type: application/json``; the answer ``{"reply": "..."}`` carries the reply line.
 Only idempotent commands (STATUS, PING, VERSION) are retried after a network error;
 ``TRAJ``, ``MOVE`` and the others never are (a lost answer may hide a command that ran).
+Requests go through one pooled :class:`httpx.Client`: the connection to the board is kept
+alive between commands (a trajectory streams hundreds of them), and proxies from the
+environment are ignored (the board is on the local network).
 """
 
 from __future__ import annotations
 
 import json
 import time
-import urllib.error
-import urllib.request
+
+import httpx
 
 from taskrunner.backends.calibration import ServoCalibration
 from taskrunner.backends.servo_backend import ServoBackend, ServoOptions
@@ -36,9 +39,11 @@ class HttpTransport:
         if not url.startswith(("http://", "https://")):
             raise BackendError(f"servo firmware URL must be http(s)://... (got {url!r})")
         self._url = url
-        self._timeout = reply_timeout
         self._retries = retries
-        self._opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))
+        self._client = httpx.Client(
+            timeout=httpx.Timeout(reply_timeout), trust_env=False,
+            limits=httpx.Limits(max_connections=1, max_keepalive_connections=1),
+            headers={"Content-Type": "application/json"})
         self._closed = False
 
     def exchange(self, line: str) -> str:
@@ -53,22 +58,21 @@ class HttpTransport:
         attempts = 1 + (self._retries if command_name(line) in IDEMPOTENT_COMMANDS else 0)
         body = json.dumps({"cmd": line}).encode()
         for attempt in range(attempts):
-            request = urllib.request.Request(
-                self._url, data=body, method="POST",
-                headers={"Content-Type": "application/json"})
             try:
-                with self._opener.open(request, timeout=self._timeout) as response:
-                    answer = response.read()
-                break
-            except urllib.error.HTTPError as exc:
-                with exc:
-                    raise BackendError(f"servo firmware at {self._url} answered HTTP {exc.code} "
-                                       f"to {line!r}: {exc.read()[:200]!r}") from None
-            except (urllib.error.URLError, OSError, TimeoutError) as exc:
+                response = self._client.post(self._url, content=body)
+            except httpx.HTTPError as exc:
                 if attempt + 1 >= attempts:
                     raise BackendError(f"no answer from the servo firmware at {self._url} to "
-                                       f"{line!r} ({attempts} attempt(s)): {exc}") from None
+                                       f"{line!r} ({attempts} attempt(s)): "
+                                       f"{exc or type(exc).__name__}") from None
                 time.sleep(_RETRY_PAUSE)
+                continue
+            if response.status_code >= 400:
+                raise BackendError(f"servo firmware at {self._url} answered HTTP "
+                                   f"{response.status_code} to {line!r}: "
+                                   f"{response.content[:200]!r}")
+            answer = response.content
+            break
         try:
             reply = json.loads(answer)["reply"]
         except (ValueError, KeyError, TypeError):
@@ -79,8 +83,10 @@ class HttpTransport:
         return reply
 
     def close(self) -> None:
-        """Refuse further commands (idempotent)."""
-        self._closed = True
+        """Close the connection and refuse further commands (idempotent)."""
+        if not self._closed:
+            self._closed = True
+            self._client.close()
 
 
 class HttpBackend(ServoBackend):
