@@ -14,10 +14,12 @@ active one in the worker, so the loaders refuse files outside its folders there 
 
 from __future__ import annotations
 
+import atexit
 import logging
 import multiprocessing
 import threading
 import time
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -81,8 +83,10 @@ class _Worker:
     def __init__(self, memory_bytes: int) -> None:
         context = multiprocessing.get_context("spawn")
         self.conn, child = context.Pipe()
+        # Not a daemon: a check loads xacro in a child process of its own. Workers are
+        # killed by close(), and at exit (below) before multiprocessing joins them.
         self.process = context.Process(target=_serve, args=(child, memory_bytes),
-                                       name="taskrunner-request-work", daemon=True)
+                                       name="taskrunner-request-work", daemon=False)
         self.process.start()
         child.close()
 
@@ -100,12 +104,16 @@ class RequestWork:
         timeout_s: the time limit of one call, waiting for a free worker included (s).
         memory_mb: the address-space limit of a worker process (MiB).
         workers: how many calls run at once.
-        what: how the work is called in messages (``the check``).
+        setting: the setting that sets the time limit (named in messages).
+        what: what took too long, for messages (``{s}``: the limit).
     """
 
     def __init__(self, isolation: str, timeout_s: float, memory_mb: int, workers: int,
-                 setting: str = "check_timeout_s") -> None:
+                 setting: str = "check_timeout_s",
+                 what: str = "the request's task took longer than {s} s to load and check"
+                 ) -> None:
         self.isolation = isolation
+        self.what = what
         self.timeout_s = timeout_s
         self.memory_bytes = memory_mb * 1024 * 1024
         self.setting = setting
@@ -113,6 +121,7 @@ class RequestWork:
         self._idle: list[_Worker] = []
         self._lock = threading.Lock()
         self._closed = False
+        _OPEN.add(self)
 
     def start(self) -> None:
         """Start one worker now, so that the first request does not wait for it."""
@@ -140,8 +149,8 @@ class RequestWork:
 
     def _too_long(self, detail: str = "") -> WorkLimitError:
         extra = f", {detail}" if detail else ""
-        return WorkLimitError(f"the request's task took longer than {self.timeout_s:g} s "
-                              f"to load and check{extra}; it was stopped (server setting "
+        what = self.what.replace("{s}", f"{self.timeout_s:g}")
+        return WorkLimitError(f"{what}{extra}; it was stopped (server setting "
                               f"{self.setting!r})")
 
     def _in_thread(self, function: Callable[..., Any], args: tuple[Any, ...],
@@ -202,6 +211,17 @@ class RequestWork:
             idle, self._idle = self._idle, []
         for worker in idle:
             worker.kill()
+
+
+_OPEN: weakref.WeakSet[RequestWork] = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all() -> None:
+    """Kill the workers still running at exit (registered after multiprocessing's own
+    exit handler, so it runs before that joins the non-daemon workers)."""
+    for work in list(_OPEN):
+        work.close()
 
 
 # --------------------------------------------------------------- the work itself

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from typing import Annotated
 
 from fastapi import APIRouter, Depends, Response
@@ -10,8 +11,10 @@ from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.auth import require_read
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells
+from taskrunner.api.dependencies import get_cells, get_settings
+from taskrunner.api.requestwork import RequestWork, WorkLimitError
 from taskrunner.api.schemas import ErrorBody, PlanBody, PlanResponse
+from taskrunner.api.settings import Settings
 from taskrunner.planning.request import JointGoal, PlannerOptions, PlanRequest, PoseGoal
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.scene import scene_from_cell
@@ -20,20 +23,28 @@ from taskrunner.types import pose_from_xyz_rpy
 __all__ = ["router"]
 
 router = APIRouter(tags=["plan"])
-_ANSWER_TIMEOUT_S = 60.0  # planning_time is at most 30 s; the worker may be starting
 
 
 @router.post("/plan", response_model=PlanResponse, dependencies=[Depends(require_read)],
              responses={401: {"model": ErrorBody}, 404: {"model": ErrorBody},
                         413: {"model": ErrorBody}, 422: {"model": ErrorBody}})
-async def plan(body: PlanBody, cells: Annotated[CellRegistry, Depends(get_cells)]) -> Response:
+async def plan(body: PlanBody, cells: Annotated[CellRegistry, Depends(get_cells)],
+               settings: Annotated[Settings, Depends(get_settings)]) -> Response:
     """Plan a collision-free motion of ``group`` from where the cell's backend is now
     (with the cell's fixed objects) to a named pose, joint values or a link pose, and
-    time it (rad, s). Nothing moves. No path: 422 with the planner's reason."""
-    return Response(await run_in_threadpool(_plan, body, cells), media_type="application/json")
+    time it (rad, s). Nothing moves. No path: 422 with the planner's reason; no answer
+    within the server's ``plan_timeout_s``: 422, and the search is stopped."""
+    limit = settings.plan_timeout_s
+    # A thread with a deadline: the answer comes on time even if building the scene or
+    # an in-process planner runs late (a worker process is also told to stop).
+    work = RequestWork("inprocess", limit, 0, 1, setting="plan_timeout_s",
+                       what="the plan took longer than {s} s")
+    deadline = time.monotonic() + limit
+    answer = await run_in_threadpool(work.call, _plan, body, cells, deadline, limit)
+    return Response(answer, media_type="application/json")
 
 
-def _plan(body: PlanBody, cells: CellRegistry) -> bytes:
+def _plan(body: PlanBody, cells: CellRegistry, deadline: float, limit: float) -> bytes:
     """The JSON of :class:`PlanResponse`, without validating it field by field: a slow
     arm's trajectory has thousands of samples, and validating or encoding each float
     here cost the server more than planning them."""
@@ -59,9 +70,17 @@ def _plan(body: PlanBody, cells: CellRegistry) -> bytes:
                              sample_rate_hz=body.sample_rate_hz), trajectory_json=True)
     planner = session.take_planner()
     try:
-        result = planner.submit(scene, request).result(_ANSWER_TIMEOUT_S)
-    finally:
+        ticket = planner.submit(scene, request)
+        result = ticket.result(max(0.0, deadline - time.monotonic()))
+    except TimeoutError:
+        ticket.cancel()
+        planner.close()  # it may still be searching: not back into the pool
+        raise WorkLimitError(f"the plan took longer than {limit:g} s; it was stopped "
+                             "(server setting 'plan_timeout_s')") from None
+    except BaseException:
         session.give_planner(planner)
+        raise
+    session.give_planner(planner)
     trajectory, encoded = result.trajectory, result.trajectory_json
     assert trajectory is not None and encoded is not None  # asked for with the request
     head = to_json({"group": group.name, "joint_names": list(trajectory.names),

@@ -8,7 +8,7 @@ from collections.abc import AsyncIterator
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, status
-from fastapi.responses import StreamingResponse
+from fastapi.sse import EventSourceResponse, ServerSentEvent
 from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.auth import require_read, require_write
@@ -31,7 +31,6 @@ __all__ = ["router"]
 
 router = APIRouter(prefix="/runs", tags=["runs"])
 
-_KEEPALIVE_S = 10.0  # an idle stream sends a comment this often, so proxies keep it open
 _ERRORS: dict[int | str, dict[str, Any]] = {
     401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
     413: {"model": ErrorBody}, 422: {"model": ErrorBody}}
@@ -98,16 +97,11 @@ def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]
                        url=f"/runs/{run_id}")
 
 
-@router.get("/{run_id}/events", dependencies=[Depends(require_read)],
-            responses={**_ERRORS, 200: {"content": {"text/event-stream": {}},
-                                        "description": "the run's events, as Server-Sent "
-                                                       "Events, to the end of the run"}})
-async def run_events(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
-                     last_event_id: Annotated[str | None, Header()] = None,
-                     after: Annotated[int | None, Query(ge=0)] = None) -> StreamingResponse:
-    """The run's events as Server-Sent Events (``id`` = the event's seq, ``event`` = its
-    kind, ``data`` = the event as JSON), from the first one or from after
-    ``Last-Event-ID`` (or ``?after=N``); the stream ends after ``run_finished``."""
+async def _events_start(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
+                        last_event_id: Annotated[str | None, Header()] = None,
+                        after: Annotated[int | None, Query(ge=0)] = None) -> int:
+    """The seq to stream after (``Last-Event-ID``, else ``?after=N``, else 0), checked
+    before the stream starts: a bad value is 422, an unknown run 404."""
     start = after or 0
     if last_event_id is not None:
         try:
@@ -117,16 +111,30 @@ async def run_events(run_id: str, manager: Annotated[RunManager, Depends(get_man
                                      f"(got {last_event_id!r})") from None
         if start < 0:
             raise HTTPException(422, f"'Last-Event-ID' must be >= 0 (got {start})")
-    manager.record(run_id)  # 404 before the stream starts
-    return StreamingResponse(_stream(manager, run_id, start),
-                             media_type="text/event-stream",
-                             headers={"Cache-Control": "no-cache", "X-Accel-Buffering": "no"})
+    manager.record(run_id)  # RunNotFoundError: 404
+    return start
 
 
-async def _stream(manager: RunManager, run_id: str, after: int) -> AsyncIterator[str]:
-    """The events after ``after`` as SSE, to ``run_finished``. It sleeps until the run
-    emits an event (the runner's thread wakes it), so an idle stream costs nothing; a
-    client that goes away cancels it (Starlette listens for the disconnect)."""
+@router.get("/{run_id}/events", response_class=EventSourceResponse,
+            dependencies=[Depends(require_read)],
+            responses={**_ERRORS, 200: {"description": "the run's events, as Server-Sent "
+                                                       "Events, to the end of the run"}})
+async def run_events(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
+                     start: Annotated[int, Depends(_events_start)]
+                     ) -> AsyncIterator[ServerSentEvent]:
+    """The run's events as Server-Sent Events (``id`` = the event's seq, ``event`` = its
+    kind, ``data`` = the event as JSON), from the first one or from after
+    ``Last-Event-ID`` (or ``?after=N``); the stream ends after ``run_finished``. An idle
+    stream sends a comment now and then, so that proxies keep it open."""
+    async for event in _follow(manager, run_id, start):
+        yield ServerSentEvent(raw_data=json.dumps(event.as_dict()), id=str(event.seq),
+                              event=event.kind)
+
+
+async def _follow(manager: RunManager, run_id: str, after: int) -> AsyncIterator[RunEvent]:
+    """The events after ``after``, to ``run_finished``. It sleeps until the run emits an
+    event (the runner's thread wakes it), so an idle stream costs nothing; a client that
+    goes away cancels it."""
     loop = asyncio.get_running_loop()
     wake = asyncio.Event()
 
@@ -145,21 +153,14 @@ async def _stream(manager: RunManager, run_id: str, after: int) -> AsyncIterator
             events, more = manager.events_after(run_id, after)
             for event in events:
                 after = event.seq
-                yield _sse(event)
+                yield event
                 if event.kind == "run_finished":
                     return
             if not more:
                 if not events:
                     return
                 continue  # events may have arrived between the read and the end
-            try:
-                await asyncio.wait_for(wake.wait(), _KEEPALIVE_S)
-            except TimeoutError:
-                yield ": keepalive\n\n"
+            await wake.wait()
     finally:
         if live is not None:
             live.events.unsubscribe(arrived)
-
-
-def _sse(event: RunEvent) -> str:
-    return f"id: {event.seq}\nevent: {event.kind}\ndata: {json.dumps(event.as_dict())}\n\n"
