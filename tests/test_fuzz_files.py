@@ -127,6 +127,10 @@ def data(tmp_path_factory: pytest.TempPathFactory) -> Path:
     root = tmp_path_factory.mktemp("data")
     shutil.copytree(DATA_ROOT / "robots", root / "robots")
     shutil.copytree(DATA_ROOT / "tasks", root / "tasks")
+    # The commands import what they need on first use: do it once here, before the
+    # forks, so that each case costs its own work only.
+    assert cli.main(["check", str(root / "tasks" / "pick_place.yaml")]) == 0
+    assert cli.main(["info", str(root / "robots" / "cells" / "servo_arm_pair.yaml")]) == 0
     return root
 
 
@@ -506,7 +510,7 @@ def mutations(draw: st.DrawFn) -> tuple[str, str]:
     return relative, text
 
 
-@settings(max_examples=60, derandomize=True, deadline=None, database=None,
+@settings(max_examples=150, derandomize=True, deadline=None, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(mutation=mutations())
 def test_mutated_shipped_files_end_cleanly(data, tmp_path, mutation):
