@@ -186,3 +186,205 @@ def test_a_control_character_is_a_yaml_error_with_its_line():
 
     with pytest.raises(YamlError, match=r"^task.yaml:2: invalid YAML: character #x001f"):
         load_yaml_text("a: 1\nb: \x1f\n", "task.yaml")
+
+
+# ------------------------------------------------------------------ YAML 1.2, tags, limits
+def test_yaml_1_2_keeps_on_yes_and_no_as_strings():
+    data = load_yaml_text("on: yes\noff: no\nflag: true\nwhen: 2024-01-01\nn: 1e3\n")
+    assert data == {"on": "yes", "off": "no", "flag": True, "when": "2024-01-01", "n": 1000.0}
+
+
+def test_merged_keys_keep_the_line_where_they_were_written():
+    data = load_yaml_text("base: &b\n  x: 1\n  y: 2\nj:\n  <<: *b\n  y: 3\n")
+    assert data["j"] == {"x": 1, "y": 3}
+    assert data["j"].line_of("x") == 2 and data["j"].line_of("y") == 6
+
+
+def test_merge_of_a_scalar_is_refused_with_its_line():
+    with pytest.raises(YamlError, match=r"^<string>:2: '<<' \(merge key\) must name a mapping"):
+        load_yaml_text("a: &a 1\nb: {<<: *a}\n")
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('a: !!int "abc"\n', "<string>:1: invalid YAML: 'abc' is not a valid !!int"),
+        ("a: !!float x\n", "<string>:1: invalid YAML: 'x' is not a valid !!float"),
+        ("a: !!bool yes\n", "<string>:1: invalid YAML: 'yes' is not a valid !!bool"),
+        ("a: !!binary aGk=\n", "<string>:1: invalid YAML: tag '!!binary' is not supported "
+                               "(only !!str, !!int, !!float, !!bool, !!null)"),
+        ("a: !custom 1\n", "<string>:1: invalid YAML: tag '!custom' is not supported "
+                           "(only !!str, !!int, !!float, !!bool, !!null)"),
+        ("a: !!set {x}\n", "<string>:1: invalid YAML: tag '!!set' is not supported here "
+                           "(only !!map)"),
+        ("a: !!int " + "9" * 5000 + "\n", "<string>:1: invalid YAML: '" + "9" * 40
+         + "…' is not a valid !!int"),
+    ],
+    ids=["int", "float", "bool", "binary", "local", "set", "5000 digits"],
+)
+def test_explicit_tags_are_checked(text, message):
+    with pytest.raises(YamlError) as info:
+        load_yaml_text(text)
+    assert str(info.value) == message
+
+
+def test_explicit_core_tags_convert():
+    data = load_yaml_text('a: !!int "0x1f"\nb: !!float "1"\nc: !!str 12\nd: !!null ""\n')
+    assert data == {"a": 31, "b": 1.0, "c": "12", "d": None}
+
+
+def test_an_alias_bomb_is_refused_before_it_is_expanded():
+    from time import perf_counter
+
+    names = "abcdefghijkl"  # 12 levels of 10: 10^12 nodes if expanded
+    text = "a: &a [" + ",".join(["lol"] * 10) + "]\n" + "".join(
+        f"{n}: &{n} [" + ",".join([f"*{p}"] * 10) + "]\n" for p, n in zip(names, names[1:]))
+    assert len(text) < 500
+    start = perf_counter()
+    with pytest.raises(YamlError) as info:
+        load_yaml_text(text, "bomb.yaml")
+    assert perf_counter() - start < 0.5
+    assert str(info.value) == ("bomb.yaml:5: aliases expand to more than 100000 nodes "
+                               "(at '*d'; an alias bomb?)")
+
+
+def test_the_alias_limit_is_configurable_and_counts_every_alias():
+    from taskrunner.yamlfile import YamlLimits
+
+    text = "a: &a [1, 2, 3]\nb: [*a, *a]\n"  # each alias brings 4 nodes
+    assert load_yaml_text(text, limits=YamlLimits(max_alias_nodes=8))["b"] == [[1, 2, 3]] * 2
+    with pytest.raises(YamlError, match=r":2: aliases expand to more than 7 nodes"):
+        load_yaml_text(text, limits=YamlLimits(max_alias_nodes=7))
+
+
+def test_aliases_are_copies():
+    data = load_yaml_text("a: &a {x: [1]}\nb: *a\n")
+    assert data["a"] == data["b"] and data["a"] is not data["b"]
+    assert data["b"].line == 1
+
+
+def test_a_recursive_alias_is_refused():
+    with pytest.raises(YamlError, match=r"^<string>:1: alias '\*a' is inside the node it names"):
+        load_yaml_text("a: &a [1, *a]\n")
+
+
+def test_an_undefined_alias_is_refused_with_its_line():
+    with pytest.raises(YamlError, match=r"^<string>:2: invalid YAML: alias '\*nope' names no anchor"):
+        load_yaml_text("a: 1\nb: *nope\n")
+
+
+@pytest.mark.parametrize("depth", [65, 1000, 100_000])
+def test_deep_nesting_is_refused_without_recursion(depth):
+    with pytest.raises(YamlError) as info:
+        load_yaml_text("a: " + "[" * depth + "]" * depth + "\n", "deep.yaml")
+    assert str(info.value) == "deep.yaml:1: YAML nested deeper than 64 levels"
+
+
+def test_nesting_up_to_the_limit_is_fine():
+    assert load_yaml_text("[" * 64 + "]" * 64) is not None
+
+
+def test_nesting_through_an_alias_counts_too():
+    from taskrunner.yamlfile import YamlLimits
+
+    text = "a: &a [[[1]]]\nb: [[*a]]\n"
+    assert load_yaml_text(text, limits=YamlLimits(max_depth=6))
+    with pytest.raises(YamlError, match=r":2: YAML nested deeper than 5 levels \(through '\*a'\)"):
+        load_yaml_text(text, limits=YamlLimits(max_depth=5))
+
+
+def test_the_node_limit_bounds_a_flat_file():
+    from taskrunner.yamlfile import YamlLimits
+
+    with pytest.raises(YamlError, match=r"^<string>:1: YAML has more than 100 nodes"):
+        load_yaml_text("[" + "1, " * 200 + "]", limits=YamlLimits(max_nodes=100))
+
+
+def test_a_file_over_the_size_limit_is_refused_unread(tmp_path):
+    from taskrunner.yamlfile import YamlLimits
+
+    path = tmp_path / "big.yaml"
+    path.write_text("description: '" + "x" * 20_000_000 + "'\n")
+    with pytest.raises(YamlError) as info:
+        load_yaml(path)
+    assert str(info.value) == f"{path}: file is too large (20.0 MB; the limit is 4.2 MB)"
+    with pytest.raises(YamlError, match=r"small.yaml: file is too large \(500 bytes; "
+                                        r"the limit is 100 bytes\)"):
+        load_yaml(write(tmp_path, "a: 1\n" * 100, "small.yaml"), YamlLimits(max_bytes=100))
+
+
+@pytest.mark.parametrize(
+    ("data", "message"),
+    [
+        ("a: 1\n".encode("utf-16"), "file is not UTF-8 text (it is UTF-16 or UTF-32: save it as UTF-8)"),
+        ("a: 1\n".encode("utf-16-le"), "file is not UTF-8 text (a NUL byte: a binary file, or UTF-16)"),
+        (b"a: 1\n\x7fELF\x00\x01", "file is not UTF-8 text (a NUL byte: a binary file, or UTF-16)"),
+    ],
+    ids=["utf-16 with BOM", "utf-16 without BOM", "binary"],
+)
+def test_binary_and_utf16_files_are_refused(tmp_path, data, message):
+    path = tmp_path / "f.yaml"
+    path.write_bytes(data)
+    with pytest.raises(YamlError) as info:
+        load_yaml(path)
+    assert info.value.reason == message and info.value.path == path
+
+
+def test_a_utf8_byte_order_mark_is_fine(tmp_path):
+    path = tmp_path / "bom.yaml"
+    path.write_bytes(b"\xef\xbb\xbfa: 1\n")
+    assert load_yaml(path) == {"a": 1}
+
+
+def test_a_fifo_is_refused_without_blocking(tmp_path):
+    import os
+
+    path = tmp_path / "fifo.yaml"
+    os.mkfifo(path)
+    with pytest.raises(YamlError) as info:
+        load_yaml(path)  # would block forever if opened for reading without O_NONBLOCK
+    assert str(info.value) == f"{path}: not a regular file (a FIFO (named pipe))"
+
+
+@pytest.mark.parametrize(
+    ("path", "message"),
+    [
+        ("/dev/zero", "not a regular file (a character device)"),
+        ("/proc/self/environ", "not a regular file (a pseudo-file under /proc)"),
+        ("/", "not a regular file (a directory)"),
+    ],
+)
+def test_devices_pseudo_files_and_folders_are_refused(path, message):
+    with pytest.raises(YamlError) as info:
+        load_yaml(path)
+    assert str(info.value) == f"{path}: {message}"
+
+
+def test_a_symlink_loop_is_refused(tmp_path):
+    import os
+
+    path = tmp_path / "loop.yaml"
+    os.symlink(path, path)
+    with pytest.raises(YamlError) as info:
+        load_yaml(path)
+    assert str(info.value) == f"{path}: symlink loop (too many levels of symbolic links)"
+
+
+@pytest.mark.parametrize(
+    ("text", "line", "reason"),
+    [
+        ("a:\n  b: 1\n c: 2\n", 3, "this line does not line up with the keys above it "
+                                   "(check its indentation)"),
+        ("a: 1\n  b: 2\n", 2, "a 'key: value' where none can start: check the indentation "
+                              "of this line, or quote a value that contains ': '"),
+        ("a: [1, 2\nb: 3\n", 2, "a '[' list is not closed with ']'"),
+        ("- a\nb: 1\n", 2, "this line does not line up with the list items above it "
+                           "(check its indentation)"),
+    ],
+    ids=["dedent", "indent", "unclosed list", "list then key"],
+)
+def test_indentation_errors_are_told_in_plain_words(text, line, reason):
+    with pytest.raises(YamlError) as info:
+        load_yaml_text(text, "f.yaml")
+    assert str(info.value) == f"f.yaml:{line}: invalid YAML: {reason}"
+    assert "while parsing" not in str(info.value)
