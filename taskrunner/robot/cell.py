@@ -42,6 +42,7 @@ from taskrunner.robot.description import load_description
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.packages import PackageMap
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.taught import apply_taught
 from taskrunner.textfile import resolve_path
 from taskrunner.validation import (
     Metres,
@@ -275,7 +276,9 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             model.named_state(group, pose)
         except UnknownNameError as exc:
             raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
-    return Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
+    cell = Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
+    apply_taught(cell)  # poses taught on this cell (the API's), if a set is active
+    return cell
 
 
 def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None) -> Cell:
