@@ -14,12 +14,14 @@ state always travels in the request.
 
 from __future__ import annotations
 
+import atexit
 import itertools
 import multiprocessing as mp
 import os
 import signal
 import threading
 import time
+import weakref
 from dataclasses import replace
 from multiprocessing.connection import Connection
 from pathlib import Path
@@ -154,6 +156,7 @@ class PlanningWorker:
         self._start_timeout = start_timeout
         self._ready = False
         self._launch()
+        _OPEN.add(self)
         if wait_ready:
             self._await_ready(start_timeout)
 
@@ -165,9 +168,13 @@ class PlanningWorker:
         """Start the process; it loads the model while the caller goes on."""
         self._ready = False
         self._conn, child = self._ctx.Pipe()
+        # Not a daemon: loading a xacro robot runs xacro in a child process of its own,
+        # which a daemon may not have. Closed by close(), and at exit (_close_all) before
+        # multiprocessing joins its non-daemon children; a parent killed outright closes
+        # the pipe, and the worker ends at its next read.
         self._process = self._ctx.Process(
             target=_serve, args=(self.source, child, self._cancel, self.nice),
-            name="taskrunner-planner", daemon=True)
+            name="taskrunner-planner", daemon=False)
         # An ignored signal stays ignored across exec (and Python then installs no
         # KeyboardInterrupt handler): a Ctrl-C while the child imports cannot end it with a
         # traceback. Only the main thread may set handlers; a SIGINT in the few ms of
@@ -234,7 +241,8 @@ class PlanningWorker:
         return self.submit(scene, request).result(timeout)
 
     def close(self) -> None:
-        """Stop the worker process."""
+        """Stop the worker process (idempotent)."""
+        _OPEN.discard(self)
         if self._process.is_alive():
             try:
                 self._cancel.value = self._pending.request_id if self._pending else _NO_CANCEL
@@ -297,3 +305,14 @@ class PlanningWorker:
             f"{handle.request_id}; it restarts with the next request"))
         self._pending = None
         self._sent_scene = None
+
+
+_OPEN: weakref.WeakSet[PlanningWorker] = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all() -> None:
+    """Stop the workers still open at exit (registered after multiprocessing's own exit
+    handler, so it runs before that joins the non-daemon workers)."""
+    for worker in list(_OPEN):
+        worker.close()
