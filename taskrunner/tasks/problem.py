@@ -175,7 +175,14 @@ def problems_from_validation(error: ValidationError, node: Any, file: Path | Non
             belongs).
     """
     problems = []
-    for err in error.errors(include_url=False):
+    errors = error.errors(include_url=False)
+    # A tuple with a bad item is also reported as too short (the bad item left out):
+    # the item's own error says it all.
+    items_failed = {tuple(e["loc"][:-1]) for e in errors
+                    if e["loc"] and isinstance(e["loc"][-1], int)}
+    for err in errors:
+        if err["type"] == "too_short" and tuple(err["loc"]) in items_failed:
+            continue
         loc = tuple(k for k in err["loc"] if not (isinstance(k, str) and k.startswith("<")))
         found = locate(node, loc)
         problems.append(Problem(file, found if found is not None else line,

@@ -115,3 +115,57 @@ def test_a_path_with_a_nul_character_is_refused(tmp_path, cell):
     ((file, line, message),) = problems_of(path)
     assert (file, line) == (path, 4)
     assert "holds a NUL character" in message
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ("{xyz: [.inf, 0, 0.8]}", "'objects[0].pose.xyz[0]' must be a finite number (got inf)"),
+        ("{xyz: [1e400, 0, 0.8]}", "'objects[0].pose.xyz[0]' must be a finite number (got inf)"),
+        ("{xyz: [0, .nan, 0.8]}", "'objects[0].pose.xyz[1]' must be a finite number (got nan)"),
+        ("{xyz: [-1e308, 0, 0.8]}",
+         "'objects[0].pose.xyz[0]' must be a finite number within ±1000 m (got -1e+308)"),
+        ("{xyz: [0, 0, 0.8], rpy: [0, 1e308, 0]}",
+         "'objects[0].pose.rpy[1]' must be a finite number within ±100 rad (got 1e+308)"),
+    ],
+    ids=["inf", "overflow", "nan", "-1e308", "huge rpy"],
+)
+def test_pose_numbers_must_be_finite_and_bounded(tmp_path, cell, value, message):
+    path = tmp_path / "t.yaml"
+    text = (f"task: t\ncell: {cell}\nobjects:\n"
+            f"  - {{name: cube, shape: box, size: [0.02, 0.02, 0.02], pose: {value}}}\n"
+            "steps:\n  - wait: {seconds: 1}\n")
+    assert problems_of(path, text) == [(path, 4, message)]
+
+
+@pytest.mark.parametrize(
+    ("shape", "message"),
+    [
+        ("shape: box, size: [0.02, -0.02, 0.02]",
+         "'objects[0].size[1]' must be a finite number > 0 and ≤ 1000 m (got -0.02)"),
+        ("shape: sphere, radius: .nan",
+         "'objects[0].radius' must be a finite number (got nan)"),
+        ("shape: cylinder, radius: 0.01, length: 0",
+         "'objects[0].length' must be a finite number > 0 and ≤ 1000 m (got 0.0)"),
+    ],
+    ids=["negative size", "nan radius", "zero length"],
+)
+def test_object_sizes_must_be_positive(tmp_path, cell, shape, message):
+    path = tmp_path / "t.yaml"
+    text = (f"task: t\ncell: {cell}\nobjects:\n  - {{name: o, {shape}}}\n"
+            "steps:\n  - wait: {seconds: 1}\n")
+    assert problems_of(path, text) == [(path, 4, message)]
+
+
+def test_a_place_at_infinity_is_refused(tmp_path, cell):
+    path = tmp_path / "t.yaml"
+    text = task_text(cell, "  - place: {arm: arm, object: cube, at: {xyz: [0.1, .inf, 0.8]}}\n")
+    assert problems_of(path, text) == [
+        (path, 4, "'place.at.xyz[1]' must be a finite number (got inf)")]
+
+
+def test_an_approach_of_1e308_is_refused(tmp_path, cell):
+    path = tmp_path / "t.yaml"
+    text = task_text(cell, "  - pick: {arm: arm, object: cube, approach: 1e308}\n")
+    assert problems_of(path, text) == [
+        (path, 4, "'pick.approach' must be <= 1000 (got 1e+308)")]
