@@ -51,7 +51,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         registry = CellRegistry(settings.cells_dir,
                                 {"sim": settings.sim_speed, "mock": settings.mock_speed},
                                 settings.planner, store, settings.planner_nice,
-                                policy=settings.folder_policy())
+                                policy=settings.folder_policy(),
+                                servo_port=settings.servo_port, servo_url=settings.servo_url,
+                                firmware_speedup=settings.firmware_speedup)
         manager = RunManager(registry, store, tick_hz=settings.tick_hz)
         work = RequestWork(settings.check_isolation, settings.check_timeout_s,
                            settings.check_memory_mb, settings.check_workers)

@@ -17,16 +17,19 @@ from pathlib import Path
 from typing import Any
 
 from taskrunner.backends.base import Backend
+from taskrunner.backends.sim import SimBackend, SimOptions
+from taskrunner.errors import InputError
 from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
+from taskrunner.taught import apply_taught
 
 __all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession", "PoseConflictError"]
 
 log = logging.getLogger(__name__)
 
-BACKENDS = ("sim", "mock")
+BACKENDS = ("sim", "mock", "serial", "http")
 
 
 class CellNotFoundError(LookupError):
@@ -58,6 +61,9 @@ class CellSession:
     last_scene: Scene | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
     taught: set[tuple[str, str]] = field(default_factory=set)
+    servo_port: str | None = None
+    servo_url: str | None = None
+    firmware_speedup: float = 1.0
 
     def teach(self, group: str, name: str, joints: dict[str, float]) -> None:
         """Make ``name`` a named pose of ``group`` in this cell's model (runs compiled from
@@ -66,13 +72,47 @@ class CellSession:
         self.taught.add((group, name))
 
     def backend(self, kind: str) -> Backend:
-        """The cell's backend of ``kind``, made at the cell's start state on first use."""
+        """The cell's backend of ``kind``, made on first use: mock and sim at the cell's
+        start state, serial and http on the servos of the cell's one robot (its
+        hardware.yaml; the port and URL the server is set up with) where they are.
+
+        Raises:
+            InputError: a servo backend the cell or the server is not set up for.
+            BackendError: the servos' port or URL does not answer as the firmware does.
+        """
         if kind not in BACKENDS:
             raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
         with self.lock:
             if kind not in self.backends:
-                self.backends[kind] = make_backend(kind, self.cell, self.speeds.get(kind))
+                if kind == "http" and not self.servo_url:
+                    raise InputError("this server drives no servos over http: its "
+                                     "'servo_url' setting (TASKRUNNER_SERVO_URL) is not set")
+                self.backends[kind] = make_backend(
+                    kind, self.cell, self.speeds.get(kind), port=self.servo_port,
+                    url=self.servo_url, firmware_speedup=self.firmware_speedup)
             return self.backends[kind]
+
+    def sim_at_speed(self, speed: float, busy: bool) -> None:
+        """Make the cell's sim backend play at ``speed`` (a new controller at the joint
+        state of the old one). ``busy``: runs move the cell now.
+
+        Raises:
+            PoseConflictError: runs move the cell at another speed (409).
+        """
+        current = self.backend("sim")
+        if (self.speeds.get("sim") or 1.0) == speed:
+            return
+        if busy:
+            raise PoseConflictError(f"runs move cell {self.cell.name!r} now: its sim speed "
+                                    "changes only while it is still (or ask for the same "
+                                    "speed)")
+        state = current.joint_state()
+        with self.lock:
+            fresh = SimBackend(list(state.names), dict(zip(state.names, state.positions)),
+                               SimOptions(speed=speed))
+            old, self.backends["sim"] = self.backends["sim"], fresh
+            self.speeds = {**self.speeds, "sim": speed}  # this cell's only
+        old.close()
 
     def take_planner(self) -> Any:
         """A plan service for one user at a time (give it back with :meth:`give_planner`)."""
@@ -125,9 +165,13 @@ class CellRegistry:
 
     def __init__(self, cells_dir: Path, speeds: dict[str, float | None],
                  planner_kind: str, store: Any = None, planner_nice: int = 0,
-                 policy: FolderPolicy | None = None) -> None:
+                 policy: FolderPolicy | None = None, servo_port: str | None = None,
+                 servo_url: str | None = None, firmware_speedup: float = 1.0) -> None:
         self.cells_dir = cells_dir
         self.policy = policy
+        self.servo_port = servo_port
+        self.servo_url = servo_url
+        self.firmware_speedup = firmware_speedup
         self._store = store
         self._speeds = speeds
         self._planner_kind = planner_kind
@@ -169,17 +213,12 @@ class CellRegistry:
         # Outside the lock (loading meshes takes a while); under the folder policy: a
         # task may name any cell file, only those of the allowed folders load.
         cell = load_cell(path, policy=self.policy)
-        fresh = CellSession(path, cell, self._speeds, self._planner_kind, self._planner_nice)
+        fresh = CellSession(path, cell, self._speeds, self._planner_kind, self._planner_nice,
+                            servo_port=self.servo_port, servo_url=self.servo_url,
+                            firmware_speedup=self.firmware_speedup)
         if self._store is not None:
-            for group, name, joints, _ in self._store.poses(self.id_of(path)):
-                if group in cell.model.groups and all(
-                        j in cell.model.group(group).joint_names for j in joints) \
-                        and cell.model.within_limits(cell.model.state_with(
-                            cell.model.default_state(), joints)):
-                    fresh.teach(group, name, joints)
-                else:
-                    log.warning("taught pose %r of group %r no longer fits cell %s: skipped",
-                                name, group, path)
+            for pose in apply_taught(cell, self._store.taught_poses(self.cells_dir)):
+                fresh.taught.add((pose.group, pose.name))
         with self._lock:
             session = self._sessions.setdefault(path, fresh)
         settle_heap()  # the cell lives as long as the server

@@ -27,6 +27,7 @@ from typing import Any
 
 from taskrunner.errors import TaskrunnerError
 from taskrunner.folders import FolderPolicy
+from taskrunner.taught import TaughtPoses
 
 __all__ = ["RequestWork", "WorkLimitError", "check_request", "load_request"]
 
@@ -253,10 +254,12 @@ def load_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: 
 
 
 def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: str | None,
-                  parameters: dict[str, Any], seed: int) -> dict[str, Any]:
+                  parameters: dict[str, Any], seed: int,
+                  taught: TaughtPoses | None = None) -> dict[str, Any]:
     """The ``/tasks/check`` answer (``ok``, ``cell``, ``steps``, ``problems``) for a
     task file of the tasks folder or inline YAML, checked under ``policy`` (an inline
-    task is a file held in memory: ``inline.yaml`` of the tasks folder)."""
+    task is a file held in memory: ``inline.yaml`` of the tasks folder), with the
+    ``taught`` poses of its cell as a run would have them."""
     from taskrunner.api.handlers import problem_out
     from taskrunner.tree.check import check_task
 
@@ -267,7 +270,7 @@ def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml:
         assert yaml is not None
         path = inline_path(tasks_dir)
         active = policy.with_memory({path: yaml})
-    with active.active():
+    with active.active(), (taught or TaughtPoses()).active():
         report = check_task(path, parameters, seed=seed)
     problems = [problem_out(p) for p in report.problems]
     return {"ok": not problems, "cell": report.cell, "steps": report.steps,

@@ -128,13 +128,14 @@ class RunManager:
 
     # ----------------------------------------------------------------- starting
     def start(self, spec: TaskSpec, backend: str, seed: int = 0, task_text: str | None = None,
-              task_file: str | None = None) -> LiveRun:
+              task_file: str | None = None, speed: float | None = None) -> LiveRun:
         """Check ``spec``'s names against its cell, claim its joints and start it.
 
         Raises:
             TaskSpecError: the task names what its cell does not have (every problem).
             YamlError, RobotDescriptionError: the cell is invalid.
             ArmBusyError: a run in flight moves some of the same joints.
+            PoseConflictError: ``speed`` differs from that of sim runs in flight.
         """
         if backend not in BACKENDS:
             raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
@@ -146,6 +147,9 @@ class RunManager:
             if self._stopping:
                 raise RuntimeError("the server is shutting down")
             self._claim_check(session, joints)
+            if speed is not None and backend == "sim":
+                busy = any(other is session for other, _, _ in self._claims.values())
+                session.sim_at_speed(speed, busy)
             self._claims[id(claim)] = (session, joints, "(starting)")
         # Build the run outside the lock (scene and tree take a while), its joints claimed.
         planner = None

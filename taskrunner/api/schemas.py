@@ -37,8 +37,16 @@ class _TaskSource(_Strict):
         return self
 
 
+Backend = Literal["sim", "mock", "serial", "http"]
+
+
 class RunCreate(_TaskSource):
-    backend: Literal["sim", "mock"] = "sim"
+    backend: Backend = Field(default="sim", description="sim, mock, or the cell's servos "
+                             "over serial or http (the port and URL the server is set up "
+                             "with)")
+    speed: float | None = Field(default=None, gt=0, le=1000,
+                                description="time scale of the sim backend (2: twice real "
+                                            "time); default: the server's")
     cell: str | None = Field(default=None, max_length=255,
                              description="run on this cell (an id of GET /cells) instead of "
                                          "the task's own")
@@ -172,7 +180,7 @@ class PlanBody(_Strict):
     to: str | None = Field(default=None, description="a named pose of the group (go)")
     joints: dict[str, float] | None = Field(default=None, description="joint values (go)")
     pose: PoseTarget | None = Field(default=None, description="a link pose (move)")
-    backend: Literal["sim", "mock"] = "sim"
+    backend: Backend = "sim"
     planning_time: float = Field(default=1.0, gt=0, le=30)
     seed: int = Field(default=0, ge=0, le=2**31 - 1)
     velocity_scaling: float | None = Field(default=None, gt=0, le=1)
@@ -201,7 +209,7 @@ class PlanResponse(_Strict):
 
 class TeachBody(_Strict):
     group: str
-    backend: Literal["sim", "mock"] = "sim"
+    backend: Backend = "sim"
 
 
 class TeachResponse(_Strict):
@@ -219,7 +227,7 @@ class Health(_Strict):
 
 class TeachRequest(_Strict):
     group: str = Field(description="the group whose joints the pose sets")
-    backend: str = Field(default="sim", description="whose joint state to store: sim or mock")
+    backend: Backend = Field(default="sim", description="whose joint state to store")
 
 
 class TaughtPose(_Strict):

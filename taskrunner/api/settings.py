@@ -62,6 +62,12 @@ class Settings(BaseSettings):
         check_workers: how many checks run at once (more wait, within the time limit).
         plan_timeout_s: longest a ``/plan`` may take, planner start-up included (s).
         header_timeout_s: a connection must send its request headers within this (s).
+        servo_port: the serial port of the ``serial`` backend (default: the one in the
+            robot's hardware.yaml).
+        servo_url: the ESP32's ``/api/command`` URL for the ``http`` backend (none: the
+            API offers no http backend). Requests never name a port or URL.
+        firmware_speedup: the time scale of a host build of the firmware the servo
+            backends drive (``run-task firmware-sim --speedup``); 1 for real servos.
     """
 
     model_config = SettingsConfigDict(env_prefix="TASKRUNNER_", frozen=True, extra="forbid",
@@ -87,6 +93,9 @@ class Settings(BaseSettings):
     check_workers: int = 2
     plan_timeout_s: float = 60.0
     header_timeout_s: float = 10.0
+    servo_port: str | None = None
+    servo_url: str | None = None
+    firmware_speedup: float = 1.0
 
     @model_validator(mode="before")
     @classmethod
@@ -150,7 +159,7 @@ class Settings(BaseSettings):
         return number
 
     @field_validator("sim_speed", "tick_hz", "shutdown_timeout_s", "check_timeout_s",
-                     "plan_timeout_s", "header_timeout_s", mode="before")
+                     "plan_timeout_s", "header_timeout_s", "firmware_speedup", mode="before")
     @classmethod
     def _positive(cls, value: Any, info: Any) -> Any:
         number = _number(value)

@@ -15,6 +15,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 
 from taskrunner.runtime.records import RunRecord
+from taskrunner.taught import TaughtPose, TaughtPoses
 
 __all__ = ["RunStore"]
 
@@ -73,6 +74,18 @@ class RunStore:
                 "SELECT grp, name, joints, taught FROM taught_poses WHERE cell = ? "
                 "ORDER BY taught", (cell,)).fetchall()
         return [(g, n, json.loads(j), t) for g, n, j, t in rows]
+
+    def taught_poses(self, cells_dir: Path) -> TaughtPoses:
+        """Every taught pose, by cell file (a cell id is a file of ``cells_dir``)."""
+        with self._lock:
+            rows = self._db.execute(
+                "SELECT cell, grp, name, joints FROM taught_poses ORDER BY taught").fetchall()
+        by_cell: dict[Path, list[TaughtPose]] = {}
+        for cell, group, name, joints in rows:
+            path = (cells_dir / f"{cell}.yaml") if "/" not in cell else Path(cell)
+            by_cell.setdefault(path.resolve(), []).append(
+                TaughtPose(group, name, json.loads(joints)))
+        return TaughtPoses({path: tuple(poses) for path, poses in by_cell.items()})
 
     def mark_interrupted(self) -> int:
         """Turn rows left ``running`` by a server that stopped into ``interrupted``;

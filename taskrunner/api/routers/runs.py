@@ -55,7 +55,7 @@ def start_run(body: RunCreate, response: Response,
     if body.cell is not None:
         spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
     live = manager.start(spec, body.backend, seed=body.seed, task_text=text,
-                         task_file=task_file)
+                         task_file=task_file, speed=body.speed)
     url = f"/runs/{live.run_id}"
     response.headers["Location"] = url
     return RunAccepted(run_id=live.run_id, status="running", url=url)
