@@ -219,14 +219,23 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
     if args.log:
         command += ["--log", args.log]
-    process = subprocess.Popen(command)
+    started: list[subprocess.Popen[bytes]] = []
+    pending: list[int] = []
 
     def forward(signum: int, frame: object) -> None:
-        if process.poll() is None:
-            process.send_signal(signum)
+        if not started:
+            pending.append(signum)  # before Popen returned: passed on right after
+        elif started[0].poll() is None:
+            started[0].send_signal(signum)
 
+    # Installed before the firmware starts: it prints its address lines at once, and a
+    # SIGTERM sent as soon as they appear must find the handler in place.
     previous = signal.signal(signal.SIGTERM, forward)
     try:
+        process = subprocess.Popen(command)
+        started.append(process)
+        for signum in pending:
+            process.send_signal(signum)
         while True:
             try:
                 code = process.wait()
