@@ -238,7 +238,7 @@ def _start_server(port: int, state: str) -> subprocess.Popen:
     env = {**os.environ, "PYTHONPATH": str(REPO_ROOT), "TASKRUNNER_SIM_SPEED": "1"}
     server = subprocess.Popen(
         [sys.executable, "-m", "taskrunner.cli", "serve", "--port", str(port), "--token",
-         TOKEN, "--state-dir", state, "--log-level", "warning"],
+         TOKEN, "--data-dir", state, "--log-level", "warning"],
         cwd=REPO_ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
     while True:
