@@ -12,8 +12,10 @@ skipped with a warning.
 from __future__ import annotations
 
 import contextvars
+import json
 import logging
-from collections.abc import Iterator, Mapping
+import sqlite3
+from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,7 +24,8 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from taskrunner.robot.cell import Cell
 
-__all__ = ["TaughtPose", "TaughtPoses", "active_taught", "apply_taught"]
+__all__ = ["TaughtPose", "TaughtPoses", "active_taught", "apply_taught", "read_taught_poses",
+           "taught_poses_from_rows"]
 
 log = logging.getLogger(__name__)
 
@@ -61,6 +64,34 @@ class TaughtPoses:
 
 _ACTIVE: contextvars.ContextVar[TaughtPoses | None] = contextvars.ContextVar(
     "taskrunner_taught_poses", default=None)
+
+
+def taught_poses_from_rows(rows: Iterable[tuple[str, str, str, str]],
+                           cells_dir: Path) -> TaughtPoses:
+    """Taught poses from ``(cell, group, name, joints JSON)`` rows of the API's database
+    (a cell is an id, a file of ``cells_dir``, or a path)."""
+    by_cell: dict[Path, list[TaughtPose]] = {}
+    for cell, group, name, joints in rows:
+        path = (cells_dir / f"{cell}.yaml") if "/" not in cell else Path(cell)
+        by_cell.setdefault(path.resolve(), []).append(TaughtPose(group, name, json.loads(joints)))
+    return TaughtPoses({path: tuple(poses) for path, poses in by_cell.items()})
+
+
+def read_taught_poses(db_path: Path, cells_dir: Path) -> TaughtPoses:
+    """The poses the API taught, read from its database ``db_path`` (the data folder's
+    ``runs.sqlite``), for the command line to load cells as the server does: wrap the
+    work in ``with read_taught_poses(...).active():``. No database: none."""
+    if not Path(db_path).is_file():
+        return TaughtPoses()
+    db = sqlite3.connect(f"file:{Path(db_path).resolve()}?mode=ro", uri=True)
+    try:
+        rows = db.execute("SELECT cell, grp, name, joints FROM taught_poses "
+                          "ORDER BY taught").fetchall()
+    except sqlite3.Error:  # a database without the table: nothing taught
+        rows = []
+    finally:
+        db.close()
+    return taught_poses_from_rows(rows, cells_dir)
 
 
 def active_taught() -> TaughtPoses | None:

@@ -15,7 +15,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 
 from taskrunner.runtime.records import RunRecord
-from taskrunner.taught import TaughtPose, TaughtPoses
+from taskrunner.taught import TaughtPoses, taught_poses_from_rows
 
 __all__ = ["RunStore"]
 
@@ -80,12 +80,7 @@ class RunStore:
         with self._lock:
             rows = self._db.execute(
                 "SELECT cell, grp, name, joints FROM taught_poses ORDER BY taught").fetchall()
-        by_cell: dict[Path, list[TaughtPose]] = {}
-        for cell, group, name, joints in rows:
-            path = (cells_dir / f"{cell}.yaml") if "/" not in cell else Path(cell)
-            by_cell.setdefault(path.resolve(), []).append(
-                TaughtPose(group, name, json.loads(joints)))
-        return TaughtPoses({path: tuple(poses) for path, poses in by_cell.items()})
+        return taught_poses_from_rows(rows, cells_dir)
 
     def mark_interrupted(self) -> int:
         """Turn rows left ``running`` by a server that stopped into ``interrupted``;

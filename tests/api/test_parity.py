@@ -73,3 +73,23 @@ def test_runs_drive_the_servos_over_serial_and_http(tmp_path: Path, kind: str):
                 .named_state("arm", "Candle").as_dict()
             for joint, value in candle.items():  # the servos report the pose (1° steps)
                 assert state.json()["joints"][joint] == pytest.approx(value, abs=0.03), joint
+
+
+def test_the_command_line_can_read_the_poses_the_api_taught(tmp_path: Path):
+    from taskrunner.taught import read_taught_poses
+    from taskrunner.tree.check import check_task
+
+    settings = make_settings(tmp_path / "state")
+    with TestClient(create_app(settings), headers=AUTH) as client:
+        run = client.post("/runs", json={"yaml": GO_CANDLE, "backend": "mock"})
+        assert wait_until_done(client, run.json()["run_id"])["status"] == "succeeded"
+        assert client.put("/cells/servo_arm_table/poses/bench",
+                          json={"group": "arm", "backend": "mock"}).status_code == 200
+    task = resources.tasks_dir() / "go_home.yaml"
+    bench = tmp_path / "bench.yaml"
+    bench.write_text(task.read_text().replace("to: home", "to: bench")
+                     .replace("../robots/", f"{resources.robots_dir()}/"))
+    assert not check_task(bench).ok
+    with read_taught_poses(settings.db_path, settings.cells_dir).active():
+        assert check_task(bench).ok
+    assert read_taught_poses(tmp_path / "none.sqlite", settings.cells_dir).by_cell == {}
