@@ -19,7 +19,7 @@ from typing import Any
 from taskrunner.backends.base import Backend
 from taskrunner.backends.sim import SimBackend, SimOptions
 from taskrunner.errors import InputError
-from taskrunner.folders import FolderPolicy
+from taskrunner.folders import FileKind, FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
@@ -180,8 +180,10 @@ class CellRegistry:
         self._lock = threading.Lock()
 
     def ids(self) -> list[str]:
-        """The ids of the cell files, sorted."""
-        return sorted(p.stem for p in self.cells_dir.glob("*.yaml"))
+        """The ids of the cell files, sorted (a symlink out of the folders the policy
+        allows is not a cell)."""
+        return sorted(p.stem for p in self.cells_dir.glob("*.yaml")
+                      if self.policy is None or self.policy.allows(p, FileKind.CELL))
 
     def path_of(self, cell_id: str) -> Path:
         """The file of cell ``cell_id``.

@@ -78,6 +78,18 @@ def test_a_symlink_in_the_tasks_folder_pointing_outside_is_refused(tmp_path: Pat
             _no_secret(answer)
 
 
+def test_a_symlinked_cell_pointing_outside_is_not_listed_nor_read(tmp_path: Path, secret):
+    cells = tmp_path / "cells"
+    cells.mkdir()
+    (cells / "leak.yaml").symlink_to(secret)
+    settings = make_settings(tmp_path / "state", cells_dir=cells)
+    with TestClient(create_app(settings), headers=AUTH) as client:
+        assert client.get("/cells").json() == []
+        answer = client.get("/cells/leak")
+        assert answer.status_code == 404
+        _no_secret(answer)
+
+
 def _evil_cell(root: Path) -> tuple[Path, Path]:
     """A cells folder whose cell names a robot outside it, a xacro that would write
     ``MARKER`` (xacro's expression sandbox can be escaped); and the marker's path."""
