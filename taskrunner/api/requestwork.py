@@ -287,10 +287,17 @@ def resolve_task_file(tasks_dir: Path, name: str) -> Path:
 
     if not name or "/" in name or "\\" in name or name.startswith(".") or "\0" in name:
         raise InputError(f"'task' must be a file name in the tasks folder (got {name!r})")
+    if len(name.encode("utf-8", "surrogatepass")) > 250:  # file names end at 255 bytes
+        raise InputError(f"'task' must be a file name of at most 250 bytes "
+                         f"(got {len(name.encode('utf-8', 'surrogatepass'))} bytes)")
     path = tasks_dir / name
     if not path.suffix:
         path = path.with_suffix(".yaml")
-    if not path.is_file():
+    try:
+        found = path.is_file()
+    except (OSError, ValueError):  # a name the file system refuses is no task file
+        found = False
+    if not found:
         known = ", ".join(sorted(p.name for p in tasks_dir.glob("*.yaml"))) or "none"
         raise InputError(f"'task' must name a task file of the tasks folder (got {name!r}; "
                          f"known: {known})")

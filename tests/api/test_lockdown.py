@@ -63,6 +63,15 @@ def test_an_include_outside_the_tasks_folder_is_refused_unread(client, secret):
     _no_secret(run)
 
 
+@pytest.mark.parametrize("name", ["é" * 200, "a" * 251, "b" * 255])
+def test_a_task_name_too_long_for_a_file_is_a_422_not_a_500(client, name):
+    # Within the schema's 255 characters, but too many bytes for a file name with '.yaml'.
+    for answer in (client.post("/runs", json={"task": name, "backend": "mock"}),
+                   client.post("/tasks/check", json={"task": name})):
+        assert answer.status_code == 422, answer.text
+        assert "at most 250 bytes" in answer.text
+
+
 def test_a_symlink_in_the_tasks_folder_pointing_outside_is_refused(tmp_path: Path, secret):
     tasks = tmp_path / "tasks"
     tasks.mkdir()
