@@ -253,6 +253,26 @@ def load_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: 
     return spec.model_copy(update={"path": None}), str(shown), yaml
 
 
+def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
+                     yaml: str | None, parameters: dict[str, Any], seed: int,
+                     taught: TaughtPoses | None = None) -> list[Any]:
+    """The problems (:class:`~taskrunner.tasks.problem.Problem`) the static check finds in
+    the task a run request names, checked as ``/tasks/check`` checks it; empty when the
+    run may start. ``POST /runs`` calls this first so that nothing moves for a task that
+    cannot succeed (as ``run-task`` does)."""
+    from taskrunner.tree.check import check_task
+
+    if task is not None:
+        path = resolve_task_file(tasks_dir, task)
+        active = policy
+    else:
+        assert yaml is not None
+        path = inline_path(tasks_dir)
+        active = policy.with_memory({path: yaml})
+    with active.active(), (taught or TaughtPoses()).active():
+        return list(check_task(path, parameters, seed=seed).problems)
+
+
 def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: str | None,
                   parameters: dict[str, Any], seed: int,
                   taught: TaughtPoses | None = None) -> dict[str, Any]:

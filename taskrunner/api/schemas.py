@@ -50,6 +50,10 @@ class RunCreate(_TaskSource):
     cell: str | None = Field(default=None, max_length=255,
                              description="run on this cell (an id of GET /cells) instead of "
                                          "the task's own")
+    check: bool = Field(default=True,
+                        description="check the task first (as POST /tasks/check does) and "
+                                    "start nothing if the check finds a problem (422 with "
+                                    "every problem at its file:line); false skips it")
 
 
 class RunAccepted(_Strict):

@@ -247,3 +247,33 @@ def test_an_ended_run_shows_no_current_node_even_before_its_thread_has_finished(
     assert live.current() == ("go arm", "t.yaml:4")
     record.status = "succeeded"  # set by the runner; done is set a moment later
     assert live.current() is None
+
+
+PLACE_OUT_OF_REACH = textwrap.dedent("""\
+    task: place_far
+    cell: ../robots/cells/servo_arm_table.yaml
+    objects:
+      - {name: cube, shape: box, size: [0.025, 0.025, 0.025], pose: {xyz: [0.19, 0.04, 0.7625]}}
+    steps:
+      - pick: {arm: arm, object: cube, grasp: top}
+      - place: {arm: arm, object: cube, at: {xyz: [1.5, 0.0, 0.7635]}}
+    """)
+
+
+def test_a_run_whose_check_fails_starts_nothing_and_lists_every_problem(client):
+    before = client.get("/runs", headers=AUTH).json()
+    answer = client.post("/runs", json={"yaml": PLACE_OUT_OF_REACH, "backend": "mock"},
+                         headers=AUTH)
+    assert answer.status_code == 422, answer.text
+    body = answer.json()
+    assert body["problems"] and body["problems"][0]["line"] == 7
+    assert "reach" in body["problems"][0]["message"]
+    assert client.get("/runs", headers=AUTH).json() == before  # no run was started
+
+
+def test_check_false_skips_the_check_and_the_run_fails_where_it_cannot_go_on(client):
+    answer = client.post("/runs", json={"yaml": PLACE_OUT_OF_REACH, "backend": "mock",
+                                        "check": False}, headers=AUTH)
+    assert answer.status_code == 202, answer.text
+    run = wait_until_done(client, answer.json()["run_id"])
+    assert run["status"] == "failed"

@@ -13,8 +13,8 @@ from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_work
-from taskrunner.api.requestwork import RequestWork, load_request
+from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_store, get_work
+from taskrunner.api.requestwork import RequestWork, load_request, precheck_request
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
     ErrorBody,
@@ -25,7 +25,9 @@ from taskrunner.api.schemas import (
     RunSummary,
 )
 from taskrunner.api.settings import Settings
+from taskrunner.api.store import RunStore
 from taskrunner.runtime.events import RunEvent
+from taskrunner.tasks.problem import raise_for_problems
 
 __all__ = ["router"]
 
@@ -42,16 +44,26 @@ def start_run(body: RunCreate, response: Response,
               settings: Annotated[Settings, Depends(get_settings)],
               manager: Annotated[RunManager, Depends(get_manager)],
               cells: Annotated[CellRegistry, Depends(get_cells)],
-              work: Annotated[RequestWork, Depends(get_work)]) -> RunAccepted:
+              work: Annotated[RequestWork, Depends(get_work)],
+              store: Annotated[RunStore, Depends(get_store)]) -> RunAccepted:
     """Start a task (a file of the tasks folder, or inline YAML) on a cell's backend.
 
-    Answers 202 at once with the run id; the run goes on in the background. A run that
-    needs an arm (joints) a run in flight moves is refused with 409: runs are not queued.
+    The task is checked first (``check``, default true): a task with problems answers 422
+    with every problem and nothing moves. Answers 202 at once with the run id; the run
+    goes on in the background. A run that needs an arm (joints) a run in flight moves is
+    refused with 409: runs are not queued.
     """
     # Loaded within the limits (time, memory) and folders of request work.
     spec, task_file, text = work.call(load_request, settings.folder_policy(),
                                       settings.tasks_dir, body.task, body.yaml,
                                       body.parameters)
+    if body.check and body.cell is None:
+        # Check first, as run-task does: a task that cannot succeed moves nothing. (On
+        # another cell than its own, the names are checked when the run starts.)
+        taught = store.taught_poses(settings.cells_dir)
+        raise_for_problems(work.call(precheck_request, settings.folder_policy(),
+                                     settings.tasks_dir, body.task, body.yaml,
+                                     body.parameters, body.seed, taught))
     if body.cell is not None:
         spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
     live = manager.start(spec, body.backend, seed=body.seed, task_text=text,
