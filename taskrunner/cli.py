@@ -158,11 +158,26 @@ def _parameters(pairs: Sequence[str]) -> dict[str, str]:
     return out
 
 
+def _taught_poses(args: argparse.Namespace):  # type: ignore[no-untyped-def]
+    """The poses the API taught (its data folder's database), so that the command line
+    knows the same named poses as ``run-task serve``: ``--data-dir``, else
+    ``TASKRUNNER_DATA_DIR`` (or ``TASKRUNNER_STATE_DIR``), else ``./state``; cells by id
+    from ``TASKRUNNER_CELLS_DIR``, else the shipped cells. No database: none."""
+    from taskrunner import resources
+    from taskrunner.taught import read_taught_poses
+
+    data = Path(args.data_dir or os.environ.get("TASKRUNNER_DATA_DIR")
+                or os.environ.get("TASKRUNNER_STATE_DIR") or "state")
+    cells = Path(os.environ.get("TASKRUNNER_CELLS_DIR") or resources.cells_dir())
+    return read_taught_poses(data / "runs.sqlite", cells)
+
+
 def cmd_check(args: argparse.Namespace) -> int:
     from taskrunner.resources import resolve_task
     from taskrunner.tree.check import check_task
 
-    report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
+    with _taught_poses(args).active():
+        report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
     if report.problems:
         _print_problems(args.file, report.problems)
         return EXIT_INVALID
@@ -177,15 +192,21 @@ def _print_problems(file: str, problems: Sequence[object], tail: str = "") -> No
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from taskrunner.errors import TaskSpecError
     from taskrunner.resources import resolve_task
-    from taskrunner.runtime.preflight import check_before_run
-    from taskrunner.runtime.session import run_task_file
 
     if args.speed is not None and not (args.speed > 0 and np.isfinite(args.speed)):
         raise InputError(f"'--speed' must be a positive number (got {args.speed})")
     path = resolve_task(args.file)
     parameters = _parameters(args.param)
+    with _taught_poses(args).active():
+        return _check_and_run(args, path, parameters)
+
+
+def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, str]) -> int:
+    from taskrunner.errors import TaskSpecError
+    from taskrunner.runtime.preflight import check_before_run
+    from taskrunner.runtime.session import run_task_file
+
     if not args.no_check:
         started = time.perf_counter()
         try:
@@ -395,6 +416,9 @@ def _parser() -> argparse.ArgumentParser:
                      help="time scale of the motion (sim: 2 = twice real time; mock: replay "
                           "this many times faster instead of jumping to the end)")
     run.add_argument("--seed", type=int, default=0, help="planner seed (0)")
+    run.add_argument("--data-dir", default=None,
+                     help="the API's data folder, for poses it taught (TASKRUNNER_DATA_DIR, "
+                          "else ./state)")
     run.add_argument("--runs-dir", default=None,
                      help="where run records go (TASKRUNNER_RUNS_DIR, else ./runs)")
     run.add_argument("--plain", action="store_true", help="log lines even in a terminal")
@@ -407,6 +431,9 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
                        help="override a task parameter (repeatable)")
     check.add_argument("--seed", type=int, default=0, help="IK and planner seed (0)")
+    check.add_argument("--data-dir", default=None,
+                       help="the API's data folder, for poses it taught (TASKRUNNER_DATA_DIR, "
+                            "else ./state)")
     examples = sub.add_parser("examples", help="list the shipped example tasks "
                                                "(run one with: run-task NAME)")
     examples.add_argument("--paths", action="store_true", help="also print each file's path")
