@@ -32,6 +32,7 @@ from taskrunner.scene.allowed import AllowedCollisions
 from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact
 from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
+from taskrunner.scene.support import Support, gap_below
 from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
 
@@ -306,6 +307,25 @@ class Scene:
         self._entries[name] = _Entry(obj, entry.geometry)
         self._edited()
         return obj
+
+    def support(self, name: str) -> Support:
+        """What world object ``name`` rests on: the nearest other world object below it
+        and how far it could be lowered before touching it (see
+        :mod:`taskrunner.scene.support`). Attached objects and robot links are not
+        supports.
+
+        Raises:
+            UnknownNameError: unknown object.
+            SceneError: the object is attached.
+        """
+        entry = self._entry(name)
+        if entry.object.attached:
+            raise SceneError(f"object {name!r} is attached to {entry.object.attached_to!r}; "
+                             "it rests on nothing")
+        others = [(e.object.name, e.geometry, e.object.pose.se3)
+                  for e in self._entries.values() if e.object.name != name
+                  and not e.object.attached]
+        return gap_below(entry.geometry, entry.object.pose.se3, others)
 
     # ----------------------------------------------------------------- allowances
     def allow_collision(self, a: str, b: str, reason: str = "scene") -> None:

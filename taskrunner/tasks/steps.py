@@ -39,7 +39,8 @@ from taskrunner.validation import MAX_METRES
 __all__ = [
     "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "FallbackStep", "GoStep",
     "GripperStep", "HandoffStep", "IncludeBody", "IncludeStep", "MOTION_OPTIONS",
-    "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "ParallelStep",
+    "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "OutcomeTolerance",
+    "ParallelStep",
     "PickStep", "PlaceStep", "RemoveObjectStep", "RepeatStep", "RetryStep", "STEP_TYPES",
     "SequenceStep", "Step", "StepList", "StepNode", "TimeoutStep", "WaitStep", "walk_steps",
 ]
@@ -209,6 +210,20 @@ PlaceAt = Annotated[
 ]
 
 
+class OutcomeTolerance(Node):
+    """How far a placed or handed-over object may end from its target."""
+
+    position: float = Field(default=0.005, gt=0, le=1)
+    """Largest distance between the object's centre and its target's (m, default 0.005);
+    for a place, also the largest gap between the object and what it rests on."""
+    angle_deg: float = Field(default=5.0, gt=0, le=180)
+    """Largest orientation error, as 'orientation' measures it (degrees, not radians;
+    default 5)."""
+
+
+OrientationCheck = Literal["free", "yaw", "full"]
+
+
 class PickStep(MotionStep):
     """Approach, grasp, attach and lift an object."""
 
@@ -243,6 +258,14 @@ class PlaceStep(MotionStep):
     """Distance of the straight approach to the release pose (m)."""
     retreat: Distance = 0.05
     """Distance of the straight retreat after releasing (m)."""
+    orientation: OrientationCheck | None = None
+    """What of the object's orientation is checked when it is put down: 'free' (position
+    only), 'yaw' (its turn about the world z axis; its tilt is not checked) or 'full'
+    (the whole orientation, up to the object's symmetries). Default: what the arm
+    controls: 'full' for an arm that plans full poses; for a position-only arm
+    (position_only_ik) 'yaw' with a wrist roll, else 'free'."""
+    tolerance: OutcomeTolerance = OutcomeTolerance()
+    """How far the object may end from its target (default 5 mm, 5 degrees)."""
 
     @model_validator(mode="after")
     def _one_target(self) -> PlaceStep:
@@ -268,6 +291,14 @@ class HandoffStep(MotionStep):
     """Distance of the taking arm's straight approach (m)."""
     retreat: Distance = 0.05
     """Distance both arms retreat after the exchange (m)."""
+    orientation: OrientationCheck | None = None
+    """What of the object's orientation is checked when it changes hands: 'free' (position
+    only), 'yaw' (its turn about the world z axis; its tilt is not checked) or 'full'
+    (the whole orientation, up to the object's symmetries). Default: what the giving arm
+    controls: 'full' for an arm that plans full poses; for a position-only arm
+    (position_only_ik) 'yaw' with a wrist roll, else 'free'."""
+    tolerance: OutcomeTolerance = OutcomeTolerance()
+    """How far the object may end from its target (default 5 mm, 5 degrees)."""
 
 
 class AttachStep(StepNode):

@@ -30,9 +30,11 @@ from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptio
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.tree.context import ExecutedMotion, TaskContext
+from taskrunner.tree.outcome import Outcome
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
-__all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf", "Wait"]
+__all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
+           "Wait"]
 
 
 class TaskLeaf(py_trees.behaviour.Behaviour):
@@ -316,6 +318,40 @@ class SceneAction(TaskLeaf):
             self.outcome = Status.SUCCESS
         except TaskrunnerError as exc:
             self.outcome = self.fail(str(exc))
+
+    def update(self) -> Status:
+        return self.outcome
+
+
+class CheckOutcome(TaskLeaf):
+    """Compare where an object ended with where the task asked (a condition leaf).
+
+    SUCCESS when ``measure(ctx)`` finds the object within its tolerance; else FAILURE
+    with the reason, both poses and the error in mm and degrees (see
+    :mod:`taskrunner.tree.outcome`). Either way a "message" event records the outcome.
+    """
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext,
+                 measure: Callable[[TaskContext], Outcome]) -> None:
+        super().__init__(name, location, ctx)
+        self.measure = measure
+        self.result: Outcome | None = None
+        self.outcome: Status = Status.RUNNING
+
+    def start(self) -> None:
+        self.result = None
+        try:
+            self.result = self.measure(self.ctx)
+        except TaskrunnerError as exc:
+            self.outcome = self.fail(str(exc))
+            return
+        failure = self.result.failure
+        if failure is not None:
+            self.outcome = self.fail(failure)
+            return
+        self.ctx.events.emit("message", f"{self.result.object!r} at its target: "
+                             f"{self.result.poses()}", node=self.name, location=self.location)
+        self.outcome = Status.SUCCESS
 
     def update(self) -> Status:
         return self.outcome

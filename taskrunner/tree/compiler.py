@@ -10,6 +10,7 @@ parallel children run side by side on their own joints.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -48,6 +49,7 @@ from taskrunner.tasks import (
 from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
 
@@ -96,6 +98,12 @@ def timing_options(step: MotionOptions, ctx: TaskContext) -> TimingOptions:
                    or ctx.timing.acceleration_scaling)
 
 
+def _outcome_options(step: PlaceStep | HandoffStep) -> tuple[Orientation | None, Tolerance]:
+    """The outcome check a place or hand-over asks for (None: the arm's default)."""
+    orientation = Orientation(step.orientation) if step.orientation is not None else None
+    return orientation, Tolerance(step.tolerance.position, math.radians(step.tolerance.angle_deg))
+
+
 def object_shape(spec):  # type: ignore[no-untyped-def]
     """The :mod:`taskrunner.shapes` shape of an object spec."""
     if spec.shape == "box":
@@ -141,7 +149,8 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             at = step.at.to_pose() if step.at is not None else None
             return idioms.place(ctx, name, where, arm, step.object, at, step.on,
                                 step.offset or (0.0, 0.0), step.approach, step.retreat,
-                                planner_options(step), timing_options(step, ctx))
+                                planner_options(step), timing_options(step, ctx),
+                                *_outcome_options(step))
         case HandoffStep():
             giver, receiver = _arm(step, ctx, step.from_arm), _arm(step, ctx, step.to_arm)
             meet = step.at if isinstance(step.at, str) else step.at.to_pose()
@@ -149,7 +158,7 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
                 raise _error(step, f"'at': {meet!r} is not a named pose of arm {giver!r}")
             return idioms.handoff(ctx, name, where, step.object, giver, receiver, meet,
                                   step.approach, step.retreat, planner_options(step),
-                                  timing_options(step, ctx))
+                                  timing_options(step, ctx), *_outcome_options(step))
         case AttachStep():
             return SceneAction(name, where, ctx, _attach(step, ctx))
         case DetachStep():

@@ -38,7 +38,13 @@ from taskrunner.errors import SceneError, TaskSpecError
 from taskrunner.planning.cartesian import CartesianOptions
 from taskrunner.planning.request import Goal, NamedGoal, PlannerOptions, PoseGoal
 from taskrunner.planning.timing import TimingOptions
-from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction
+from taskrunner.tree.behaviours import (
+    CheckOutcome,
+    MoveJoints,
+    MoveStraight,
+    MoveToGoal,
+    SceneAction,
+)
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.grasps import (
     backed_off,
@@ -51,11 +57,12 @@ from taskrunner.tree.grasps import (
     place_target,
     release_poses,
 )
+from taskrunner.tree.outcome import Orientation, Outcome, Tolerance, arm_orientation, measure
 from taskrunner.tree.reach import Lift, approach_goals
 from taskrunner.types import Pose
 
-__all__ = ["grasp_candidates", "hand_links", "handoff", "object_extent", "pick", "place",
-           "place_target"]
+__all__ = ["default_orientation", "grasp_candidates", "hand_links", "handoff", "object_extent",
+           "pick", "place", "place_target"]
 
 _FULL = CartesianOptions(position_only=False)
 _POSITION = CartesianOptions(position_only=True)
@@ -65,6 +72,23 @@ _POSITION = CartesianOptions(position_only=True)
 def _short(ctx: TaskContext, arm_name: str) -> bool:
     """True for an arm that plans positions only (fewer than six joints)."""
     return ctx.scene.robot.group(ctx.arm(arm_name).group).position_only_ik
+
+
+def default_orientation(ctx: TaskContext, arm_name: str) -> Orientation:
+    """What of a placed object's orientation the arm controls (see
+    :func:`~taskrunner.tree.outcome.arm_orientation`): the default ``orientation``."""
+    arm = ctx.arm(arm_name)
+    return arm_orientation(ctx.scene.robot, arm.group, arm.grasp_frame, ctx.scene.state)
+
+
+def _outcome_check(ctx: TaskContext, name: str, location: str | None, obj: str,
+                   wanted: list[pin.SE3], arm_name: str, orientation: Orientation | None,
+                   tolerance: Tolerance | None, supported: bool) -> CheckOutcome:
+    """A leaf comparing where ``obj`` is with ``wanted[0]`` (filled in by an earlier leaf)."""
+    def check(c: TaskContext) -> Outcome:
+        how = orientation if orientation is not None else default_orientation(c, arm_name)
+        return measure(c.scene, obj, wanted[0], how, tolerance or Tolerance(), supported)
+    return CheckOutcome(name, location, ctx, check)
 
 
 def _gripper_pose(ctx: TaskContext, arm_name: str, pose: str) -> dict[str, float]:
@@ -188,8 +212,12 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
 def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: str,
           at: Pose | None = None, on: str | None = None, offset: Sequence[float] = (0.0, 0.0),
           approach: float = 0.05, retreat: float = 0.05, options: PlannerOptions | None = None,
-          timing: TimingOptions | None = None) -> py_trees.composites.Sequence:
-    """The place subtree (see the module docstring).
+          timing: TimingOptions | None = None, orientation: Orientation | None = None,
+          tolerance: Tolerance | None = None) -> py_trees.composites.Sequence:
+    """The place subtree (see the module docstring), ending with a check that the object
+    is at its target (``orientation``: what of its orientation is checked, default the
+    arm's :func:`default_orientation`; ``tolerance``: default 5 mm, 5°) and rests on
+    something.
 
     A short arm may release the object turned a little from the target (its orientation
     is only approximated): the release is then raised so that the object's lowest point
@@ -237,6 +265,8 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         _move(ctx, f"{name}: retreat", location, arm_name,
               _by_world((0.0, 0.0, retreat)) if short else _by_tool(-retreat), timing),
         SceneAction(f"{name}: released", location, ctx, _allow_hand(obj, arm_name, False)),
+        _outcome_check(ctx, f"{name}: check outcome", location, obj, release, arm_name,
+                       orientation, tolerance, supported=True),
     ]
     return py_trees.composites.Sequence(name, memory=True, children=steps)
 
@@ -244,17 +274,27 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
 # ----------------------------------------------------------------------------- hand-over
 def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: str,
             receiver: str, at: str | Pose, approach: float = 0.05, retreat: float = 0.05,
-            options: PlannerOptions | None = None, timing: TimingOptions | None = None
+            options: PlannerOptions | None = None, timing: TimingOptions | None = None,
+            orientation: Orientation | None = None, tolerance: Tolerance | None = None
             ) -> py_trees.composites.Sequence:
-    """The hand-over subtree (see the module docstring)."""
+    """The hand-over subtree (see the module docstring), with a check, when the object
+    changes hands, that it is at the hand-over pose: ``at`` as a pose of the object, or
+    where the giver's named pose ``at`` puts it (``orientation`` and ``tolerance`` as for
+    :func:`place`; the default orientation is the giver's)."""
     give, take = ctx.arm(giver), ctx.arm(receiver)
     grasps: list[pin.SE3] = []
+    meeting: list[pin.SE3] = []  # the object's requested world pose at the hand-over
 
     def presentation(c: TaskContext) -> Goal:
-        if isinstance(at, str):
-            return NamedGoal(at)
         held = c.scene.object(obj)
-        return PoseGoal(Pose.from_se3(c.scene.to_world(at) * held.pose.se3.inverse()),
+        if isinstance(at, str):
+            model = c.scene.robot
+            there = model.state_with(c.scene.state, model.named_state(give.group, at))
+            tool = c.scene.to_world(Pose.from_se3(pin.SE3.Identity(), give.grasp_frame), there)
+            meeting[:] = [tool * held.pose.se3]
+            return NamedGoal(at)
+        meeting[:] = [c.scene.to_world(at)]
+        return PoseGoal(Pose.from_se3(meeting[0] * held.pose.se3.inverse()),
                         link=give.grasp_frame, position_only=False)
 
     def pre_grasps(c: TaskContext) -> tuple[Goal, ...]:
@@ -287,6 +327,8 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
         _move(ctx, f"{name}: {receiver} approaches", location, receiver, grasp_point, timing),
         _close(ctx, f"{name}: {receiver} closes", location, receiver, timing),
         SceneAction(f"{name}: transfer to {receiver}", location, ctx, transfer),
+        _outcome_check(ctx, f"{name}: check outcome", location, obj, meeting, giver,
+                       orientation, tolerance, supported=False),
         _open(ctx, f"{name}: {giver} opens", location, giver, timing),
         _move(ctx, f"{name}: {giver} backs off", location, giver, _by_tool(-retreat), timing),
         SceneAction(f"{name}: {giver} released", location, ctx, _allow_hand(obj, giver, False)),
