@@ -178,6 +178,8 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     with _taught_poses(args).active():
         report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
+    for note in report.notes:
+        print(f"note: {note}")
     if report.problems:
         _print_problems(args.file, report.problems)
         return EXIT_INVALID

@@ -89,6 +89,7 @@ from taskrunner.tasks import (
     walk_steps,
 )
 from taskrunner.tree.behaviours import (
+    CheckOutcome,
     MoveJoints,
     MoveStraight,
     MoveToGoal,
@@ -98,6 +99,7 @@ from taskrunner.tree.behaviours import (
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.idioms import place_target
+from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
 from taskrunner.types import Pose
 
 __all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
@@ -118,11 +120,15 @@ class CheckReport:
         cell: the name of the task's cell ('' when the task or the cell did not load).
         steps: leaf steps dry-run (steps skipped for a name problem not counted).
         problems: every problem once, the task file's first, then by file and line.
+        notes: information, not problems: where each place and hand-over will leave its
+            object (the orientation the arm achieves, which a position-only arm may not
+            make the requested one), in the order the dry run met them.
     """
 
     cell: str
     steps: int
     problems: list[Problem] = field(default_factory=list)
+    notes: list[Problem] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
@@ -160,7 +166,8 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     run = _DryRun(spec, cell, marked, missing)
     ctx = TaskContext(cell, scene, None, None, seed=seed)  # type: ignore[arg-type]
     run.sequence(spec.steps, ctx)
-    return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root))
+    return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
+                       list(dict.fromkeys(run.notes)))
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -258,6 +265,25 @@ def _describe(step: StepNode) -> str:
     return f"{step.verb} {obj}" if isinstance(obj, str) else step.label
 
 
+def _achieved(outcome: Outcome, step: StepNode, ctx: TaskContext) -> str:
+    """What a check note says of a place or hand-over's outcome: where the object will
+    be, how far from its target, and what of its orientation is checked."""
+    e, tol = outcome.error, outcome.tolerance
+    where = "end" if isinstance(step, PlaceStep) else "be handed over"
+    arm = step.arm if isinstance(step, PlaceStep) else getattr(step, "from_arm", "")
+    short = ctx.scene.robot.group(ctx.arm(arm).group).position_only_ik if arm else False
+    text = (f"{outcome.object!r} will {where} at {describe_pose(outcome.reached)}, "
+            f"{1e3 * e.distance:.1f} mm and {math.degrees(e.angle):.1f}° from its target "
+            f"(tilt {math.degrees(e.tilt):.1f}°, turn about z "
+            f"{math.degrees(e.turn):.1f}°); orientation: {outcome.orientation.value}")
+    if outcome.orientation is not Orientation.FULL and e.angle > tol.angle:
+        reason = f"arm {arm!r} plans positions only, " if short else ""
+        checked = ("its turn about z is checked" if outcome.orientation is Orientation.YAW
+                   else "its position only is checked")
+        text += f" ({reason}the requested orientation is not reached: {checked})"
+    return text
+
+
 def _leaves(behaviour: Behaviour) -> list[Behaviour]:
     if isinstance(behaviour, py_trees.composites.Sequence):
         return [leaf for child in behaviour.children for leaf in _leaves(child)]
@@ -313,6 +339,8 @@ class _DryRun:
         # earlier problem: the steps naming them are skipped.
         self.missing = missing
         self.problems: list[Problem] = []
+        self.notes: list[Problem] = []
+        self.outcome: Outcome | None = None  # of the last CheckOutcome leaf played
         self.checked = 0
         self.tainted = False  # the state comes from a failed step: do not blame its start
         self.stopped: TaskContext | None = None  # the situation at the first failure
@@ -388,9 +416,13 @@ class _DryRun:
         text, finish = self.precheck(step, ctx)
         start = 0
         if text is None:
+            self.outcome = None
             end, failure = self.play(leaves, 0, step, ctx)
             if failure is None:
                 self.tainted = False
+                if self.outcome is not None:
+                    self.notes.append(_at(step, f"{_describe(step)}: "
+                                                f"{_achieved(self.outcome, step, ctx)}"))
                 return end
             text, start, ctx = failure.text, failure.leaf, failure.ctx
             if failure.other:
@@ -577,6 +609,11 @@ class _DryRun:
                 scene.set_state(goal)
             elif isinstance(leaf, SceneAction):
                 leaf.action(ctx)
+            elif isinstance(leaf, CheckOutcome):
+                self.outcome = leaf.measure(ctx)  # the run's own measure
+                failure = self.outcome.failure
+                if failure is not None:
+                    return f"{stage}: {failure}" if stage else failure
         except TaskrunnerError as exc:
             return f"{stage}: {exc}" if stage else str(exc)
         return None
