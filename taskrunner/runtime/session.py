@@ -11,6 +11,7 @@ run before anything moves. A third Ctrl-C gives up waiting for the motion to sto
 from __future__ import annotations
 
 import math
+import os
 import signal
 import sys
 import threading
@@ -34,6 +35,7 @@ from taskrunner.backends import (
 from taskrunner.backends.base import Backend
 from taskrunner.errors import InputError
 from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.runtime.display import LiveTree
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.preflight import check_before_run
 from taskrunner.runtime.records import RunRecord
@@ -48,6 +50,7 @@ __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
 
 BACKENDS = ("mock", "sim", "serial", "http")
+_FRAME_PERIOD = 0.1  # s between frames of the live tree
 
 
 def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
@@ -98,6 +101,11 @@ def servo_calibration(cell: Cell) -> ServoCalibration:
     return load_calibration(robots[0].hardware_path, cell.model.joint_names)
 
 
+def _can_redraw() -> bool:
+    """Whether the terminal moves its cursor (not so for TERM=dumb: log lines there)."""
+    return os.environ.get("TERM", "") != "dumb"
+
+
 def _import_toppra() -> None:
     import toppra  # noqa: F401
 
@@ -139,6 +147,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
             ``problems``); the CLI maps it to exit code 2.
     """
     out = out or sys.stdout
+    live = live and _can_redraw()
     if check:
         check_before_run(path, parameters, seed=seed)
     stop = _StopSignals(out)
@@ -173,7 +182,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                         print(line, file=out, flush=True)
                 events.subscribe(log)
             stop.attach(runner)
-            record = _run_with_display(runner, live, out)
+            record = _run_with_display(runner, live, out, stop)
         finally:
             machine.close()
             planner_service.close()
@@ -197,6 +206,14 @@ class _StopSignals:
         self.runner: Runner | None = None
         self.pending: tuple[str, int] | None = None
         self.count = 0
+        self.display: LiveTree | None = None  # while a live tree is drawn: notices go there
+
+    def say(self, text: str) -> None:
+        """Tell the user (on the live tree's last line, or as a line of output)."""
+        if self.display is not None:
+            self.display.note = text
+        else:
+            print(f"\n{text}", file=self.out, flush=True)
 
     @contextmanager
     def installed(self) -> Iterator[None]:
@@ -221,19 +238,19 @@ class _StopSignals:
         self.count += 1
         reason, code = self._REASONS[signal.Signals(signum)]
         if self.count == 1:
-            print(f"\n{reason}: stopping the motion where it is …", file=self.out, flush=True)
+            self.say(f"{reason}: stopping the motion where it is …")
         elif signum == signal.SIGINT and self.count >= 3:
             raise KeyboardInterrupt  # the user insists: stop waiting for the motion to stop
         else:
-            print("still stopping the motion (Ctrl-C twice more to stop waiting) …",
-                  file=self.out, flush=True)
+            self.say("still stopping the motion (Ctrl-C twice more to stop waiting) …")
         if self.runner is not None:
             self.runner.cancel(reason, code)
         elif self.pending is None:
             self.pending = (reason, code)
 
 
-def _run_with_display(runner: Runner, live: bool, out: TextIO) -> RunRecord:
+def _run_with_display(runner: Runner, live: bool, out: TextIO,
+                      stop: _StopSignals | None = None) -> RunRecord:
     result: list[RunRecord] = []
     failure: list[BaseException] = []
 
@@ -243,32 +260,29 @@ def _run_with_display(runner: Runner, live: bool, out: TextIO) -> RunRecord:
         except BaseException as exc:  # handed to the main thread, raised there
             failure.append(exc)
 
+    display = LiveTree(out) if live else None
+    if stop is not None:
+        stop.display = display
     thread = threading.Thread(target=run, name="task-run", daemon=True)
     thread.start()
     try:
         while thread.is_alive():
-            thread.join(0.2)
-            if live:
-                _draw(runner, out)
+            thread.join(_FRAME_PERIOD if live else 0.2)
+            if display is not None:
+                display.update(runner)
+        if display is not None:
+            display.update(runner)
     except KeyboardInterrupt:
         runner.cancel(*_StopSignals._REASONS[signal.SIGINT])
         raise
+    finally:
+        if display is not None:
+            display.close()
+        if stop is not None:
+            stop.display = None
     if failure:
         raise failure[0]
-    if live:
-        _draw(runner, out)
     return result[0]
-
-
-def _draw(runner: Runner, out: TextIO) -> None:
-    leaf = runner.current_leaf()
-    current = f"{leaf.name}  ({leaf.location})" if leaf is not None else "-"
-    elapsed = runner.events.events()[-1].time if len(runner.events) else 0.0
-    out.write("\x1b[H\x1b[2J")  # home + clear
-    out.write(f"task {runner.spec.name}  ·  {elapsed:.1f} s  ·  now: {current}\n\n")
-    out.write(runner.snapshot())
-    out.write("\n")
-    out.flush()
 
 
 def _summary(record: RunRecord, runner: Runner, runs_dir: Path | None, out: TextIO) -> None:
@@ -277,8 +291,9 @@ def _summary(record: RunRecord, runner: Runner, runs_dir: Path | None, out: Text
     plan_s = sum(e.data.get("planning_time", 0.0) for e in planned)
     motion_s = sum(e.data.get("duration", 0.0) for e in planned)
     wall = record.events[-1].time if record.events else 0.0
-    print(f"\n{record.task}: {record.status} (exit {record.exit_code}) in {wall:.2f} s wall; "
-          f"{len(steps)} steps, {len(planned)} motions planned in {plan_s:.3f} s, "
+    # Two lines: each fits an 80-column terminal.
+    print(f"\n{record.task}: {record.status} (exit {record.exit_code}) in {wall:.2f} s wall\n"
+          f"  {len(steps)} steps, {len(planned)} motions planned in {plan_s:.3f} s, "
           f"{motion_s:.1f} s of motion", file=out)
     if record.error:
         print(f"  {record.error}", file=out)
