@@ -13,8 +13,9 @@ one it has in the scene (``reached``):
   quarter turn, a bar turned end for end, cannot be told apart);
 - *turn* and *tilt*: that rotation, in world axes, split into a turn about the world z
   axis and a tilt of the object's axes away from where the request puts them (the angle
-  through which it moves the world vertical; swing–twist decomposition). The turn is the
-  smallest over the symmetries, the tilt is the one of the symmetry with the least angle.
+  through which it moves the world vertical; swing–twist decomposition). The tilt is the
+  smallest over the symmetries, the turn the smallest over the symmetries of that tilt (within
+  a milliradian; a symmetry that turns the object upside down says nothing of its heading).
 
 What is checked is the step's :class:`Orientation`: ``free`` the position only, ``yaw`` the
 position and the turn about the world z axis (the tilt is reported, not checked),
@@ -44,6 +45,7 @@ DEFAULT_POSITION = 0.005
 """Default position tolerance (m)."""
 DEFAULT_ANGLE = math.radians(5.0)
 """Default angle tolerance (rad)."""
+_SAME_TILT = 1e-3  # rad: tilts this close are one (a request written 1.5708 is not pi/2)
 
 
 class Orientation(StrEnum):
@@ -106,18 +108,15 @@ def pose_error(wanted: pin.SE3, reached: pin.SE3, turns: Sequence[np.ndarray] = 
     """The error of ``reached`` from ``wanted`` (world poses), the smallest over the
     object-frame rotations ``turns`` that leave the object as it was (its symmetries;
     none: the identity only)."""
-    best: tuple[float, float] | None = None
-    least_turn = math.inf
+    angles, splits = [], []
     for s in turns or (np.eye(3),):
         error = reached.rotation @ (wanted.rotation @ s).T
-        angle = float(np.linalg.norm(pin.log3(error)))
-        turn, tilt = _split(error)
-        least_turn = min(least_turn, turn)
-        if best is None or angle < best[0]:
-            best = (angle, tilt)
-    assert best is not None
+        angles.append(float(np.linalg.norm(pin.log3(error))))
+        splits.append(_split(error))
+    tilt = min(t for _, t in splits)
+    turn = min(z for z, t in splits if t <= tilt + _SAME_TILT)
     distance = float(np.linalg.norm(reached.translation - wanted.translation))
-    return PoseError(distance, best[0], least_turn, best[1])
+    return PoseError(distance, min(angles), turn, tilt)
 
 
 def describe_pose(pose: pin.SE3) -> str:
