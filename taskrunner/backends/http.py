@@ -2,8 +2,10 @@
 
 Each command is one request with the JSON body ``{"cmd": "..."}`` and
 ``Content-Type: application/json``; the answer ``{"reply": "..."}`` carries the reply line.
-Only idempotent commands (STATUS, PING, VERSION) are retried after a network error;
-``TRAJ``, ``MOVE`` and the others never are (a lost answer may hide a command that ran).
+Only idempotent commands (STATUS, PING, VERSION) are retried after a network error, and
+only outside a stream: ``TRAJ``, ``MOVE`` and the others never are (a lost answer may hide
+a command that ran), and while a trajectory streams every command has one attempt within
+its short deadline (a retry would only hide a stalled board for longer).
 Requests go through one pooled :class:`httpx.Client`: the connection to the board is kept
 alive between commands (a trajectory streams hundreds of them), and proxies from the
 environment are ignored (the board is on the local network).
@@ -46,8 +48,9 @@ class HttpTransport:
             headers={"Content-Type": "application/json"})
         self._closed = False
 
-    def exchange(self, line: str) -> str:
-        """POST ``line``; return the reply line.
+    def exchange(self, line: str, timeout: float | None = None) -> str:
+        """POST ``line``; return the reply line. With ``timeout`` (s): one attempt within
+        it; without: the transport's timeout, and retries for idempotent commands.
 
         Raises:
             BackendError: closed, network error or timeout (after the retries of an
@@ -55,15 +58,18 @@ class HttpTransport:
         """
         if self._closed:
             raise BackendError(f"HTTP link to {self._url} is closed")
-        attempts = 1 + (self._retries if command_name(line) in IDEMPOTENT_COMMANDS else 0)
+        idempotent = command_name(line) in IDEMPOTENT_COMMANDS
+        attempts = 1 + (self._retries if idempotent and timeout is None else 0)
         body = json.dumps({"cmd": line}).encode()
+        request_timeout = httpx.USE_CLIENT_DEFAULT if timeout is None else httpx.Timeout(timeout)
         for attempt in range(attempts):
             try:
-                response = self._client.post(self._url, content=body)
+                response = self._client.post(self._url, content=body, timeout=request_timeout)
             except httpx.HTTPError as exc:
                 if attempt + 1 >= attempts:
+                    within = f" within {1000 * timeout:.0f} ms" if timeout is not None else ""
                     raise BackendError(f"no answer from the servo firmware at {self._url} to "
-                                       f"{line!r} ({attempts} attempt(s)): "
+                                       f"{line!r}{within} ({attempts} attempt(s)): "
                                        f"{exc or type(exc).__name__}") from None
                 time.sleep(_RETRY_PAUSE)
                 continue
@@ -81,6 +87,17 @@ class HttpTransport:
         if not isinstance(reply, str):
             raise BackendError(f"garbage answer from {self._url} to {line!r}: {answer[:200]!r}")
         return reply
+
+    def abort(self, line: str) -> None:
+        """POST ``line`` on a fresh connection, waiting at most 100 ms, errors ignored;
+        then close."""
+        body = json.dumps({"cmd": line}).encode()
+        try:
+            httpx.post(self._url, content=body, timeout=0.1, trust_env=False,
+                       headers={"Content-Type": "application/json"})
+        except httpx.HTTPError:
+            pass
+        self.close()
 
     def close(self) -> None:
         """Close the connection and refuse further commands (idempotent)."""

@@ -63,14 +63,15 @@ class SerialTransport:
             if line.startswith(BANNER):
                 return
 
-    def _read_line(self, deadline: float) -> str:
+    def _read_line(self, deadline: float, wait: float | None = None) -> str:
         while b"\n" not in self._pending:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
+                wait = self._timeout if wait is None else wait
                 raise BackendError(f"no reply from the servo firmware on {self._port_name!r} "
-                                   f"within {self._timeout:g} s")
+                                   f"within {1000 * wait:.0f} ms")
             try:
-                self._serial.timeout = min(remaining, 0.05)
+                self._serial.timeout = min(remaining, 0.01)
                 chunk = self._serial.read(max(1, self._serial.in_waiting))
             except (pyserial.SerialException, OSError, TypeError) as exc:
                 raise BackendError(f"serial port {self._port_name!r} failed: {exc}") from None
@@ -78,8 +79,9 @@ class SerialTransport:
         raw, self._pending = self._pending.split(b"\n", 1)
         return raw.decode("ascii", errors="replace").rstrip("\r")
 
-    def exchange(self, line: str) -> str:
-        """Send ``line`` and return the next reply line (``#`` lines skipped).
+    def exchange(self, line: str, timeout: float | None = None) -> str:
+        """Send ``line`` and return the next reply line (``#`` lines skipped), waiting
+        ``timeout`` seconds (default: ``reply_timeout``).
 
         Raises:
             BackendError: write/read error (device gone), no reply within the timeout,
@@ -89,14 +91,24 @@ class SerialTransport:
             self._serial.write(line.encode("ascii") + b"\n")
         except (pyserial.SerialException, OSError, TypeError) as exc:
             raise BackendError(f"serial port {self._port_name!r} failed: {exc}") from None
-        deadline = time.monotonic() + self._timeout
+        wait = self._timeout if timeout is None else timeout
+        deadline = time.monotonic() + wait
         while True:
-            reply = self._read_line(deadline)
+            reply = self._read_line(deadline, wait)
             if reply.startswith(BANNER):
                 raise BackendError(f"the servo board on {self._port_name!r} restarted "
                                    f"({reply!r}): its state is lost")
             if not reply.startswith("#"):
                 return reply
+
+    def abort(self, line: str) -> None:
+        """Write ``line`` without waiting for a reply (errors ignored), then close."""
+        try:
+            self._serial.write(line.encode("ascii") + b"\n")
+            self._serial.flush()
+        except (pyserial.SerialException, OSError, TypeError):
+            pass
+        self.close()
 
     def close(self) -> None:
         """Close the port (idempotent)."""

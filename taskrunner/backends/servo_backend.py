@@ -4,9 +4,15 @@ A worker thread owns the streaming: it sends a trajectory's ``TRAJ`` points ahea
 firmware's clock (keeping ``buffered_ms`` above a lead), polls ``STATUS`` for progress and
 positions (commanded angles converted back to joints), and ends the execution when the
 firmware is idle after the last point. Cancel is ``STOP`` (the servos stay where they are).
-Any link failure, timeout or garbage reply fails the running execution with a
-:class:`BackendError` and closes the link: nothing more is sent. Units: rad, s; firmware
-angles in degrees, times in ms.
+
+While a trajectory streams, every reply has a short deadline (``stream_reply_timeout``,
+and never later than when the servos would run out of queued points), with no retries:
+a stalled, silent or slow link fails the motion within a fraction of a second instead of
+after the 1 s idle timeout. Any link failure, timeout, corrupted (checksum) or garbage
+reply fails the running execution with a :class:`BackendError`; the link then sends one
+``STOP`` and closes: nothing else is sent. A stop by the firmware's own watchdog (STATUS
+``watchdog_stops``) fails the execution too. Units: rad, s; firmware angles in degrees,
+times in ms.
 """
 
 from __future__ import annotations
@@ -36,6 +42,9 @@ from taskrunner.types import JointTrajectory
 __all__ = ["ServoBackend", "ServoOptions"]
 
 _JOIN_TIMEOUT = 2.0  # s
+# Shortest reply deadline while streaming (s), when the servos are about to run out of
+# points: below this a busy host would fail motions that are merely late.
+_MIN_STREAM_TIMEOUT = 0.05
 
 
 @dataclass(frozen=True)
@@ -43,7 +52,11 @@ class ServoOptions:
     """How :class:`ServoBackend` (and the serial/HTTP backends) talk to the firmware.
 
     Attributes:
-        reply_timeout: seconds to wait for one reply line.
+        reply_timeout: seconds to wait for one reply line (outside a stream).
+        stream_reply_timeout: seconds to wait for one reply while a trajectory streams
+            (wall clock, one attempt); also never later than when the servos would run out
+            of queued points (but at least 50 ms). With ``poll_period`` it bounds the
+            detection of a silent link: at most poll_period + stream_reply_timeout.
         banner_timeout: seconds to wait for the boot banner after opening a serial port.
         lead_ms: firmware ms of trajectory kept queued ahead of the servos (>= 3 ticks).
         poll_period: seconds between STATUS polls while a trajectory runs.
@@ -57,6 +70,7 @@ class ServoOptions:
     """
 
     reply_timeout: float = 1.0
+    stream_reply_timeout: float = 0.12
     banner_timeout: float = 2.0
     lead_ms: int = 400
     poll_period: float = 0.04
@@ -69,7 +83,8 @@ class ServoOptions:
 
     def __post_init__(self) -> None:
         positive = (lambda v: 0 < v < math.inf, "a positive number")
-        for name in ("reply_timeout", "poll_period", "idle_poll_period", "time_scale"):
+        for name in ("reply_timeout", "stream_reply_timeout", "poll_period", "idle_poll_period",
+                     "time_scale"):
             check_option(name, getattr(self, name), *positive)
         check_option("banner_timeout", self.banner_timeout, lambda v: 0 <= v < math.inf,
                      "a number >= 0")
@@ -87,6 +102,7 @@ class _Stream:
     buffered_ms: int = 0
     buffered_at: float = 0.0  # wall time of the last buffered_ms
     underruns: int = 0
+    watchdog_stops: int = 0  # the firmware's count when the stream began
 
 
 class ServoBackend(BaseBackend):
@@ -214,7 +230,8 @@ class ServoBackend(BaseBackend):
     def _begin(self, execution: TrajectoryExecution) -> None:
         base = np.array(self._status["pos"], dtype=float)
         points = plan_points(execution.trajectory, self._calibration, base, self._tick_ms)
-        self._stream = _Stream(execution, points)
+        self._stream = _Stream(execution, points,
+                               watchdog_stops=int(self._status.get("watchdog_stops", 0)))
         self._wake.notify_all()
 
     def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
@@ -286,9 +303,21 @@ class ServoBackend(BaseBackend):
         drained = (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
         return stream.next == 0 or stream.buffered_ms - drained < self._options.lead_ms
 
+    def _reply_deadline(self, stream: _Stream | None) -> float | None:
+        """Seconds to wait for a reply now: None (the transport's own) outside a stream."""
+        if stream is None or stream.execution.finished:
+            return None
+        timeout = self._options.stream_reply_timeout
+        if 0 < stream.next < len(stream.points):  # more to send: the servos must not starve
+            drained = (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
+            runout = (stream.buffered_ms - drained) / 1000.0 / self._options.time_scale
+            timeout = min(timeout, max(runout, _MIN_STREAM_TIMEOUT))
+        return timeout
+
     def _send_point(self, stream: _Stream) -> None:
         point = stream.points[stream.next]
-        result = self._link.exchange(point.line, guard=lambda: self._stream is stream)
+        result = self._link.exchange(point.line, guard=lambda: self._stream is stream,
+                                     timeout=self._reply_deadline(stream))
         if result is None:
             return
         reply, _ = result
@@ -308,7 +337,9 @@ class ServoBackend(BaseBackend):
                 stream.execution.set_progress(min(progress, stream.execution.duration))
 
     def _poll_status(self) -> None:
-        result = self._link.exchange("STATUS")
+        with self._lock:
+            timeout = self._reply_deadline(self._stream)
+        result = self._link.exchange("STATUS", timeout=timeout)
         assert result is not None
         reply, sequence = result
         data = self._link.checked("STATUS", reply)
@@ -318,6 +349,11 @@ class ServoBackend(BaseBackend):
             stream = self._stream
             if stream is None or stream.execution.finished:
                 return
+            if int(status.get("watchdog_stops", 0)) > stream.watchdog_stops:
+                raise BackendError(
+                    "the firmware's watchdog stopped the servos (it heard nothing from the "
+                    f"host for {self._version.get('watchdog_ms')} ms of firmware time) at "
+                    f"{status.get('pos')} deg")
             if stream.next > 0:
                 sent_ms = stream.points[stream.next - 1].at_ms
                 buffered = int(status.get("buffered_ms", 0))

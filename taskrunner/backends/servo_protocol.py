@@ -22,29 +22,76 @@ from taskrunner.backends.execution import sample_positions
 from taskrunner.errors import BackendError
 from taskrunner.types import JointTrajectory
 
-__all__ = ["PROTOCOL_VERSION", "ServoLink", "StreamPoint", "Transport", "format_angles",
-           "parse_reply", "plan_points"]
+__all__ = ["PROTOCOL_VERSION", "ServoLink", "StreamPoint", "Transport", "crc8", "format_angles",
+           "parse_reply", "plan_points", "strip_checksum", "with_checksum"]
 
-PROTOCOL_VERSION = 1
+PROTOCOL_VERSION = 2
 IDEMPOTENT_COMMANDS = frozenset({"STATUS", "PING", "VERSION"})
 _REPLY = re.compile(r"(ok)(?: (.*))?|err (\d+) (.*)")
 _TRAJ_REPLY = re.compile(r"(\d+) (\d+)")
+_CHECKSUM = re.compile(r"(.*)\*([0-9A-Fa-f]{2})", re.DOTALL)
 
 
 class Transport(Protocol):
     """A link to the firmware: one command line out, its reply line back."""
 
-    def exchange(self, line: str) -> str:
+    def exchange(self, line: str, timeout: float | None = None) -> str:
         """Send ``line`` (no terminator) and return the reply line (no terminator).
 
+        Args:
+            line: the command line, checksum included.
+            timeout: seconds to wait for the reply, in a single attempt (no retries);
+                None: the transport's own timeout (and retries, for idempotent commands).
+
         Raises:
-            BackendError: no reply within the transport's timeout, or the link failed.
+            BackendError: no reply within the timeout, or the link failed.
         """
+        ...
+
+    def abort(self, line: str) -> None:
+        """Send ``line`` (a STOP) without waiting for its reply, ignoring any failure, then
+        close: the last thing said on a link that failed."""
         ...
 
     def close(self) -> None:
         """Release the link (idempotent)."""
         ...
+
+
+def crc8(text: str) -> int:
+    """CRC-8 of ``text``'s bytes (polynomial 0x07, init 0, no reflection: the SMBus CRC-8,
+    the firmware's ``crc8``; 0xF4 for "123456789")."""
+    crc = 0
+    for byte in text.encode("ascii", errors="replace"):
+        crc = _CRC8_TABLE[crc ^ byte]
+    return crc
+
+
+def _crc8_table() -> tuple[int, ...]:
+    table = []
+    for value in range(256):
+        crc = value
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x07) & 0xFF if crc & 0x80 else (crc << 1) & 0xFF
+        table.append(crc)
+    return tuple(table)
+
+
+_CRC8_TABLE = _crc8_table()
+
+
+def with_checksum(line: str) -> str:
+    """``line`` with its ``*XX`` checksum suffix (PROTOCOL.md, "Checksums")."""
+    return f"{line}*{crc8(line):02X}"
+
+
+def strip_checksum(line: str) -> str | None:
+    """The line without its ``*XX`` suffix when the suffix is there and right, else None
+    (no suffix, a malformed one, or a mismatch: the line was corrupted)."""
+    match = _CHECKSUM.fullmatch(line)
+    if match is None or int(match.group(2), 16) != crc8(match.group(1)):
+        return None
+    return match.group(1)
 
 
 def command_name(line: str) -> str:
@@ -86,6 +133,11 @@ def format_angles(degrees: np.ndarray) -> str:
 class ServoLink:
     """Commands and replies over a :class:`Transport`, one exchange at a time (thread-safe).
 
+    Every command goes out with its checksum and every reply must come back with a right
+    one: a reply without it, or with a wrong one, is a corrupted line, which fails the
+    link like a timeout or garbage does. A failed link sends one last ``STOP`` (its reply
+    not awaited) and closes: nothing else is sent after a fault.
+
     Args:
         transport: the link; closed by :meth:`close`.
     """
@@ -95,18 +147,23 @@ class ServoLink:
         self._io = threading.Lock()
         self._dead: str | None = None
         self.sequence = 0  # exchanges done; orders replies from several threads
+        self.corrupted_replies = 0  # replies refused for a missing or wrong checksum
+        self.aborted = threading.Event()  # set once the last STOP was handed over
 
     @property
     def dead(self) -> str | None:
         """Why the link is unusable, or None."""
         return self._dead
 
-    def exchange(self, line: str, guard: Any = None) -> tuple[str, int] | None:
-        """Send ``line``, return ``(reply, sequence)``; None (nothing sent) if ``guard``
-        is given and returns False under the link's lock.
+    def exchange(self, line: str, guard: Any = None,
+                 timeout: float | None = None) -> tuple[str, int] | None:
+        """Send ``line``, return ``(reply, sequence)`` with the reply's checksum checked
+        and removed; None (nothing sent) if ``guard`` is given and returns False under the
+        link's lock. ``timeout``: see :meth:`Transport.exchange`.
 
         Raises:
-            BackendError: the link is dead or fails now (it then stays dead).
+            BackendError: the link is dead, fails now, or the reply is corrupted (the
+                link then stays dead, after a last STOP).
         """
         with self._io:
             if self._dead is not None:
@@ -114,11 +171,19 @@ class ServoLink:
             if guard is not None and not guard():
                 return None
             try:
-                reply = self._transport.exchange(line)
+                raw = self._transport.exchange(with_checksum(line), timeout)
             except BackendError as exc:
-                self._dead = str(exc)
-                self._close_transport()
+                self._fault(str(exc))
                 raise
+            reply = strip_checksum(raw)
+            if reply is None:
+                self.corrupted_replies += 1
+                plain = _CHECKSUM.fullmatch(raw) is None and _REPLY.fullmatch(raw)
+                why = ("no checksum: a firmware before protocol 2?" if plain
+                       else "missing or wrong checksum")
+                message = f"corrupted reply to {line!r} from the servo firmware ({why}): {raw!r}"
+                self._fault(message)
+                raise BackendError(message)
             self.sequence += 1
             return reply, self.sequence
 
@@ -159,19 +224,31 @@ class ServoLink:
         return status
 
     def kill(self, reason: str) -> None:
-        """Mark the link dead and close the transport: nothing more is sent."""
+        """Mark the link dead after a fault: one last STOP, then closed."""
         with self._io:
             if self._dead is None:
-                self._dead = reason
-                self._close_transport()
+                self._fault(reason)
 
     def close(self) -> None:
-        """Close the transport (idempotent)."""
-        self.kill("closed")
+        """Close the transport (idempotent); no STOP."""
+        with self._io:
+            if self._dead is None:
+                self._dead = "closed"
+                with contextlib.suppress(Exception):  # closing a broken link must not raise
+                    self._transport.close()
 
-    def _close_transport(self) -> None:
-        with contextlib.suppress(Exception):  # closing a broken link must not raise
-            self._transport.close()
+    def _fault(self, reason: str) -> None:
+        # Under self._io. The STOP is handed to a thread so that the failure is reported
+        # at once, not after the STOP's own timeout on a stalled link.
+        self._dead = reason
+        line = with_checksum("STOP")
+
+        def abort() -> None:
+            with contextlib.suppress(Exception):  # a last word on a broken link
+                self._transport.abort(line)
+            self.aborted.set()
+
+        threading.Thread(target=abort, name="ServoLink-abort", daemon=True).start()
 
     def handshake(self, calibration: ServoCalibration, attempts: int = 3) -> dict[str, Any]:
         """``PING`` until ``ok pong``, then ``VERSION`` checked against ``calibration``.

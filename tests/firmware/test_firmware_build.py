@@ -258,7 +258,7 @@ def test_host_prints_pty_path_then_url(firmware: HostFirmware) -> None:
     assert os.isatty(firmware.fd)
     assert os.path.realpath(firmware.link_path) == os.path.realpath(firmware.pty_path)
     assert re.fullmatch(r"http://127\.0\.0\.1:\d+/api/command", firmware.url)
-    assert firmware.read_line() == "# taskrunner-servo 1.0.0 protocol 1 ready"
+    assert firmware.read_line() == "# taskrunner-servo 1.1.0 protocol 2 ready"
 
 
 def test_status_reports_home_angles_unpowered_at_boot(firmware: HostFirmware) -> None:
@@ -280,7 +280,7 @@ def test_version_channels_match_hardware_yaml(firmware: HostFirmware) -> None:
     assert version["servos"] == len(channels) == 6
     assert version["channels"] == channels
     assert version["tick_ms"] == TICK_MS
-    assert version["protocol"] == 1
+    assert version["protocol"] == 2 and version["checksum"] == "crc8"
 
 
 def test_move_reaches_its_target_after_enough_ticks(firmware: HostFirmware) -> None:

@@ -15,6 +15,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -143,6 +144,21 @@ int main(int argc, char** argv) {
 
   trs::Config config = trs::servo_arm_config();
   config.tick_ms = options.tick_ms;
+  if (!options.channels.empty()) {
+    config.n_servos = static_cast<int>(options.channels.size());
+    for (int i = 0; i < config.n_servos; ++i) {
+      config.servos[i] = config.servos[0];
+      config.servos[i].channel = static_cast<uint8_t>(options.channels[i]);
+    }
+  }
+  // The watchdog counts firmware time, which runs `speedup` times faster than the wall
+  // clock the host lives by: --watchdog-ms is wall-clock time, as on the board.
+  config.watchdog_ms = 0;
+  if (options.watchdog_ms > 0) {
+    const double firmware_ms = options.watchdog_ms * options.speedup;
+    config.watchdog_ms = static_cast<uint32_t>(
+        std::min<double>(trs::kWatchdogMsMax, std::max<double>(config.tick_ms, firmware_ms)));
+  }
   error = trs::check_config(config);
   if (!error.empty()) return fail("bad configuration: " + error);
   trs::Protocol protocol(config);

@@ -35,7 +35,8 @@ bool parse_double(const std::string& text, double min, double max, double* out) 
 
 const char* usage() {
   return "usage: taskrunner-servo-host [--tick-ms N] [--speedup X] [--log FILE]\n"
-         "                             [--http-port N] [--link PATH]\n"
+         "                             [--http-port N] [--link PATH] [--watchdog-ms N]\n"
+         "                             [--channels C1,C2,...]\n"
          "\n"
          "The taskrunner servo firmware with simulated servos. Speaks the line protocol\n"
          "(firmware/PROTOCOL.md) on a pseudo-terminal and over HTTP on 127.0.0.1.\n"
@@ -48,6 +49,10 @@ const char* usage() {
          "  --log FILE      write 't_ms,a1,...,a6' for t = 0 and after every tick (degrees)\n"
          "  --http-port N   TCP port on 127.0.0.1, 0 = any free port (default 0)\n"
          "  --link PATH     also make PATH a symlink to the pty (removed on exit)\n"
+         "  --watchdog-ms N stop a streamed trajectory after N ms (wall clock) without a\n"
+         "                  line from the host, 0 = off (default 300)\n"
+         "  --channels LIST the servos' PCA9685 channels, in MOVE/TRAJ order (default\n"
+         "                  0,3,6,9,12,15: one arm; 0,1,2,3,4,5,8,9,10,11,12,13: the pair)\n"
          "  -h, --help      this text\n";
 }
 
@@ -64,7 +69,8 @@ bool parse_options(int argc, char** argv, Options* options, std::string* error) 
       value = arg.substr(eq + 1);
       arg = arg.substr(0, eq);
     } else if (arg == "--tick-ms" || arg == "--speedup" || arg == "--log" ||
-               arg == "--http-port" || arg == "--link") {
+               arg == "--http-port" || arg == "--link" || arg == "--watchdog-ms" ||
+               arg == "--channels") {
       if (i + 1 >= argc) {
         *error = "'" + arg + "' needs a value";
         return false;
@@ -102,6 +108,30 @@ bool parse_options(int argc, char** argv, Options* options, std::string* error) 
         return false;
       }
       options->link_path = value;
+    } else if (arg == "--watchdog-ms") {
+      long v = 0;
+      if (!parse_int(value, 0, 60000, &v)) {
+        *error = "'--watchdog-ms' must be an integer 0..60000 (got '" + value + "')";
+        return false;
+      }
+      options->watchdog_ms = static_cast<uint32_t>(v);
+    } else if (arg == "--channels") {
+      options->channels.clear();
+      std::size_t start = 0;
+      while (true) {
+        const std::size_t comma = value.find(',', start);
+        const std::string item =
+            value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        long v = 0;
+        if (!parse_int(item, 0, 15, &v) || options->channels.size() >= 16) {
+          *error = "'--channels' must be 1..16 comma-separated channels 0..15 (got '" + value +
+                   "')";
+          return false;
+        }
+        options->channels.push_back(static_cast<int>(v));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+      }
     } else {
       *error = "unknown option '" + arg + "'";
       return false;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace host {
 
@@ -12,6 +13,8 @@ struct Options {
   std::string log_path;      // CSV of every tick's angles (--log)
   int http_port = 0;         // 0: any free port (--http-port)
   std::string link_path;     // symlink to the pty slave (--link)
+  uint32_t watchdog_ms = 300;  // wall-clock ms of host silence that stop a stream; 0: off
+  std::vector<int> channels;   // PCA9685 channel of each servo; empty: our arm's six
   bool help = false;
 };
 

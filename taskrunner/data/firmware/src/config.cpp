@@ -16,6 +16,7 @@ Config servo_arm_config() {
   }
   config.tick_ms = 80;
   config.default_speed = 5;
+  config.watchdog_ms = 300;
   return config;
 }
 
@@ -47,6 +48,11 @@ std::string check_config(const Config& config) {
   if (config.tick_ms < kTickMsMin || config.tick_ms > kTickMsMax) {
     return "tick_ms must be " + std::to_string(kTickMsMin) + ".." +
            std::to_string(kTickMsMax) + " (got " + std::to_string(config.tick_ms) + ")";
+  }
+  if (config.watchdog_ms != 0 &&
+      (config.watchdog_ms < config.tick_ms || config.watchdog_ms > kWatchdogMsMax)) {
+    return "watchdog_ms must be 0 (off) or " + std::to_string(config.tick_ms) + ".." +
+           std::to_string(kWatchdogMsMax) + " (got " + std::to_string(config.watchdog_ms) + ")";
   }
   if (config.default_speed < kSpeedMin || config.default_speed > kSpeedMax) {
     return "default_speed must be 1..20 (got " + std::to_string(config.default_speed) + ")";

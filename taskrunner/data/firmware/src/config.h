@@ -11,8 +11,8 @@
 namespace trs {
 
 constexpr const char* kFirmwareName = "taskrunner-servo";
-constexpr const char* kFirmwareVersion = "1.0.0";
-constexpr int kProtocolVersion = 1;
+constexpr const char* kFirmwareVersion = "1.1.0";
+constexpr int kProtocolVersion = 2;
 
 constexpr int kMaxServos = 16;          // a PCA9685 has 16 channels
 constexpr int kQueueCapacity = 64;      // TRAJ points (64 x 80 ms = 5.12 s of motion)
@@ -26,6 +26,7 @@ constexpr uint32_t kTrajDtMinMs = 1;    // shortest TRAJ segment
 constexpr uint32_t kTrajDtMaxMs = 60000;  // longest TRAJ segment
 constexpr uint32_t kTickMsMin = 1;
 constexpr uint32_t kTickMsMax = 1000;
+constexpr uint32_t kWatchdogMsMax = 600000;
 
 using Angles = std::array<int32_t, kMaxServos>;  // centidegrees; only [0, n_servos) used
 
@@ -42,6 +43,9 @@ struct Config {
   std::array<ServoSpec, kMaxServos> servos{};
   uint32_t tick_ms = 80;   // period of the step loop
   int default_speed = 5;   // degrees per tick after boot
+  // While a trajectory streams, no accepted line for this long (firmware ms) stops the
+  // servos where they are. 0: off. Must be 0 or at least one tick.
+  uint32_t watchdog_ms = 300;
 };
 
 // Our arm (robots/servo_arm/config/hardware.yaml): six servos on channels

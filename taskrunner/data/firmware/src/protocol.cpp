@@ -1,7 +1,9 @@
 #include "protocol.h"
 
+#include <cstdint>
 #include <cstdio>
 
+#include "checksum.h"
 #include "json.h"
 #include "numbers.h"
 
@@ -61,11 +63,54 @@ std::string error_reply(ErrorCode code, std::string_view reason) {
 
 Protocol::Protocol(const Config& config) : config_(config), motion_(config) {}
 
+void Protocol::tick() {
+  const uint32_t tick_ms = motion_.tick_ms();
+  silent_ms_ = silent_ms_ > UINT32_MAX - tick_ms ? UINT32_MAX : silent_ms_ + tick_ms;
+  if (config_.watchdog_ms > 0 && motion_.mode() == Mode::kTraj &&
+      silent_ms_ >= config_.watchdog_ms) {
+    motion_.stop();  // hold where the servos are now; the host must start afresh
+    ++watchdog_stops_;
+  }
+  motion_.tick();
+}
+
+std::string Protocol::handle(std::string_view line) {
+  std::string_view body;
+  uint8_t received = 0;
+  uint8_t computed = 0;
+  switch (check_checksum(line, &body, &received, &computed)) {
+    case ChecksumResult::kNone:
+      silent_ms_ = 0;
+      return run(line);
+    case ChecksumResult::kOk: {
+      silent_ms_ = 0;
+      body = trim(body);
+      const std::string reply =
+          body.empty() ? error_reply(ErrorCode::kSyntax, "empty command") : run(body);
+      return with_checksum(reply);
+    }
+    case ChecksumResult::kMalformed:
+      ++crc_errors_;
+      return with_checksum(error_reply(
+          ErrorCode::kChecksum,
+          "malformed checksum: '*' must end the line followed by two hex digits (line " +
+              quoted(line.substr(line.size() > 24 ? line.size() - 24 : 0)) + ")"));
+    case ChecksumResult::kMismatch:
+      ++crc_errors_;
+      return with_checksum(error_reply(
+          ErrorCode::kChecksum, "checksum mismatch: line says " + hex_byte(received) +
+                                    ", its bytes give " + hex_byte(computed) +
+                                    " (line refused, " + std::to_string(crc_errors_) +
+                                    " so far)"));
+  }
+  return run(line);
+}
+
 bool Protocol::feed(char byte, std::string* reply) {
   const LineReader::Event event = reader_.feed(byte);
   switch (event) {
     case LineReader::Event::kNone: return false;
-    case LineReader::Event::kLine: *reply = run(reader_.line()); return true;
+    case LineReader::Event::kLine: *reply = handle(reader_.line()); return true;
     case LineReader::Event::kTooLong:
     case LineReader::Event::kBadByte:
       *reply = line_error(event, reader_.bad_byte(), reader_.bad_column());
@@ -80,7 +125,7 @@ std::string Protocol::execute(std::string_view command) {
   std::size_t column = 0;
   const LineReader::Event event = check_line(command, &line, &bad_byte, &column);
   switch (event) {
-    case LineReader::Event::kLine: return run(line);
+    case LineReader::Event::kLine: return handle(line);
     case LineReader::Event::kNone: return error_reply(ErrorCode::kSyntax, "empty command");
     case LineReader::Event::kTooLong:
     case LineReader::Event::kBadByte: return line_error(event, bad_byte, column);
@@ -134,6 +179,8 @@ std::string Protocol::status_json() const {
   out += ",\"queued\":" + std::to_string(motion_.queued());
   out += ",\"buffered_ms\":" + std::to_string(motion_.buffered_ms());
   out += ",\"tick\":" + std::to_string(motion_.ticks());
+  out += ",\"crc_errors\":" + std::to_string(crc_errors_);
+  out += ",\"watchdog_stops\":" + std::to_string(watchdog_stops_);
   out += "}";
   return out;
 }
@@ -157,6 +204,8 @@ std::string Protocol::version_json() const {
   out += ",\"speed_range\":[" + std::to_string(kSpeedMin) + "," + std::to_string(kSpeedMax) + "]";
   out += ",\"queue\":" + std::to_string(kQueueCapacity);
   out += ",\"max_line\":" + std::to_string(kMaxLineLength);
+  out += ",\"checksum\":\"crc8\"";
+  out += ",\"watchdog_ms\":" + std::to_string(config_.watchdog_ms);
   out += "}";
   return out;
 }

@@ -1,6 +1,7 @@
 // The line protocol of the servo bridge (spec: firmware/PROTOCOL.md).
 //
-// Every command line gets exactly one reply line: "ok[ <data>]" or "err <code> <reason>".
+// Every command line gets exactly one reply line: "ok[ <data>]" or "err <code> <reason>",
+// followed by "*XX" (checksum.h) when the command carried one.
 // The same Protocol object serves the serial port (feed() byte by byte) and HTTP
 // (http_command() with the POST body), so both transports behave identically.
 // Plain C++17, no Arduino headers: compiled into the ESP32 sketch, the host firmware
@@ -24,6 +25,7 @@ enum class ErrorCode : int {
   kQueueFull = 5,
   kLineTooLong = 6,
   kBadByte = 7,
+  kChecksum = 8,
 };
 
 struct HttpResponse {
@@ -51,8 +53,15 @@ class Protocol {
   // as form fields instead of handing it over. 400 with a hint to send JSON.
   static HttpResponse http_no_body();
 
-  // One tick of the step loop; call every config().tick_ms milliseconds.
-  void tick() { motion_.tick(); }
+  // One tick of the step loop; call every config().tick_ms milliseconds. Runs the
+  // watchdog first: while a trajectory streams, no accepted line for
+  // config().watchdog_ms stops the servos where they are (counted in STATUS).
+  void tick();
+
+  // Lines refused for a bad or malformed checksum since boot (STATUS "crc_errors").
+  uint32_t crc_errors() const { return crc_errors_; }
+  // Trajectories the watchdog stopped since boot (STATUS "watchdog_stops").
+  uint32_t watchdog_stops() const { return watchdog_stops_; }
 
   const Motion& motion() const { return motion_; }
   const Config& config() const { return config_; }
@@ -64,6 +73,9 @@ class Protocol {
   std::string version_json() const;
 
  private:
+  // A complete line: checksum checked and stripped, the command run, the reply
+  // checksummed when the line was.
+  std::string handle(std::string_view line);
   std::string run(std::string_view line);
   std::string parse_angles(std::string_view args, std::string_view command,
                            Angles* out) const;
@@ -76,6 +88,9 @@ class Protocol {
   Config config_;
   Motion motion_;
   LineReader reader_;
+  uint32_t crc_errors_ = 0;
+  uint32_t watchdog_stops_ = 0;
+  uint32_t silent_ms_ = 0;  // firmware ms since the last accepted line (saturating)
 };
 
 // "err <code> <reason>"

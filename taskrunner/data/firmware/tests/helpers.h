@@ -32,7 +32,7 @@ inline void tick(trs::Protocol& protocol, int n) {
   for (int i = 0; i < n; ++i) protocol.tick();
 }
 
-// "ok", "ok <printable>", or "err <1..7> <printable>"; printable ASCII only (no tab,
+// "ok", "ok <printable>", or "err <1..8> <printable>"; printable ASCII only (no tab,
 // CR or LF).
 inline bool well_formed_reply(const std::string& reply) {
   for (char c : reply) {
@@ -41,7 +41,7 @@ inline bool well_formed_reply(const std::string& reply) {
   if (reply == "ok") return true;
   if (reply.rfind("ok ", 0) == 0) return reply.size() > 3;
   if (reply.size() < 7 || reply.rfind("err ", 0) != 0) return false;
-  return reply[4] >= '1' && reply[4] <= '7' && reply[5] == ' ' && reply[6] != ' ';
+  return reply[4] >= '1' && reply[4] <= '8' && reply[5] == ' ' && reply[6] != ' ';
 }
 
 inline trs::Angles angles6(int a, int b, int c, int d, int e, int f) {

@@ -12,7 +12,13 @@ using th::tick;
 using trs::Protocol;
 
 namespace {
-Protocol make() { return Protocol(trs::servo_arm_config()); }
+// The watchdog off: these tests tick through trajectories without sending lines
+// (test_link.cpp tests the watchdog).
+Protocol make() {
+  trs::Config config = trs::servo_arm_config();
+  config.watchdog_ms = 0;
+  return Protocol(config);
+}
 bool starts_with(const std::string& s, const std::string& prefix) {
   return s.rfind(prefix, 0) == 0;
 }
@@ -26,7 +32,7 @@ TEST(status_reports_json_after_ok) {
   CHECK_EQ(reply,
            "ok {\"status\":\"ok\",\"mode\":\"idle\",\"moving\":false,\"powered\":false,"
            "\"pos\":[90,90,90,90,90,90],\"target\":[90,90,90,90,90,90],\"speed\":5,"
-           "\"queued\":0,\"buffered_ms\":0,\"tick\":0}");
+           "\"queued\":0,\"buffered_ms\":0,\"tick\":0,\"crc_errors\":0,\"watchdog_stops\":0}");
   CHECK(trs::json_valid(reply.substr(3)));
 }
 
@@ -97,15 +103,16 @@ TEST(version_reports_firmware_and_limits_as_json) {
   Protocol p = make();
   const std::string reply = ask(p, "VERSION");
   CHECK_EQ(reply,
-           "ok {\"firmware\":\"taskrunner-servo\",\"version\":\"1.0.0\",\"protocol\":1,"
+           "ok {\"firmware\":\"taskrunner-servo\",\"version\":\"1.1.0\",\"protocol\":2,"
            "\"servos\":6,\"channels\":[0,3,6,9,12,15],\"home\":[90,90,90,90,90,90],"
-           "\"tick_ms\":80,\"speed_range\":[1,20],\"queue\":64,\"max_line\":128}");
+           "\"tick_ms\":80,\"speed_range\":[1,20],\"queue\":64,\"max_line\":128,"
+           "\"checksum\":\"crc8\",\"watchdog_ms\":0}");
   CHECK(trs::json_valid(reply.substr(3)));
 }
 
 TEST(banner_names_firmware_and_protocol) {
   Protocol p = make();
-  CHECK_EQ(p.banner(), "# taskrunner-servo 1.0.0 protocol 1 ready");
+  CHECK_EQ(p.banner(), "# taskrunner-servo 1.1.0 protocol 2 ready");
 }
 
 TEST(traj_replies_queue_length_and_buffered_time) {

@@ -59,6 +59,10 @@ const trs::ServoSpec kServos[] = {
 };
 constexpr uint32_t kTickMs = 80;
 constexpr int kDefaultSpeed = 5;  // degrees per tick
+// While a trajectory streams, this long without a line from the host (a cable pulled, a
+// hung host) stops the servos where they are; 0 turns it off. The host sends a line at
+// least every ~80 ms while streaming.
+constexpr uint32_t kWatchdogMs = 300;
 // After a stall (a slow HTTP client can hold handleClient() for seconds), run at most
 // this many missed ticks back to back and drop the rest: the motion is delayed (the
 // PCA9685 holds the last pulses meanwhile) rather than rushed in a jump.
@@ -72,6 +76,7 @@ trs::Config make_config() {
   for (int i = 0; i < config.n_servos && i < trs::kMaxServos; ++i) config.servos[i] = kServos[i];
   config.tick_ms = kTickMs;
   config.default_speed = kDefaultSpeed;
+  config.watchdog_ms = kWatchdogMs;
   return config;
 }
 
