@@ -242,6 +242,8 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
     if args.log:
         command += ["--log", args.log]
+    if args.channels:
+        command += ["--channels", args.channels]
     started: list[subprocess.Popen[bytes]] = []
     pending: list[int] = []
 
@@ -442,6 +444,9 @@ def _parser() -> argparse.ArgumentParser:
     sim = sub.add_parser("firmware-sim", help="start the host build of the ESP32 firmware")
     sim.add_argument("--speedup", type=float, default=1.0, help="run its clock X times faster")
     sim.add_argument("--log", help="CSV of every tick's servo angles")
+    sim.add_argument("--channels",
+                     help="the board's servo channels in MOVE/TRAJ order (default: one arm, "
+                          "0,3,6,9,12,15; servo_arm_pair's board: 0,1,2,3,4,5,8,9,10,11,12,13)")
     hw = sub.add_parser("hw", help="bench helpers for the servo arm's ESP32")
     hw.add_argument("action", choices=("status", "home", "jog", "calibrate"),
                     help="status: firmware and joint angles; home; jog JOINT DEGREES; "

@@ -23,7 +23,8 @@ from taskrunner.errors import TrajectoryRejectedError, YamlError
 from taskrunner.types import JointState, JointTrajectory
 from taskrunner.yamlfile import line_of, load_yaml
 
-__all__ = ["JointCalibration", "ServoCalibration", "load_calibration", "round_degrees"]
+__all__ = ["JointCalibration", "RobotOnBoard", "ServoCalibration", "load_board_calibration",
+           "load_calibration", "round_degrees"]
 
 SERVO_MIN_DEG = 0.0
 SERVO_MAX_DEG = 180.0
@@ -285,4 +286,93 @@ def load_calibration(path: str | Path, joint_names: Sequence[str] | None = None,
                         path, joints_node[i], "same_servo_as")
     if not owners:
         raise _fail("no joint with a servo", path, data, "joints")
+    return ServoCalibration(tuple(joints), port, int(baud), path)
+
+
+@dataclass(frozen=True)
+class RobotOnBoard:
+    """One robot of a cell whose servos share a board (see :func:`load_board_calibration`).
+
+    Attributes:
+        name: the cell's robot name (``left``), the key in the board file.
+        prefix: put before its joint names in the cell (``left_``).
+        hardware_path: its own ``hardware.yaml`` (zero_rad, direction, scale).
+        joint_names: its joints, without the prefix.
+    """
+
+    name: str
+    prefix: str
+    hardware_path: Path
+    joint_names: tuple[str, ...]
+
+
+_BOARD_KEYS = {"port", "baud", "robots"}
+
+
+def load_board_calibration(path: str | Path, robots: Sequence[RobotOnBoard],
+                           ) -> ServoCalibration:
+    """One calibration for several robots driven by one servo board (a cell's
+    ``<cell>.hardware.yaml``), e.g. both arms of ``servo_arm_pair`` on one PCA9685::
+
+        port: /dev/ttyUSB0
+        robots:
+          left: {channels: [0, 1, 2, 3, 4, 5]}     # the robot's servos, in its own order
+          right: {channels: [8, 9, 10, 11, 12, 13]}
+
+    Each robot keeps its own ``hardware.yaml`` (zero_rad, direction, scale); the board file
+    gives where its servos are wired on this board. Joint names get the robot's prefix;
+    the servo order (``MOVE``/``TRAJ``) is the robots' order in the board file.
+
+    Raises:
+        YamlError: unreadable file, unknown key or robot, a robot missing, a wrong number
+            of channels, a channel outside 0..15 or used twice (``file:line``).
+    """
+    path = Path(path)
+    data = load_yaml(path)
+    if not isinstance(data, dict) or not isinstance(data.get("robots"), dict):
+        raise YamlError("expected a mapping with a 'robots' mapping", path, line_of(data))
+    unknown = sorted(set(data) - _BOARD_KEYS)
+    if unknown:
+        raise _fail(f"unknown key {unknown[0]!r}; keys: {sorted(_BOARD_KEYS)}", path, data,
+                    unknown[0])
+    port, baud = data.get("port", ""), data.get("baud", 115200)
+    if not isinstance(port, str):
+        raise _fail(f"'port' must be a string (got {port!r})", path, data, "port")
+    if isinstance(baud, bool) or not isinstance(baud, int) or baud <= 0:
+        raise _fail(f"'baud' must be a positive integer (got {baud!r})", path, data, "baud")
+    by_name = {r.name: r for r in robots}
+    node = data["robots"]
+    for name in node:
+        if name not in by_name:
+            raise _fail(f"unknown robot {name!r}; the cell's robots: {list(by_name)}", path,
+                        node, name)
+    missing = [r.name for r in robots if r.name not in node]
+    if missing:
+        raise _fail(f"robots {missing} have no channels on this board", path, data, "robots")
+    joints: list[JointCalibration] = []
+    used: dict[int, str] = {}
+    for name, entry in node.items():
+        robot = by_name[name]
+        own = load_calibration(robot.hardware_path, robot.joint_names)
+        channels = entry.get("channels") if isinstance(entry, dict) else None
+        if (not isinstance(channels, list) or len(channels) != len(own.servo_joint_names)
+                or not all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 15
+                           for c in channels)):
+            raise _fail(f"'channels' of robot {name!r} must list {len(own.servo_joint_names)} "
+                        f"channels 0..15, one per servo {list(own.servo_joint_names)} (got "
+                        f"{channels!r})", path, node, name)
+        wiring = dict(zip(own.servo_joint_names, channels))
+        for joint in own.joints:
+            renamed = robot.prefix + joint.name
+            if joint.same_servo_as is not None:
+                joints.append(JointCalibration(name=renamed,
+                                               same_servo_as=robot.prefix + joint.same_servo_as))
+                continue
+            channel = wiring[joint.name]
+            if channel in used:
+                raise _fail(f"channel {channel} of joint {renamed!r} is also {used[channel]!r}'s",
+                            path, node, name)
+            used[channel] = renamed
+            joints.append(JointCalibration(renamed, joint.servo_type, channel, joint.zero_rad,
+                                           joint.direction, joint.scale))
     return ServoCalibration(tuple(joints), port, int(baud), path)

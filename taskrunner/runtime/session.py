@@ -59,13 +59,18 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     """A backend driving every joint of the cell.
 
     mock and sim start at the cell's start state; serial (``port``, default the one in
-    hardware.yaml) and http (``url``) drive the servos of the cell's one robot through its
-    hardware.yaml and start where the servos are. ``firmware_speedup`` matches a host
-    build of the firmware run faster than real time (``run-task firmware-sim --speedup``).
+    hardware.yaml) and http (``url``) drive the servos through the calibration and start
+    where the servos are: a cell with one robot without a prefix uses the robot's
+    hardware.yaml; a cell with several robots on one servo board (``servo_arm_pair``) uses
+    the cell's ``<cell>.hardware.yaml`` next to the cell file (which board channels drive
+    which robot's servos; each robot's own hardware.yaml for the rest).
+    ``firmware_speedup`` matches a host build of the firmware run faster than real time
+    (``run-task firmware-sim --speedup``).
 
     Raises:
         InputError: a speed that is not a positive number, a servo backend on a cell
-            without exactly one calibrated robot, or http without a URL.
+            without a calibration (one robot's hardware.yaml or the cell's board file),
+            or http without a URL.
         BackendError: the port or URL does not answer as the firmware does.
     """
     if speed is not None and not (isinstance(speed, (int, float)) and 0 < speed < math.inf):
@@ -78,7 +83,28 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
         return SimBackend(names, start, SimOptions(speed=1.0 if speed is None else speed))
     if kind not in BACKENDS:
         raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
-    calibration = servo_calibration(cell)
+    robots = cell.model.instances
+    if len(robots) == 1 and not robots[0].prefix:
+        calibration = servo_calibration(cell)
+    else:
+        from taskrunner.backends.calibration import RobotOnBoard, load_board_calibration
+
+        board = (cell.path.parent / f"{cell.path.stem}.hardware.yaml"
+                 if cell.path is not None else None)
+        if board is None or not board.is_file():
+            raise InputError(f"servo backends drive cell {cell.name!r} ("
+                             f"{', '.join(r.name for r in robots)}) through one servo board "
+                             f"described in {board or '<cell>.hardware.yaml'}, which does not "
+                             "exist (see cells/servo_arm_pair.hardware.yaml)")
+        on_board = []
+        for robot in robots:
+            if robot.hardware_path is None:
+                raise InputError(f"robot {robot.name!r} has no hardware.yaml (servo "
+                                 "calibration)", robot.source)
+            own = tuple(j.name[len(robot.prefix):] for j in cell.model.joints
+                        if j.robot == robot.name)
+            on_board.append(RobotOnBoard(robot.name, robot.prefix, robot.hardware_path, own))
+        calibration = load_board_calibration(board, on_board)
     options = ServoOptions(time_scale=firmware_speedup, home_on_start=home,
                            lead_ms=min(4000, max(400, int(400 * firmware_speedup))),
                            poll_period=min(0.04, 0.04 / firmware_speedup))

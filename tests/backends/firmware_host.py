@@ -62,9 +62,13 @@ class FirmwareHost:
 
 
 @contextmanager
-def running_host(binary: Path, speedup: float, log: Path | None = None) -> Iterator[FirmwareHost]:
-    """A firmware host at ``speedup`` (ticks logged to ``log`` if given), stopped after."""
+def running_host(binary: Path, speedup: float, log: Path | None = None,
+                 channels: list[int] | None = None) -> Iterator[FirmwareHost]:
+    """A firmware host at ``speedup`` (ticks logged to ``log`` if given; servos on
+    ``channels``, default one arm's six), stopped after."""
     command = [str(binary), "--speedup", str(speedup)]
+    if channels is not None:
+        command += ["--channels", ",".join(map(str, channels))]
     if log is not None:
         command += ["--log", str(log)]
     proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)

@@ -433,3 +433,43 @@ def test_reply_without_a_right_checksum_fails_the_motion_naming_the_line_then_st
         assert transport.sent[-1].startswith("TRAJ:") and backend._link.corrupted_replies == 1
     finally:
         backend.close()
+
+
+def _pair_robots() -> list:
+    from taskrunner.backends.calibration import RobotOnBoard
+
+    return [RobotOnBoard(side, f"{side}_", HARDWARE_YAML, NAMES) for side in ("left", "right")]
+
+
+def test_pair_board_file_gives_twelve_servos_with_prefixed_joints_on_its_channels() -> None:
+    from taskrunner.backends.calibration import load_board_calibration
+
+    cal = load_board_calibration(DATA_ROOT / "robots" / "cells" / "servo_arm_pair.hardware.yaml",
+                                 _pair_robots())
+    assert cal.channels == (0, 1, 2, 3, 4, 5, 8, 9, 10, 11, 12, 13)
+    assert cal.servo_joint_names[0] == "left_Revolute 1"
+    assert cal.servo_joint_names[6] == "right_Revolute 1"
+    pose = {f"{side}_{n}": q for side in ("left", "right") for n, q in zip(NAMES, CANDLE)}
+    np.testing.assert_allclose(cal.to_servo_degrees(pose), [90.0] * 12, atol=0.005)
+    assert cal.from_servo_degrees([90.0] * 11 + [112.9]).as_dict()["right_Revolute 7"] == \
+        pytest.approx(0.3, abs=1e-3)
+
+
+@pytest.mark.parametrize(("robots_text", "expected"), [
+    ("  left: {channels: [0, 1, 2, 3, 4, 5]}\n  right: {channels: [5, 9, 10, 11, 12, 13]}\n",
+     "channel 5 of joint 'right_Revolute 1' is also 'left_Revolute 6'"),
+    ("  left: {channels: [0, 1, 2, 3, 4]}\n  right: {channels: [8, 9, 10, 11, 12, 13]}\n",
+     "'channels' of robot 'left' must list 6 channels 0..15"),
+    ("  left: {channels: [0, 1, 2, 3, 4, 5]}\n", "robots ['right'] have no channels"),
+    ("  left: {channels: [0, 1, 2, 3, 4, 5]}\n  middle: {channels: [8]}\n",
+     "unknown robot 'middle'"),
+])
+def test_bad_board_file_is_reported_with_file_and_line(tmp_path: Path, robots_text: str,
+                                                       expected: str) -> None:
+    from taskrunner.backends.calibration import load_board_calibration
+
+    path = tmp_path / "pair.hardware.yaml"
+    path.write_text("port: /dev/ttyUSB0\nrobots:\n" + robots_text)
+    with pytest.raises(YamlError) as info:
+        load_board_calibration(path, _pair_robots())
+    assert expected in str(info.value) and str(info.value).startswith(f"{path}:")

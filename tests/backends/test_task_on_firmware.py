@@ -20,6 +20,7 @@ import pytest
 from firmware_host import build_host, read_address_lines, running_host, stop_process
 from scipy.spatial import cKDTree
 
+from taskrunner.errors import InputError
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
@@ -98,3 +99,41 @@ def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
         assert status(url)["status"] == "ok"
     finally:
         stop_process(proc, signal.SIGINT)
+
+
+PAIR_BOARD = [0, 1, 2, 3, 4, 5, 8, 9, 10, 11, 12, 13]  # cells/servo_arm_pair.hardware.yaml
+
+
+@pytest.mark.parametrize("kind", ["serial", "http"])
+def test_handoff_runs_on_one_board_driving_both_arms_of_the_pair(host_binary, kind, tmp_path):
+    spec = load_task(DATA_ROOT / "tasks" / "handoff.yaml")
+    cell = load_cell(spec.cell)
+    assert len(cell.model.instances) == 2
+    with running_host(host_binary, SPEEDUP, tmp_path / "ticks.csv", PAIR_BOARD) as host:
+        backend = make_backend(kind, cell, None, port=host.pty, url=host.url,
+                               firmware_speedup=SPEEDUP)
+        try:
+            assert backend.version["servos"] == 12
+            assert backend.calibration.channels == tuple(PAIR_BOARD)
+            runner = Runner(spec, cell, backend, InProcessPlanner(),
+                            RunOptions(runs_dir=tmp_path / "runs", backend_name=kind))
+            record = runner.run()
+        finally:
+            backend.close()
+        assert record.status == "succeeded", record.error
+        final = backend.calibration.to_servo_degrees(
+            dict(zip(cell.model.joint_names, runner.scene.state)))
+        reported = status(host.url)
+    assert not reported["moving"] and reported["crc_errors"] == 0
+    assert np.abs(np.array(reported["pos"]) - final).max() < 1.0
+    # Both arms moved: each one's servos left the start pose at some tick.
+    with (tmp_path / "ticks.csv").open(newline="") as stream:
+        ticks = np.array([[float(v) for v in row[1:]] for row in list(csv.reader(stream))[1:]])
+    assert np.ptp(ticks[:, :6], axis=0).max() > 10 and np.ptp(ticks[:, 6:], axis=0).max() > 10
+
+
+def test_a_two_arm_cell_without_a_board_file_is_refused_naming_the_file(tmp_path):
+    cell = load_cell(DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml")
+    cell.path = tmp_path / "pair.yaml"  # a copy of the cell without its board file
+    with pytest.raises(InputError, match=r"pair\.hardware\.yaml, which does not exist"):
+        make_backend("serial", cell, None, port="/dev/null")
