@@ -63,9 +63,10 @@ def test_servo_arm_moves_at_its_default_scaling_of_0_2(servo_arm_model):
     path = JointPath(SERVO_ARM, [[0.5, -0.5, -1.0, -1.0, -1.0], [1.5, -1.0, -0.5, -1.5, -0.5],
                                  [1.0, -1.5, -1.0, -1.0, -1.5]])
     trajectory = parameterize_path(servo_arm_model, path)
-    speed = np.max(np.abs(trajectory.velocities))
-    assert 0.9 * 0.04 < speed <= 0.04 * 1.01  # 0.2 rad/s x 0.2
-    assert np.max(np.abs(trajectory.accelerations)) <= 0.6 * 0.2 * 1.01
+    vmax, amax = _limits(servo_arm_model, path.names, 0.2, 0.2)
+    assert vmax == pytest.approx([0.6, 0.6, 0.6, 0.8, 0.8])  # 3.0 and 4.0 rad/s x 0.2
+    _assert_within(trajectory, vmax, amax)
+    assert np.max(np.abs(trajectory.velocities) / vmax) > 0.9
 
 
 def test_halving_velocity_scaling_makes_the_motion_longer(panda_model):

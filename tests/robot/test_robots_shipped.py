@@ -67,11 +67,11 @@ def test_servo_arm_named_poses_have_the_seed_values(servo_arm_model):
 def test_servo_arm_limits_come_from_joint_limits_yaml(servo_arm_model):
     m = servo_arm_model
     r1 = m.joint("Revolute 1")
-    assert r1.max_velocity == pytest.approx(0.2)
-    assert r1.max_acceleration == pytest.approx(0.6)  # the URDF has no acceleration limits
+    assert r1.max_velocity == pytest.approx(3.0)  # MG996R: half its no-load speed
+    assert r1.max_acceleration == pytest.approx(6.0)  # the URDF has no acceleration limits
     assert (r1.lower, r1.upper) == pytest.approx((-0.0005, 3.14))
-    assert m.joint("Revolute 6").max_velocity == pytest.approx(0.1)
-    assert m.joint("Revolute 6").max_acceleration == pytest.approx(0.3)
+    assert m.joint("Revolute 6").max_velocity == pytest.approx(4.0)
+    assert m.joint("Revolute 6").max_acceleration == pytest.approx(8.0)
     instance = m.instances[0]
     assert instance.velocity_scaling == pytest.approx(0.2)
     assert instance.acceleration_scaling == pytest.approx(0.2)
@@ -79,12 +79,12 @@ def test_servo_arm_limits_come_from_joint_limits_yaml(servo_arm_model):
 
 
 def test_servo_arm_joint_limits_yaml_overrides_the_urdf(tmp_path, robots_dir):
-    """The shipped yaml repeats the URDF's values, so change a copy to see the override."""
+    """Change a copy of the shipped yaml to see that its values, not the URDF's, count."""
     copy = tmp_path / "robots" / "servo_arm"
     shutil.copytree(robots_dir / "servo_arm", copy)
     limits = copy / "config" / "joint_limits.yaml"
     text = limits.read_text()
-    text = text.replace("max_velocity: 0.2\n", "max_velocity: 0.15\n", 1)
+    text = text.replace("max_velocity: 3.0\n", "max_velocity: 0.15\n", 1)
     text = text.replace("min_position: -0.0005\n    max_position: 3.14", "min_position: 0.5\n    max_position: 2.5")
     limits.write_text(text)
     r1 = load_robot(copy).joint("Revolute 1")

@@ -71,7 +71,8 @@ def test_fallback_recovers_and_the_run_succeeds(tmp_path, repo_root):
 
 
 def test_cancel_stops_the_sim_where_it_is_and_records_cancelled(tmp_path, repo_root):
-    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle}\n")
+    path = write_task(tmp_path, repo_root, "steps:\n  - go: {group: arm, to: Candle, "
+                      "velocity_scaling: 0.01, acceleration_scaling: 0.01}\n")
     runner, backend = make_runner(
         path, lambda n, s: SimBackend(n, s, SimOptions(speed=10.0)), runs_dir=tmp_path / "runs")
     start = backend.joint_state().positions.copy()
@@ -81,7 +82,7 @@ def test_cancel_stops_the_sim_where_it_is_and_records_cancelled(tmp_path, repo_r
     deadline = time.monotonic() + 20
     while not runner.ctx.executed and time.monotonic() < deadline:
         time.sleep(0.01)
-    time.sleep(0.3)  # let it move for a while (30 s of motion at 10x: ~1 s for the whole)
+    time.sleep(0.3)  # let it move for a while (~30 s of motion at 1 % scaling, 10x: ~3 s)
     runner.cancel()
     thread.join(10)
     backend_state = backend.joint_state().positions.copy()
@@ -97,6 +98,22 @@ def test_cancel_stops_the_sim_where_it_is_and_records_cancelled(tmp_path, repo_r
         assert runner.scene.state == pytest.approx(backend_state)
     finally:
         backend.close()
+
+
+def test_servo_arm_pick_place_is_under_40_s_of_motion_and_a_gripper_move_under_2_s():
+    """At the servo arm's default limits (servo datasheet speeds, joint_limits.yaml): once
+    218 s of motion, 28 s for each gripper open or close."""
+    runner, backend = make_runner(DATA_ROOT / "tasks" / "pick_place.yaml", MockBackend)
+    try:
+        record = runner.run()
+    finally:
+        backend.close()
+    assert record.status == "succeeded", record.error
+    planned = [e for e in record.events if e.kind == "planned"]
+    assert 5.0 < sum(e.data["duration"] for e in planned) <= 40.0
+    gripper = [e.data["duration"] for e in planned if e.node.endswith((": open", ": close"))
+               and e.data["duration"] > 0]  # the first open: the gripper is open already
+    assert len(gripper) == 2 and all(d <= 2.0 for d in gripper), gripper
 
 
 def test_cli_runs_a_task_and_reports(tmp_path, repo_root, capsys):

@@ -46,7 +46,7 @@ class RunTask:
         lines.put(None)
 
     def wait_for_motion(self, timeout: float = 120.0) -> None:
-        """Wait until a motion longer than 5 s is planned and has run for a moment."""
+        """Wait until a motion longer than 1.5 s is planned and has run for a moment."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             try:
@@ -57,8 +57,8 @@ class RunTask:
                 break
             self.out.append(line)
             found = MOTION.search(line)
-            if found and float(found.group(1)) > 5.0:
-                time.sleep(0.5)
+            if found and float(found.group(1)) > 1.5:
+                time.sleep(0.3)
                 return
         self.kill()
         pytest.fail("no long motion started:\n" + "".join(self.out) + "".join(self.err))

@@ -14,7 +14,7 @@ from taskrunner.tasks import load_task
 from taskrunner.tree.clock import TaskClock
 
 CELL = DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"
-MOTION_S = 5.9  # the go to Candle below at full scaling (about 5.91 s)
+MOTION_S = 5.9  # the go to Candle below at 5 % scaling (about 5.92 s)
 
 
 def _run(tmp_path, seconds: float, backend: str, speed: float = 1.0):
@@ -25,7 +25,7 @@ steps:
   - timeout:
       seconds: {seconds}
       do:
-        - go: {{group: arm, to: Candle, velocity_scaling: 1.0, acceleration_scaling: 1.0}}
+        - go: {{group: arm, to: Candle, velocity_scaling: 0.05, acceleration_scaling: 0.05}}
 """)
     spec = load_task(path)
     cell = load_cell(spec.cell)
