@@ -10,7 +10,6 @@ from taskrunner.scene.collision import Clearance, Contact
 from taskrunner.scene.from_cell import scene_from_cell
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.scene import Scene, SceneOptions
-from taskrunner.scene.support import Support
 
 __all__ = [
     "Clearance",
@@ -19,6 +18,5 @@ __all__ = [
     "SceneObject",
     "SceneOptions",
     "SceneSnapshot",
-    "Support",
     "scene_from_cell",
 ]

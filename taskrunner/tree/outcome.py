@@ -34,7 +34,8 @@ import pinocchio as pin
 
 from taskrunner.errors import SceneError
 from taskrunner.robot.model import RobotModel
-from taskrunner.scene import Scene, Support
+from taskrunner.scene import Scene
+from taskrunner.scene.support import Support
 from taskrunner.tree.grasps import symmetries
 from taskrunner.tree.reach import wrist_roll
 
