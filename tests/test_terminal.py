@@ -128,11 +128,13 @@ class Screen:
 
 
 def run_in_terminal(argv: list[str], columns: int, rows: int, cwd: Path,
-                    timeout: float = 180.0,
-                    resize_to: tuple[int, int] | None = None) -> list[tuple[float, bytes]]:
+                    timeout: float = 180.0, resize_to: tuple[int, int] | None = None,
+                    interrupt_on: re.Pattern[str] | None = None,
+                    exit_code: int = 0) -> list[tuple[float, bytes]]:
     """Run ``argv`` on a pseudo-terminal of ``columns`` x ``rows``; what it wrote, in chunks
     with the time each was read. ``resize_to``: the size to change the window to (and
-    SIGWINCH) once the live tree is up."""
+    SIGWINCH) once the live tree is up. ``interrupt_on``: press Ctrl-C (SIGINT to the
+    process group, as the terminal does) once the output matches it."""
     master, slave = pty.openpty()
     fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, 0, 0))
     env = {k: v for k, v in os.environ.items() if k not in ("COLUMNS", "LINES")}
@@ -143,6 +145,7 @@ def run_in_terminal(argv: list[str], columns: int, rows: int, cwd: Path,
     chunks: list[tuple[float, bytes]] = []
     started = time.monotonic()
     resized = resize_to is None
+    interrupted = interrupt_on is None
     try:
         while time.monotonic() - started < timeout:
             ready, _, _ = select.select([master], [], [], 0.5)
@@ -163,7 +166,12 @@ def run_in_terminal(argv: list[str], columns: int, rows: int, cwd: Path,
                             struct.pack("HHHH", resize_to[1], resize_to[0], 0, 0))
                 os.killpg(process.pid, signal.SIGWINCH)
                 resized = True
-        assert process.wait(timeout=max(1.0, timeout - (time.monotonic() - started))) == 0, \
+            if not interrupted and interrupt_on is not None and interrupt_on.search(
+                    b"".join(c for _, c in chunks).decode(errors="replace")):
+                os.killpg(process.pid, signal.SIGINT)
+                interrupted = True
+        code = process.wait(timeout=max(1.0, timeout - (time.monotonic() - started)))
+        assert code == exit_code, \
             b"".join(c for _, c in chunks).decode(errors="replace")[-3000:]
     finally:
         if process.poll() is None:
@@ -236,3 +244,17 @@ def test_run_without_a_terminal_writes_plain_log_lines(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "\x1b" not in result.stdout
     assert re.search(r"✔ go arm", result.stdout)
+
+
+def test_ctrl_c_under_the_live_tree_shows_the_notice_and_ends_with_the_summary(tmp_path):
+    chunks = run_in_terminal(_run_task("pick_place", "--backend", "sim"), 80, 20, tmp_path,
+                             interrupt_on=PROGRESS, exit_code=130)
+    text = b"".join(c for _, c in chunks).decode()
+    assert "Traceback" not in text
+    screen = Screen(80, 20)
+    screen.feed(text)
+    shown = "\n".join(screen.scrollback + screen.lines())
+    assert "cancelled (Ctrl-C): stopping the motion where it is …" in shown
+    assert "pick_place: cancelled (exit 130)" in shown
+    assert screen.wraps == 0 and len(screen.scrollback) < 20
+    assert text.rstrip().endswith(".json")  # the summary's record line is the last
