@@ -24,8 +24,11 @@ GO_CANDLE = textwrap.dedent("""\
 
 
 def pair_task(arm: str, pose: str) -> str:
+    """A go of one arm of the pair, slowed to 2 % of the servo speeds (~20 s of motion):
+    long enough, even at sim x40, for both runs to be seen running at once."""
     return (f"task: {arm}_{pose}\ncell: ../robots/cells/servo_arm_pair.yaml\n"
-            f"steps:\n  - go: {{group: {arm}, to: {pose}}}\n")
+            f"steps:\n  - go: {{group: {arm}, to: {pose}, velocity_scaling: 0.02, "
+            f"acceleration_scaling: 0.02}}\n")
 
 
 def test_a_task_by_file_name_runs_to_success_on_the_mock_backend(client):
