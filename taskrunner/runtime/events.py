@@ -21,6 +21,7 @@ KINDS = (
     "node_started",     # a tree node began (initialise)
     "node_finished",    # a node ended: status SUCCESS / FAILURE / INVALID (stopped)
     "planned",          # a motion was planned; data: planning_time, duration, waypoints
+    "motion",           # a trajectory was sent to the backend; data: trajectory, scene
     "message",          # anything else worth showing (a warning, a retry)
     "run_finished",     # the run ended; status succeeded / failed / cancelled
 )

@@ -30,6 +30,7 @@ from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import EventLog
 from taskrunner.runtime.records import RecordFile, RunRecord, new_run_id
+from taskrunner.runtime.replay import scene_data
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.tasks.spec import TaskSpec
 from taskrunner.tree.behaviours import TaskLeaf
@@ -134,7 +135,8 @@ class Runner:
         self.events.emit("run_started", f"task {self.spec.name!r} on cell {self.cell.name!r}",
                          status="running", task=self.spec.name, cell=self.cell.name,
                          backend=self.options.backend_name,
-                         parameters=dict(self.record.parameters))
+                         parameters=dict(self.record.parameters),
+                         scene=scene_data(self.scene.snapshot()))
         self._open_record()
         period = 1.0 / self.options.tick_hz
         status = Status.RUNNING
@@ -185,7 +187,8 @@ class Runner:
         self.record.exit_code = code
         self.record.error = error
         self.record.finished = datetime.now(UTC).isoformat()
-        self.events.emit("run_finished", error or status, status=status, exit_code=code)
+        self.events.emit("run_finished", error or status, status=status, exit_code=code,
+                         scene=scene_data(self.scene.snapshot()))
         if self._file is not None:
             self.events.unsubscribe(self._file.append)
             self._file.finish()

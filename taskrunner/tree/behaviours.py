@@ -29,6 +29,7 @@ from taskrunner.planning.cartesian import (
 from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptions, PlanRequest
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
+from taskrunner.runtime.replay import motion_data
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.types import JointPath, JointTrajectory, Pose
@@ -60,7 +61,8 @@ class TaskLeaf(py_trees.behaviour.Behaviour):
         if new_status != Status.INVALID or self.status == Status.RUNNING:
             self.ctx.events.emit("node_finished", self.feedback_message, node=self.name,
                                  location=self.location, status=new_status.value,
-                                 seconds=round(time.monotonic() - self.started_at, 6))
+                                 seconds=round(time.monotonic() - self.started_at, 6),
+                                 **self.finish_data())
 
     def fail(self, reason: str, kind: str = "planning") -> Status:
         """FAILURE, with the reason prefixed by the task file:line.
@@ -74,6 +76,10 @@ class TaskLeaf(py_trees.behaviour.Behaviour):
         return Status.FAILURE
 
     # Subclasses override these.
+    def finish_data(self) -> dict[str, object]:
+        """Extra data of the leaf's ``node_finished`` event."""
+        return {}
+
     def start(self) -> None:
         """Begin the work (called by ``initialise``)."""
 
@@ -110,9 +116,18 @@ class _Executes(TaskLeaf):
             return Status.SUCCESS  # already there
         self.handle = self.ctx.backend.execute(trajectory)
         self.ctx.clock.track(self.handle)
-        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory,
-                                                self.ctx.scene.snapshot()))
+        snapshot = self.ctx.scene.snapshot()
+        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot))
+        self.ctx.events.emit("motion", f"{trajectory.duration:.2f} s", node=self.name,
+                             location=self.location, **motion_data(trajectory, snapshot))
         return Status.RUNNING
+
+    def finish_data(self) -> dict[str, object]:
+        """How far the motion got: ``executed.until`` (s of trajectory), for a replay."""
+        if self.handle is None:
+            return {}
+        return {"executed": {"until": round(float(self.handle.progress), 4),
+                             "status": str(self.handle.status)}}
 
     def poll_execution(self) -> Status:
         assert self.handle is not None

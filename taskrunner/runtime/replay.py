@@ -1,0 +1,149 @@
+"""What a replay needs from a run, as JSON-ready data: trajectories and scenes.
+
+A run announces each motion it sends to the backend with a ``motion`` event holding the
+timed trajectory (joint names, times, positions, velocities) and the scene as it was when
+the motion started (the robot's joints, every object with its pose and what carries it);
+``run_started`` and ``run_finished`` carry the first and the final scene, and the
+``node_finished`` event of a moving leaf says how far its motion got (``executed``). The
+events are in the run record and in the API's live stream alike, so a viewer replays a
+finished run and follows a live one from the same data.
+
+Trajectories are kept small: samples are thinned to ``max_rate_hz`` (the first and the
+last kept), and numbers are rounded (positions to 10 µrad, times to 0.1 ms), which a
+viewer interpolating linearly cannot tell from the full trajectory. A pick_place record
+is about 100 kB.
+
+:func:`replay_of` reads those events back out of a record.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from taskrunner.runtime.records import RunRecord
+from taskrunner.scene.objects import SceneObject, SceneSnapshot
+from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.types import JointTrajectory, Pose
+
+__all__ = ["Replay", "motion_data", "replay_of", "scene_data", "trajectory_data"]
+
+MAX_RATE_HZ = 25.0   # samples kept per second of trajectory
+_POS_DIGITS = 5      # rad or m
+_TIME_DIGITS = 4     # s
+
+
+def trajectory_data(trajectory: JointTrajectory, max_rate_hz: float = MAX_RATE_HZ
+                    ) -> dict[str, Any]:
+    """A trajectory as JSON: ``joints``, ``times`` (s), ``positions`` and ``velocities``
+    (one row per sample, rad or m and per second), thinned to ``max_rate_hz``."""
+    times = np.asarray(trajectory.times, dtype=float)
+    keep = _thin(times, max_rate_hz)
+    return {
+        "joints": list(trajectory.names),
+        "duration": round(trajectory.duration, _TIME_DIGITS),
+        "times": [round(float(t), _TIME_DIGITS) for t in times[keep]],
+        "positions": np.round(trajectory.positions[keep], _POS_DIGITS).tolist(),
+        "velocities": np.round(trajectory.velocities[keep], _POS_DIGITS).tolist(),
+    }
+
+
+def _thin(times: np.ndarray, rate_hz: float) -> np.ndarray:
+    """Indices of samples at least 1/rate_hz apart, the first and the last always kept."""
+    if len(times) <= 2:
+        return np.arange(len(times))
+    step = 1.0 / rate_hz
+    keep = [0]
+    for i in range(1, len(times) - 1):
+        if times[i] - times[keep[-1]] >= step:
+            keep.append(i)
+    keep.append(len(times) - 1)
+    return np.array(keep)
+
+
+def _pose(pose: Pose) -> dict[str, Any]:
+    return {"xyz": [round(v, 6) for v in pose.xyz], "quat": [round(v, 6) for v in pose.quat],
+            "frame": pose.frame}
+
+
+def _shape(shape: Shape) -> dict[str, Any]:
+    if isinstance(shape, Box):
+        return {"type": "box", "size": list(shape.size)}
+    if isinstance(shape, Cylinder):
+        return {"type": "cylinder", "radius": shape.radius, "length": shape.length}
+    if isinstance(shape, Sphere):
+        return {"type": "sphere", "radius": shape.radius}
+    if isinstance(shape, Mesh):  # the file name only: a record does not reveal folders
+        return {"type": "mesh", "file": shape.path.name, "scale": list(shape.scale)}
+    raise TypeError(f"unknown shape {type(shape).__name__}")
+
+
+def object_data(obj: SceneObject) -> dict[str, Any]:
+    """One scene object: ``name``, ``shape``, ``pose`` (in the world, or in the frame of
+    the link ``attached_to``)."""
+    return {"name": obj.name, "shape": _shape(obj.shape), "pose": _pose(obj.pose),
+            "attached_to": obj.attached_to}
+
+
+def scene_data(snapshot: SceneSnapshot) -> dict[str, Any]:
+    """A scene as JSON: ``joints`` (every joint of the model, rad or m) and ``objects``."""
+    return {
+        "joints": {n: round(float(v), _POS_DIGITS)
+                   for n, v in zip(snapshot.state.names, snapshot.state.positions)},
+        "objects": [object_data(o) for o in snapshot.objects],
+    }
+
+
+def motion_data(trajectory: JointTrajectory, snapshot: SceneSnapshot) -> dict[str, Any]:
+    """The data of a ``motion`` event: the ``trajectory`` and the ``scene`` it starts in."""
+    return {"trajectory": trajectory_data(trajectory), "scene": scene_data(snapshot)}
+
+
+@dataclass(frozen=True)
+class Motion:
+    """One motion of a run as recorded: its node, the trajectory, the scene it started
+    in, and how much of it ran (``executed``: seconds of trajectory, None if unknown)."""
+
+    seq: int
+    node: str | None
+    location: str | None
+    time: float
+    trajectory: dict[str, Any]
+    scene: dict[str, Any]
+    executed: float | None
+
+
+@dataclass(frozen=True)
+class Replay:
+    """The motions of a run in order, its first and final scenes."""
+
+    motions: tuple[Motion, ...]
+    first_scene: dict[str, Any] | None
+    final_scene: dict[str, Any] | None
+
+
+def replay_of(record: RunRecord) -> Replay:
+    """The replay data of a record (runs recorded before motions were kept have none)."""
+    motions: list[Motion] = []
+    first = final = None
+    pending: dict[str, int] = {}  # node -> index in motions of its motion still running
+    for event in record.events:
+        if event.kind == "run_started":
+            first = event.data.get("scene")
+        elif event.kind == "run_finished":
+            final = event.data.get("scene")
+        elif event.kind == "motion" and "trajectory" in event.data:
+            pending[event.node or ""] = len(motions)
+            motions.append(Motion(event.seq, event.node, event.location, event.time,
+                                  event.data["trajectory"], event.data.get("scene") or {},
+                                  None))
+        elif event.kind == "node_finished" and (event.node or "") in pending:
+            index = pending.pop(event.node or "")
+            executed = event.data.get("executed")
+            if isinstance(executed, dict) and executed.get("until") is not None:
+                m = motions[index]
+                motions[index] = Motion(m.seq, m.node, m.location, m.time, m.trajectory,
+                                        m.scene, float(executed["until"]))
+    return Replay(tuple(motions), first, final)
