@@ -5,7 +5,6 @@ from __future__ import annotations
 import re
 from typing import Annotated, Any
 
-import yaml
 from fastapi import APIRouter, Depends
 
 from taskrunner.api.auth import require_read, require_write
@@ -21,6 +20,8 @@ from taskrunner.api.schemas import (
     TeachRequest,
 )
 from taskrunner.api.store import RunStore
+from taskrunner.errors import TaskrunnerError
+from taskrunner.yamlfile import load_yaml
 
 __all__ = ["router"]
 
@@ -34,10 +35,9 @@ def list_cells(cells: Annotated[CellRegistry, Depends(get_cells)]) -> list[CellS
     """The cell files of the cells folder (read without loading their robots)."""
     out = []
     for cell_id in cells.ids():
-        try:
-            with open(cells.cells_dir / f"{cell_id}.yaml", encoding="utf-8") as f:
-                doc = yaml.safe_load(f)
-        except (OSError, yaml.YAMLError):
+        try:  # the one YAML reader, with its limits (size, depth, aliases)
+            doc = load_yaml(cells.cells_dir / f"{cell_id}.yaml")
+        except (OSError, TaskrunnerError):
             doc = None
         doc = doc if isinstance(doc, dict) else {}
         out.append(CellSummary(id=cell_id, name=str(doc.get("name", cell_id)),
