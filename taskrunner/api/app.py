@@ -15,7 +15,7 @@ from taskrunner.api.cells import CellRegistry, settle_heap
 from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
 from taskrunner.api.requestwork import RequestWork
-from taskrunner.api.routers import cells, health, plan, runs, tasks
+from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
@@ -80,7 +80,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.settings = settings
     app.state.token = (settings.token or new_token()) if settings.auth else None
-    for module in (health, runs, tasks, cells, plan):
+    for module in (health, runs, tasks, cells, plan, viewer):
         app.include_router(module.router)
     add_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
