@@ -66,7 +66,7 @@ class Protocol {
   const Motion& motion() const { return motion_; }
   const Config& config() const { return config_; }
 
-  // "# taskrunner-servo 1.0.0 protocol 1 ready": printed once at boot on serial.
+  // "# taskrunner-servo 1.1.0 protocol 2 ready": printed once at boot on serial.
   std::string banner() const;
   // The JSON of STATUS and VERSION replies (without the "ok ").
   std::string status_json() const;
