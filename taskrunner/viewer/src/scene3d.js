@@ -1,0 +1,227 @@
+// The 3D view: robots from the cell's merged URDF (urdf-loader), objects, frames.
+// The robot frame is z-up; everything hangs under a root turned to three.js's y-up.
+// Frames are drawn on demand (render()), not in a loop: an idle page costs nothing.
+
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
+import { ColladaLoader } from 'three/examples/jsm/loaders/ColladaLoader.js';
+import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
+import URDFLoader from 'urdf-loader';
+import { getBinary } from './api.js';
+
+const OBJECT_COLOURS = { table: 0x8a7356 };
+
+export class CellView {
+  constructor(container) {
+    this.container = container;
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer.setClearColor(0xf2f4f7);
+    container.appendChild(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.root = new THREE.Group();
+    this.root.rotation.x = -Math.PI / 2; // z-up to y-up
+    this.scene.add(this.root);
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+    sun.position.set(1.5, 3, 2);
+    this.scene.add(sun);
+    const grid = new THREE.GridHelper(2, 20, 0xb0b8c4, 0xd4d9e0);
+    this.scene.add(grid);
+    this.camera = new THREE.PerspectiveCamera(40, 1, 0.01, 50);
+    this.camera.position.set(0.9, 1.5, 1.5);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.target.set(0, 0.8, 0);
+    this.controls.update();
+    this.controls.addEventListener('change', () => this.render());
+    this.robot = null;
+    this.objects = new Map();
+    this.frames = [];
+    this.showFrames = false;
+    this.onFirstFrame = null;
+    this._pending = false;
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+  }
+
+  resize() {
+    const w = this.container.clientWidth || 640;
+    const h = this.container.clientHeight || 480;
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.render();
+  }
+
+  render() {
+    if (this._pending) return;
+    this._pending = true;
+    requestAnimationFrame(() => {
+      this._pending = false;
+      this.renderer.render(this.scene, this.camera);
+      if (this.robot && this.onFirstFrame) {
+        const cb = this.onFirstFrame;
+        this.onFirstFrame = null;
+        cb();
+      }
+    });
+  }
+
+  // Load a cell description (GET /viewer/cells/{id}); returns once the URDF is parsed
+  // (primitives drawn; meshes arrive afterwards and redraw).
+  loadCell(cell) {
+    this.clear();
+    this.cell = cell;
+    const manager = new THREE.LoadingManager();
+    manager.onLoad = () => this.render();
+    const loader = new URDFLoader(manager);
+    loader.workingPath = '/viewer/';
+    loader.loadMeshCb = (path, mgr, done) => loadMesh(path, mgr, done, () => this.render());
+    this.robot = loader.parse(cell.urdf);
+    this.robot.traverse((o) => { if (o.isMesh) { o.castShadow = false; } });
+    this.root.add(this.robot);
+    for (const [name, value] of Object.entries(cell.start || {})) this.setJoint(name, value);
+    this.setObjects(cell.objects || []);
+    this.buildFrames();
+    this.frameRobots();
+    this.render();
+  }
+
+  // Aim the camera at the robots (not the whole table): from the front, a little above.
+  frameRobots() {
+    this.scene.updateMatrixWorld(true);
+    const box = new THREE.Box3().setFromObject(this.robot);
+    if (box.isEmpty()) return;
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = Math.max(0.3, box.getSize(new THREE.Vector3()).length());
+    this.controls.target.copy(centre);
+    const dir = new THREE.Vector3(0.35, 0.55, 1).normalize();
+    this.camera.position.copy(centre).addScaledVector(dir, size * 1.25);
+    this.camera.near = size / 100;
+    this.camera.far = size * 50;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+  }
+
+  clear() {
+    if (this.robot) this.root.remove(this.robot);
+    for (const obj of this.objects.values()) obj.removeFromParent();
+    this.objects.clear();
+    this.frames = [];
+    this.robot = null;
+  }
+
+  setJoint(name, value) {
+    const joint = this.robot && this.robot.joints[name];
+    if (joint && joint.jointType !== 'fixed') joint.setJointValue(value);
+  }
+
+  setJoints(values) {
+    for (const [name, value] of Object.entries(values)) this.setJoint(name, value);
+    this.render();
+  }
+
+  jointValue(name) {
+    const joint = this.robot && this.robot.joints[name];
+    return joint ? Number(joint.angle) : 0;
+  }
+
+  // Objects as a scene lists them: world objects under the root, attached ones under
+  // the link that carries them (so they move with it).
+  setObjects(objects) {
+    const seen = new Set();
+    for (const spec of objects) {
+      seen.add(spec.name);
+      let obj = this.objects.get(spec.name);
+      const key = JSON.stringify(spec.shape);
+      if (!obj || obj.userData.key !== key) {
+        if (obj) obj.removeFromParent();
+        obj = makeObject(spec);
+        obj.userData.key = key;
+        this.objects.set(spec.name, obj);
+      }
+      const parent = spec.attached_to && this.robot ? this.robot.links[spec.attached_to] : null;
+      (parent || this.root).add(obj);
+      obj.position.set(...spec.pose.xyz);
+      obj.quaternion.set(...spec.pose.quat);
+      obj.userData.attachedTo = spec.attached_to || null;
+      obj.children.forEach((c) => { if (c.material) c.material.emissive?.setHex(spec.attached_to ? 0x223355 : 0); });
+    }
+    for (const [name, obj] of this.objects) {
+      if (!seen.has(name)) { obj.removeFromParent(); this.objects.delete(name); }
+    }
+    this.render();
+  }
+
+  // A world position of an object (for tests and the replay's readout).
+  objectWorld(name) {
+    const obj = this.objects.get(name);
+    if (!obj) return null;
+    const v = new THREE.Vector3();
+    obj.getWorldPosition(v);
+    // back to the robot's z-up frame
+    return [v.x, -v.z, v.y];
+  }
+
+  buildFrames() {
+    for (const f of this.frames) f.removeFromParent();
+    this.frames = [];
+    if (!this.robot) return;
+    for (const [name, link] of Object.entries(this.robot.links)) {
+      const axes = new THREE.AxesHelper(0.04);
+      axes.name = 'frame:' + name;
+      axes.visible = this.showFrames;
+      link.add(axes);
+      this.frames.push(axes);
+    }
+  }
+
+  setFrames(on) {
+    this.showFrames = on;
+    for (const f of this.frames) f.visible = on;
+    this.render();
+  }
+}
+
+function makeObject(spec) {
+  const shape = spec.shape;
+  let geometry;
+  if (shape.type === 'box') geometry = new THREE.BoxGeometry(...shape.size);
+  else if (shape.type === 'sphere') geometry = new THREE.SphereGeometry(shape.radius, 24, 16);
+  else if (shape.type === 'cylinder') {
+    geometry = new THREE.CylinderGeometry(shape.radius, shape.radius, shape.length, 32);
+    geometry.rotateX(Math.PI / 2); // URDF cylinders run along z
+  } else geometry = new THREE.SphereGeometry(0.02, 12, 8); // a mesh object: a marker
+  const colour = OBJECT_COLOURS[spec.name] ?? 0x3a7bd5;
+  const material = new THREE.MeshStandardMaterial({ color: colour, roughness: 0.7, metalness: 0.05 });
+  const mesh = new THREE.Mesh(geometry, material);
+  const group = new THREE.Group();
+  group.name = 'object:' + spec.name;
+  group.add(mesh);
+  return group;
+}
+
+function loadMesh(path, manager, done, redraw) {
+  const ext = path.split('?')[0].split('.').pop().toLowerCase();
+  manager.itemStart(path);
+  getBinary(path).then((buffer) => {
+    let object;
+    if (ext === 'stl') {
+      const geometry = new STLLoader().parse(buffer);
+      object = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: 0xcccccc }));
+    } else if (ext === 'dae') {
+      const text = new TextDecoder().decode(buffer);
+      object = new ColladaLoader(manager).parse(text, path.slice(0, path.lastIndexOf('/') + 1)).scene;
+    } else if (ext === 'obj') {
+      object = new OBJLoader(manager).parse(new TextDecoder().decode(buffer));
+    } else {
+      throw new Error('unsupported mesh type: ' + path);
+    }
+    done(object);
+    redraw();
+  }).catch((err) => {
+    console.warn('mesh not loaded:', path, err.message);
+    done(null, err);
+  }).finally(() => manager.itemEnd(path));
+}
