@@ -4,11 +4,16 @@
 several goals. The group's joints form an OMPL real-vector space bounded by the joint
 limits; every other joint stays where the start state has it. States are checked by the
 scene's collision checker (self, world and attached objects). The path found is
-shortcut, then re-checked at a fine resolution before it is returned; a path that fails
-that check is never returned.
+shortcut, then verified exactly by conservative advancement (per-joint lever arms bound
+how far any point of any body moves between checks, coal distances against the scene's
+geometry: :mod:`taskrunner.scene.sweep`); with timing, the sampled trajectory that is
+executed is verified the same way. A path or trajectory that fails is never returned: the
+search is repeated with a finer planning segment, or :class:`PlanningError` is raised.
 
 References: Kuffner & LaValle, "RRT-Connect: An Efficient Approach to Single-Query Path
-Planning", ICRA 2000; Şucan, Moll & Kavraki, "The Open Motion Planning Library", 2012.
+Planning", ICRA 2000; Şucan, Moll & Kavraki, "The Open Motion Planning Library", 2012;
+Schwarzer, Saha & Latombe, "Adaptive dynamic collision checking for single and multiple
+articulated robots in complex environments", IEEE T-RO 2005 (exact path checking).
 """
 
 from __future__ import annotations
@@ -38,10 +43,11 @@ from taskrunner.planning.request import (
     PlanResult,
     PoseGoal,
 )
-from taskrunner.planning.timing import parameterize_path, trajectory_json
+from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
-from taskrunner.types import JointPath
+from taskrunner.scene.sweep import PathVerification
+from taskrunner.types import JointPath, JointTrajectory
 
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
@@ -111,9 +117,46 @@ class MotionPlanner:
         result = self._plan(request, should_stop)
         if request.timing is None:
             return result
-        trajectory = parameterize_path(self.scene.robot, result.path, request.timing)
+        trajectory, verified = self._timed(result, request.timing, request.options)
         encoded = trajectory_json(trajectory) if request.trajectory_json else None
-        return replace(result, trajectory=trajectory, trajectory_json=encoded)
+        return replace(result, trajectory=trajectory, trajectory_json=encoded,
+                       verify_queries=result.verify_queries + verified.distance_queries,
+                       verify_time=result.verify_time + verified.seconds)
+
+    def verify_states(self, states: np.ndarray, margin: float) -> PathVerification:
+        """Verify the polyline through full state vectors ``states`` against the scene
+        (conservative advancement, see :mod:`taskrunner.scene.sweep`; ``margin`` in m)."""
+        return self.scene.path_verifier(margin).verify(states)
+
+    def _full_states(self, start: np.ndarray, names: tuple[str, ...], rows: np.ndarray
+                     ) -> np.ndarray:
+        model = self.scene.robot
+        states = np.repeat(start[None, :], len(rows), axis=0)
+        states[:, model.indices(names)] = rows
+        for q in states:
+            model.apply_mimic(q)
+        return states
+
+    def _timed(self, result: PlanResult, timing: TimingOptions, options: PlannerOptions
+               ) -> tuple[JointTrajectory, PathVerification]:
+        """Time the path and verify the sampled trajectory (what is executed: the spline
+        leaves the checked polyline by up to ``max_deviation_rad``). Where it collides,
+        time again closer to the polyline."""
+        model = self.scene.robot
+        tried = timing
+        for _ in range(3):
+            trajectory = parameterize_path(model, result.path, tried)
+            verified = self.verify_states(
+                self._full_states(result.start, trajectory.names, trajectory.positions),
+                options.verify_margin)
+            if verified.valid:
+                return trajectory, verified
+            step = tried.densify_step_rad / 4
+            tried = replace(tried, densify_step_rad=step, max_deviation_rad=step)
+        raise PlanningError(
+            f"the timed trajectory of the path found collides ({_pair(verified)} at sample "
+            f"{verified.fraction:.1f}), even timed within {tried.densify_step_rad * 4:g} rad "
+            "of the verified path")
 
     def _plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None) -> PlanResult:
         t_start = time.perf_counter()
@@ -130,33 +173,40 @@ class MotionPlanner:
                 path = JointPath(group.joint_names, np.vstack([start[idx], q_goal[idx]]))
                 return PlanResult(path, start, q_goal, goal_index, options.planner, 0.0, 0.0,
                                   time.perf_counter() - t_start, 0)
-        planning_time = simplify_time = 0.0
-        checks = 0
+        planning_time = simplify_time = verify_time = 0.0
+        checks = queries = 0
+        failure: PathVerification | None = None
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
-            # fine re-check then finds: search again with a finer segment.
+            # exact verification then finds: search again with a finer segment.
             tried = replace(options, longest_valid_segment=options.longest_valid_segment
                             / 2**refinement, seed=options.seed + 1000 * refinement)
             found, seconds, count = self._search(group, start, candidates, tried, should_stop)
             planning_time += seconds
             checks += count
             t_simplify = time.perf_counter()
-            waypoints = self._simplified(group, start, found, tried)
+            waypoints, verifications = self._simplified(group, start, found, tried)
             simplify_time += time.perf_counter() - t_simplify
+            for verification in verifications:
+                verify_time += verification.seconds
+                queries += verification.distance_queries
             if waypoints is not None:
                 break
+            failure = verifications[-1]
         else:
+            assert failure is not None
             raise PlanningError(
-                f"every path found for group {group.name!r} collided when re-checked at "
-                f"{options.validation_resolution} rad, down to a planning segment of "
+                f"every path found for group {group.name!r} collided when verified exactly "
+                f"({_pair(failure)}), down to a planning segment of "
                 f"{options.longest_valid_segment / 2 ** (_REFINEMENTS - 1):g} rad")
         end = start.copy()
         end[idx] = waypoints[-1]
         model.apply_mimic(end)
         goal_index = min(candidates, key=lambda c: float(np.max(np.abs(c[1][idx] - end[idx]))))[0]
         return PlanResult(JointPath(group.joint_names, waypoints), start, end, goal_index,
-                          options.planner, planning_time, simplify_time,
-                          time.perf_counter() - t_start, checks)
+                          options.planner, planning_time, simplify_time - verify_time,
+                          time.perf_counter() - t_start, checks, verify_queries=queries,
+                          verify_time=verify_time)
 
     # ------------------------------------------------------------------ states
     def _start_state(self, request: PlanRequest, group: Group) -> np.ndarray:
@@ -350,18 +400,23 @@ class MotionPlanner:
             f"{options.attempts} attempt(s) of {options.planning_time:g} s")
 
     def _simplified(self, group: Group, start: np.ndarray, waypoints: np.ndarray,
-                    options: PlannerOptions) -> np.ndarray | None:
-        """Shortcut the path, then re-check it finely; fall back to the raw path if needed.
-        None when both collide at the fine resolution."""
+                    options: PlannerOptions
+                    ) -> tuple[np.ndarray | None, list[PathVerification]]:
+        """Shortcut the path, then verify it exactly; fall back to the raw path if needed.
+        None (with the verifications made) when both collide."""
         is_valid, _ = self._validity(group, start)
         candidates = []
         if options.simplify and len(waypoints) > 2:
             candidates.append(_shortcut(is_valid, waypoints, options, options.seed))
         candidates.append(waypoints)
+        verifications = []
         for candidate in candidates:
-            if first_invalid_state(is_valid, candidate, options.validation_resolution) is None:
-                return candidate
-        return None
+            verification = self.verify_states(
+                self._full_states(start, group.joint_names, candidate), options.verify_margin)
+            verifications.append(verification)
+            if verification.valid:
+                return candidate, verifications
+        return None, verifications
 
 
 def pose_goal_states(solver: IkSolver, group: Group, goal: PoseGoal, target: pin.SE3,
@@ -456,6 +511,13 @@ def _shortcut(is_valid: Callable[[np.ndarray], bool], waypoints: np.ndarray,
         if _segment_valid(is_valid, p1, p2, resolution):
             path = path[: s1 + 1] + [p1, p2] + path[s2 + 1:]
     return np.array(path)
+
+
+def _pair(verification: PathVerification) -> str:
+    if verification.pair is None:
+        return "no contact"
+    a, b = (name.rsplit("/", 1)[0] for name in verification.pair)
+    return f"{a}–{b}"
 
 
 def _describe(contacts) -> str:  # type: ignore[no-untyped-def]

@@ -87,7 +87,12 @@ class PlannerOptions:
             request give the same path.
         longest_valid_segment: largest joint-space step (rad, max over joints) between
             collision checks while planning.
-        validation_resolution: step (rad) of the final re-check of the returned path.
+        validation_resolution: kept for callers that report it; the returned path is
+            verified exactly instead (see ``verify_margin``).
+        verify_margin: m; the returned path (and, with timing, the sampled trajectory) is
+            verified by conservative advancement: no checked pair overlaps at any check,
+            none can touch between checks where its clearance exceeded this margin, and
+            none can penetrate deeper than ``verify_margin / 2`` anywhere.
         refine: let optimizing planners (RRTstar, BITstar, PRMstar …) use all their time
             to improve the path; by default every planner stops at its first solution.
         simplify: shortcut and smooth the path before returning it.
@@ -100,6 +105,7 @@ class PlannerOptions:
     seed: int = 0
     longest_valid_segment: float = 0.05
     validation_resolution: float = 0.01
+    verify_margin: float = 5e-4
     refine: bool = False
     simplify: bool = True
     goal_samples: int = 6
@@ -107,7 +113,8 @@ class PlannerOptions:
     def __post_init__(self) -> None:
         if self.planner not in PLANNERS:
             raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
-        for name in ("planning_time", "longest_valid_segment", "validation_resolution"):
+        for name in ("planning_time", "longest_valid_segment", "validation_resolution",
+                     "verify_margin"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise ValueError(f"'{name}' must be a positive number (got {value!r})")
@@ -145,7 +152,7 @@ class PlanRequest:
 
 @dataclass(frozen=True)
 class PlanResult:
-    """A collision-free path, re-checked at ``validation_resolution``.
+    """A collision-free path, verified exactly (see :class:`PlannerOptions`).
 
     Attributes:
         path: waypoints over the group's joints, from the start to the goal reached.
@@ -156,6 +163,9 @@ class PlanResult:
         simplify_time: seconds spent shortcutting the path.
         total_time: wall time of the whole request (goal sampling, checks included).
         checks: collision checks made while searching.
+        verify_queries: pair distances computed to verify the path (and trajectory).
+        verify_time: seconds spent verifying them (part of ``total_time``; with timing,
+            the trajectory's verification comes on top of it).
         trajectory: the path timed with the request's ``timing`` (None without it).
         trajectory_json: with the request's ``trajectory_json``, the trajectory as one
             JSON object: ``{"times": [...], "positions": [[...], ...], "velocities":
@@ -171,6 +181,8 @@ class PlanResult:
     simplify_time: float
     total_time: float
     checks: int
+    verify_queries: int = 0
+    verify_time: float = 0.0
     trajectory: JointTrajectory | None = None
     trajectory_json: bytes | None = None
 

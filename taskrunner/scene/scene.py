@@ -33,6 +33,7 @@ from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contac
 from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.support import Support, gap_below
+from taskrunner.scene.sweep import PathVerifier
 from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
 
@@ -88,6 +89,7 @@ class Scene:
         self._data = robot.model.createData()
         self._fk_done = False
         self._checker: CollisionChecker | None = None
+        self._verifier: tuple[CollisionChecker, PathVerifier] | None = None
         self._revision = 0
 
     # ----------------------------------------------------------------- copies
@@ -100,6 +102,7 @@ class Scene:
         other._data = self.robot.model.createData()
         other._fk_done = False
         other._checker = None
+        other._verifier = None
         return other
 
     def snapshot(self) -> SceneSnapshot:
@@ -387,6 +390,17 @@ class Scene:
     def checker(self) -> CollisionChecker:
         """The collision checker for the scene as it is now (rebuilt after edits)."""
         return self._checker or self._build()
+
+    def path_verifier(self, margin: float = 5e-4) -> PathVerifier:
+        """The exact path verifier (conservative advancement, see
+        :mod:`taskrunner.scene.sweep`) for the scene as it is now; ``margin`` in m.
+        Kept until the next edit of objects or allowances."""
+        checker = self.checker
+        cached = self._verifier
+        if cached is None or cached[0] is not checker or cached[1].margin != margin:
+            cached = (checker, PathVerifier(self.robot, checker, margin))
+            self._verifier = cached
+        return cached[1]
 
     # ----------------------------------------------------------------- internals
     @property
