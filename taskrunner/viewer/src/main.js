@@ -22,6 +22,7 @@ const state = {
 };
 const debug = (window.__viewer = { firstFrame: null, successOrder: [], errors: [], state });
 const stage = new CellView($('view3d'));
+debug.stage = stage;
 stage.onFirstFrame = () => { debug.firstFrame = performance.now(); };
 
 function notice(text, isError) {
@@ -307,7 +308,11 @@ async function viewRun(runId) {
       state.timeline = new Timeline(replay);
       renderMotions();
       applyTime(t);
-      if (e.kind === 'run_finished') { state.live = null; setPlaying(true); }
+      if (e.kind === 'run_finished') {
+        state.live = null;
+        if (e.status === 'succeeded') setPlaying(true);
+        else { setPlaying(false); applyTime(state.timeline.duration); } // where it stopped
+      }
     }
   }, controller.signal);
   if (state.live === controller) state.live = null;
@@ -358,8 +363,22 @@ async function route() {
   side.textContent = '';
   notice('');
   const id = decodeURIComponent(arg);
+  if (!(await mayRead())) return;
   const views = { cell: viewCell, task: viewTask, run: viewRun, runs: viewRuns };
   await guarded(() => (views[view] || viewCell)(id));
+}
+
+// Without a token, ask for it before any data request (a server that needs it would
+// answer 401), unless the user chose to try reads without one (servers with open reads).
+async function mayRead() {
+  if (getToken() || sessionStorage.getItem('taskrunner.anonymous')) return true;
+  const health = await guarded(() => get('/health'));
+  if (!health || !health.auth) return Boolean(health);
+  notice('This server needs its token: type it in the box at the top right (it stays in this tab only).');
+  const open = el('button', { type: 'button', textContent: 'browse without a token (servers with open reads)' });
+  open.addEventListener('click', () => { sessionStorage.setItem('taskrunner.anonymous', '1'); route(); });
+  side.append(el('p', { textContent: 'No token yet.' }), open);
+  return false;
 }
 
 window.addEventListener('hashchange', route);

@@ -97,7 +97,7 @@ export class CellView {
     const size = Math.max(0.3, box.getSize(new THREE.Vector3()).length());
     this.controls.target.copy(centre);
     const dir = new THREE.Vector3(0.35, 0.55, 1).normalize();
-    this.camera.position.copy(centre).addScaledVector(dir, size * 1.25);
+    this.camera.position.copy(centre).addScaledVector(dir, size * 1.6);
     this.camera.near = size / 100;
     this.camera.far = size * 50;
     this.camera.updateProjectionMatrix();
