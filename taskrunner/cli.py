@@ -405,8 +405,9 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
     run.add_argument("file", help="task file (YAML), or a shipped example's name (pick_place)")
-    run.add_argument("--backend", choices=("mock", "sim", "serial", "http"), default="mock",
-                     help="where the motion goes (mock)")
+    run.add_argument("--backend", choices=("mock", "sim", "mujoco", "serial", "http"),
+                     default="mock", help="where the motion goes (mock); mujoco: physics, "
+                     "pip install 'taskrunner[mujoco]'")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
                                     "the robot's hardware.yaml)")
     run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")

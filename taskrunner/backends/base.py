@@ -38,7 +38,7 @@ from taskrunner.errors import (
     TrajectoryRejectedError,
     UnknownNameError,
 )
-from taskrunner.types import JointState, JointTrajectory
+from taskrunner.types import JointState, JointTrajectory, Pose
 
 __all__ = [
     "Backend",
@@ -46,6 +46,7 @@ __all__ = [
     "ExecutionHandle",
     "ExecutionResult",
     "ExecutionStatus",
+    "ObjectTracking",
     "TrajectoryExecution",
     "check_option",
     "check_trajectory",
@@ -133,6 +134,21 @@ class Backend(Protocol):
     def __enter__(self) -> Self: ...
 
     def __exit__(self, *exc: object) -> None: ...
+
+
+@runtime_checkable
+class ObjectTracking(Protocol):
+    """A backend that knows where objects are (a physics simulation): it is shown the
+    task's scene (its objects and what it believes is held) and reports the objects' world
+    poses, which the scene then takes over."""
+
+    def bind_scene(self, scene: Any) -> None:
+        """Follow ``scene`` (a :class:`taskrunner.scene.Scene`; idempotent, cheap)."""
+        ...
+
+    def object_poses(self) -> dict[str, Pose]:
+        """World pose of every free object the backend simulates."""
+        ...
 
 
 def check_option(name: str, value: Any, ok: Callable[[float], bool], expectation: str,

@@ -49,7 +49,7 @@ if TYPE_CHECKING:
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
 
-BACKENDS = ("mock", "sim", "serial", "http")
+BACKENDS = ("mock", "sim", "mujoco", "serial", "http")
 _FRAME_PERIOD = 0.1  # s between frames of the live tree
 
 
@@ -58,7 +58,8 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
                  home: bool = False) -> Backend:
     """A backend driving every joint of the cell.
 
-    mock and sim start at the cell's start state; serial (``port``, default the one in
+    mock, sim and mujoco (physics, :mod:`taskrunner.backends.physics`; ``speed`` None:
+    as fast as it steps) start at the cell's start state; serial (``port``, default the one in
     hardware.yaml) and http (``url``) drive the servos through the calibration and start
     where the servos are: a cell with one robot without a prefix uses the robot's
     hardware.yaml; a cell with several robots on one servo board (``servo_arm_pair``) uses
@@ -81,6 +82,8 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
         return MockBackend(names, start, MockOptions(speed=speed))
     if kind == "sim":
         return SimBackend(names, start, SimOptions(speed=1.0 if speed is None else speed))
+    if kind == "mujoco":
+        return _mujoco_backend(cell, speed, start)
     if kind not in BACKENDS:
         raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
@@ -113,6 +116,21 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if not url:
         raise InputError("the http backend needs --url (the ESP32's /api/command URL)")
     return HttpBackend(names, calibration, url, options)
+
+
+MUJOCO_MISSING = "the mujoco backend needs: pip install 'taskrunner[mujoco]'"
+
+
+def _mujoco_backend(cell: Cell, speed: float | None, start: dict[str, float]) -> Backend:
+    """The physics backend (``speed`` None: as fast as the machine steps)."""
+    try:
+        from taskrunner.backends.physics import MujocoBackend, MujocoOptions, physics_cell
+    except ImportError as exc:
+        if exc.name is not None and exc.name.split(".")[0] == "mujoco":
+            raise InputError(MUJOCO_MISSING) from None
+        raise
+    return MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                         MujocoOptions(speed=speed))
 
 
 def servo_calibration(cell: Cell) -> ServoCalibration:

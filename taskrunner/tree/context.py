@@ -10,7 +10,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from taskrunner.backends.base import Backend
+import numpy as np
+
+from taskrunner.backends.base import Backend, ObjectTracking
 from taskrunner.errors import UnknownNameError
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
@@ -18,7 +20,7 @@ from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import EventLog
 from taskrunner.scene import Scene, SceneSnapshot
 from taskrunner.tree.clock import TaskClock
-from taskrunner.types import JointTrajectory
+from taskrunner.types import JointTrajectory, Pose
 
 __all__ = ["Arm", "ExecutedMotion", "TaskContext", "resolve_arm"]
 
@@ -119,3 +121,15 @@ class TaskContext:
         """Make the scene's robot state what the backend reports."""
         state = self.backend.joint_state()
         self.scene.set_state(dict(zip(state.names, state.positions)))
+        if isinstance(self.backend, ObjectTracking):  # physics: objects go where they really are
+            self.backend.bind_scene(self.scene)
+            for name, pose in self.backend.object_poses().items():
+                if name in self.scene and not self.scene.object(name).attached \
+                        and _moved(self.scene.object(name).pose, pose):
+                    self.scene.move_object(name, pose)
+
+
+def _moved(a: Pose, b: Pose) -> bool:
+    """More than 0.1 mm or about 0.01° apart (below that, no scene edit)."""
+    return (float(np.linalg.norm(np.subtract(a.xyz, b.xyz))) > 1e-4
+            or abs(abs(float(np.dot(a.quat, b.quat))) - 1.0) > 1e-8)

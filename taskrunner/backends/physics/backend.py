@@ -1,0 +1,590 @@
+"""A physics-simulated cell (MuJoCo): the fingers really have to hold what is carried.
+
+:class:`MujocoBackend` implements the backend protocol of
+:class:`~taskrunner.backends.base.BaseBackend` on a MuJoCo model of the cell
+(:mod:`taskrunner.backends.physics.mjcf`). One thread steps the physics at a fixed
+timestep while anything moves: every joint has a position servo (gains from its effort
+limit, see :class:`MujocoOptions`) whose target follows the running trajectory (the
+trajectory's velocity fed forward); joints no trajectory moves hold their last target.
+After each motion the world runs on for ``settle`` s (objects come to rest) and then
+pauses until the next motion, so a task of one motion after another gives the same
+result on every run (physics time depends on nothing but the motions).
+
+What the physics did is checked as it happens, and a motion fails (its handle's
+``wait()`` raises :class:`~taskrunner.errors.BackendError`, the step fails with its
+file:line) when:
+
+- an object that the task's scene holds in a gripper moves away from that gripper by
+  more than ``slip_distance`` or ``slip_angle`` (it slipped, or was never held);
+- a joint lags its trajectory by more than ``tracking_tolerance`` (finger joints are
+  exempt: a finger blocked by what it grasps is the point of closing);
+- a contact on the robot, other than a hand on a free object, pushes harder than
+  ``contact_force_limit`` (an unplanned collision).
+
+The task's scene is bound with :meth:`bind_scene` (the runner's context does it): the
+backend then builds its world with the scene's objects, learns what the task believes
+is held at each ``execute``, and reports where objects really are with
+:meth:`object_poses`. ``grasp_mode="weld"`` for an arm welds a held object to the
+gripper while the scene holds it, for grippers that cannot hold by friction in the
+simulation; :attr:`notes` says so. Units: m, kg, rad, s, N.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections import deque
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from taskrunner.backends.base import BaseBackend, TrajectoryExecution, check_option
+from taskrunner.backends.physics.mjcf import (
+    MjcfOptions,
+    ObjectPhysics,
+    PhysicsCell,
+    PhysicsObject,
+    cell_mjcf,
+    compiled_model,
+)
+from taskrunner.errors import BackendError
+from taskrunner.types import JointState, Pose
+
+__all__ = ["MujocoBackend", "MujocoOptions", "PhysicsSample"]
+
+_JOIN_TIMEOUT = 5.0  # s
+_CHUNK = 10  # physics steps between looks at the shared state (20 ms at 2 ms)
+_SATURATION = {"hinge": 0.05, "slide": 0.005}  # rad / m of error at which effort saturates
+_STABLE_STEP = 0.3  # omega * dt at most: armature added where a servo would be too stiff
+_DEFAULT_EFFORT = 10.0  # N m or N, for a URDF joint without an effort limit
+
+
+@dataclass(frozen=True)
+class MujocoOptions:
+    """How :class:`MujocoBackend` simulates.
+
+    Attributes:
+        speed: None: as fast as the machine steps (the default; a benchmark reports the
+            real-time factor); a number: paced at ``speed`` times real time.
+        timestep: s per physics step (fixed).
+        settle: s of physics after each motion before the world pauses.
+        seed: seeds the only randomness (none in MuJoCo itself; kept for the record).
+        tracking_tolerance: rad (m) a joint may lag its trajectory (fingers exempt).
+        slip_distance: m a held object may move relative to its gripper.
+        slip_angle: rad a held object may turn relative to its gripper.
+        contact_force_limit: N, largest contact force on the robot outside grasps.
+        effort: per joint, overriding the URDF effort limit (N m or N).
+        saturation: per joint, the error (rad or m) at which its servo gives full effort.
+        grasp_mode: per arm group, "friction" (default) or "weld".
+        objects: per object, its mass and friction; others get ``default_object``.
+        default_object: see :class:`~taskrunner.backends.physics.mjcf.ObjectPhysics`.
+        cache_dir: where compiled models are kept (None: the user cache).
+        start_tolerance: largest accepted distance (rad or m) between a trajectory's first
+            sample and a joint's measured position.
+        history_period: s of physics between recorded samples (:meth:`history`).
+    """
+
+    speed: float | None = None
+    timestep: float = 0.002
+    settle: float = 0.3
+    seed: int = 0
+    tracking_tolerance: float = 0.1
+    slip_distance: float = 0.01
+    slip_angle: float = math.radians(15.0)
+    contact_force_limit: float = 100.0
+    effort: Mapping[str, float] = field(default_factory=dict)
+    saturation: Mapping[str, float] = field(default_factory=dict)
+    grasp_mode: Mapping[str, str] = field(default_factory=dict)
+    objects: Mapping[str, ObjectPhysics] = field(default_factory=dict)
+    default_object: ObjectPhysics = field(default_factory=ObjectPhysics)
+    cache_dir: str | None = None
+    start_tolerance: float = 0.05
+    history_period: float = 0.04
+
+    def __post_init__(self) -> None:
+        check_option("speed", self.speed, lambda v: 0 < v < math.inf, "a positive number",
+                     optional=True)
+        check_option("timestep", self.timestep, lambda v: 0 < v <= 0.01, "in (0, 0.01] s")
+        for name in ("settle", "tracking_tolerance", "slip_distance", "slip_angle",
+                     "contact_force_limit", "start_tolerance", "history_period"):
+            check_option(name, getattr(self, name), lambda v: 0 <= v < math.inf,
+                         "a number >= 0")
+        for arm, mode in self.grasp_mode.items():
+            if mode not in ("friction", "weld"):
+                raise ValueError(f"'grasp_mode' of {arm!r} must be 'friction' or 'weld' "
+                                 f"(got {mode!r})")
+
+
+@dataclass(frozen=True)
+class PhysicsSample:
+    """The world at one moment: physics time (s), every joint, every free object."""
+
+    time: float
+    joints: JointState
+    objects: dict[str, Pose]
+
+
+@dataclass
+class _Held:
+    """An object the task's scene holds: the gripper body and the pose relative to it."""
+
+    body: int
+    link: str
+    rel_pos: np.ndarray
+    rel_quat: np.ndarray
+    weld: int | None = None
+
+
+class MujocoBackend(BaseBackend):
+    """The cell in MuJoCo (see the module docstring).
+
+    Args:
+        joint_names: every joint driven (the cell model's joints, names as in the URDF).
+        cell: the physics description of the cell.
+        initial_positions: positions at start (rad or m).
+        options: see :class:`MujocoOptions`.
+
+    Raises:
+        BackendError: the cell cannot be made into a MuJoCo model.
+    """
+
+    def __init__(self, joint_names: tuple[str, ...] | list[str], cell: PhysicsCell,
+                 initial_positions: JointState | Mapping[str, float] | None = None,
+                 options: MujocoOptions | None = None) -> None:
+        self._options = options or MujocoOptions()
+        super().__init__(joint_names, initial_positions,
+                         start_tolerance=self._options.start_tolerance)
+        from taskrunner.resources import user_cache_dir
+
+        self._cache = (user_cache_dir() / "mujoco" if self._options.cache_dir is None
+                       else _path(self._options.cache_dir))
+        self._cell = cell
+        self._scene: Any = None
+        self._scene_names: tuple[str, ...] = ()
+        self._wake = threading.Condition(self._lock)
+        self._history: deque[PhysicsSample] = deque(maxlen=100_000)
+        self.notes: list[str] = []
+        self.build_seconds = 0.0
+        self.cache_hit = False
+        self.failures: list[str] = []
+        self._build(cell)
+        self._thread = threading.Thread(target=self._run, name=f"MujocoBackend-{id(self):x}",
+                                        daemon=True)
+        self._thread.start()
+
+    # -- public ------------------------------------------------------------------------
+
+    @property
+    def options(self) -> MujocoOptions:
+        return self._options
+
+    @property
+    def sim_time(self) -> float:
+        """Seconds of physics simulated so far."""
+        with self._lock:
+            return float(self._data.time)
+
+    @property
+    def model(self) -> Any:
+        """The compiled ``mujoco.MjModel`` (read only, please)."""
+        return self._model
+
+    def bind_scene(self, scene: Any) -> None:
+        """Use the task's scene: its objects join the world (rebuilding it if they are new)
+        and its attachments say what is held at each ``execute``. Duck-typed: anything
+        with ``objects`` (name, shape, pose, attached_to) and ``object_pose(name)``."""
+        names = tuple(scene.object_names)
+        with self._lock:
+            if scene is self._scene and names == self._scene_names:
+                return
+            self._scene, self._scene_names = scene, names
+            self._sync_objects()
+
+    def object_poses(self) -> dict[str, Pose]:
+        """World pose of every free object, as the physics has it now."""
+        with self._lock:
+            return dict(self._object_poses)
+
+    def history(self) -> list[PhysicsSample]:
+        """Joints and free objects every ``history_period`` s of physics while anything
+        moved, oldest first."""
+        with self._lock:
+            return list(self._history)
+
+    def close(self) -> None:
+        with self._lock:
+            super().close()
+            self._wake.notify_all()
+        if threading.current_thread() is not self._thread:
+            self._thread.join(_JOIN_TIMEOUT)
+
+    # -- building ----------------------------------------------------------------------
+
+    def _build(self, cell: PhysicsCell) -> None:
+        started = time.perf_counter()
+        o = self._options
+        xml = cell_mjcf(cell, MjcfOptions(o.timestep, o.objects, o.default_object), self._cache)
+        model, self.cache_hit = compiled_model(xml, self._cache)
+        old = getattr(self, "_data", None)
+        data = mujoco.MjData(model)
+        self._model, self._data = model, data
+        self._cell = cell
+        self._jnt = {}
+        for name in self._names:
+            jid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
+            if jid < 0:
+                raise BackendError(f"joint {name!r} is not in the MuJoCo model of "
+                                   f"{cell.name!r}")
+            self._jnt[name] = jid
+        self._qadr = np.array([model.jnt_qposadr[self._jnt[n]] for n in self._names])
+        self._dadr = np.array([model.jnt_dofadr[self._jnt[n]] for n in self._names])
+        self._act = np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, n)
+                              for n in self._names])
+        self._mimic = [(self._index[f], self._index[src], mul, off)
+                       for f, (src, mul, off) in cell.mimic.items()
+                       if f in self._index and src in self._index]
+        self._finger = np.array([n in cell.gripper_joints for n in self._names])
+        self._objects = {o.name: mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, o.name)
+                         for o in cell.objects if o.movable}
+        self._robot_bodies = {int(b) for b in range(1, model.nbody)
+                              if model.body(b).name not in self._objects}
+        self._hand_bodies = {mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
+                             for link in cell.hand_links} - {-1}
+        data.qpos[self._qadr] = self._positions
+        if old is not None:  # a rebuild: the objects that were there stay where they were
+            for name, body in self._objects.items():
+                pose = self._object_poses.get(name)
+                if pose is not None:
+                    adr = model.jnt_qposadr[model.body_jntadr[body]]
+                    data.qpos[adr:adr + 3] = pose.xyz
+                    x, y, z, w = pose.quat
+                    data.qpos[adr + 3:adr + 7] = (w, x, y, z)
+        mujoco.mj_forward(model, data)
+        self._set_gains()
+        self._targets = self._positions.copy()
+        self._velocities = np.zeros(len(self._names))
+        self._held: dict[str, _Held] = {}
+        self._object_poses: dict[str, Pose] = {}
+        self._publish()
+        self._settle_until = float(data.time)
+        self._starts: dict[int, float] = {}
+        self._next_sample = 0.0
+        self._finish_pending: dict[int, float] = {}
+        self.build_seconds = time.perf_counter() - started
+
+    def _set_gains(self) -> None:
+        """Position servos from each joint's effort limit: full effort at ``saturation``
+        error, critically damped on the joint's inertia at the start; armature (the
+        reflected inertia of a geared servo) where the servo would outrun the timestep."""
+        model, data = self._model, self._data
+        unit, column = np.zeros(model.nv), np.zeros(model.nv)
+        efforts = _urdf_efforts(self._cell.urdf_xml)
+        dt = model.opt.timestep
+        self.gains: dict[str, tuple[float, float, float]] = {}
+        for k, name in enumerate(self._names):
+            jid, dof, act = self._jnt[name], int(self._dadr[k]), int(self._act[k])
+            kind = "slide" if model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE else "hinge"
+            effort = self._options.effort.get(name, efforts.get(name) or _DEFAULT_EFFORT)
+            kp = effort / self._options.saturation.get(name, _SATURATION[kind])
+            unit[:] = 0.0
+            unit[dof] = 1.0
+            mujoco.mj_mulM(model, data, column, unit)
+            inertia = float(column[dof])
+            armature = max(0.0, kp * (dt / _STABLE_STEP) ** 2 - inertia)
+            model.dof_armature[dof] += armature
+            kv = 2.0 * math.sqrt(kp * (inertia + armature))
+            model.actuator_gainprm[act, 0] = kp
+            model.actuator_biasprm[act, :3] = (0.0, -kp, -kv)
+            model.actuator_forcelimited[act] = 1
+            model.actuator_forcerange[act] = (-effort, effort)
+            self.gains[name] = (kp, kv, effort)
+
+    def _sync_objects(self) -> None:
+        """Rebuild the world if the bound scene has free objects it lacks (under the lock)."""
+        scene = self._scene
+        if scene is None:
+            return
+        static = {o.name for o in self._cell.objects if not o.movable}
+        wanted = []
+        for obj in scene.objects:
+            if obj.name in static:
+                continue
+            pose = scene.object_pose(obj.name)
+            wanted.append(PhysicsObject(obj.name, obj.shape, pose.xyz, pose.quat, movable=True))
+        names = {o.name for o in wanted}
+        if names == set(self._objects):
+            return
+        if self._executions:
+            raise BackendError("objects were added to the scene while a motion runs; the "
+                               "mujoco backend adds objects between motions")
+        kept = [o for o in self._cell.objects if not o.movable and o.name in static]
+        poses = dict(self._object_poses)
+        self._build(self._cell.with_objects([*kept, *wanted]))
+        self._object_poses.update({k: v for k, v in poses.items() if k in self._objects})
+        self._restore_objects(poses)
+
+    def _restore_objects(self, poses: Mapping[str, Pose]) -> None:
+        model, data = self._model, self._data
+        for name, body in self._objects.items():
+            pose = poses.get(name)
+            if pose is None:
+                continue
+            adr = model.jnt_qposadr[model.body_jntadr[body]]
+            data.qpos[adr:adr + 3] = pose.xyz
+            x, y, z, w = pose.quat
+            data.qpos[adr + 3:adr + 7] = (w, x, y, z)
+        mujoco.mj_forward(model, data)
+        self._publish()
+
+    # -- BaseBackend -------------------------------------------------------------------
+
+    def _begin(self, execution: TrajectoryExecution) -> None:
+        self._sync_objects()
+        self._bind_held()
+        # Deterministic: a motion starts when the world has settled from the last one.
+        self._starts[id(execution)] = max(float(self._data.time), self._settle_until)
+        self._wake.notify_all()
+
+    def _bind_held(self) -> None:
+        """Record what the scene holds, relative to its gripper as the physics has it."""
+        scene = self._scene
+        if scene is None:
+            return
+        model, data = self._model, self._data
+        held: dict[str, _Held] = {}
+        weld_links = {self._cell.grasp_frames.get(arm): arm
+                      for arm, mode in self._options.grasp_mode.items() if mode == "weld"}
+        for obj in scene.objects:
+            if obj.attached_to is None or obj.name not in self._objects:
+                continue
+            link_body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, obj.attached_to)
+            if link_body < 0:
+                continue
+            previous = self._held.get(obj.name)
+            if previous is not None and previous.body == link_body:
+                held[obj.name] = previous
+                continue
+            rel_pos, rel_quat = _relative(data, link_body, self._objects[obj.name])
+            entry = _Held(link_body, obj.attached_to, rel_pos, rel_quat)
+            if obj.attached_to in weld_links:
+                entry.weld = self._weld(link_body, self._objects[obj.name])
+                note = (f"grasp_mode weld: {obj.name!r} is welded to {obj.attached_to!r} "
+                        f"(arm {weld_links[obj.attached_to]!r}), not held by friction")
+                if note not in self.notes:
+                    self.notes.append(note)
+            held[obj.name] = entry
+        for name, entry in self._held.items():
+            if entry.weld is not None and (name not in held or held[name] is not entry):
+                data.eq_active[entry.weld] = 0
+        self._held = held
+
+    def _weld(self, link_body: int, obj_body: int) -> int:
+        raise BackendError("grasp_mode weld needs the weld constraints of the model "
+                           "(not built yet)")
+
+    # -- the physics thread ------------------------------------------------------------
+
+    def _run(self) -> None:
+        try:
+            while True:
+                with self._lock:
+                    while not self._closed and not self._executions and \
+                            self._data.time >= self._settle_until - 1e-9:
+                        self._wake.wait()
+                    if self._closed:
+                        return
+                    plan = self._plan_chunk()
+                wall = time.perf_counter()
+                self._step_chunk(plan)
+                with self._lock:
+                    self._after_chunk(plan)
+                speed = self._options.speed
+                if speed is not None:
+                    late = _CHUNK * self._model.opt.timestep / speed - (time.perf_counter() - wall)
+                    if late > 0:
+                        time.sleep(late)
+                else:
+                    time.sleep(0)  # let the tree and the display look in
+        except Exception as exc:  # no handle may wait forever
+            with self._lock:
+                self._closed = True
+                self._closed_reason = f"stopped: its physics thread died ({exc!r})"
+                for execution in list(self._executions):
+                    message = f"physics simulation died: {exc!r}"
+                    self._finish(execution, "failed", message, BackendError(message))
+
+    def _plan_chunk(self) -> list[tuple[TrajectoryExecution, float]]:
+        """The running executions and their start times (under the lock)."""
+        return [(e, self._starts.get(id(e), float(self._data.time))) for e in self._executions]
+
+    def _step_chunk(self, plan: list[tuple[TrajectoryExecution, float]]) -> None:
+        """Step the physics ``_CHUNK`` times, servos following the trajectories (no lock:
+        only this thread touches the MuJoCo data while it steps)."""
+        model, data = self._model, self._data
+        targets, velocities = self._targets.copy(), np.zeros(len(self._names))
+        kp = model.actuator_gainprm[self._act, 0]
+        kv = -model.actuator_biasprm[self._act, 2]
+        for _ in range(_CHUNK):
+            t = float(data.time)
+            for execution, start in plan:
+                if t < start:
+                    continue
+                tr = execution.trajectory
+                local = min(t - start, execution.duration) + float(tr.times[0])
+                q, qd = _sample(tr, local)
+                targets[execution.columns] = q
+                velocities[execution.columns] = qd if t - start < execution.duration else 0.0
+            for follower, leader, mul, off in self._mimic:
+                targets[follower] = mul * targets[leader] + off
+                velocities[follower] = mul * velocities[leader]
+            data.ctrl[self._act] = targets + np.where(kp > 0, kv / kp, 0.0) * velocities
+            mujoco.mj_step(model, data)
+            self._check_contacts()
+        self._chunk_targets = targets
+
+    def _check_contacts(self) -> None:
+        limit = self._options.contact_force_limit
+        model, data = self._model, self._data
+        if data.ncon == 0:
+            return
+        force = np.zeros(6)
+        for i in range(data.ncon):
+            contact = data.contact[i]
+            b1, b2 = model.geom_bodyid[contact.geom1], model.geom_bodyid[contact.geom2]
+            robot1, robot2 = b1 in self._robot_bodies, b2 in self._robot_bodies
+            if not (robot1 or robot2):
+                continue
+            other = b2 if robot1 else b1
+            link = b1 if robot1 else b2
+            if link in self._hand_bodies and other in self._objects.values():
+                continue  # a grasp
+            mujoco.mj_contactForce(model, data, i, force)
+            if abs(force[0]) > limit and not self.failures:
+                self.failures.append(
+                    f"unplanned contact: {model.body(link).name!r} pushed against "
+                    f"{model.body(other).name or 'the world'!r} with {abs(force[0]):.0f} N "
+                    f"(limit {limit:g} N) at {data.time:.3f} s of physics")
+
+    def _after_chunk(self, plan: list[tuple[TrajectoryExecution, float]]) -> None:
+        """Publish the state, end finished motions, fail what physics broke (under the lock)."""
+        data = self._data
+        now = float(data.time)
+        self._targets = self._chunk_targets
+        self._publish()
+        failure = self.failures.pop(0) if self.failures else None
+        if failure is None:
+            failure = self._slip()
+        for execution, start in plan:
+            if execution.finished:  # cancelled while the chunk ran: hold where it is
+                self._targets[execution.columns] = self._positions[execution.columns]
+                self._starts.pop(id(execution), None)
+                continue
+            elapsed = max(0.0, now - start)
+            execution.set_progress(min(elapsed, execution.duration))
+            lag = np.abs(self._positions[execution.columns] - self._targets[execution.columns])
+            lag[self._finger[execution.columns]] = 0.0
+            if failure is None and lag.size and float(lag.max()) > self._options.tracking_tolerance:
+                j = int(np.argmax(lag))
+                failure = (f"tracking error: joint {execution.trajectory.names[j]!r} is "
+                           f"{float(lag[j]):.3f} from its trajectory at "
+                           f"{min(elapsed, execution.duration):.3f} s of "
+                           f"{execution.duration:.3f} s (tolerance "
+                           f"{self._options.tracking_tolerance:g})")
+            if failure is not None:
+                self._targets[execution.columns] = self._positions[execution.columns]
+                self._finish(execution, "failed", failure, BackendError(failure))
+            elif elapsed >= execution.duration:
+                self._finish(execution, "succeeded", "trajectory executed")
+            if execution.finished:
+                self._starts.pop(id(execution), None)
+                self._settle_until = now + self._options.settle
+        if failure is not None and not plan:
+            self.notes.append(f"after the motions: {failure}")
+        if now >= self._next_sample:
+            self._next_sample = now + self._options.history_period
+            self._history.append(PhysicsSample(now, JointState(self._names, self._positions),
+                                               dict(self._object_poses)))
+
+    def _slip(self) -> str | None:
+        data = self._data
+        for name, held in self._held.items():
+            if held.weld is not None:
+                continue
+            rel_pos, rel_quat = _relative(data, held.body, self._objects[name])
+            moved = float(np.linalg.norm(rel_pos - held.rel_pos))
+            turned = _angle(rel_quat, held.rel_quat)
+            if moved > self._options.slip_distance or turned > self._options.slip_angle:
+                del self._held[name]
+                return (f"object {name!r} slipped out of the gripper: it moved "
+                        f"{1e3 * moved:.0f} mm and turned {math.degrees(turned):.0f} deg "
+                        f"relative to {held.link!r} (limits "
+                        f"{1e3 * self._options.slip_distance:.0f} mm, "
+                        f"{math.degrees(self._options.slip_angle):.0f} deg)")
+        return None
+
+    def _publish(self) -> None:
+        """Copy the measured joints and objects out of the MuJoCo data (under the lock)."""
+        data, model = self._data, self._model
+        self._positions = data.qpos[self._qadr].copy()
+        poses = {}
+        for name, body in self._objects.items():
+            adr = model.jnt_qposadr[model.body_jntadr[body]]
+            w, x, y, z = data.qpos[adr + 3:adr + 7]
+            poses[name] = Pose(tuple(data.qpos[adr:adr + 3]), (x, y, z, w))
+        self._object_poses = poses
+
+    def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
+        super()._cancel(execution, message)
+        self._targets[execution.columns] = self._positions[execution.columns]
+
+
+def _path(text: str) -> Any:
+    from pathlib import Path
+
+    return Path(text)
+
+
+def _urdf_efforts(urdf_xml: str) -> dict[str, float]:
+    import xml.etree.ElementTree as ET
+
+    efforts = {}
+    for joint in ET.fromstring(urdf_xml).findall("joint"):
+        limit = joint.find("limit")
+        if limit is not None and float(limit.get("effort", 0) or 0) > 0:
+            efforts[joint.get("name", "")] = float(limit.get("effort", 0))
+    return efforts
+
+
+def _sample(trajectory: Any, t: float) -> tuple[np.ndarray, np.ndarray]:
+    """Position and velocity of ``trajectory`` at ``t`` (its own clock): linear position
+    between samples, the samples' velocities interpolated."""
+    times, positions, velocities = trajectory.times, trajectory.positions, trajectory.velocities
+    if t <= times[0]:
+        return positions[0], velocities[0]
+    if t >= times[-1]:
+        return positions[-1], velocities[-1]
+    k = int(np.searchsorted(times, t, side="right")) - 1
+    s = (t - times[k]) / (times[k + 1] - times[k])
+    return (positions[k] + s * (positions[k + 1] - positions[k]),
+            velocities[k] + s * (velocities[k + 1] - velocities[k]))
+
+
+def _relative(data: Any, link_body: int, obj_body: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pose of ``obj_body`` in the frame of ``link_body``: position, quaternion (w x y z)."""
+    rot = data.xmat[link_body].reshape(3, 3)
+    pos = rot.T @ (data.xpos[obj_body] - data.xpos[link_body])
+    inverse = np.zeros(4)
+    mujoco.mju_negQuat(inverse, data.xquat[link_body])
+    quat = np.zeros(4)
+    mujoco.mju_mulQuat(quat, inverse, data.xquat[obj_body])
+    return pos, quat
+
+
+def _angle(a: np.ndarray, b: np.ndarray) -> float:
+    """Angle (rad) between two rotations given as unit quaternions."""
+    dot = abs(float(np.dot(a, b)))
+    return 2.0 * math.acos(min(1.0, dot))
