@@ -48,7 +48,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw")
+            "firmware-sim", "hw", "view")
 
 
 def _load(name_or_path: str):  # type: ignore[no-untyped-def]
@@ -365,6 +365,59 @@ def cmd_serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_view(args: argparse.Namespace) -> int:
+    """Serve the web view on 127.0.0.1 and print its URL: a run record (``.json``) opens
+    for replay, a task (file or shipped name) for its check and plan-only preview, nothing
+    the cells. The server keeps its data in a temporary folder (a record is copied into
+    it); it needs a token like ``serve`` (printed, typed into the page, never in a URL)."""
+    import shlex
+    import socket
+    import tempfile
+
+    from taskrunner.api import Settings, create_app
+    from taskrunner.api.app import new_token
+    from taskrunner.api.serving import serve
+    from taskrunner.api.store import RunStore
+    from taskrunner.resources import resolve_task
+    from taskrunner.runtime.records import load_record
+
+    data_dir = Path(tempfile.mkdtemp(prefix="taskrunner-view-"))
+    values: dict[str, object] = {"data_dir": data_dir,
+                                 "token": args.token or os.environ.get("TASKRUNNER_TOKEN")
+                                 or new_token()}
+    fragment = "#/cell"
+    try:
+        if args.target and args.target.endswith(".json"):
+            record = load_record(args.target)
+            fragment = f"#/run/{record.run_id}"
+        elif args.target:
+            from taskrunner.tasks import load_task
+
+            task_file = resolve_task(args.target)
+            spec = load_task(task_file)
+            values.update(tasks_dir=task_file.parent, cells_dir=Path(spec.cell).parent)
+            fragment = f"#/task/{task_file.stem}"
+        settings = Settings.from_env(**values)
+        if args.target and args.target.endswith(".json"):
+            store = RunStore(settings.db_path)
+            store.save(record)
+            store.close()
+    except (OSError, ValueError, TaskrunnerError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    port = args.port
+    if not port:
+        with socket.socket() as probe:
+            probe.bind(("127.0.0.1", 0))
+            port = int(probe.getsockname()[1])
+    app = create_app(settings)
+    print(f"taskrunner view at http://127.0.0.1:{port}/{fragment}\n"
+          f"  the page asks for the token: {app.state.token}\n"
+          f"export TASKRUNNER_TOKEN={shlex.quote(str(app.state.token))}", flush=True)
+    serve(app, settings, "127.0.0.1", port, args.log_level)
+    return EXIT_OK
+
+
 def cmd_examples(args: argparse.Namespace) -> int:
     """The shipped example tasks: name, cell, first line of the description."""
     from taskrunner.resources import example_tasks
@@ -483,6 +536,15 @@ def _parser() -> argparse.ArgumentParser:
                        help="plan in a worker process per run (default) or in-process")
     serve.add_argument("--log-level", default="info", help="uvicorn's log level (info)",
                        choices=("critical", "error", "warning", "info", "debug"))
+    view = sub.add_parser("view", help="serve the web view on 127.0.0.1: replay a run "
+                                       "record, check and preview a task, or see the cells")
+    view.add_argument("target", nargs="?", default=None,
+                      help="a run record (runs/<id>.json), a task file or shipped task name")
+    view.add_argument("--port", type=int, default=0, help="port (default: a free one)")
+    view.add_argument("--token", default=None,
+                      help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
+    view.add_argument("--log-level", default="warning", help="uvicorn's log level (warning)",
+                      choices=("critical", "error", "warning", "info", "debug"))
     sub.add_parser("collision-matrix", add_help=False,
                    help="generate a robot's self-collision matrix (see --help)")
     return parser
@@ -496,7 +558,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
         argv = ["run", *argv]
     args = parser.parse_args(argv)
-    commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples,
+    commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
                 "demo": cmd_demo, "info": cmd_info,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve}
