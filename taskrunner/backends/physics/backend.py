@@ -5,10 +5,12 @@
 (:mod:`taskrunner.backends.physics.mjcf`). One thread steps the physics at a fixed
 timestep while anything moves: every joint has a position servo (gains from its effort
 limit, see :class:`MujocoOptions`) whose target follows the running trajectory (the
-trajectory's velocity fed forward); joints no trajectory moves hold their last target.
-After each motion the world runs on for ``settle`` s (objects come to rest) and then
-pauses until the next motion, so a task of one motion after another gives the same
-result on every run (physics time depends on nothing but the motions).
+trajectory's velocity fed forward); joints no trajectory moves hold their last target;
+a mimic joint follows its leader through an equality constraint (a coupled gripper
+centres what it grasps). A motion ends ``settle`` s after its trajectory (objects come
+to rest), and the world pauses until the next motion, so a task of one motion after
+another gives the same result on every run (physics time depends on nothing but the
+motions; motions started while another runs start when the call comes).
 
 What the physics did is checked as it happens, and a motion fails (its handle's
 ``wait()`` raises :class:`~taskrunner.errors.BackendError`, the step fails with its
@@ -59,6 +61,7 @@ __all__ = ["MujocoBackend", "MujocoOptions", "PhysicsSample"]
 _JOIN_TIMEOUT = 5.0  # s
 _CHUNK = 10  # physics steps between looks at the shared state (20 ms at 2 ms)
 _SATURATION = {"hinge": 0.05, "slide": 0.005}  # rad / m of error at which effort saturates
+_FINGER_SATURATION = {"hinge": 0.2, "slide": 0.01}  # a finger: full grip this far off
 _STABLE_STEP = 0.3  # omega * dt at most: armature added where a servo would be too stiff
 _DEFAULT_EFFORT = 10.0  # N m or N, for a URDF joint without an effort limit
 
@@ -71,7 +74,8 @@ class MujocoOptions:
         speed: None: as fast as the machine steps (the default; a benchmark reports the
             real-time factor); a number: paced at ``speed`` times real time.
         timestep: s per physics step (fixed).
-        settle: s of physics after each motion before the world pauses.
+        settle: s of physics after each trajectory's end, holding its last sample,
+            before the motion ends and the world pauses.
         seed: seeds the only randomness (none in MuJoCo itself; kept for the record).
         tracking_tolerance: rad (m) a joint may lag its trajectory (fingers exempt).
         slip_distance: m a held object may move relative to its gripper.
@@ -79,6 +83,8 @@ class MujocoOptions:
         contact_force_limit: N, largest contact force on the robot outside grasps.
         effort: per joint, overriding the URDF effort limit (N m or N).
         saturation: per joint, the error (rad or m) at which its servo gives full effort.
+        grip_effort: the most a finger joint pushes, by joint kind ("slide": N, "hinge":
+            N m), unless ``effort`` names the joint: 20 N, or 0.5 N m (10 N at 5 cm).
         grasp_mode: per arm group, "friction" (default) or "weld".
         objects: per object, its mass and friction; others get ``default_object``.
         default_object: see :class:`~taskrunner.backends.physics.mjcf.ObjectPhysics`.
@@ -98,6 +104,8 @@ class MujocoOptions:
     contact_force_limit: float = 100.0
     effort: Mapping[str, float] = field(default_factory=dict)
     saturation: Mapping[str, float] = field(default_factory=dict)
+    grip_effort: Mapping[str, float] = field(
+        default_factory=lambda: {"slide": 20.0, "hinge": 0.5})
     grasp_mode: Mapping[str, str] = field(default_factory=dict)
     objects: Mapping[str, ObjectPhysics] = field(default_factory=dict)
     default_object: ObjectPhysics = field(default_factory=ObjectPhysics)
@@ -244,6 +252,10 @@ class MujocoBackend(BaseBackend):
         self._dadr = np.array([model.jnt_dofadr[self._jnt[n]] for n in self._names])
         self._act = np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, n)
                               for n in self._names])
+        limited = model.jnt_limited[[self._jnt[n] for n in self._names]].astype(bool)
+        ranges = model.jnt_range[[self._jnt[n] for n in self._names]]
+        self._lower = np.where(limited, ranges[:, 0], -np.inf)
+        self._upper = np.where(limited, ranges[:, 1], np.inf)
         self._mimic = [(self._index[f], self._index[src], mul, off)
                        for f, (src, mul, off) in cell.mimic.items()
                        if f in self._index and src in self._index]
@@ -270,7 +282,6 @@ class MujocoBackend(BaseBackend):
         self._held: dict[str, _Held] = {}
         self._object_poses: dict[str, Pose] = {}
         self._publish()
-        self._settle_until = float(data.time)
         self._starts: dict[int, float] = {}
         self._next_sample = 0.0
         self._finish_pending: dict[int, float] = {}
@@ -289,7 +300,15 @@ class MujocoBackend(BaseBackend):
             jid, dof, act = self._jnt[name], int(self._dadr[k]), int(self._act[k])
             kind = "slide" if model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE else "hinge"
             effort = self._options.effort.get(name, efforts.get(name) or _DEFAULT_EFFORT)
-            kp = effort / self._options.saturation.get(name, _SATURATION[kind])
+            saturation = _SATURATION[kind]
+            if self._finger[k] and name not in self._options.effort:
+                # A gripper squeezes with a grip force, not its joint's full effort (a light
+                # object between two fingers at full effort crushes MuJoCo's soft contacts).
+                effort = min(effort, self._options.grip_effort[kind])
+                saturation = _FINGER_SATURATION[kind]
+            kp = effort / self._options.saturation.get(name, saturation)
+            if name in self._cell.mimic:  # the coupling drives it, not a servo of its own
+                kp, effort = 0.0, 0.0
             unit[:] = 0.0
             unit[dof] = 1.0
             mujoco.mj_mulM(model, data, column, unit)
@@ -297,6 +316,7 @@ class MujocoBackend(BaseBackend):
             armature = max(0.0, kp * (dt / _STABLE_STEP) ** 2 - inertia)
             model.dof_armature[dof] += armature
             kv = 2.0 * math.sqrt(kp * (inertia + armature))
+            model.actuator_ctrllimited[act] = 0
             model.actuator_gainprm[act, 0] = kp
             model.actuator_biasprm[act, :3] = (0.0, -kp, -kv)
             model.actuator_forcelimited[act] = 1
@@ -345,8 +365,9 @@ class MujocoBackend(BaseBackend):
     def _begin(self, execution: TrajectoryExecution) -> None:
         self._sync_objects()
         self._bind_held()
-        # Deterministic: a motion starts when the world has settled from the last one.
-        self._starts[id(execution)] = max(float(self._data.time), self._settle_until)
+        # The world is paused between motions (each ends settled), so one motion after
+        # another starts at the same physics time on every run.
+        self._starts[id(execution)] = float(self._data.time)
         self._wake.notify_all()
 
     def _bind_held(self) -> None:
@@ -392,8 +413,7 @@ class MujocoBackend(BaseBackend):
         try:
             while True:
                 with self._lock:
-                    while not self._closed and not self._executions and \
-                            self._data.time >= self._settle_until - 1e-9:
+                    while not self._closed and not self._executions:
                         self._wake.wait()
                     if self._closed:
                         return
@@ -428,6 +448,7 @@ class MujocoBackend(BaseBackend):
         targets, velocities = self._targets.copy(), np.zeros(len(self._names))
         kp = model.actuator_gainprm[self._act, 0]
         kv = -model.actuator_biasprm[self._act, 2]
+        lead = np.divide(kv, kp, out=np.zeros_like(kp), where=kp > 0)  # s: velocity fed forward
         for _ in range(_CHUNK):
             t = float(data.time)
             for execution, start in plan:
@@ -441,7 +462,7 @@ class MujocoBackend(BaseBackend):
             for follower, leader, mul, off in self._mimic:
                 targets[follower] = mul * targets[leader] + off
                 velocities[follower] = mul * velocities[leader]
-            data.ctrl[self._act] = targets + np.where(kp > 0, kv / kp, 0.0) * velocities
+            data.ctrl[self._act] = targets + lead * velocities
             mujoco.mj_step(model, data)
             self._check_contacts()
         self._chunk_targets = targets
@@ -497,11 +518,10 @@ class MujocoBackend(BaseBackend):
             if failure is not None:
                 self._targets[execution.columns] = self._positions[execution.columns]
                 self._finish(execution, "failed", failure, BackendError(failure))
-            elif elapsed >= execution.duration:
+            elif elapsed >= execution.duration + self._options.settle:
                 self._finish(execution, "succeeded", "trajectory executed")
             if execution.finished:
                 self._starts.pop(id(execution), None)
-                self._settle_until = now + self._options.settle
         if failure is not None and not plan:
             self.notes.append(f"after the motions: {failure}")
         if now >= self._next_sample:
@@ -529,7 +549,9 @@ class MujocoBackend(BaseBackend):
     def _publish(self) -> None:
         """Copy the measured joints and objects out of the MuJoCo data (under the lock)."""
         data, model = self._data, self._model
-        self._positions = data.qpos[self._qadr].copy()
+        # A soft joint limit gives a little (microns): report what an encoder at a hard
+        # stop would, so that plans from this state start within the limits.
+        self._positions = np.clip(data.qpos[self._qadr], self._lower, self._upper)
         poses = {}
         for name, body in self._objects.items():
             adr = model.jnt_qposadr[model.body_jntadr[body]]

@@ -380,13 +380,18 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
                        else f'density="{physics.density:.10g}"')
             geom = _shape_geom(obj.shape, meshes, 'pos="0 0 0"',
                                f'name="{_esc(obj.name)}" {_WORLD_BITS[0]} {_WORLD_BITS[1]} '
-                               f'condim="4" friction="{_fmt(physics.friction)}" {inertia}')
+                               f'condim="4" friction="{_fmt(physics.friction)}" {inertia} '
+                               f'solref="{2 * options.timestep:.6g} 1"')
             world_lines.append(
                 f'    <body name="{_esc(obj.name)}" pos="{_fmt(obj.xyz)}" '
                 f'quat="{_fmt((obj.quat[3], obj.quat[0], obj.quat[1], obj.quat[2]))}">\n'
                 f'      <freejoint name="{_esc(obj.name)}"/>\n      {geom}\n    </body>')
     actuators = [f'    <general name="{_esc(j)}" joint="{_esc(j)}" gaintype="fixed" '
                  f'biastype="affine" gainprm="1" biasprm="0 -1 0"/>' for j in actuated]
+    equalities = [f'    <joint joint1="{_esc(follower)}" joint2="{_esc(leader)}" '
+                  f'polycoef="{offset:.10g} {mul:.10g} 0 0 0" solref="{2 * options.timestep:.6g} 1"/>'
+                  for follower, (leader, mul, offset) in cell.mimic.items()
+                  if follower in actuated and leader in actuated]
     return "\n".join([
         f'<mujoco model="{_esc(cell.name)}">',
         '  <compiler angle="radian" autolimits="true" balanceinertia="true" '
@@ -399,6 +404,7 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
         *world_lines,
         "  </worldbody>",
         "  <actuator>", *actuators, "  </actuator>",
+        "  <equality>", *equalities, "  </equality>",
         "</mujoco>",
     ])
 
