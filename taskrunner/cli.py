@@ -382,9 +382,9 @@ def cmd_view(args: argparse.Namespace) -> int:
     from taskrunner.runtime.records import load_record
 
     data_dir = Path(tempfile.mkdtemp(prefix="taskrunner-view-"))
-    values: dict[str, object] = {"data_dir": data_dir,
-                                 "token": args.token or os.environ.get("TASKRUNNER_TOKEN")
-                                 or new_token()}
+    token = args.token or os.environ.get("TASKRUNNER_TOKEN") or new_token()
+    tasks_dir: Path | None = None
+    cells_dir: Path | None = None
     fragment = "#/cell"
     try:
         if args.target and args.target.endswith(".json"):
@@ -395,9 +395,10 @@ def cmd_view(args: argparse.Namespace) -> int:
 
             task_file = resolve_task(args.target)
             spec = load_task(task_file)
-            values.update(tasks_dir=task_file.parent, cells_dir=Path(spec.cell).parent)
+            tasks_dir, cells_dir = task_file.parent, Path(spec.cell).parent
             fragment = f"#/task/{task_file.stem}"
-        settings = Settings.from_env(**values)
+        settings = Settings.from_env(data_dir=data_dir, token=token, tasks_dir=tasks_dir,
+                                     cells_dir=cells_dir)
         if args.target and args.target.endswith(".json"):
             store = RunStore(settings.db_path)
             store.save(record)

@@ -20,7 +20,6 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, HTTPException, Request
 from fastapi.responses import FileResponse, JSONResponse
-from pydantic import BaseModel, ConfigDict, Field
 from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.auth import require_read
@@ -28,7 +27,7 @@ from taskrunner.api.cells import CellRegistry
 from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_work
 from taskrunner.api.requestwork import RequestWork, load_request
 from taskrunner.api.runs import RunManager
-from taskrunner.api.schemas import ErrorBody
+from taskrunner.api.schemas import CheckRequest, ErrorBody
 from taskrunner.api.settings import Settings
 from taskrunner.folders import FileKind
 from taskrunner.viewer import STATIC_DIR
@@ -52,15 +51,9 @@ _STATIC_TYPES = {".html": "text/html; charset=utf-8", ".js": "text/javascript; c
 _NOT_FOUND = "no such file"
 
 
-class TaskRequest(BaseModel):
-    """A task for the view: a file of the tasks folder or inline YAML, with parameters."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    task: str | None = Field(None, max_length=255)
-    yaml: str | None = None
-    parameters: dict[str, Any] = Field(default_factory=dict)
-    seed: int = Field(0, ge=0, le=2**31 - 1)
+class TaskRequest(CheckRequest):
+    """A task for the view: a file of the tasks folder or inline YAML, with parameters
+    and a planner seed (as ``/tasks/check`` takes it)."""
 
 
 def _static(name: str) -> FileResponse:
