@@ -177,6 +177,7 @@ class MujocoBackend(BaseBackend):
         self._history: deque[PhysicsSample] = deque(maxlen=100_000)
         self.notes: list[str] = []
         self.build_seconds = 0.0
+        self.step_seconds = 0.0  # wall s spent stepping the physics (a benchmark's figure)
         self.cache_hit = False
         self.failures: list[str] = []
         self._build(cell)
@@ -420,6 +421,7 @@ class MujocoBackend(BaseBackend):
                     plan = self._plan_chunk()
                 wall = time.perf_counter()
                 self._step_chunk(plan)
+                self.step_seconds += time.perf_counter() - wall
                 with self._lock:
                     self._after_chunk(plan)
                 speed = self._options.speed
