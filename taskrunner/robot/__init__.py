@@ -7,12 +7,14 @@ from pathlib import Path
 from taskrunner.robot.build import Placement, build_model
 from taskrunner.robot.description import RobotDescription, load_description
 from taskrunner.robot.model import EndEffector, Group, JointInfo, RobotInstance, RobotModel
+from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap
 
 __all__ = [
     "EndEffector",
     "Group",
     "JointInfo",
+    "LoadWarning",
     "PackageMap",
     "Placement",
     "RobotDescription",
@@ -24,10 +26,17 @@ __all__ = [
 ]
 
 
-def load_robot(path: str | Path, packages: PackageMap | None = None) -> RobotModel:
+def load_robot(path: str | Path, packages: PackageMap | None = None,
+               strict: bool | None = None) -> RobotModel:
     """Load one robot (manifest, MoveIt config folder, URDF or xacro) as a model.
 
     The robot's root link is placed at the world origin, with no name prefix.
+
+    Args:
+        path: the robot (see :func:`load_description`).
+        packages: package map (default: the environment's and the robot's neighbours').
+        strict: every warning (what MoveIt would skip, a missing mesh, a pose in
+            self-collision…) is an error; None: the ``TASKRUNNER_STRICT`` variable.
     """
     description = load_description(path, packages)
-    return build_model([Placement(description)], name=description.name)
+    return build_model([Placement(description)], name=description.name, strict=strict)

@@ -9,9 +9,10 @@ and every named pose must lie within the joint limits.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import xml.etree.ElementTree as ET
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import cast
 
@@ -21,7 +22,9 @@ import pinocchio as pin
 from taskrunner.errors import RobotDescriptionError, YamlError
 from taskrunner.robot.description import RobotDescription
 from taskrunner.robot.model import EndEffector, Group, JointInfo, Mimic, RobotInstance, RobotModel
-from taskrunner.robot.srdf import Srdf, SrdfEndEffector
+from taskrunner.robot.notes import LoadWarning, raise_if_strict
+from taskrunner.robot.selfcollision import self_collision_warnings
+from taskrunner.robot.srdf import Srdf, SrdfEndEffector, SrdfGroupState
 from taskrunner.robot.urdf import MOVABLE_TYPES, prefixed_copy
 
 __all__ = ["Placement", "build_model"]
@@ -31,6 +34,10 @@ log = logging.getLogger(__name__)
 WORLD = "world"
 # A named pose may sit this far outside a limit (MoveIt configs round to 4-6 digits).
 POSE_LIMIT_TOLERANCE = 1e-6
+# A mimic joint's value in a named pose may differ this much from its relation's.
+MIMIC_TOLERANCE = 1e-4
+# Spellings of a gripper's open and closed poses; either one names the pose.
+GRIPPER_POSE_SPELLINGS = (("open", "opened"), ("closed", "close"))
 
 
 @dataclass(frozen=True)
@@ -72,6 +79,8 @@ def build_model(
     placements: Sequence[Placement],
     name: str | None = None,
     extra_groups: Mapping[str, Sequence[str]] | None = None,
+    strict: bool | None = None,
+    check_self_collision: bool = True,
 ) -> RobotModel:
     """Build one model from one or more placed robot descriptions.
 
@@ -81,10 +90,14 @@ def build_model(
         extra_groups: groups made of (prefixed) subgroups, e.g. ``{"both_arms":
             ["left_arm", "right_arm"]}``; a named pose that every subgroup has becomes
             a named pose of the new group too.
+        strict: turn every warning (content MoveIt would skip, a missing mesh, a named
+            pose in self-collision…) into an error; None: ``TASKRUNNER_STRICT``.
+        check_self_collision: warn when the default state or a named pose is in
+            self-collision (see :mod:`taskrunner.robot.selfcollision`).
 
     Raises:
-        RobotDescriptionError, YamlError: names clash or a file names something that
-            does not exist, a chain is broken, a named pose is outside the limits.
+        RobotDescriptionError, YamlError: names clash, a URDF is broken, a named pose is
+            outside the limits; in strict mode, any warning.
     """
     if not placements:
         raise RobotDescriptionError("a model needs at least one robot")
@@ -97,9 +110,10 @@ def build_model(
     if len(set(names)) != len(names):
         raise RobotDescriptionError(f"robot instance names must be unique (got {names})")
     model_name = name or "+".join(names)
-    xml, tree = _merge_urdf(placements, model_name)
+    warnings: list[LoadWarning] = [w for p in placements for w in p.description.warnings]
+    xml, tree = _merge_urdf(placements, model_name, warnings)
     model, collision_model = _load_pinocchio(xml, placements)
-    joints = _joint_infos(model, tree, placements)
+    joints = _joint_infos(model, tree, placements, warnings)
     by_name = {j.name: j for j in joints}
     instances = tuple(
         RobotInstance(
@@ -112,19 +126,20 @@ def build_model(
     states: dict[str, dict[str, dict[str, float]]] = {}
     end_effectors: dict[str, EndEffector] = {}
     disabled: dict[frozenset[str], str] = {}
-    warnings = [w for p in placements for w in p.description.warnings]
+    initial: dict[str, float] = {}
     for p in placements:
         srdf = p.description.srdf
         if srdf is not None:
             _add_srdf(srdf, p, tree, by_name, groups, states, end_effectors, disabled, warnings)
-        _add_kinematics(p, groups)
+        _add_kinematics(p, groups, warnings)
+        _add_ompl(p, groups, warnings)
+        _add_initial_positions(p, by_name, initial, warnings)
         _add_extra_states(p, groups, by_name, states)
+    aliases = _add_gripper_aliases(end_effectors, states)
     for group_name, subgroups in (extra_groups or {}).items():
         _add_composite_group(group_name, list(subgroups), groups, states, by_name)
     _add_adjacent_pairs(model, collision_model, tree, disabled)
-    for message in warnings:
-        log.warning("%s", message)
-    return RobotModel(
+    robot = RobotModel(
         name=model_name,
         model=model,
         collision_model=collision_model,
@@ -135,8 +150,17 @@ def build_model(
         disabled_collisions=disabled,
         instances=instances,
         urdf_xml=xml,
-        warnings=warnings,
+        pose_aliases=aliases,
+        initial_values=initial,
     )
+    if check_self_collision:
+        warnings += self_collision_warnings(robot)
+    unique = list(dict.fromkeys(warnings))
+    raise_if_strict(unique, strict)
+    robot.warnings = [str(w) for w in unique]
+    for warning in unique:
+        log.warning("%s", warning)
+    return robot
 
 
 def _scaling(description: RobotDescription) -> tuple[float, float]:
@@ -172,7 +196,8 @@ def _premultiply_origin(joint: ET.Element, base: pin.SE3) -> None:
     joint.insert(0, _origin(base * local))
 
 
-def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, _Tree]:
+def _merge_urdf(placements: Sequence[Placement], model_name: str,
+                warnings: list[LoadWarning]) -> tuple[str, _Tree]:
     merged = ET.Element("robot", name=model_name)
     ET.SubElement(merged, "link", name=WORLD)
     tree = _Tree(links=[WORLD])
@@ -182,19 +207,18 @@ def _merge_urdf(placements: Sequence[Placement], model_name: str) -> tuple[str, 
         root = prefixed_copy(urdf, p.prefix)
         root_link = p.prefix + urdf.root_link
         srdf = p.description.srdf
-        mount_name = p.prefix + (srdf.virtual_joints[0].name if srdf and srdf.virtual_joints
-                                 else "world_joint")
+        mounts = [vj.name for vj in (srdf.virtual_joints if srdf else [])
+                  if vj.child_link == urdf.root_link]
+        mount_name = p.prefix + (mounts[0] if mounts else "world_joint")
         # A URDF whose root link is itself called "world" (no prefix) shares our world link:
         # its top joints take the base pose instead of a mount joint.
         shares_world = root_link == WORLD
         if srdf is not None:
             for vj in srdf.virtual_joints:
                 if vj.child_link != urdf.root_link:
-                    raise srdf.error(
-                        vj.line,
+                    warnings.append(LoadWarning(
                         f"virtual_joint {vj.name!r}: child_link {vj.child_link!r} is not the "
-                        f"URDF's root link {urdf.root_link!r}",
-                    )
+                        f"URDF's root link {urdf.root_link!r}; skipped", srdf.path, vj.line))
         for element in root:
             if element.tag not in ("link", "joint", "material"):
                 continue
@@ -258,7 +282,8 @@ def _load_pinocchio(
 
 
 # --------------------------------------------------------------------------- joints
-def _joint_infos(model: pin.Model, tree: _Tree, placements: Sequence[Placement]) -> list[JointInfo]:
+def _joint_infos(model: pin.Model, tree: _Tree, placements: Sequence[Placement],
+                 warnings: list[LoadWarning]) -> list[JointInfo]:
     by_instance = {p.name: p for p in placements}
     joints: list[JointInfo] = []
     overrides_used: set[tuple[str, str]] = set()
@@ -323,7 +348,9 @@ def _joint_infos(model: pin.Model, tree: _Tree, placements: Sequence[Placement])
         if srdf is not None:
             for joint_name in srdf.passive_joints:
                 if joint_name not in known:
-                    raise srdf.error(None, f"passive_joint {joint_name!r} is not a movable joint")
+                    warnings.append(LoadWarning(
+                        f"passive_joint {joint_name!r} is not a movable joint of the URDF; "
+                        "skipped", srdf.path, srdf.passive_lines.get(joint_name)))
     return joints
 
 
@@ -350,25 +377,37 @@ def _add_srdf(
     states: dict[str, dict[str, dict[str, float]]],
     end_effectors: dict[str, EndEffector],
     disabled: dict[frozenset[str], str],
-    warnings: list[str],
+    warnings: list[LoadWarning],
 ) -> None:
+    """Check the SRDF against the merged tree. What MoveIt skips (with a log line) is
+    skipped with a warning; a named pose outside the joint limits is an error."""
     pre = p.prefix
     own_links = {link for link in tree.links if tree.owner.get(("link", link)) == p.name}
     own_joints = {j for j in tree.joint_elements if tree.owner.get(("joint", j)) == p.name}
+
+    def warn(line: int | None, message: str) -> None:
+        warnings.append(LoadWarning(message, srdf.path, line))
+
     eef_of_group: dict[str, SrdfEndEffector] = {}
     for eef in srdf.end_effectors:
         if pre + eef.parent_link not in own_links:
-            raise srdf.error(eef.line, f"end_effector {eef.name!r}: parent_link "
-                             f"{eef.parent_link!r} is not a link of the URDF")
-        for g in (eef.group, eef.parent_group):
-            if g is not None and g not in srdf.groups:
-                raise srdf.error(eef.line, f"end_effector {eef.name!r}: group {g!r} is not "
-                                 "defined in the SRDF")
+            warn(eef.line, f"end_effector {eef.name!r}: parent_link {eef.parent_link!r} is "
+                           "not a link of the URDF; end effector skipped")
+            continue
+        if eef.group not in srdf.groups:
+            warn(eef.line, f"end_effector {eef.name!r}: group {eef.group!r} is not defined "
+                           "in the SRDF; end effector skipped")
+            continue
+        parent_group = eef.parent_group
+        if parent_group is not None and parent_group not in srdf.groups:
+            warn(eef.line, f"end_effector {eef.name!r}: parent_group {parent_group!r} is not "
+                           "defined in the SRDF; the end effector has no parent group")
+            parent_group = None
         end_effectors[pre + eef.name] = EndEffector(
             pre + eef.name, pre + eef.parent_link, pre + eef.group,
-            pre + eef.parent_group if eef.parent_group else None,
+            pre + parent_group if parent_group else None,
         )
-        owner = eef.parent_group or eef.group
+        owner = parent_group or eef.group
         eef_of_group.setdefault(owner, eef)
 
     resolved: dict[str, tuple[list[str], list[str], str, str | None]] = {}
@@ -382,38 +421,47 @@ def _add_srdf(
         base: str | None = None
         tip: str | None = None
         for chain_base, chain_tip in group.chains:
-            for link in (chain_base, chain_tip):
-                if pre + link not in own_links:
-                    raise srdf.error(group.line, f"group {group_name!r}: chain link {link!r} "
-                                     "is not a link of the URDF")
+            line = group.member_line("chain", chain_tip)
+            unknown = [link for link in (chain_base, chain_tip) if pre + link not in own_links]
+            if unknown:
+                warn(line, f"group {group_name!r}: chain link {unknown[0]!r} is not a link "
+                           "of the URDF; chain skipped")
+                continue
             chain = _chain(tree, pre + chain_base, pre + chain_tip)
             if chain is None:
-                raise srdf.error(group.line, f"group {group_name!r}: chain tip {chain_tip!r} "
-                                 f"is not below base {chain_base!r} in the URDF tree")
+                warn(line, f"group {group_name!r}: chain tip {chain_tip!r} is not below base "
+                           f"{chain_base!r} in the URDF tree; chain skipped")
+                continue
             joint_list += [j for j, _ in chain]
             link_list += [link for _, link in chain]
             base = base or pre + chain_base
             tip = pre + chain_tip
         for joint_name in group.joints:
             if pre + joint_name not in own_joints:
-                raise srdf.error(group.line, f"group {group_name!r}: joint {joint_name!r} is "
-                                 "not a joint of the URDF")
+                warn(group.member_line("joint", joint_name),
+                     f"group {group_name!r}: joint {joint_name!r} is not a joint of the URDF; "
+                     "skipped")
+                continue
             joint_list.append(pre + joint_name)
             link_list.append(_joint_link(tree.joint_elements[pre + joint_name], "child"))
         for link in group.links:
             if pre + link not in own_links:
-                raise srdf.error(group.line, f"group {group_name!r}: link {link!r} is not a "
-                                 "link of the URDF")
+                warn(group.member_line("link", link),
+                     f"group {group_name!r}: link {link!r} is not a link of the URDF; skipped")
+                continue
             link_list.append(pre + link)
             if pre + link in tree.parent_of_link:
                 joint_list.append(tree.parent_of_link[pre + link][0])
         for sub in group.subgroups:
+            line = group.member_line("group", sub)
             if sub not in srdf.groups:
-                raise srdf.error(group.line, f"group {group_name!r}: subgroup {sub!r} is not "
-                                 "defined in the SRDF")
+                warn(line, f"group {group_name!r}: subgroup {sub!r} is not defined in the "
+                           "SRDF; skipped")
+                continue
             if sub in stack:
-                raise srdf.error(group.line, f"group {group_name!r}: subgroups form a cycle "
-                                 f"({' -> '.join((*stack, sub))})")
+                warn(line, f"group {group_name!r}: subgroups form a cycle "
+                           f"({' -> '.join((*stack, sub))}); subgroup skipped")
+                continue
             sub_joints, sub_links, sub_base, sub_tip = resolve(sub, (*stack, sub))
             joint_list += sub_joints
             link_list += sub_links
@@ -423,6 +471,8 @@ def _add_srdf(
             first = next((j for j in joint_list if j in tree.joint_elements), None)
             base = (_joint_link(tree.joint_elements[first], "parent")
                     if first else pre + p.description.urdf.root_link)
+        if not joint_list and not link_list:
+            warn(group.line, f"group {group_name!r} is empty")
         resolved[group_name] = (joint_list, link_list, base, tip)
         return resolved[group_name]
 
@@ -447,44 +497,93 @@ def _add_srdf(
             links=tuple(dict.fromkeys(link_list)),
             base_link=base,
             tip_link=tip,
-            subgroups=tuple(pre + s for s in group.subgroups),
+            subgroups=tuple(pre + s for s in group.subgroups if s in srdf.groups),
             end_effector=pre + group_eef.name if group_eef is not None else None,
             robot=p.name,
         )
 
     for state in srdf.group_states:
         if state.group not in srdf.groups:
-            raise srdf.error(state.line, f"group_state {state.name!r}: group {state.group!r} "
-                             "is not defined")
+            warn(state.line, f"group_state {state.name!r}: group {state.group!r} is not "
+                             "defined; named pose skipped")
+            continue
         model_group = groups[pre + state.group]
-        group_joints = set(resolve(state.group, (state.group,))[0])
-        values: dict[str, float] = {}
-        for joint_name, value in state.values.items():
-            line = state.value_lines.get(joint_name, state.line)
-            full = pre + joint_name
-            if full not in group_joints:
-                raise srdf.error(line, f"group_state {state.name!r}: joint {joint_name!r} is "
-                                 f"not in group {state.group!r}")
-            if full not in joints:
-                continue  # a fixed joint listed in a pose: nothing to set
-            _check_in_limits(joints[full], value, lambda msg: srdf.error(line, msg),
-                             f"group_state {state.name!r}")
-            values[full] = value
         if state.name in states.get(model_group.name, {}):
-            raise srdf.error(state.line, f"group_state {state.name!r} of group "
-                             f"{state.group!r} is defined twice")
+            warn(state.line, f"group_state {state.name!r} of group {state.group!r} is "
+                             "defined twice; the first definition is kept")
+            continue
+        group_joints = set(resolve(state.group, (state.group,))[0])
+        values = _state_values(srdf, state, pre, group_joints, joints, warn)
         states.setdefault(model_group.name, {})[state.name] = values
 
     for pair in srdf.disabled_collisions:
         a, b = pre + pair.link1, pre + pair.link2
         missing = [x for x in (pair.link1, pair.link2) if pre + x not in own_links]
         if missing:
-            warnings.append(f"{srdf.path}:{pair.line}: disable_collisions names unknown "
-                            f"link(s) {missing}; entry ignored")
+            warn(pair.line, f"disable_collisions names unknown link(s) {missing}; entry ignored")
             continue
         disabled[frozenset((a, b))] = pair.reason or "SRDF"
     for pair in srdf.enabled_collisions:
         disabled.pop(frozenset((pre + pair.link1, pre + pair.link2)), None)
+
+
+def _state_values(srdf: Srdf, state: SrdfGroupState, pre: str, group_joints: set[str],
+                  joints: dict[str, JointInfo],
+                  warn: Callable[[int | None, str], None]) -> dict[str, float]:
+    """The values a named pose sets: its group's active joints. A mimic joint's
+    value is checked against its relation, then left to follow its source (a value of its
+    own would put the state off the relation). Fixed joints set nothing."""
+    values: dict[str, float] = {}
+    mimics: list[tuple[str, float, int | None]] = []
+    for joint_name, value in state.values.items():
+        line = state.value_lines.get(joint_name, state.line)
+        full = pre + joint_name
+        if full not in group_joints:
+            warn(line, f"group_state {state.name!r}: joint {joint_name!r} is not in group "
+                       f"{state.group!r}; value skipped")
+            continue
+        if full not in joints:
+            continue  # a fixed joint listed in a pose: nothing to set
+        _check_in_limits(joints[full], value, lambda msg, line=line: srdf.error(line, msg),
+                         f"group_state {state.name!r}")
+        if joints[full].mimic is not None:
+            mimics.append((full, value, line))
+        elif not joints[full].passive:  # nothing moves a passive joint (MoveIt's rule too)
+            values[full] = value
+    for full, value, line in mimics:
+        mimic = joints[full].mimic
+        assert mimic is not None
+        if mimic.source not in values:
+            continue  # its source is not in the pose: the source's own value decides
+        expected = mimic.multiplier * values[mimic.source] + mimic.offset
+        if abs(expected - value) > MIMIC_TOLERANCE:
+            warn(line, f"group_state {state.name!r}: mimic joint {full[len(pre):]!r} = "
+                       f"{value:g} does not follow its relation ({mimic.multiplier:g} × "
+                       f"{mimic.source[len(pre):]!r} + {mimic.offset:g} = {expected:g}); "
+                       "the relation's value is used")
+    return values
+
+
+def _add_gripper_aliases(end_effectors: Mapping[str, EndEffector],
+                         states: dict[str, dict[str, dict[str, float]]]
+                         ) -> dict[str, dict[str, str]]:
+    """Give each end effector's group both spellings of its open and closed poses
+    (MoveIt configs say ``open``/``opened`` and ``close``/``closed``): the missing
+    spelling becomes an alias of the one the SRDF defines."""
+    aliases: dict[str, dict[str, str]] = {}
+    for eef in end_effectors.values():
+        poses = states.get(eef.group)
+        if not poses:
+            continue
+        for names in GRIPPER_POSE_SPELLINGS:
+            present = [n for n in names if n in poses]
+            if not present:
+                continue
+            for alias in names:
+                if alias not in poses:
+                    poses[alias] = dict(poses[present[0]])
+                    aliases.setdefault(eef.group, {})[alias] = present[0]
+    return aliases
 
 
 def _check_in_limits(joint: JointInfo, value: float, error, what: str) -> None:  # type: ignore[no-untyped-def]
@@ -511,19 +610,57 @@ def _is_serial(tree: _Tree, joint_names: list[str]) -> bool:
     return True
 
 
-def _add_kinematics(p: Placement, groups: dict[str, Group]) -> None:
-    import dataclasses
-
+def _add_kinematics(p: Placement, groups: dict[str, Group], warnings: list[LoadWarning]) -> None:
+    """IK settings per group; an entry for a group the SRDF lacks is unused (as in MoveIt)."""
     for group_name, settings in p.description.kinematics.items():
         full = p.prefix + group_name
         if full not in groups or groups[full].robot != p.name:
             own = sorted(g[len(p.prefix):] for g, v in groups.items() if v.robot == p.name)
-            raise YamlError(
-                f"group {group_name!r} is not defined in the SRDF (groups: {', '.join(own)})",
-                p.description.kinematics_path,
-                settings.line,
-            )
+            warnings.append(LoadWarning(
+                f"group {group_name!r} is not defined in the SRDF (groups: {', '.join(own)}); "
+                "its settings are not used", p.description.kinematics_path, settings.line))
+            continue
         groups[full] = dataclasses.replace(groups[full], kinematics=settings)
+
+
+def _add_ompl(p: Placement, groups: dict[str, Group], warnings: list[LoadWarning]) -> None:
+    """Each group's default planner; an entry for a group the SRDF lacks is unused."""
+    config = p.description.ompl
+    if config is None:
+        return
+    for group_name, settings in config.groups.items():
+        full = p.prefix + group_name
+        if full not in groups or groups[full].robot != p.name:
+            warnings.append(LoadWarning(
+                f"group {group_name!r} is not defined in the SRDF; its planner settings are "
+                "not used", config.path, settings.line))
+            continue
+        groups[full] = dataclasses.replace(groups[full], planner=settings)
+
+
+def _add_initial_positions(p: Placement, joints: dict[str, JointInfo],
+                           initial: dict[str, float], warnings: list[LoadWarning]) -> None:
+    """The start values of ``initial_positions.yaml``: unknown, mimic or passive joints
+    and values outside the limits are skipped with a warning."""
+    description = p.description
+    for joint_name, value in description.initial_positions.items():
+        line = description.initial_positions_lines.get(joint_name)
+        full = p.prefix + joint_name
+        joint = joints.get(full)
+        problem = None
+        if joint is None or joint.robot != p.name:
+            problem = f"joint {joint_name!r} is not a movable joint of the URDF"
+        elif joint.mimic is not None:
+            continue  # it follows its source
+        elif not (joint.lower - POSE_LIMIT_TOLERANCE <= value
+                  <= joint.upper + POSE_LIMIT_TOLERANCE):
+            problem = (f"joint {joint_name!r} = {value} is outside its limits "
+                       f"[{joint.lower}, {joint.upper}]")
+        if problem is not None:
+            warnings.append(LoadWarning(f"initial_positions: {problem}; skipped",
+                                        description.initial_positions_path, line))
+            continue
+        initial[full] = value
 
 
 def _add_extra_states(

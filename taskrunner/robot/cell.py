@@ -27,6 +27,7 @@ group per robot group (prefixed), the spanning groups, and the fixed objects.
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
@@ -40,7 +41,9 @@ from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, acti
 from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import load_description
 from taskrunner.robot.model import RobotModel
+from taskrunner.robot.notes import raise_if_strict
 from taskrunner.robot.packages import PackageMap
+from taskrunner.robot.selfcollision import self_collision_warnings
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.taught import apply_taught
 from taskrunner.textfile import resolve_path
@@ -54,6 +57,8 @@ from taskrunner.validation import (
 from taskrunner.yamlfile import LineDict, line_of, load_yaml
 
 __all__ = ["Cell", "CellObject", "load_cell", "load_cell_or_robot"]
+
+log = logging.getLogger(__name__)
 
 Position = Annotated[list[Metres], Field(min_length=3, max_length=3)]
 Angles = Annotated[list[Radians], Field(min_length=3, max_length=3)]
@@ -144,8 +149,11 @@ class Cell:
     description: str = ""
 
     def start_state(self) -> np.ndarray:
-        """The state the cell starts in: default joint values, then the ``start`` poses."""
+        """The state the cell starts in: default joint values, the robots'
+        ``initial_positions.yaml``, then the ``start`` poses."""
         q = self.model.default_state()
+        if self.model.initial_values:
+            q = self.model.state_with(q, self.model.initial_values)
         for group, pose in self.start.items():
             q = self.model.state_with(q, self.model.named_state(group, pose))
         return q
@@ -171,16 +179,28 @@ def _shape(spec: ObjectSpec, base_dir: Path, packages: PackageMap) -> Shape:
     return Mesh(packages.resolve(spec.file, base_dir), tuple(spec.scale))  # type: ignore[arg-type]
 
 
-def _resolve_robot(value: str, cell_dir: Path) -> Path:
-    candidates = [cell_dir / value, cell_dir.parent / value]
-    for candidate in candidates:
+def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:
+    """A robot named by a cell: ``package://pkg[/path]``, an absolute path, or a path
+    relative to the cell's folder or the folder above it."""
+    if value.startswith("package://"):
+        try:
+            candidate = packages.resolve(value, cell_dir)
+        except RobotDescriptionError as exc:
+            raise FileNotFoundError(exc.reason) from None
         if candidate.exists():
             return candidate
+        raise FileNotFoundError(str(candidate))
+    expanded = Path(value).expanduser()
+    candidates = [expanded] if expanded.is_absolute() else [cell_dir / value,
+                                                           cell_dir.parent / value]
+    for candidate in candidates:
+        if candidate.exists():
+            return candidate.resolve()
     raise FileNotFoundError(", ".join(str(c) for c in candidates))
 
 
 def load_cell(path: str | Path, packages: PackageMap | None = None,
-              policy: FolderPolicy | None = None) -> Cell:
+              policy: FolderPolicy | None = None, strict: bool | None = None) -> Cell:
     """Load a cell file (see the module docstring).
 
     Args:
@@ -189,6 +209,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         policy: the folders the cell and its robots may come from (default: the active
             policy, if any; none: anything loads). Robots outside the policy's robot
             folders are refused before any of their files is read (xacro runs code).
+        strict: every warning of a robot is an error (see
+            :func:`taskrunner.robot.load_robot`).
 
     Raises:
         YamlError: the file does not match the cell schema (with file:line).
@@ -202,7 +224,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
     node = load_yaml(path)
     spec = validate_node(CellSpec, node, path)
     robots_node = node["robots"]
-    packages = packages or PackageMap(search_roots=[path.parent.parent])
+    packages = packages if packages is not None else PackageMap(
+        search_roots=[path.parent.parent])
 
     placements: list[Placement] = []
     seen: set[str] = set()
@@ -217,7 +240,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
                             f"'world' frame (got {robot.base.frame!r})", path,
                             line_of(item, "base"))
         try:
-            robot_path = _resolve_robot(robot.robot, path.parent)
+            robot_path = _resolve_robot(robot.robot, path.parent, packages)
         except FileNotFoundError as exc:
             raise YamlError(f"robots[{i}].robot: {robot.robot!r} not found (looked at {exc})",
                             path, line_of(item, "robot")) from None
@@ -227,8 +250,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             except PathNotAllowedError as exc:
                 raise PathNotAllowedError(f"robots[{i}].robot: {exc.reason}", path,
                                           line_of(item, "robot")) from None
-        robot_dir = robot_path if robot_path.is_dir() else robot_path.parent
-        packages.discover(robot_dir)
+        # The packages around the robot, as when it is loaded on its own (run-task info).
+        packages.discover_around(robot_path)
         lines: dict[tuple[str, str], tuple[str, int | None]] = {}
         poses_node = item.get("poses", {}) if isinstance(item, LineDict) else {}
         for group_name, poses in robot.poses.items():
@@ -240,7 +263,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
                       robot.base.se3(), robot.poses, lines)
         )
     try:
-        model = build_model(placements, name=spec.name, extra_groups=spec.groups)
+        model = build_model(placements, name=spec.name, extra_groups=spec.groups,
+                            strict=strict, check_self_collision=False)
     except RobotDescriptionError as exc:
         if exc.path is None:  # a problem with the cell's own declarations
             raise YamlError(exc.reason, path, line_of(node, "groups")) from None
@@ -277,17 +301,25 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         except UnknownNameError as exc:
             raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
     cell = Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
+    # Self-collision from where the cell starts (its start poses), not the zero state.
+    start_name = "the cell's start state" if spec.start else None
+    found = self_collision_warnings(model, cell.start_state(), start_name)
+    raise_if_strict(found, strict)
+    for warning in found:
+        log.warning("%s", warning)
+        model.warnings.append(str(warning))
     apply_taught(cell)  # poses taught on this cell (the API's), if a set is active
     return cell
 
 
-def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None) -> Cell:
+def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None,
+                       strict: bool | None = None) -> Cell:
     """A cell file, or a robot (manifest, folder, URDF, xacro) as a one-robot cell with no
     objects."""
     from taskrunner.robot import load_robot
 
     path = Path(path)
     if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
-        return load_cell(path, packages)
-    model = load_robot(path, packages)
+        return load_cell(path, packages, strict=strict)
+    model = load_robot(path, packages, strict=strict)
     return Cell(model.name, path, model, (), {})

@@ -23,7 +23,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import UnknownNameError
-from taskrunner.robot.moveit_yaml import KinematicsSettings
+from taskrunner.robot.moveit_yaml import KinematicsSettings, OmplGroupSettings
 from taskrunner.types import JointState
 
 __all__ = ["EndEffector", "Group", "JointInfo", "Mimic", "RobotInstance", "RobotModel"]
@@ -91,6 +91,15 @@ class Group:
     kinematics: KinematicsSettings | None = None
     end_effector: str | None = None
     robot: str | None = None
+    planner: OmplGroupSettings | None = None
+
+    @property
+    def default_planner(self) -> str | None:
+        """The OMPL planner ``ompl_planning.yaml`` gives this group by default (its
+        type, ``geometric::RRTConnect``, else the configuration's name), if any."""
+        if self.planner is None:
+            return None
+        return self.planner.planner_type or self.planner.default_planner_config
 
     @property
     def position_only_ik(self) -> bool:
@@ -141,6 +150,10 @@ class RobotModel:
     instances: tuple[RobotInstance, ...]
     urdf_xml: str
     warnings: list[str] = field(default_factory=list)
+    pose_aliases: dict[str, dict[str, str]] = field(default_factory=dict)
+    initial_values: dict[str, float] = field(default_factory=dict)
+    """Joint values of the robots' ``initial_positions.yaml`` (the start state)."""
+    """group → {alias: pose}: a gripper's other spelling of ``open``/``closed``."""
 
     def __post_init__(self) -> None:
         self.joint_names: tuple[str, ...] = tuple(j.name for j in self.joints)
@@ -219,6 +232,13 @@ class RobotModel:
     def named_state_names(self, group: str) -> list[str]:
         self.group(group)
         return sorted(self.named_states.get(group, {}))
+
+    def links_without_collision_geometry(self) -> list[str]:
+        """Links (not the world frame) that have no collision geometry, in model order."""
+        with_geometry = {self.model.frames[g.parentFrame].name
+                         for g in self.collision_model.geometryObjects}
+        return [link for link in self.link_names
+                if link not in with_geometry and link != "world"]
 
     def named_state(self, group: str, name: str) -> JointState:
         """The values of named pose ``name`` of ``group`` (the joints it sets)."""

@@ -1,4 +1,5 @@
-"""MoveIt's ``kinematics.yaml`` and ``joint_limits.yaml``, read without ROS.
+"""MoveIt's ``kinematics.yaml``, ``joint_limits.yaml``, ``ompl_planning.yaml`` and
+``initial_positions.yaml``, read without ROS.
 
 Both accept the plain form the Setup Assistant writes and the ROS 2 parameter form
 (``/**: ros__parameters: robot_description_kinematics: …``). Values are checked for type
@@ -11,6 +12,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from taskrunner.errors import YamlError
 from taskrunner.yamlfile import LineDict, line_of, load_yaml
 
@@ -18,8 +21,12 @@ __all__ = [
     "JointLimitOverride",
     "JointLimitsConfig",
     "KinematicsSettings",
+    "OmplConfig",
+    "OmplGroupSettings",
+    "read_initial_positions_yaml",
     "read_joint_limits_yaml",
     "read_kinematics_yaml",
+    "read_ompl_planning_yaml",
 ]
 
 
@@ -200,3 +207,116 @@ def read_joint_limits_yaml(path: str | Path) -> JointLimitsConfig:
         acceleration_scale if acceleration_scale is not None else 1.0,
         joints,
     )
+
+
+# --------------------------------------------------------------------------- ompl_planning
+# Top-level keys of a ROS 2 ompl_planning.yaml that are not groups.
+_OMPL_TOP_KEYS = {"planner_configs", "planning_plugin", "planning_plugins", "request_adapters",
+                  "response_adapters", "start_state_max_bounds_error"}
+
+
+@dataclass(frozen=True)
+class OmplGroupSettings:
+    """One group's entry of ``ompl_planning.yaml``.
+
+    Attributes:
+        default_planner_config: the planner configuration used when a request names none
+            (``default_planner_config``, else the first of ``planner_configs``).
+        planner_type: its OMPL planner (``geometric::RRTConnect``), when the file defines
+            the configuration.
+        planner_settings: that configuration's parameters (``range``, …).
+        settings: the group's other keys (``longest_valid_segment_fraction``, …).
+        line: where the group's entry starts.
+    """
+
+    default_planner_config: str | None
+    planner_type: str | None
+    planner_settings: dict[str, Any]
+    settings: dict[str, Any]
+    line: int | None
+
+
+@dataclass(frozen=True)
+class OmplConfig:
+    """``ompl_planning.yaml``: per group, its default planner and settings."""
+
+    path: Path
+    groups: dict[str, OmplGroupSettings]
+    warnings: tuple[tuple[str, int | None], ...] = ()
+
+
+def read_ompl_planning_yaml(path: str | Path) -> OmplConfig:
+    """Read MoveIt's ``ompl_planning.yaml`` (plain or ROS 2 parameter form).
+
+    A group whose default names a configuration the file does not define is kept, with
+    a warning (``warnings``: message, line); unknown group names are checked against
+    the SRDF when the model is built.
+
+    Raises:
+        YamlError: bad YAML, or a shape that is not MoveIt's.
+    """
+    path = Path(path)
+    data = _unwrap_ros_parameters(load_yaml(path), "planning_pipelines")
+    if data is None:
+        return OmplConfig(path, {})
+    if not isinstance(data, LineDict):
+        raise YamlError("ompl_planning.yaml must be a mapping", path, line_of(data))
+    if "ompl" in data and isinstance(data["ompl"], LineDict):
+        data = data["ompl"]  # the ROS 2 pipeline form: planning_pipelines: … ompl: {…}
+    configs = data.get("planner_configs") or LineDict()
+    if not isinstance(configs, dict):
+        raise YamlError("'planner_configs' must map names to settings", path,
+                        line_of(data, "planner_configs"))
+    warnings: list[tuple[str, int | None]] = []
+    groups: dict[str, OmplGroupSettings] = {}
+    for group, entry in data.items():
+        if group in _OMPL_TOP_KEYS or not isinstance(entry, dict):
+            continue
+        names = entry.get("planner_configs") or []
+        if not isinstance(names, list) or not all(isinstance(n, str) for n in names):
+            raise YamlError(f"group {group!r}: 'planner_configs' must be a list of names",
+                            path, line_of(entry, "planner_configs"))
+        default = entry.get("default_planner_config") or (names[0] if names else None)
+        planner_type, planner_settings = None, {}
+        if default is not None:
+            config = configs.get(default)
+            if isinstance(config, dict):
+                planner_type = str(config.get("type", "")) or None
+                planner_settings = {str(k): v for k, v in config.items() if k != "type"}
+            else:
+                warnings.append((f"group {group!r}: planner configuration {default!r} is "
+                                 "not defined under 'planner_configs'",
+                                 line_of(entry, "default_planner_config")
+                                 if "default_planner_config" in entry else line_of(data, group)))
+        settings = {str(k): v for k, v in entry.items()
+                    if k not in ("planner_configs", "default_planner_config")}
+        groups[str(group)] = OmplGroupSettings(
+            str(default) if default is not None else None, planner_type, planner_settings,
+            settings, line_of(data, group))
+    return OmplConfig(path, groups, tuple(warnings))
+
+
+# --------------------------------------------------------------------------- initial_positions
+def read_initial_positions_yaml(path: str | Path) -> tuple[dict[str, float], dict[str, int | None]]:
+    """Read ``initial_positions.yaml`` (``initial_positions: {joint: value}``, rad or m):
+    the joint values and the line of each.
+
+    Raises:
+        YamlError: bad YAML, or a value that is not a number.
+    """
+    path = Path(path)
+    data = load_yaml(path)
+    node = data.get("initial_positions") if isinstance(data, dict) else None
+    if not isinstance(node, LineDict):
+        raise YamlError("expected 'initial_positions: {joint: value}'", path, line_of(data))
+    values: dict[str, float] = {}
+    lines: dict[str, int | None] = {}
+    for joint in node:
+        value = _number(path, node, joint)
+        assert value is not None
+        if not np.isfinite(value):
+            raise YamlError(f"'{joint}' must be a finite number (got {value})", path,
+                            line_of(node, joint))
+        values[str(joint)] = value
+        lines[str(joint)] = line_of(node, joint)
+    return values, lines

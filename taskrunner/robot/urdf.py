@@ -4,8 +4,9 @@ What comes out of :func:`read_urdf` is an XML tree that pinocchio can load with 
 around: xacro expanded, ``package://`` and relative mesh paths made absolute, the tags
 pinocchio has no use for (``<ros2_control>``, ``<gazebo>``, ``<transmission>``) removed,
 and the structure checked (unique names, every parent and child link present, one root,
-mimic joints naming a real joint). A missing collision mesh is an error; a missing
-visual-only mesh is a warning and that visual is dropped, since the model stays usable.
+mimic joints naming a real joint). A missing mesh is a warning naming the link and the
+path: a visual is dropped, a collision falls back to the link's visual geometry, else
+the link has no collision geometry.
 """
 
 from __future__ import annotations
@@ -16,7 +17,8 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
-from taskrunner.errors import MissingMeshError, RobotDescriptionError
+from taskrunner.errors import RobotDescriptionError
+from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap
 from taskrunner.robot.xacrofile import XacroOptions, expand_xacro
 from taskrunner.robot.xmldoc import XmlDocument, parse_xml
@@ -84,7 +86,7 @@ class UrdfDescription:
     root_link: str
     links: list[str]
     joints: dict[str, tuple[str, str, str]]
-    warnings: list[str]
+    warnings: list[LoadWarning]
 
     @property
     def root(self) -> ET.Element:
@@ -108,7 +110,6 @@ def read_urdf(
 
     Raises:
         RobotDescriptionError: unreadable, not well-formed, or structurally invalid.
-        MissingMeshError: a collision mesh file does not exist.
     """
     path = Path(path)
     packages = packages or PackageMap()
@@ -127,7 +128,7 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
     root = doc.root
     if root.tag != "robot":
         raise doc.error(root, f"root element must be <robot> (got <{root.tag}>)")
-    warnings: list[str] = []
+    warnings: list[LoadWarning] = []
     for tag in IGNORED_TAGS:
         for element in root.findall(tag):
             root.remove(element)
@@ -263,40 +264,58 @@ def _resolve_meshes(
     link: ET.Element,
     source: Path,
     packages: PackageMap,
-    warnings: list[str],
+    warnings: list[LoadWarning],
 ) -> None:
-    """Make mesh paths absolute; drop visuals whose mesh is missing, fail on collisions."""
+    """Make mesh paths absolute. A visual whose mesh is missing is dropped; a collision
+    whose mesh is missing too, and a link left without collision geometry takes its
+    visual geometry instead, else has none (each with a warning naming link and path)."""
     link_name = link.get("name")
-    for kind in ("collision", "visual"):
-        for element in list(link.findall(kind)):
-            mesh = element.find("geometry/mesh")
-            if mesh is None:
-                continue
-            uri = mesh.get("filename", "")
-            try:
-                resolved = packages.resolve(uri, source.parent)
-            except RobotDescriptionError as exc:
-                if kind == "visual":
-                    warnings.append(f"{source}: link {link_name!r}: visual mesh {uri!r}: {exc}")
-                    link.remove(element)
-                    continue
-                raise doc.error(
-                    element, f"link {link_name!r}: collision mesh {uri!r}: {exc.reason}"
-                ) from None
-            if not resolved.is_file():
-                if kind == "visual":
-                    warnings.append(
-                        f"{source}: link {link_name!r}: visual mesh {uri!r} not found "
-                        f"at {resolved}; visual dropped"
-                    )
-                    link.remove(element)
-                    continue
-                raise MissingMeshError(
-                    f"link {link_name!r}: collision mesh {uri!r} not found (looked at {resolved})",
-                    source,
-                    doc.line(element),
-                )
-            mesh.set("filename", str(resolved))
+
+    def missing(element: ET.Element, kind: str) -> str | None:
+        """Why the element's mesh cannot be used, or None (its path made absolute)."""
+        mesh = element.find("geometry/mesh")
+        if mesh is None:
+            return None
+        uri = mesh.get("filename", "")
+        try:
+            resolved = packages.resolve(uri, source.parent)
+        except RobotDescriptionError as exc:
+            return f"link {link_name!r}: {kind} mesh {uri!r}: {exc.reason}"
+        if not resolved.is_file():
+            return f"link {link_name!r}: {kind} mesh {uri!r} not found (looked at {resolved})"
+        mesh.set("filename", str(resolved))
+        return None
+
+    for element in list(link.findall("visual")):
+        problem = missing(element, "visual")
+        if problem is not None:
+            warnings.append(LoadWarning(f"{problem}; visual dropped", source, doc.line(element)))
+            link.remove(element)
+    collisions = link.findall("collision")
+    dropped: list[tuple[ET.Element, str]] = []
+    for element in collisions:
+        problem = missing(element, "collision")
+        if problem is not None:
+            dropped.append((element, problem))
+            link.remove(element)
+    if not dropped:
+        return
+    visuals = link.findall("visual")
+    fallback = len(dropped) == len(collisions) and visuals
+    for element, problem in dropped:
+        if fallback:
+            what = "its visual geometry is used for collisions"
+        elif len(dropped) < len(collisions):
+            what = "that collision element is dropped"
+        else:
+            what = "the link has no collision geometry"
+        warnings.append(LoadWarning(f"{problem}; {what}", source, doc.line(element)))
+    if fallback:
+        for visual in visuals:
+            collision = ET.SubElement(link, "collision")
+            for child in visual:
+                if child.tag != "material":
+                    collision.append(copy.deepcopy(child))
 
 
 def prefixed_copy(urdf: UrdfDescription, prefix: str) -> ET.Element:

@@ -115,7 +115,12 @@ def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] 
         child.join()
     if kind == "error":
         raise value
-    return str(value)
+    text, found_warnings = value
+    # A package found twice that the expansion used: the child's copy of the map warned.
+    for warning in found_warnings:
+        if warning not in packages.warnings:
+            packages.warnings.append(warning)
+    return str(text)
 
 
 def _child_main(sender: Connection, path: Path, packages: PackageMap,
@@ -123,7 +128,9 @@ def _child_main(sender: Connection, path: Path, packages: PackageMap,
     """The child: limit the address space, expand, send ("text", str) or ("error", exc)."""
     try:
         _limit_address_space(options.memory_limit_mb)
-        result: tuple[str, Any] = ("text", _expand(path, packages, mappings, options.max_bytes))
+        known = len(packages.warnings)
+        text = _expand(path, packages, mappings, options.max_bytes)
+        result: tuple[str, Any] = ("text", (text, packages.warnings[known:]))
     except RobotDescriptionError as exc:
         result = ("error", exc)
     except MemoryError:

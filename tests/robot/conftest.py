@@ -87,13 +87,14 @@ class MiniRobot:
     def line(self, name: str, needle: str, after: str | None = None) -> int:
         return line_in(self.text(name), needle, after)
 
-    def load(self) -> RobotModel:
-        return load_robot(self.folder, self.packages)
+    def load(self, strict: bool | None = None) -> RobotModel:
+        return load_robot(self.folder, self.packages, strict=strict)
 
-    def error(self, kind: type[TaskrunnerError] = InputError) -> TaskrunnerError:
+    def error(self, kind: type[TaskrunnerError] = InputError,
+              strict: bool | None = None) -> TaskrunnerError:
         """The error that loading raises (fails the test unless it is a ``kind``)."""
         with pytest.raises(TaskrunnerError) as info:
-            self.load()
+            self.load(strict)
         assert isinstance(info.value, kind), f"expected {kind.__name__}, got {info.value!r}"
         return info.value
 

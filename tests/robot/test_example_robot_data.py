@@ -26,7 +26,10 @@ def test_panda_urdf_loads_with_its_mimic_finger(erd_robots):
     assert m.groups == {}  # its SRDF is in srdf/, not beside the URDF
     assert m.has_link("panda_hand_tcp")
     assert m.collision_model.ngeoms > 0
-    assert m.warnings == []
+    # No SRDF, so no collision matrix: its default state touches itself, as in MoveIt.
+    assert len(m.warnings) == 1
+    assert "the default state (every joint at 0, clipped to its limits) is in self-collision (" in m.warnings[0]
+    assert "run `run-task collision-matrix ROBOT --write SRDF`" in m.warnings[0]
 
 
 def test_ur5_robot_urdf_loads(erd_robots):

@@ -227,7 +227,8 @@ def test_folder_that_is_no_robot_is_refused(tmp_path):
     with pytest.raises(RobotDescriptionError) as info:
         load_robot(tmp_path)
     assert str(info.value) == (
-        f"{tmp_path}: folder holds neither a robot.yaml nor a MoveIt config package (.setup_assistant)"
+        f"{tmp_path}: folder holds neither a robot.yaml nor a MoveIt config package (.setup_assistant, "
+        "launch/planning_context.launch, or config/*.srdf with config/*.urdf.xacro)"
     )
 
 

@@ -48,7 +48,7 @@ def test_unknown_package_error_names_it_and_the_known_ones(tmp_path):
     message = str(info.value)
     assert message.startswith("package 'their_description' not found (known packages: ")
     assert "mine" in message
-    assert "add its folder to the package map" in message
+    assert "add its folder with --package-path or TASKRUNNER_PACKAGE_PATH" in message
 
 
 def test_example_robot_data_is_known_under_both_of_its_names(example_robot_data):
