@@ -81,7 +81,9 @@ class PlannerOptions:
 
     Attributes:
         planner: OMPL planner by name (see ``PLANNERS``); RRTConnect by default.
-        planning_time: seconds per attempt.
+        planning_time: seconds per attempt, a cap and not a target: every planner but
+            the optimizing ones with ``refine`` returns at its first solution. 5 s by
+            default (MoveIt's default), long enough for the hard benchmark classes.
         attempts: independent attempts (each with ``planning_time``) before giving up.
         seed: seeds OMPL's sampling and the IK goal sampling: the same seed, scene and
             request give the same path.
@@ -100,7 +102,7 @@ class PlannerOptions:
     """
 
     planner: str = "RRTConnect"
-    planning_time: float = 1.0
+    planning_time: float = 5.0
     attempts: int = 1
     seed: int = 0
     longest_valid_segment: float = 0.05
