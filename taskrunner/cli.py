@@ -62,6 +62,33 @@ def _fmt(values: np.ndarray) -> str:
     return "[" + ", ".join(f"{v:+.3f}" for v in values) + "]"
 
 
+def _add_robot_options(parser: argparse.ArgumentParser) -> None:
+    """``--package-path`` and ``--strict``, for every command that loads robots."""
+    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                        help="also look for ROS packages under DIR (repeatable; before "
+                             "TASKRUNNER_PACKAGE_PATH, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)")
+    parser.add_argument("--strict", action="store_true",
+                        help="robot file warnings (what MoveIt would skip) are errors")
+
+
+def _apply_robot_options(args: argparse.Namespace) -> None:
+    """Hand ``--package-path`` and ``--strict`` to every robot loader, in this process and
+    in the worker processes it starts, through the environment."""
+    from taskrunner.robot.notes import STRICT_ENV
+    from taskrunner.robot.packages import PACKAGE_PATH_ENV
+
+    folders = [Path(p).expanduser().resolve() for p in getattr(args, "package_path", [])]
+    missing = [str(f) for f in folders if not f.is_dir()]
+    if missing:
+        raise InputError(f"'--package-path' must be a folder (got {', '.join(missing)})")
+    if folders:
+        before = os.environ.get(PACKAGE_PATH_ENV)
+        os.environ[PACKAGE_PATH_ENV] = os.pathsep.join(
+            [*map(str, folders), *([before] if before else [])])
+    if getattr(args, "strict", False):
+        os.environ[STRICT_ENV] = "1"
+
+
 def cmd_info(args: argparse.Namespace) -> int:
     cell = _load(args.path)
     model = cell.model
@@ -69,12 +96,24 @@ def cmd_info(args: argparse.Namespace) -> int:
     for inst in model.instances:
         xyz = _fmt(inst.base.translation)
         out.append(f"  robot {inst.name!r} prefix {inst.prefix!r} at {xyz}  ({inst.source})")
+        out += [f"    {line}" for line in inst.describe_files()]
     out.append("groups:")
     for group in model.groups.values():
-        poses = ", ".join(model.named_state_names(group.name)) or "-"
+        aliases = model.pose_aliases.get(group.name, {})
+        poses = ", ".join(f"{n} (= {aliases[n]})" if n in aliases else n
+                          for n in model.named_state_names(group.name)) or "-"
         ik = " position-only IK" if group.position_only_ik else ""
+        planner = f", planner {group.default_planner}" if group.default_planner else ""
         out.append(f"  {group.name}: {len(group.joint_names)} joints, tip {group.tip_link}"
-                   f"{ik}; poses: {poses}")
+                   f"{ik}{planner}; poses: {poses}")
+    if model.end_effectors:
+        out.append("end effectors:")
+        for eef in model.end_effectors.values():
+            out.append(f"  {eef.name}: group {eef.group} on {eef.parent_link}"
+                       f" (arm {eef.parent_group or '-'})")
+    bare = model.links_without_collision_geometry()
+    if bare:
+        out.append(f"links without collision geometry: {', '.join(bare)}")
     if cell.objects:
         out.append("objects:")
         for obj in cell.objects:
@@ -523,6 +562,8 @@ def _parser() -> argparse.ArgumentParser:
     info = sub.add_parser("info", help="describe a cell or robot")
     info.add_argument("path", help="cell file, robot folder or file, MoveIt config package, "
                                    "or a shipped cell's or robot's name")
+    for loads_robots in (run, check, demo, hw, info):
+        _add_robot_options(loads_robots)
     serve = sub.add_parser("serve", help="serve the REST API with uvicorn")
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
     serve.add_argument("--port", type=int, default=8000, help="port (8000)")
@@ -564,6 +605,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve}
     try:
+        _apply_robot_options(args)
         return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:
         print(f"error: {exc}", file=sys.stderr)

@@ -118,7 +118,8 @@ def build_model(
     instances = tuple(
         RobotInstance(
             p.name, p.prefix, pin.SE3(p.base), p.description.source, p.description.hardware_path,
-            *_scaling(p.description),
+            *_scaling(p.description), p.description.layout,
+            tuple(p.description.files.items()), tuple(p.description.notes),
         )
         for p in placements
     )

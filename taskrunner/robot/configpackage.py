@@ -298,22 +298,23 @@ def _param_file(launch: _Launch, element: ET.Element) -> tuple[Path, dict[str, s
     command = element.get("command")
     if not command:
         raise doc.error(element, "neither 'textfile' nor 'command'")
+    # xacro itself is no package of ours; the rest is substituted before splitting
+    # (quotes in the launch file keep substituted paths with spaces whole).
+    command = re.sub(r"\$\(find xacro\)/", "", command)
     try:
-        tokens = shlex.split(command)
+        tokens = shlex.split(launch.substitute(command, element))
     except ValueError as exc:
         raise doc.error(element, f"'command' does not parse: {exc}") from None
     files: list[Path] = []
     args: dict[str, str] = {}
     for token in tokens:
-        if re.fullmatch(r"(\$\(find xacro\)/)?(xacro|xacro\.py|rosrun)", token) or (
-                token.startswith("-")) or token == "xacro":
+        if token in ("xacro", "xacro.py", "rosrun") or token.startswith("-"):
             continue
-        value = launch.substitute(token, element)
-        name, sep, arg = value.partition(":=")
+        name, sep, arg = token.partition(":=")
         if sep:
             args[name] = arg
         else:
-            files.append(Path(value))
+            files.append(Path(token))
     if len(files) != 1:
         raise doc.error(element, f"'command' must name one file (got {command!r})")
     if not files[0].is_file():

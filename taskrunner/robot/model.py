@@ -133,6 +133,16 @@ class RobotInstance:
     hardware_path: Path | None = None
     velocity_scaling: float = 1.0
     acceleration_scaling: float = 1.0
+    layout: str = ""
+    files: tuple[tuple[str, Path], ...] = ()
+    notes: tuple[str, ...] = ()
+
+    def describe_files(self) -> list[str]:
+        """Which files the robot was loaded from and why, for ``run-task info``."""
+        out = [f"loaded as: {self.layout}"] if self.layout else []
+        out += [f"{role}: {path}" for role, path in self.files]
+        out += [f"note: {note}" for note in self.notes]
+        return out
 
 
 @dataclass

@@ -32,7 +32,8 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import InputError, TaskrunnerError
-from taskrunner.robot import RobotModel, load_robot
+from taskrunner.resources import resolve_cell
+from taskrunner.robot import PackageMap, Placement, RobotModel, build_model, load_description
 from taskrunner.scene.geometry import LinkGeometry, robot_link_geometry
 
 __all__ = [
@@ -277,7 +278,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         prog="run-task collision-matrix",
         description="Generate a robot's self-collision matrix (SRDF disable_collisions).",
     )
-    parser.add_argument("robot", help="robot.yaml, MoveIt config folder, URDF or xacro")
+    parser.add_argument("robot", help="robot.yaml, MoveIt config folder, URDF or xacro, or a "
+                                      "shipped robot's name (servo_arm, panda, ur5)")
     parser.add_argument("--samples", type=int, default=10000, help="random states (10000)")
     parser.add_argument("--seed", type=int, default=0, help="random seed (0)")
     parser.add_argument("--write", metavar="SRDF", type=Path,
@@ -286,9 +288,20 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help="with --write: keep old entries for pairs not generated")
     parser.add_argument("--meshes", action="store_true",
                         help="check link meshes as meshes, not convex hulls")
+    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                        type=Path, help="also look for ROS packages under DIR (repeatable)")
     args = parser.parse_args(argv)
     try:
-        robot = load_robot(args.robot)
+        packages = PackageMap()
+        for folder in args.package_path:
+            if not folder.is_dir():
+                raise InputError(f"'--package-path' must be a folder (got {folder})")
+            packages.discover(folder)
+        robot_path = resolve_cell(args.robot)
+        packages.discover_around(robot_path)
+        # The matrix is what fixes a pose in self-collision: no such warning here.
+        robot = build_model([Placement(load_description(robot_path, packages))],
+                            check_self_collision=False)
         entries = generate_collision_matrix(
             robot, args.samples, args.seed, MatrixOptions(convex_meshes=not args.meshes)
         )
@@ -305,7 +318,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             sys.stderr.write(f"wrote {path}\n")
     except (TaskrunnerError, ValueError, OSError) as exc:
         sys.stderr.write(f"error: {exc}\n")
-        return 1
+        return 2  # invalid input, as for every run-task command
     return 0
 
 

@@ -163,5 +163,18 @@ def test_cli_prints_entries_and_writes_a_new_srdf(
 def test_cli_reports_errors_without_a_traceback(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    assert main([str(tmp_path / "nothing")]) == 1
+    assert main([str(tmp_path / "nothing")]) == 2  # invalid input, like other commands
     assert "error:" in capsys.readouterr().err
+
+
+def test_cli_accepts_a_shipped_robot_name_and_package_paths(
+    capsys: pytest.CaptureFixture[str]
+) -> None:
+    moveit = Path(__file__).resolve().parents[1] / "robot" / "fixtures" / "moveit"
+    assert main(["servo_arm", "--samples", "20"]) == 0
+    assert "pairs disabled" in capsys.readouterr().err
+    assert main([str(moveit / "src" / "arm3_moveit_config"), "--samples", "20",
+                 "--package-path", str(moveit / "src")]) == 0
+    out = capsys.readouterr().out
+    assert 'link1="a3_finger1" link2="a3_hand" reason="Adjacent"' in out
+    assert main(["servo_arm", "--package-path", "/nonexistent/folder"]) == 2
