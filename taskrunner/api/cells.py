@@ -29,7 +29,7 @@ __all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession", "Pose
 
 log = logging.getLogger(__name__)
 
-BACKENDS = ("sim", "mock", "serial", "http")
+BACKENDS = ("sim", "mock", "serial", "http", "mujoco")
 
 
 class CellNotFoundError(LookupError):

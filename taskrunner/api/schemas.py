@@ -37,13 +37,13 @@ class _TaskSource(_Strict):
         return self
 
 
-Backend = Literal["sim", "mock", "serial", "http"]
+Backend = Literal["sim", "mock", "serial", "http", "mujoco"]
 
 
 class RunCreate(_TaskSource):
-    backend: Backend = Field(default="sim", description="sim, mock, or the cell's servos "
-                             "over serial or http (the port and URL the server is set up "
-                             "with)")
+    backend: Backend = Field(default="sim", description="sim, mock, mujoco (physics; the "
+                             "mujoco extra), or the cell's servos over serial or http (the "
+                             "port and URL the server is set up with)")
     speed: float | None = Field(default=None, gt=0, le=1000,
                                 description="time scale of the sim backend (2: twice real "
                                             "time); default: the server's")

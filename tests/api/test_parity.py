@@ -93,3 +93,10 @@ def test_the_command_line_can_read_the_poses_the_api_taught(tmp_path: Path):
     with read_taught_poses(settings.db_path, settings.cells_dir).active():
         assert check_task(bench).ok
     assert read_taught_poses(tmp_path / "none.sqlite", settings.cells_dir).by_cell == {}
+
+
+def test_a_run_on_the_physics_backend_succeeds_through_the_api(client):
+    run = client.post("/runs", json={"task": "pick_place", "backend": "mujoco"})
+    assert run.status_code == 202, run.text
+    body = wait_until_done(client, run.json()["run_id"], timeout=120)
+    assert body["status"] == "succeeded", body.get("error")
