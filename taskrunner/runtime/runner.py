@@ -36,6 +36,7 @@ from taskrunner.tasks.spec import TaskSpec
 from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.expect import check_task_end
 from taskrunner.tree.timeout import TaskTimeout
 
 __all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
@@ -107,6 +108,7 @@ class Runner:
             task_text=spec.path.read_text(encoding="utf-8") if spec.path else "")
         self.events.subscribe(self.record.events.append)
         self.failure_kind: str | None = None
+        self.expectations_met: bool | None = None
 
     def cancel(self, reason: str = "cancelled", exit_code: int = EXIT_CODES["cancelled"]) -> None:
         """Stop the run (safe from any thread, and from a signal handler): the motion stops
@@ -163,12 +165,31 @@ class Runner:
             reason, code = self._cancel_reason
             return self._finish("cancelled", code, reason)
         if status == Status.SUCCESS:
-            return self._finish("succeeded", 0, None)
+            return self._finish(*self._expectations("succeeded", 0, None))
         leaf = self._failed_leaf()
         kind = leaf.failure_kind if leaf is not None and leaf.failure_kind else "planning"
         self.failure_kind = kind
         message = leaf.feedback_message if leaf is not None else "the task failed"
-        return self._finish("failed", EXIT_CODES[kind], message)
+        return self._finish(*self._expectations("failed", EXIT_CODES[kind], message))
+
+    def _expectations(self, status: str, code: int, error: str | None
+                      ) -> tuple[str, int, str | None]:
+        """Check the task's ``expect:`` on the run as it ended; a ``message`` event with
+        data ``expectations: {met, failures}`` says whether they are met. A run that succeeded but
+        misses one fails (exit code 4) with the first miss as its error."""
+        expect = self.spec.expect
+        where = str(expect.loc) if expect is not None and expect.loc is not None else None
+        try:
+            misses = check_task_end(expect, self.ctx, status, error, where)
+        except TaskrunnerError as exc:
+            misses = [f"{where}: expectation not checked: {exc}" if where else str(exc)]
+        self.expectations_met = not misses
+        self.events.emit("message", "expectations met" if not misses else misses[0],
+                         expectations={"met": not misses, "failures": misses})
+        if misses and status == "succeeded":
+            self.failure_kind = "execution"
+            return "failed", EXIT_CODES["execution"], misses[0]
+        return status, code, error
 
     def _failed_leaf(self) -> TaskLeaf | TaskTimeout | None:
         """The node whose failure ended the run: the last leaf (or ``timeout:``) that failed."""

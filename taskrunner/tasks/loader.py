@@ -25,6 +25,7 @@ from pydantic import BaseModel, ValidationError
 
 from taskrunner.errors import TaskSpecError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
+from taskrunner.tasks.expect import Scenario, TaskExpectation
 from taskrunner.tasks.nodes import Location, ObjectSpec, location_of
 from taskrunner.tasks.parameters import Binding, bind_parameters, declare_parameters, substitute
 from taskrunner.tasks.problem import (
@@ -103,6 +104,8 @@ class _FileResult:
     parameters: dict[str, Parameter]
     defaults: MotionOptions | None
     steps: tuple[Step, ...]
+    expect: TaskExpectation | None = None
+    scenarios: tuple[Scenario, ...] = ()
 
     @property
     def values(self) -> dict[str, Any]:
@@ -176,6 +179,7 @@ class _Loader:
                 name=result.task, description=result.description, path=path, cell=result.cell,
                 parameters=result.parameters, objects=objects,
                 defaults=result.defaults or MotionOptions(), steps=result.steps,
+                expect=result.expect, scenarios=result.scenarios,
             ).located(Location(path, result.line))
         if self.problems or spec is None:
             files = list(dict.fromkeys(p.path for p in self.problems))
@@ -221,7 +225,15 @@ class _Loader:
         if defaults is not None:
             built = tuple(apply_defaults(s, defaults) for s in built)
         description = top.description if top is not None else ""
-        return _FileResult(str(name), description, tree.line, cell, parameters, defaults, built)
+        expect = top.expect if top is not None else None
+        scenarios = tuple(top.scenarios) if top is not None else ()
+        if not root:
+            for key in ("expect", "scenarios"):
+                if key in tree:
+                    self.add(path, line_of(tree, key), f"an included file's {key!r} is not "
+                             "used: only the task run has one (put checks in an 'expect' step)")
+        return _FileResult(str(name), description, tree.line, cell, parameters, defaults, built,
+                           expect, scenarios)
 
     def resolve_cell(self, tree: LineDict, path: Path, root: bool) -> Path | None:
         value = tree.get("cell")

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.robot.model import Group, RobotModel
+from taskrunner.tasks.expect import Expectation
 from taskrunner.tasks.loader import load_task
 from taskrunner.tasks.nodes import WORLD, Node, ObjectSpec, PoseSpec, TargetPose
 from taskrunner.tasks.problem import Problem, did_you_mean
@@ -22,6 +23,7 @@ from taskrunner.tasks.steps import (
     AddObjectStep,
     AttachStep,
     DetachStep,
+    ExpectStep,
     GoStep,
     GripperStep,
     HandoffStep,
@@ -102,6 +104,9 @@ class _Checker:
             self.add_object(obj)
         for step in self.spec.steps:
             self.step(step)
+        if self.spec.expect is not None:
+            self.expectation(self.spec.expect)
+        self.expect_places(self.spec.steps, None)
         return self.problems
 
     def add(self, node: Node | None, field: str | None, message: str) -> None:
@@ -294,6 +299,51 @@ class _Checker:
                 self.add(step.steps[j], None, f"branches {i + 1} and {j + 1} of 'parallel' "
                          f"{what}; parallel branches must move different arms")
                 break
+
+
+    # -------------------------------------------------------------------- expectations
+    def check_expect(self, step: ExpectStep) -> None:
+        self.expectation(step)
+
+    def expectation(self, want: Expectation) -> None:
+        """Names of an ``expect`` the cell or the scene (at that point) does not have."""
+        for name, obj in want.objects.items():
+            self.object(want, "objects", name)
+            if obj.pose is not None:
+                self.frame(obj.pose, exclude=name)
+            if obj.held_by is not None and obj.held_by not in arm_groups(self.model) \
+                    and not self.model.has_link(obj.held_by):
+                known = [*arm_groups(self.model), *self.model.link_names]
+                self.add(obj, "held_by", f"'held_by': {obj.held_by!r} is not an arm or a link "
+                         f"of cell {self.cell.name!r}{did_you_mean(obj.held_by, known, '')}")
+            if obj.on is not None:
+                if obj.on == name:
+                    self.add(obj, "on", f"'on': {name!r} cannot rest on itself")
+                else:
+                    self.object(obj, "on", obj.on)
+        for name, group_want in want.groups.items():
+            group = self.group(want, "groups", name)
+            if group is None:
+                continue
+            if group_want.at is not None:
+                self.named_pose(group_want, "at", group, group_want.at)
+            for joint in group_want.joints or {}:
+                if joint not in group.joint_names:
+                    self.add(group_want, "joints", f"joint {joint!r} is not a joint of group "
+                             f"{name!r}{did_you_mean(joint, group.joint_names, 'joints')}")
+
+    def expect_places(self, steps: tuple[StepNode, ...], parent: StepNode | None) -> None:
+        """An ``expect`` runs between steps: not in a ``parallel``, and with
+        ``step_duration`` only after another step."""
+        for i, step in enumerate(steps):
+            if isinstance(step, ExpectStep):
+                if isinstance(parent, ParallelStep):
+                    self.add(step, None, "'expect' cannot run in a 'parallel' (it would check "
+                             "while the other branches move): put it after the 'parallel'")
+                elif step.step_duration is not None and i == 0:
+                    self.add(step, "step_duration", "'step_duration' needs a step before "
+                             "this 'expect' in the same list")
+            self.expect_places(step.children, step)
 
 
 def _shared(model: RobotModel, first: Iterable[str],

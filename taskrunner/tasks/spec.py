@@ -17,6 +17,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, WithJsonSchema
 
+from taskrunner.tasks.expect import Scenario, TaskExpectation
 from taskrunner.tasks.nodes import Node, ObjectSpec
 from taskrunner.tasks.steps import (
     MOTION_OPTIONS,
@@ -87,6 +88,10 @@ class TaskFile(Node):
     """Planner options for every motion step that does not set its own."""
     steps: Annotated[list[Any], WithJsonSchema(STEP_LIST_SCHEMA), Field(min_length=1)]
     """The steps, run as a sequence."""
+    expect: TaskExpectation | None = None
+    """What must be true when the run ends (checked after the last step)."""
+    scenarios: list[Scenario] = []
+    """Parameter sets, seeds and backends that 'run-task test' runs the task with."""
 
 
 class TaskSpec(Node):
@@ -105,6 +110,10 @@ class TaskSpec(Node):
     """Objects added before the first step: the task's, then those of included files."""
     defaults: MotionOptions = MotionOptions()
     steps: StepList
+    expect: TaskExpectation | None = None
+    """What must be true when the run ends (the root file's ``expect:``)."""
+    scenarios: tuple[Scenario, ...] = ()
+    """The root file's ``scenarios:``."""
 
     def walk(self) -> Iterator[StepNode]:
         """Every step, depth first, in document order (included steps too)."""
@@ -129,6 +138,10 @@ class TaskSpec(Node):
         if defaults:
             doc["defaults"] = defaults
         doc["steps"] = [step_document(s) for s in self.steps]
+        if self.expect is not None:
+            doc["expect"] = _dump(self.expect)
+        if self.scenarios:
+            doc["scenarios"] = [_dump(s) for s in self.scenarios]
         return doc
 
 

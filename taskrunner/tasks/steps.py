@@ -33,11 +33,13 @@ from pydantic import (
     model_validator,
 )
 
+from taskrunner.tasks.expect import Expectation, OutcomeTolerance
 from taskrunner.tasks.nodes import Node, ObjectSpec, PoseSpec, TargetPose, Transform, Vec2
 from taskrunner.validation import MAX_METRES
 
 __all__ = [
-    "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "FallbackStep", "GoStep",
+    "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "ExpectStep", "FallbackStep",
+    "GoStep",
     "GripperStep", "HandoffStep", "IncludeBody", "IncludeStep", "MOTION_OPTIONS",
     "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "OutcomeTolerance",
     "ParallelStep",
@@ -210,17 +212,6 @@ PlaceAt = Annotated[
 ]
 
 
-class OutcomeTolerance(Node):
-    """How far a placed or handed-over object may end from its target."""
-
-    position: float = Field(default=0.005, gt=0, le=1)
-    """Largest distance between the object's centre and its target's (m, default 0.005);
-    for a place, also the largest gap between the object and what it rests on."""
-    angle_deg: float = Field(default=5.0, gt=0, le=180)
-    """Largest orientation error, as 'orientation' measures it (degrees, not radians;
-    default 5)."""
-
-
 OrientationCheck = Literal["free", "yaw", "full"]
 
 
@@ -370,6 +361,15 @@ class WaitStep(StepNode):
     """Duration (s)."""
 
 
+class ExpectStep(StepNode, Expectation):
+    """Check the scene, the time and the motions so far (see :mod:`taskrunner.tasks.expect`);
+    FAILURE at this step's line when an expectation does not hold."""
+
+    verb: ClassVar[str] = "expect"
+    name: str | None = None
+    """Label for displays."""
+
+
 # --------------------------------------------------------------------------- composites
 class _ListComposite(StepNode):
     """A composite whose YAML body is the list of its steps."""
@@ -473,7 +473,8 @@ class IncludeStep(StepNode):
 
 Step = (
     GoStep | MoveStep | GripperStep | PickStep | PlaceStep | HandoffStep | AttachStep
-    | DetachStep | AddObjectStep | RemoveObjectStep | WaitStep | SequenceStep | FallbackStep
+    | DetachStep | AddObjectStep | RemoveObjectStep | WaitStep | ExpectStep | SequenceStep
+    | FallbackStep
     | ParallelStep | RetryStep | TimeoutStep | RepeatStep | IncludeStep
 )
 STEP_TYPES: dict[str, type[StepNode]] = {

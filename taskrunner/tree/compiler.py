@@ -46,9 +46,11 @@ from taskrunner.tasks import (
     TimeoutStep,
     WaitStep,
 )
+from taskrunner.tasks.steps import ExpectStep
 from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.expect import CheckExpectation, StepTimer
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
@@ -62,8 +64,24 @@ def compile_task(spec: TaskSpec, ctx: TaskContext) -> Behaviour:
     Raises:
         TaskSpecError: a step that names something the cell does not have, with file:line.
     """
-    children = [_compile(step, ctx) for step in spec.steps]
+    children = _compile_list(spec.steps, ctx)
     return py_trees.composites.Sequence(spec.name, memory=True, children=children)
+
+
+def _compile_list(steps: tuple[StepNode, ...], ctx: TaskContext) -> list[Behaviour]:
+    """Steps run one after another; an ``expect`` with ``step_duration`` times the step
+    before it (a :class:`StepTimer` around that step's behaviour)."""
+    out: list[Behaviour] = []
+    for step in steps:
+        if isinstance(step, ExpectStep):
+            timer = None
+            if step.step_duration is not None and out:  # (none before: names.py reports it)
+                timer = StepTimer(out[-1], ctx)
+                out[-1] = timer
+            out.append(CheckExpectation(step.label, _where(step), ctx, step, timer))
+        else:
+            out.append(_compile(step, ctx))
+    return out
 
 
 def _where(step: StepNode) -> str | None:
@@ -120,10 +138,10 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
     match step:
         case SequenceStep() | IncludeStep():
             return py_trees.composites.Sequence(
-                name, memory=True, children=[_compile(s, ctx) for s in step.children])
+                name, memory=True, children=_compile_list(step.children, ctx))
         case FallbackStep():
             return py_trees.composites.Selector(
-                name, memory=True, children=[_compile(s, ctx) for s in step.children])
+                name, memory=True, children=_compile_list(step.children, ctx))
         case RetryStep():
             return py_trees.decorators.Retry(name, _body(step, ctx), num_failures=step.times)
         case TimeoutStep():
@@ -181,11 +199,13 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return SceneAction(name, where, ctx, lambda c: c.scene.remove_object(obj))
         case WaitStep():
             return Wait(name, where, ctx, step.seconds)
+        case ExpectStep():  # alone (the checker's dry run): no step before it to time
+            return CheckExpectation(name, where, ctx, step)
     raise _error(step, f"step '{step.verb}' cannot be compiled")
 
 
 def _body(step, ctx: TaskContext) -> Behaviour:  # type: ignore[no-untyped-def]
-    children = [_compile(s, ctx) for s in step.children]
+    children = _compile_list(step.children, ctx)
     if len(children) == 1:
         return children[0]
     return py_trees.composites.Sequence(f"{step.label} body", memory=True, children=children)
@@ -305,6 +325,10 @@ def _attach(step: AttachStep, ctx: TaskContext) -> Callable[[TaskContext], objec
 
 def _parallel(step: ParallelStep, ctx: TaskContext) -> Behaviour:
     children = step.children
+    for child in children:
+        if isinstance(child, ExpectStep):
+            raise _error(child, "'expect' cannot run in a 'parallel' (it would check while "
+                                "the other children move): put it after the 'parallel'")
     gos = [c for c in children if isinstance(c, GoStep)]
     others = [c for c in children if not isinstance(c, GoStep)]
     behaviours = [_compile(c, ctx) for c in others]

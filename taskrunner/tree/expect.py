@@ -1,0 +1,242 @@
+"""Checking a task's expectations in a run: ``expect`` steps and the task's ``expect:``.
+
+An ``expect`` step compiles to a :class:`CheckExpectation` condition leaf: SUCCESS when
+every expectation holds, else FAILURE at its file:line with what was expected and what
+was observed. The task's own ``expect:`` is checked by the runner when the tree ends
+(:func:`check_task_end`), with the run's status.
+
+What is measured, and how:
+
+- an object's pose: :func:`taskrunner.tree.outcome.measure` (the place and hand-over
+  check's machinery: distance, angle, turn about z, over the object's symmetries); the
+  expected pose may be in any frame the scene resolves (world, a link, another object);
+- what holds an object: the link it is attached to (an arm's grasp frame for
+  ``held_by: ARM``); what it rests on: :meth:`taskrunner.scene.Scene.support`;
+- a group's joints: the largest joint difference from the named pose or values;
+- durations: task time (:class:`~taskrunner.tree.clock.TaskClock`), the run's since the
+  context was made, a step's between the start and the end of the step before the
+  ``expect`` (a :class:`StepTimer` around it);
+- ``collision_free``: each executed trajectory, from the scene it started in, through
+  the exact path verifier (:meth:`taskrunner.scene.Scene.path_verifier`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import py_trees
+from py_trees.behaviour import Behaviour
+from py_trees.common import Status
+
+from taskrunner.errors import TaskrunnerError
+from taskrunner.scene import Scene
+from taskrunner.tasks.expect import (
+    DurationBounds,
+    Expectation,
+    GroupExpectation,
+    ObjectExpectation,
+    TaskExpectation,
+)
+from taskrunner.tree.behaviours import TaskLeaf
+from taskrunner.tree.context import TaskContext
+from taskrunner.tree.outcome import Orientation, Tolerance, describe_pose, measure
+
+__all__ = ["CheckExpectation", "StepTimer", "check_expectation", "check_task_end",
+           "motion_collisions"]
+
+
+class StepTimer(py_trees.decorators.Decorator):
+    """Passes its child's status through and notes its task-time start and end (s)."""
+
+    def __init__(self, child: Behaviour, ctx: TaskContext) -> None:
+        super().__init__(name=child.name, child=child)
+        self.ctx = ctx
+        self.started: float | None = None
+        self.ended: float | None = None
+
+    def initialise(self) -> None:
+        self.started, self.ended = self.ctx.clock.now(), None
+
+    def update(self) -> Status:
+        status = self.decorated.status
+        if status != Status.RUNNING:
+            self.ended = self.ctx.clock.now()
+        return status
+
+    @property
+    def seconds(self) -> float | None:
+        """The child's duration in task time, once it has ended."""
+        if self.started is None or self.ended is None:
+            return None
+        return self.ended - self.started
+
+
+def _object(ctx: TaskContext, name: str, want: ObjectExpectation) -> list[str]:
+    scene = ctx.scene
+    misses: list[str] = []
+    if want.pose is not None:
+        wanted = scene.to_world(want.pose.to_pose())
+        tolerance = Tolerance(want.tolerance.position, math.radians(want.tolerance.angle_deg))
+        outcome = measure(scene, name, wanted, Orientation(want.checked_orientation), tolerance,
+                          supported=False)
+        failure = outcome.failure
+        if failure is not None:
+            where = f" (expected in frame {want.pose.frame!r})" if want.pose.frame != "world" \
+                else ""
+            misses.append(failure.replace("requested", "expected").replace(
+                "achieved", "observed") + where)
+    obj = scene.object(name)
+    holder = obj.attached_to
+    if want.held_by is not None:
+        link = ctx.arm(want.held_by).grasp_frame if want.held_by in _arms(ctx) \
+            else want.held_by
+        if holder != link:
+            held = f"attached to {holder!r}" if holder else "attached to nothing"
+            misses.append(f"{name!r} expected held by {want.held_by!r} (link {link!r}); "
+                          f"observed {held}")
+    if want.released and holder is not None:
+        misses.append(f"{name!r} expected released; observed attached to {holder!r}")
+    if want.on is not None:
+        if holder is not None:
+            misses.append(f"{name!r} expected on {want.on!r}; observed attached to {holder!r}")
+        else:
+            support = scene.support(name)
+            if support.below != want.on or support.gap > want.tolerance.position:
+                seen = ("resting on nothing within 1 m" if support.below is None else
+                        f"{1e3 * support.gap:.1f} mm above {support.below!r}")
+                misses.append(f"{name!r} expected on {want.on!r} (within "
+                              f"{1e3 * want.tolerance.position:g} mm); observed {seen} at "
+                              f"{describe_pose(scene.object_pose(name).se3)}")
+    return misses
+
+
+def _arms(ctx: TaskContext) -> set[str]:
+    model = ctx.scene.robot
+    return {g.name for g in model.groups.values() if g.end_effector and g.tip_link}
+
+
+def _group(ctx: TaskContext, name: str, want: GroupExpectation) -> list[str]:
+    model = ctx.scene.robot
+    wanted = model.named_state(name, want.at).as_dict() if want.at is not None \
+        else dict(want.joints or {})
+    q = ctx.scene.state
+    index = {j: i for i, j in enumerate(model.joint_names)}
+    errors = {j: abs(float(q[index[j]]) - v) for j, v in wanted.items()}
+    worst = max(errors, key=lambda j: errors[j])
+    if errors[worst] <= want.tolerance:
+        return []
+    target = f"at {want.at!r}" if want.at is not None else "at the given joint values"
+    off = "; ".join(f"{j!r} expected {v:.4f}, observed {float(q[index[j]]):.4f}"
+                    for j, v in wanted.items() if errors[j] > want.tolerance)
+    return [f"group {name!r} expected {target} (tolerance {want.tolerance:g}); off by "
+            f"{errors[worst]:.4f} at most: {off}"]
+
+
+def _duration(what: str, seconds: float, bounds: DurationBounds) -> list[str]:
+    low = bounds.min is not None and seconds < bounds.min
+    high = bounds.max is not None and seconds > bounds.max
+    if low or high:
+        return [f"{what} expected {bounds}; observed {seconds:.3f} s (task time)"]
+    return []
+
+
+def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
+    """Each executed motion from index ``start`` on that collides, re-checked along its
+    whole trajectory from the scene it started in: ``'node' (file:line): a, b at t s``."""
+    if len(ctx.executed) <= start:
+        return []
+    model = ctx.scene.robot
+    scene = Scene(model)
+    found = []
+    for motion in ctx.executed[start:]:
+        scene.restore(motion.scene)
+        base = np.asarray(motion.scene.state.positions, dtype=float)
+        traj = motion.trajectory
+        states = np.array([model.state_with(base, dict(zip(traj.names, row)))
+                           for row in traj.positions])
+        result = scene.path_verifier().verify(states)
+        if not result.valid:
+            where = f" ({motion.location})" if motion.location else ""
+            at = ""
+            if result.fraction is not None:
+                k = min(int(result.fraction), len(traj.times) - 1)
+                t = float(traj.times[k]) + (result.fraction - k) * (
+                    float(traj.times[min(k + 1, len(traj.times) - 1)]) - float(traj.times[k]))
+                at = f" at {t:.2f} s of its trajectory"
+            pair = " and ".join(result.pair) if result.pair else "two bodies"
+            found.append(f"motion {motion.node!r}{where} collides: {pair}{at}")
+    return found
+
+
+def check_expectation(ctx: TaskContext, want: Expectation, step_seconds: float | None = None,
+                      collisions_from: int = 0) -> list[str]:
+    """What of ``want`` does not hold now, one message each (empty: all hold).
+
+    Args:
+        step_seconds: task time of the step before (for ``step_duration``).
+        collisions_from: re-check executed motions from this index on.
+    """
+    misses: list[str] = []
+    try:
+        for name, obj in want.objects.items():
+            misses += _object(ctx, name, obj)
+        for name, group in want.groups.items():
+            misses += _group(ctx, name, group)
+    except TaskrunnerError as exc:  # an object removed, a name the check missed
+        misses.append(str(exc))
+    if want.duration is not None:
+        misses += _duration("the run's duration", ctx.clock.now(), want.duration)
+    if want.step_duration is not None:
+        if step_seconds is None:
+            misses.append("the step before has no duration (it did not run to its end)")
+        else:
+            misses += _duration("the step's duration", step_seconds, want.step_duration)
+    if want.collision_free:
+        misses += motion_collisions(ctx, collisions_from)
+    return misses
+
+
+class CheckExpectation(TaskLeaf):
+    """An ``expect`` step: a condition leaf (see the module docstring)."""
+
+    def __init__(self, name: str, location: str | None, ctx: TaskContext,
+                 expectation: Expectation, timer: StepTimer | None = None) -> None:
+        super().__init__(name, location, ctx)
+        self.expectation = expectation
+        self.timer = timer
+        self.outcome: Status = Status.RUNNING
+
+    def start(self) -> None:
+        misses = check_expectation(self.ctx, self.expectation,
+                                   self.timer.seconds if self.timer is not None else None)
+        if misses:
+            self.outcome = self.fail("expectation not met: " + "; ".join(misses),
+                                     kind="execution")
+            return
+        self.ctx.events.emit("message", "expectations met", node=self.name,
+                             location=self.location)
+        self.outcome = Status.SUCCESS
+
+    def update(self) -> Status:
+        return self.outcome
+
+
+def check_task_end(expect: TaskExpectation | None, ctx: TaskContext, status: str,
+                   error: str | None, location: str | None) -> list[str]:
+    """What of the task's ``expect:`` does not hold when the run has ended with ``status``
+    (``"succeeded"`` or ``"failed"``) and ``error``; each message starts with
+    ``location`` (the ``expect:`` line); all misses in one message, or none. No
+    ``expect:``: the run must succeed."""
+    want = expect if expect is not None else TaskExpectation()
+    prefix = f"{location}: " if location else ""
+    misses: list[str] = []
+    if status != want.status:
+        seen = f"it {status}" + (f" ({error})" if error and status == "failed"
+                                 and want.status == "failed" else "")
+        misses.append(f"expected the run to have {want.status}; {seen}")
+    elif want.error is not None and (error is None or want.error not in error):
+        misses.append(f"expected the run's error to contain {want.error!r}; observed {error!r}")
+    if expect is not None and not (status == "failed" and want.status == "succeeded"):
+        misses += check_expectation(ctx, expect)
+    return [prefix + "expectation not met: " + "; ".join(misses)] if misses else []
