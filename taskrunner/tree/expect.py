@@ -164,7 +164,9 @@ def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
                 t = float(traj.times[k]) + (result.fraction - k) * (
                     float(traj.times[min(k + 1, len(traj.times) - 1)]) - float(traj.times[k]))
                 at = f" at {t:.2f} s of its trajectory"
-            pair = " and ".join(result.pair) if result.pair else "two bodies"
+            # geometry names are 'body/index': the bodies are what a reader knows
+            pair = " and ".join(g.rsplit("/", 1)[0] for g in result.pair) if result.pair \
+                else "two bodies"
             found.append(f"motion {motion.node!r}{where} collides: {pair}{at}")
     return found
 
