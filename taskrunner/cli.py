@@ -6,6 +6,10 @@ Subcommands:
   task as ``check`` does (``--no-check`` skips it; nothing moves when it finds a problem),
   then run it; a live tree in a terminal, plain log lines otherwise, a summary at the end.
 - ``run-task check FILE``: report every problem of a task at once, with file:line.
+- ``run-task test [PATHS…] [--jobs N] [--junit FILE] [--ray [ADDRESS]]``: run task files
+  and their scenarios in parallel, each judged by its ``expect:``; exit 0 when all pass.
+- ``run-task sweep TASK --param NAME=START:STOP:COUNT [--seeds N] [--backend mock,sim]``:
+  success over a parameter space (CSV, PNG, HTML).
 - ``run-task demo [CELL]``: load a cell, solve IK for a point in front of the arm, check
   it for collisions, plan a collision-free path there and time it.
 - ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
@@ -48,7 +52,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw", "view")
+            "firmware-sim", "hw", "view", "test", "sweep")
 
 
 def _load(name_or_path: str):  # type: ignore[no-untyped-def]
@@ -490,6 +494,47 @@ def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
     return acm.main(list(rest))
 
 
+def cmd_test(args: argparse.Namespace) -> int:
+    from taskrunner.runtime.testing import test_command
+
+    return test_command(args.paths, args.jobs, args.junit, args.ray)
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    from taskrunner.runtime.sweep import sweep_command
+
+    return sweep_command(args)
+
+
+def _add_test_sweep_parsers(sub) -> None:  # type: ignore[no-untyped-def]
+    ray_help = ("run on Ray: a cluster address (ray://host:10001), 'auto', or 'local' "
+                "(default when given alone: start one here); pip install 'taskrunner[ray]'")
+    test = sub.add_parser("test", help="run task files with their expectations (and "
+                                       "scenarios) in parallel; a table and JUnit XML")
+    test.add_argument("paths", nargs="*", help="task files or folders (default: the shipped "
+                                               "examples)")
+    test.add_argument("--jobs", "-j", type=int, default=None,
+                      help="worker processes (default: every core)")
+    test.add_argument("--junit", metavar="FILE", help="write JUnit XML there")
+    test.add_argument("--ray", nargs="?", const="local", default=None, metavar="ADDRESS",
+                      help=ray_help)
+    sweep = sub.add_parser("sweep", help="run a task over parameter ranges, seeds and "
+                                         "backends; success rates, CSV, a plot")
+    sweep.add_argument("task", help="task file or a shipped example's name")
+    sweep.add_argument("--param", action="append", default=[], metavar="NAME=RANGE",
+                       help="NAME=START:STOP:COUNT (inclusive) or NAME=A,B,C (repeatable)")
+    sweep.add_argument("--seeds", type=int, default=1, help="seeds 0..N-1 per point (1)")
+    sweep.add_argument("--backend", default="mock", help="backends, comma-separated (mock)")
+    sweep.add_argument("--speed", type=float, default=None, help="speed of sim or mujoco")
+    sweep.add_argument("--jobs", "-j", type=int, default=None,
+                       help="worker processes (default: every core)")
+    sweep.add_argument("--out", default=None,
+                       help="folder for results.csv, success.png, sweep.html "
+                            "(default: sweeps/<task>-<time>)")
+    sweep.add_argument("--ray", nargs="?", const="local", default=None, metavar="ADDRESS",
+                       help=ray_help)
+
+
 def _parser() -> argparse.ArgumentParser:
     from taskrunner import __version__
 
@@ -589,6 +634,7 @@ def _parser() -> argparse.ArgumentParser:
                       choices=("critical", "error", "warning", "info", "debug"))
     sub.add_parser("collision-matrix", add_help=False,
                    help="generate a robot's self-collision matrix (see --help)")
+    _add_test_sweep_parsers(sub)
     return parser
 
 
@@ -603,7 +649,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
                 "demo": cmd_demo, "info": cmd_info,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
-                "serve": cmd_serve}
+                "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep}
     try:
         _apply_robot_options(args)
         return commands[args.command](args)
