@@ -185,7 +185,9 @@ class Runner:
             misses = [f"{where}: expectation not checked: {exc}" if where else str(exc)]
         self.expectations_met = not misses
         self.events.emit("message", "expectations met" if not misses else misses[0],
-                         expectations={"met": not misses, "failures": misses})
+                         expectations={"met": not misses, "failures": misses,
+                                       "status": {"expected": expect.status if expect
+                                                  else "succeeded", "observed": status}})
         if misses and status == "succeeded":
             self.failure_kind = "execution"
             return "failed", EXIT_CODES["execution"], misses[0]

@@ -157,8 +157,12 @@ def run_case(case: Case) -> CaseResult:
     failures = tuple(checks[-1]["failures"])
     if checks[-1]["met"]:
         return CaseResult(case, "passed", result.status, seconds)
-    return CaseResult(case, "failed", result.status, seconds, failures[0] if failures
-                      else result.error, failures)
+    status = checks[-1].get("status", {})
+    if status.get("expected") == "succeeded" and status.get("observed") == "failed":
+        first = result.error  # the failed step's own error, at its file:line
+    else:
+        first = failures[0] if failures else result.error
+    return CaseResult(case, "failed", result.status, seconds, first, failures)
 
 
 def _died(case: Case, attempts: int, reason: str) -> CaseResult:
