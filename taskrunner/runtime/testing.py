@@ -292,7 +292,11 @@ def test_command(paths: Sequence[str], jobs: int | None, junit: str | None,
 
     out = out or sys.stdout
     started = time.monotonic()
-    cases = find_cases(paths or [shipped_tasks_dir()])
+    try:
+        cases = find_cases(paths or [shipped_tasks_dir()])
+    except FileNotFoundError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     if not cases:
         print("no task files found in " + ", ".join(map(str, paths)), file=out)
         return 2
