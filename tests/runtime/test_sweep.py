@@ -149,8 +149,9 @@ def test_a_sweep_on_ray_gives_the_process_pools_results():
     ray = pytest.importorskip("ray", reason="ray is not installed (pip install "
                                             "'taskrunner[ray]')")
     path = resources.resolve_task("pick_place")
-    cases = sweep_cases(path, "pick_place", [("place_y", [-0.15, 0.0, 0.15]),
-                                             ("place_x", [0.1, 0.14])], 1, ["mock"], None)
+    axis = parse_axis("place_y=-0.15:0.15:25", {"place_y": "float"})
+    cases = sweep_cases(path, "pick_place", [axis], 2, ["mock"], None)
+    assert len(cases) == 50
     pool = run_cases(cases, jobs=2)
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     try:
