@@ -36,7 +36,7 @@ WORLD = "world"
 POSE_LIMIT_TOLERANCE = 1e-6
 # A mimic joint's value in a named pose may differ this much from its relation's.
 MIMIC_TOLERANCE = 1e-4
-# Spellings of a gripper's open and closed poses; either one names the pose.
+# The gripper actions' pose names and the other spelling MoveIt configs use for each.
 GRIPPER_POSE_SPELLINGS = (("open", "opened"), ("closed", "close"))
 
 
@@ -568,22 +568,19 @@ def _state_values(srdf: Srdf, state: SrdfGroupState, pre: str, group_joints: set
 def _add_gripper_aliases(end_effectors: Mapping[str, EndEffector],
                          states: dict[str, dict[str, dict[str, float]]]
                          ) -> dict[str, dict[str, str]]:
-    """Give each end effector's group both spellings of its open and closed poses
-    (MoveIt configs say ``open``/``opened`` and ``close``/``closed``): the missing
-    spelling becomes an alias of the one the SRDF defines."""
+    """Let a gripper open and close whichever way its SRDF spells the poses (MoveIt
+    configs say ``open`` or ``opened``, ``closed`` or ``close``): when an end effector's
+    group lacks ``open`` (``closed``) but has ``opened`` (``close``), the name the
+    ``gripper`` actions use becomes an alias of it."""
     aliases: dict[str, dict[str, str]] = {}
     for eef in end_effectors.values():
         poses = states.get(eef.group)
         if not poses:
             continue
-        for names in GRIPPER_POSE_SPELLINGS:
-            present = [n for n in names if n in poses]
-            if not present:
-                continue
-            for alias in names:
-                if alias not in poses:
-                    poses[alias] = dict(poses[present[0]])
-                    aliases.setdefault(eef.group, {})[alias] = present[0]
+        for canonical, other in GRIPPER_POSE_SPELLINGS:
+            if canonical not in poses and other in poses:
+                poses[canonical] = dict(poses[other])
+                aliases.setdefault(eef.group, {})[canonical] = other
     return aliases
 
 

@@ -126,7 +126,7 @@ def test_cell_naming_a_config_folder_anywhere_loads_as_the_folder_does(tmp_path)
         f"  - {{name: arm, robot: {SRC / 'arm3_ros2_moveit_config'}, prefix: left_}}\n")
     cell = load_cell(cell_file)
     assert cell.model.joint_names[0] == "left_joint1"
-    assert cell.model.named_state_names("left_hand") == ["close", "closed", "open", "opened"]
+    assert cell.model.named_state_names("left_hand") == ["closed", "open"]
 
 
 def test_default_state_in_self_collision_is_a_warning_suggesting_collision_matrix(robots_dir):
