@@ -19,7 +19,7 @@ def test_each_place_and_handoff_meets_its_target_and_the_run_says_so(tmp_path, n
     runner = run_scenario(name, tmp_path)
     assert_record_complete(runner)
     checked = [e for e in runner.record.events
-               if e.kind == "message" and e.node.endswith(": check outcome")]
+               if e.kind == "message" and (e.node or "").endswith(": check outcome")]
     steps = [s for s in walk_steps(runner.spec.steps) if isinstance(s, PlaceStep | HandoffStep)]
     # fallback_place: the first place fails before its check; the spare one is checked.
     assert len(checked) == len(steps) - (1 if name == "fallback_place.yaml" else 0)
