@@ -87,6 +87,7 @@ class PackageMap:
         self._entries: dict[str, list[tuple[int, int, Path]]] = {}
         self._order = 0
         self._warned: set[str] = set()
+        self._skipped: list[str] = []
         self.warnings: list[LoadWarning] = []
         erd = example_robot_data_dir()
         if erd is not None:
@@ -121,11 +122,20 @@ class PackageMap:
         manifest = folder / "package.xml"
         if not manifest.is_file():
             return False
-        doc = read_xml(manifest)
-        name_el = doc.root.find("name")
-        name = (name_el.text or "").strip() if name_el is not None else ""
-        if not name:
-            raise doc.error(doc.root, "package.xml has no <name>")
+        try:
+            doc = read_xml(manifest)
+            name_el = doc.root.find("name")
+            name = (name_el.text or "").strip() if name_el is not None else ""
+            if not name:
+                raise doc.error(doc.root, "package.xml has no <name>")
+        except RobotDescriptionError as exc:
+            # As rospack and ament do: a broken manifest somewhere under a search root
+            # (a sibling project, a half-written package) is skipped, not fatal; a robot
+            # that needs that package gets "not found" naming the skipped manifests.
+            self._skipped.append(f"{exc.location}: {exc.reason}")
+            self.warnings.append(LoadWarning(f"{exc.reason}; package skipped", exc.path,
+                                             exc.line))
+            return True  # a package folder all the same: packages do not nest
         self._register(name, folder.resolve(), tier)
         return True
 
@@ -174,10 +184,12 @@ class PackageMap:
         entries = self._entries.get(name)
         if not entries:
             known = ", ".join(self.names) or "none"
+            skipped = (f"; skipped broken manifests: {'; '.join(self._skipped)}"
+                       if self._skipped else "")
             raise RobotDescriptionError(
                 f"package {name!r} not found (known packages: {known}); add its folder "
                 f"with --package-path or {PACKAGE_PATH_ENV}, or place a package.xml naming "
-                "it under a search root"
+                f"it under a search root{skipped}"
             )
         tier, _, folder = entries[0]
         others = list(dict.fromkeys(str(f) for _, _, f in entries[1:] if f != folder))

@@ -61,18 +61,27 @@ def test_package_xml_without_name_is_an_error_naming_the_file(tmp_path):
     folder = tmp_path / "broken"
     folder.mkdir()
     (folder / "package.xml").write_text('<package format="3">\n  <version>1</version>\n</package>\n')
+    packages = PackageMap(search_roots=[tmp_path])
+    [warning] = packages.warnings
+    assert str(warning) == f"{folder / 'package.xml'}:1: package.xml has no <name>; package skipped"
     with pytest.raises(RobotDescriptionError) as info:
-        PackageMap(search_roots=[tmp_path])
-    assert str(info.value) == f"{folder / 'package.xml'}:1: package.xml has no <name>"
+        packages.find("broken")
+    assert f"skipped broken manifests: {folder / 'package.xml'}:1: package.xml has no <name>" \
+        in str(info.value)
 
 
 def test_malformed_package_xml_names_file_and_line(tmp_path):
     folder = tmp_path / "broken"
     folder.mkdir()
     (folder / "package.xml").write_text("<package>\n  <name>x</nam>\n</package>\n")
-    with pytest.raises(RobotDescriptionError) as info:
-        PackageMap(search_roots=[tmp_path])
-    assert str(info.value) == f"{folder / 'package.xml'}:2: invalid XML: mismatched tag"
+    good = tmp_path / "good"
+    good.mkdir()
+    (good / "package.xml").write_text("<package>\n  <name>good</name>\n</package>\n")
+    packages = PackageMap(search_roots=[tmp_path])  # a broken sibling is no reason to fail
+    assert packages.find("good") == good.resolve()
+    [warning] = packages.warnings
+    assert str(warning) == (f"{folder / 'package.xml'}:2: invalid XML: mismatched tag; "
+                            "package skipped")
 
 
 def test_missing_search_root_is_ignored(tmp_path):
