@@ -253,13 +253,12 @@ def load_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: 
     return spec.model_copy(update={"path": None}), str(shown), yaml
 
 
-def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
-                     yaml: str | None, parameters: dict[str, Any], seed: int,
-                     taught: TaughtPoses | None = None) -> list[Any]:
-    """The problems (:class:`~taskrunner.tasks.problem.Problem`) the static check finds in
-    the task a run request names, checked as ``/tasks/check`` checks it; empty when the
-    run may start. ``POST /runs`` calls this first so that nothing moves for a task that
-    cannot succeed (as ``run-task`` does)."""
+def _check_report(policy: FolderPolicy, tasks_dir: Path, task: str | None,
+                  yaml: str | None, parameters: dict[str, Any], seed: int,
+                  taught: TaughtPoses | None) -> Any:
+    """``check_task`` of a request's task under ``policy``: a file of the tasks folder, or
+    inline YAML held in memory as ``inline.yaml`` of the tasks folder, with the ``taught``
+    poses of its cell as a run would have them."""
     from taskrunner.tree.check import check_task
 
     if task is not None:
@@ -270,7 +269,18 @@ def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
         path = inline_path(tasks_dir)
         active = policy.with_memory({path: yaml})
     with active.active(), (taught or TaughtPoses()).active():
-        return list(check_task(path, parameters, seed=seed).problems)
+        return check_task(path, parameters, seed=seed)
+
+
+def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
+                     yaml: str | None, parameters: dict[str, Any], seed: int,
+                     taught: TaughtPoses | None = None) -> list[Any]:
+    """The problems (:class:`~taskrunner.tasks.problem.Problem`) the static check finds in
+    the task a run request names, checked as ``/tasks/check`` checks it; empty when the
+    run may start. ``POST /runs`` calls this first so that nothing moves for a task that
+    cannot succeed (as ``run-task`` does)."""
+    return list(_check_report(policy, tasks_dir, task, yaml, parameters, seed,
+                              taught).problems)
 
 
 def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: str | None,
@@ -281,17 +291,8 @@ def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml:
     task is a file held in memory: ``inline.yaml`` of the tasks folder), with the
     ``taught`` poses of its cell as a run would have them."""
     from taskrunner.api.handlers import problem_out
-    from taskrunner.tree.check import check_task
 
-    if task is not None:
-        path = resolve_task_file(tasks_dir, task)
-        active = policy
-    else:
-        assert yaml is not None
-        path = inline_path(tasks_dir)
-        active = policy.with_memory({path: yaml})
-    with active.active(), (taught or TaughtPoses()).active():
-        report = check_task(path, parameters, seed=seed)
+    report = _check_report(policy, tasks_dir, task, yaml, parameters, seed, taught)
     problems = [problem_out(p) for p in report.problems]
     return {"ok": not problems, "cell": report.cell, "steps": report.steps,
             "problems": problems}
