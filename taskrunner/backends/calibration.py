@@ -251,18 +251,7 @@ def load_calibration(path: str | Path, joint_names: Sequence[str] | None = None,
             joint without its own servo.
     """
     path = Path(path)
-    data = load_yaml(path)
-    if not isinstance(data, dict) or not isinstance(data.get("joints"), list):
-        raise YamlError("expected a mapping with a 'joints' list", path, line_of(data))
-    unknown = sorted(set(data) - _TOP_KEYS)
-    if unknown:
-        raise _fail(f"unknown key {unknown[0]!r}; keys: {sorted(_TOP_KEYS)}", path, data,
-                    unknown[0])
-    port, baud = data.get("port", ""), data.get("baud", 115200)
-    if not isinstance(port, str):
-        raise _fail(f"'port' must be a string (got {port!r})", path, data, "port")
-    if isinstance(baud, bool) or not isinstance(baud, int) or baud <= 0:
-        raise _fail(f"'baud' must be a positive integer (got {baud!r})", path, data, "baud")
+    data, port, baud = _read_link_file(path, "joints", list, _TOP_KEYS)
     joints_node = data["joints"]
     joints: list[JointCalibration] = []
     for i, entry in enumerate(joints_node):
@@ -328,18 +317,7 @@ def load_board_calibration(path: str | Path, robots: Sequence[RobotOnBoard],
             of channels, a channel outside 0..15 or used twice (``file:line``).
     """
     path = Path(path)
-    data = load_yaml(path)
-    if not isinstance(data, dict) or not isinstance(data.get("robots"), dict):
-        raise YamlError("expected a mapping with a 'robots' mapping", path, line_of(data))
-    unknown = sorted(set(data) - _BOARD_KEYS)
-    if unknown:
-        raise _fail(f"unknown key {unknown[0]!r}; keys: {sorted(_BOARD_KEYS)}", path, data,
-                    unknown[0])
-    port, baud = data.get("port", ""), data.get("baud", 115200)
-    if not isinstance(port, str):
-        raise _fail(f"'port' must be a string (got {port!r})", path, data, "port")
-    if isinstance(baud, bool) or not isinstance(baud, int) or baud <= 0:
-        raise _fail(f"'baud' must be a positive integer (got {baud!r})", path, data, "baud")
+    data, port, baud = _read_link_file(path, "robots", dict, _BOARD_KEYS)
     by_name = {r.name: r for r in robots}
     node = data["robots"]
     for name in node:
@@ -376,3 +354,27 @@ def load_board_calibration(path: str | Path, robots: Sequence[RobotOnBoard],
             joints.append(JointCalibration(renamed, joint.servo_type, channel, joint.zero_rad,
                                            joint.direction, joint.scale))
     return ServoCalibration(tuple(joints), port, int(baud), path)
+
+
+def _read_link_file(path: Path, body: str, kind: type, keys: frozenset[str] | set[str]
+                    ) -> tuple[dict[str, Any], str, int]:
+    """A hardware or board file's mapping, its ``port`` and its ``baud``, checked: a
+    mapping whose ``body`` key holds a ``kind`` (list or mapping), no unknown key.
+
+    Raises:
+        YamlError: unreadable or invalid YAML, or a bad field (``file:line``).
+    """
+    data = load_yaml(path)
+    if not isinstance(data, dict) or not isinstance(data.get(body), kind):
+        what = "list" if kind is list else "mapping"
+        raise YamlError(f"expected a mapping with a '{body}' {what}", path, line_of(data))
+    unknown = sorted(set(data) - set(keys))
+    if unknown:
+        raise _fail(f"unknown key {unknown[0]!r}; keys: {sorted(keys)}", path, data,
+                    unknown[0])
+    port, baud = data.get("port", ""), data.get("baud", 115200)
+    if not isinstance(port, str):
+        raise _fail(f"'port' must be a string (got {port!r})", path, data, "port")
+    if isinstance(baud, bool) or not isinstance(baud, int) or baud <= 0:
+        raise _fail(f"'baud' must be a positive integer (got {baud!r})", path, data, "baud")
+    return data, port, baud
