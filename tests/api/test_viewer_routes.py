@@ -4,14 +4,10 @@ served only from the mesh folders of loaded robots (no traversal out of them).""
 from __future__ import annotations
 
 import http.client
-import socket
-import threading
-import time
 from pathlib import Path
 
 import pytest
-import uvicorn
-from apitest import AUTH, NO_TOKEN, make_settings, wait_until_done
+from apitest import AUTH, NO_TOKEN, make_settings, served, wait_until_done
 from fastapi.testclient import TestClient
 
 from taskrunner.api import create_app
@@ -156,26 +152,11 @@ def test_meshes_are_served_from_the_loaded_robots_folder_only(mesh_client, mesh_
         assert b"SECRET" not in answer.content
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
 def test_raw_dot_dot_paths_on_the_wire_get_nothing(tmp_path, mesh_world):
     """Paths sent as written (no client normalising ``..``) to a real server."""
     settings = make_settings(tmp_path / "state", robots_dirs=(mesh_world["robots"],),
                              cells_dir=mesh_world["cells"])
-    port = _free_port()
-    server = uvicorn.Server(uvicorn.Config(create_app(settings), host="127.0.0.1", port=port,
-                                           log_level="error"))
-    thread = threading.Thread(target=server.run, daemon=True)
-    thread.start()
-    try:
-        deadline = time.monotonic() + 20
-        while not server.started and time.monotonic() < deadline:
-            time.sleep(0.02)
-
+    with served(create_app(settings)) as port:
         def get(path: str) -> tuple[int, bytes]:
             conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
             conn.putrequest("GET", path, skip_accept_encoding=True)
@@ -197,9 +178,6 @@ def test_raw_dot_dot_paths_on_the_wire_get_nothing(tmp_path, mesh_world):
             status, body = get(bad)
             assert status == 404, bad
             assert b"SECRET" not in body and b"<robot" not in body
-    finally:
-        server.should_exit = True
-        thread.join(10)
 
 
 def test_a_copy_of_the_shipped_robot_serves_nothing_outside_its_folder(tmp_path):
