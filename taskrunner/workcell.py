@@ -282,7 +282,7 @@ class Workcell:
              joints: Mapping[str, float] | None = None, pose: Pose | None = None,
              position: Position | None = None, link: str | None = None,
              start: StateLike | None = None, planner: str = "RRTConnect",
-             planning_time: float = 1.0, seed: int = 0,
+             planning_time: float = 5.0, seed: int = 0,
              velocity_scaling: float | None = None,
              acceleration_scaling: float | None = None) -> Plan:
         """Plan a collision-free motion of ``group`` to one target, and time it.
@@ -300,7 +300,8 @@ class Workcell:
             start: where the motion starts (default: the current state); joints left
                 out keep their current values. ``start=previous_plan.end`` chains plans.
             planner: an OMPL planner (see :data:`taskrunner.planning.PLANNERS`).
-            planning_time: seconds allowed per attempt.
+            planning_time: seconds allowed per attempt, a cap and not a target (the
+                search stops at the first path; MoveIt's default is also 5 s).
             seed: seeds OMPL and the IK goal sampling (same seed, same motion).
             velocity_scaling: fraction of the joints' velocity limits, in (0, 1]
                 (default: the robot's ``default_velocity_scaling_factor``).

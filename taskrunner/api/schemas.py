@@ -185,7 +185,9 @@ class PlanBody(_Strict):
     joints: dict[str, float] | None = Field(default=None, description="joint values (go)")
     pose: PoseTarget | None = Field(default=None, description="a link pose (move)")
     backend: Backend = "sim"
-    planning_time: float = Field(default=1.0, gt=0, le=30)
+    planning_time: float = Field(default=5.0, gt=0, le=30,
+                                 description="seconds allowed to search, a cap and not a "
+                                             "target: planning stops at the first path")
     seed: int = Field(default=0, ge=0, le=2**31 - 1)
     velocity_scaling: float | None = Field(default=None, gt=0, le=1)
     sample_rate_hz: float = Field(default=100.0, ge=1, le=1000,
