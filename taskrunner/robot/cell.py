@@ -28,7 +28,7 @@ group per robot group (prefixed), the spanning groups, and the fixed objects.
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -38,6 +38,7 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
+from taskrunner.materials import Density, Friction, Kilograms, Material, check_material, material_of
 from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import load_description
 from taskrunner.robot.model import RobotModel
@@ -80,12 +81,18 @@ class PoseSpec(_Strict):
         return pin.SE3(pin.rpy.rpyToMatrix(*self.rpy), np.array(self.xyz, dtype=float))
 
 
+GraspMode = Literal["friction", "weld"]
+
+
 class RobotSpec(_Strict):
     name: str = Field(min_length=1)
     robot: str = Field(min_length=1)
     prefix: str = ""
     base: PoseSpec = PoseSpec()
     poses: dict[str, dict[str, dict[str, float]]] = {}
+    # How the mujoco backend holds a grasped object: one mode for the robot's arms, or
+    # per arm group / end effector (the robot's own names).
+    grasp_mode: GraspMode | dict[str, GraspMode] | None = None
 
 
 class ObjectSpec(_Strict):
@@ -98,6 +105,10 @@ class ObjectSpec(_Strict):
     scale: Scales = [1.0, 1.0, 1.0]
     pose: PoseSpec = PoseSpec()
     touch_links: list[str] = []
+    # Physics (mujoco backend only): with mass or density, a world object is a free body.
+    mass: Kilograms | None = None
+    density: Density | None = None
+    friction: Friction | None = None
 
     @model_validator(mode="after")
     def _fields_match_shape(self) -> ObjectSpec:
@@ -108,6 +119,7 @@ class ObjectSpec(_Strict):
             raise ValueError(f"a {self.shape} needs {', '.join(repr(m) for m in missing)}")
         if self.size is not None and min(self.size) <= 0:
             raise ValueError(f"'size' must be > 0 in every axis (got {self.size})")
+        check_material(self)
         return self
 
 
@@ -135,6 +147,7 @@ class CellObject:
     frame: str = WORLD
     touch_links: tuple[str, ...] = ()
     line: int | None = None
+    material: Material = Material()
 
 
 @dataclass
@@ -147,6 +160,8 @@ class Cell:
     objects: tuple[CellObject, ...]
     start: dict[str, str]
     description: str = ""
+    grasp_modes: dict[str, str] = field(default_factory=dict)
+    """Per arm group (prefixed): "friction" or "weld" (the mujoco backend's grasps)."""
 
     def start_state(self) -> np.ndarray:
         """The state the cell starts in: default joint values, the robots'
@@ -292,15 +307,23 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             if not model.has_link(link):
                 raise YamlError(f"objects[{i}].touch_links: unknown link {link!r}", path,
                                 line_of(item, "touch_links"))
+        material = material_of(obj)
+        if (material.mass or material.density) and obj.pose.frame != WORLD:
+            key = "mass" if material.mass is not None else "density"
+            raise YamlError(f"objects[{i}].{key}: an object fixed to link {obj.pose.frame!r} "
+                            "does not move; a mass or density makes a world object a free "
+                            "body in physics", path, line_of(item, key))
         objects.append(CellObject(obj.name, shape, obj.pose.se3(), obj.pose.frame,
-                                  tuple(obj.touch_links), line_of(item)))
+                                  tuple(obj.touch_links), line_of(item), material))
 
     for group, pose in spec.start.items():
         try:
             model.named_state(group, pose)
         except UnknownNameError as exc:
             raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
-    cell = Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description)
+    grasp_modes = _grasp_modes(spec, node, model, path)
+    cell = Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description,
+                grasp_modes)
     # Self-collision from where the cell starts (its start poses), not the zero state.
     start_name = "the cell's start state" if spec.start else None
     found = self_collision_warnings(model, cell.start_state(), start_name)
@@ -310,6 +333,34 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         model.warnings.append(str(warning))
     apply_taught(cell)  # poses taught on this cell (the API's), if a set is active
     return cell
+
+
+def _grasp_modes(spec: CellSpec, node: LineDict, model: RobotModel, path: Path
+                 ) -> dict[str, str]:
+    """Each robot's ``grasp_mode`` per arm group (prefixed names); a key of a mapping
+    names one of the robot's arm groups or end effectors."""
+    modes: dict[str, str] = {}
+    for i, robot in enumerate(spec.robots):
+        if robot.grasp_mode is None:
+            continue
+        prefix = robot.prefix
+        arms = {g.name: g for g in model.groups.values() if g.end_effector and g.tip_link
+                and g.robot == robot.name}
+        given = (robot.grasp_mode if isinstance(robot.grasp_mode, dict)
+                 else {name[len(prefix):]: robot.grasp_mode for name in arms})
+        for key, mode in given.items():
+            found = [g for g in arms.values() if g.name == prefix + key
+                     or g.end_effector == prefix + key]
+            if not found:
+                known = sorted({n[len(prefix):] for n in arms}
+                               | {str(g.end_effector)[len(prefix):] for g in arms.values()})
+                raise YamlError(f"robots[{i}].grasp_mode: {key!r} is not an arm group or end "
+                                f"effector of robot {robot.name!r} (known: "
+                                f"{', '.join(known) or 'none'})", path,
+                                line_of(node["robots"][i], "grasp_mode"))
+            for group in found:
+                modes[group.name] = mode
+    return modes
 
 
 def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None,
