@@ -30,6 +30,7 @@ from pydantic import (
     model_validator,
 )
 
+from taskrunner.materials import Density, Friction, Kilograms, check_material
 from taskrunner.types import Pose
 from taskrunner.validation import Metres, PositiveMetres, Radians, Scale
 from taskrunner.yamlfile import LineDict
@@ -234,6 +235,12 @@ class ObjectSpec(Node):
     """Placement of the object's centre (mesh origin)."""
     touch_links: tuple[str, ...] = ()
     """Links allowed to touch the object."""
+    mass: Kilograms | None = None
+    """Mass (kg), for the mujoco backend (others ignore it); default from 'density'."""
+    density: Density | None = None
+    """Density (kg/m³), for the mujoco backend when 'mass' is not given (default 600)."""
+    friction: Friction | None = None
+    """Friction for the mujoco backend: sliding, or [sliding, torsional, rolling] (default 1)."""
 
     @field_validator("file")
     @classmethod
@@ -257,4 +264,5 @@ class ObjectSpec(Node):
                              f"which a {self.shape} does not take")
         if self.size is not None and min(self.size) <= 0:
             raise ValueError(f"'size' must be > 0 in every axis (got {list(self.size)})")
+        check_material(self)
         return self

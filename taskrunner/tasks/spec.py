@@ -17,6 +17,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, WithJsonSchema
 
+from taskrunner.materials import Material, material_of
 from taskrunner.tasks.expect import Scenario, TaskExpectation
 from taskrunner.tasks.nodes import Node, ObjectSpec
 from taskrunner.tasks.steps import (
@@ -118,6 +119,17 @@ class TaskSpec(Node):
     def walk(self) -> Iterator[StepNode]:
         """Every step, depth first, in document order (included steps too)."""
         return walk_steps(self.steps)
+
+    def object_materials(self) -> dict[str, Material]:
+        """Mass, density and friction of the task's objects that give any (the task's
+        ``objects:``, then ``add_object`` steps; the first declaration of a name wins)."""
+        found: dict[str, Material] = {}
+        declared = [*self.objects, *(s.object for s in self.walk() if isinstance(s, AddObjectStep))]
+        for obj in declared:
+            material = material_of(obj)
+            if material and obj.name not in found:
+                found[obj.name] = material
+        return found
 
     def to_document(self) -> dict[str, Any]:
         """The task as a plain YAML document (values substituted, paths absolute) that
