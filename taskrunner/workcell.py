@@ -103,7 +103,8 @@ class Plan:
 
 
 def load_workcell(source: str | os.PathLike[str], *,
-                  packages: PackageMap | None = None) -> Workcell:
+                  packages: PackageMap | None = None,
+                  collision: str | Mapping[str, str] | None = None) -> Workcell:
     """Load a cell or a robot as a :class:`Workcell`.
 
     Args:
@@ -114,13 +115,23 @@ def load_workcell(source: str | os.PathLike[str], *,
             one-robot cell with no objects, at the world origin.
         packages: where ``package://`` and ``$(find pkg)`` resolve (default: folders
             with a ``package.xml`` near the files).
+        collision: the link geometry collisions are checked with, for every robot or by
+            robot name: ``"exact"`` meshes, ``"convex"`` hulls, or ``"auto"`` (hulls
+            where they are tight); None: each robot's ``collision:`` in the cell or its
+            robot.yaml, else auto. ``Workcell.scene.link_geometry`` tells which link got what.
 
     Raises:
-        InputError: ``source`` is neither a file or folder nor a shipped name.
+        InputError: ``source`` is neither a file or folder nor a shipped name, or
+            ``collision`` is not one of exact, convex, auto.
         RobotDescriptionError, YamlError: the cell or a robot's files are invalid (with
             file:line).
     """
-    return Workcell(load_cell_or_robot(resolve_cell(source), packages))
+    cell = load_cell_or_robot(resolve_cell(source), packages)
+    if collision is not None:
+        from taskrunner.scene.linkgeometry import set_collision_choice
+
+        set_collision_choice(cell.model, collision)
+    return Workcell(cell)
 
 
 class Workcell:

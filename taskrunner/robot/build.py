@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import os
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -120,6 +121,7 @@ def build_model(
             p.name, p.prefix, pin.SE3(p.base), p.description.source, p.description.hardware_path,
             *_scaling(p.description), p.description.layout,
             tuple(p.description.files.items()), tuple(p.description.notes),
+            _collision_choice(p.description),
         )
         for p in placements
     )
@@ -162,6 +164,15 @@ def build_model(
     for warning in unique:
         log.warning("%s", warning)
     return robot
+
+
+def _collision_choice(description: RobotDescription) -> str:
+    """``TASKRUNNER_COLLISION`` (``run-task --collision``), else the robot's own choice."""
+    env = os.environ.get("TASKRUNNER_COLLISION") or None
+    if env is not None and env not in ("exact", "convex", "auto"):
+        raise RobotDescriptionError(
+            f"'TASKRUNNER_COLLISION' must be one of exact, convex, auto (got {env!r})")
+    return env or description.collision or "auto"
 
 
 def _scaling(description: RobotDescription) -> tuple[float, float]:

@@ -7,6 +7,7 @@ A cell file (YAML) looks like::
       - name: arm                  # instance name
         robot: ../servo_arm        # manifest / folder / URDF, relative to this file
         prefix: ""                 # put before every link, joint and group name
+        collision: auto            # link geometry: exact, convex or auto (hulls where tight)
         base: {xyz: [0, 0, 0.75], rpy: [0, 0, 0]}
         poses:                     # more named poses, robot's own names
           arm:
@@ -90,6 +91,7 @@ class RobotSpec(_Strict):
     prefix: str = ""
     base: PoseSpec = PoseSpec()
     poses: dict[str, dict[str, dict[str, float]]] = {}
+    collision: Literal["exact", "convex", "auto"] | None = None
     # How the mujoco backend holds a grasped object: one mode for the robot's arms, or
     # per arm group / end effector (the robot's own names).
     grasp_mode: GraspMode | dict[str, GraspMode] | None = None
@@ -273,8 +275,11 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             for pose_name in poses:
                 group_node = poses_node.get(group_name, {})
                 lines[(group_name, pose_name)] = (str(path), line_of(group_node, pose_name))
+        description = load_description(robot_path, packages)
+        if robot.collision is not None:  # the cell's word wins over the robot.yaml's
+            description.collision = robot.collision
         placements.append(
-            Placement(load_description(robot_path, packages), robot.name, robot.prefix,
+            Placement(description, robot.name, robot.prefix,
                       robot.base.se3(), robot.poses, lines)
         )
     try:

@@ -50,7 +50,8 @@ __all__ = ["RobotDescription", "load_description", "read_srdf_file"]
 
 MANIFEST = "robot.yaml"
 _MANIFEST_KEYS = {"name", "urdf", "srdf", "kinematics", "joint_limits", "hardware", "xacro_args",
-                  "ompl_planning", "initial_positions"}
+                  "ompl_planning", "initial_positions", "collision"}
+COLLISION_CHOICES = ("exact", "convex", "auto")
 T = TypeVar("T")
 
 
@@ -82,6 +83,8 @@ class RobotDescription:
     layout: str = ""
     notes: list[str] = field(default_factory=list)
     load_warnings: list[LoadWarning] = field(default_factory=list)
+    collision: str | None = None
+    """``collision:`` of the manifest (exact, convex, auto), if it says."""
 
     @property
     def warnings(self) -> list[LoadWarning]:
@@ -230,6 +233,11 @@ def _load_manifest(path: Path, packages: PackageMap) -> RobotDescription:
     )
     _add_optional_files(description, file_field("ompl_planning"),
                         file_field("initial_positions"))
+    collision = data.get("collision")
+    if collision is not None and collision not in COLLISION_CHOICES:
+        raise YamlError(f"'collision' must be one of {', '.join(COLLISION_CHOICES)} "
+                        f"(got {collision!r})", path, line_of(data, "collision"))
+    description.collision = collision
     return description
 
 

@@ -136,6 +136,8 @@ class RobotInstance:
     layout: str = ""
     files: tuple[tuple[str, Path], ...] = ()
     notes: tuple[str, ...] = ()
+    collision: str = "auto"
+    """Link geometry to check: exact meshes, convex hulls, or auto (hulls where tight)."""
 
     def describe_files(self) -> list[str]:
         """Which files the robot was loaded from and why, for ``run-task info``."""

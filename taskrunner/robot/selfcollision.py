@@ -7,8 +7,8 @@ Setup Assistant's "Self-Collisions" step.
 
 The check uses the model's own collision geometry (meshes as triangle meshes), skipping
 the pairs the SRDF disables and adjacent links, on pinocchio and coal only: the robot
-layer does not depend on the scene. The scene may check link meshes as convex hulls,
-which are fatter; a pose that touches only with hulls is not reported here.
+layer does not depend on the scene. The scene checks a link mesh as its convex hull only
+where that adds no collision at a named pose (see :mod:`taskrunner.scene.linkgeometry`).
 """
 
 from __future__ import annotations
@@ -24,10 +24,18 @@ __all__ = ["self_colliding_pairs", "self_collision_warnings"]
 _MAX_PAIRS_SHOWN = 6
 
 
-def self_colliding_pairs(robot: RobotModel, q: np.ndarray) -> list[tuple[str, str]]:
+def self_colliding_pairs(robot: RobotModel, q: np.ndarray,
+                         geometry: pin.GeometryModel | None = None) -> list[tuple[str, str]]:
     """Link pairs in collision at state ``q``, sorted; disabled and adjacent pairs and
-    pairs within one link are not checked."""
-    geometry = robot.collision_model
+    pairs within one link are not checked.
+
+    Args:
+        robot: the model.
+        q: its state vector.
+        geometry: the link geometry to check (default: the model's own, meshes as
+            triangle meshes); the scene passes its choice of hulls and meshes.
+    """
+    geometry = geometry if geometry is not None else robot.collision_model
     objects = geometry.geometryObjects
     frames = robot.model.frames
     links = [frames[g.parentFrame].name for g in objects]

@@ -4,22 +4,25 @@ Scene objects are plain :mod:`taskrunner.shapes`; this module turns them into co
 geometry (meshes through coal's mesh loader). Robot link meshes can be replaced by their
 convex hulls: GJK on a hull is several times faster than a BVH traversal, and the hull
 gives a true signed distance when two bodies overlap (a BVH only reports 0 or a shallow
-triangle depth). For a non-convex link mesh the hull is a conservative approximation.
+triangle depth). For a non-convex link mesh the hull is fatter: which links get hulls is
+each robot's choice (:mod:`taskrunner.scene.linkgeometry`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
 import coal
 import numpy as np
 import pinocchio as pin
-from scipy.spatial import ConvexHull, QhullError
 
 from taskrunner.errors import MissingMeshError, SceneError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import Body
+from taskrunner.scene.hullfit import convex_hull
+from taskrunner.scene.linkgeometry import DEFAULT_HULL_TOLERANCE, HULL, link_hull, plan_link_geometry
 from taskrunner.scene.objects import SceneObject
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 
@@ -84,30 +87,6 @@ def shape_geometry(shape: Shape, meshes: MeshCache) -> coal.CollisionGeometry:
     )
 
 
-def convex_hull(mesh: coal.BVHModelBase) -> coal.Convex:
-    """The convex hull of a triangle mesh's vertices, as a coal convex polytope.
-
-    Built with scipy's Qhull because this coal wheel is compiled without it
-    (``coal.WITH_QHULL`` is false, so ``buildConvexHull`` would keep every vertex).
-
-    Raises:
-        SceneError: the mesh is flat or degenerate (no 3-D hull).
-    """
-    vertices = np.array(mesh.vertices(), dtype=float)
-    try:
-        hull = ConvexHull(vertices)
-    except (QhullError, ValueError) as exc:
-        raise SceneError(f"mesh has no 3-D convex hull ({len(vertices)} vertices): {exc}") from None
-    renumber = {int(v): i for i, v in enumerate(hull.vertices)}
-    points = coal.StdVec_Vec3s()
-    for v in hull.vertices:
-        points.append(vertices[v])
-    triangles = coal.StdVec_Triangle()
-    for a, b, c in hull.simplices:
-        triangles.append(coal.Triangle(renumber[int(a)], renumber[int(b)], renumber[int(c)]))
-    return coal.Convex(points, triangles)
-
-
 @dataclass(frozen=True)
 class LinkGeometry:
     """One collision body of a robot link.
@@ -121,31 +100,39 @@ class LinkGeometry:
     geometry: pin.GeometryObject
 
 
-def robot_link_geometry(robot: RobotModel, convex_meshes: bool) -> tuple[LinkGeometry, ...]:
-    """Copies of the robot's collision geometry, meshes optionally replaced by hulls.
+def robot_link_geometry(robot: RobotModel, collision: bool | str | Mapping[str, str] | None = None,
+                        tolerance: float = DEFAULT_HULL_TOLERANCE) -> tuple[LinkGeometry, ...]:
+    """Copies of the robot's collision geometry, each link's meshes as chosen by
+    :func:`~taskrunner.scene.linkgeometry.plan_link_geometry`.
 
-    The robot's own :attr:`~taskrunner.robot.RobotModel.collision_model` is left untouched.
-    A degenerate mesh (a flat plate) keeps its BVH.
+    Args:
+        robot: the model; its own :attr:`~taskrunner.robot.RobotModel.collision_model`
+            is left untouched.
+        collision: exact, convex or auto for every robot (True means convex and False
+            exact), or by instance name; None: each robot's own choice.
+        tolerance: how far a hull may stand off its mesh under auto (m).
     """
+    if isinstance(collision, bool):
+        collision = "convex" if collision else "exact"
+    plan = plan_link_geometry(robot, collision, tolerance)
     out = []
-    for source in robot.collision_model.geometryObjects:
+    for index, source in enumerate(robot.collision_model.geometryObjects):
+        link = robot.model.frames[source.parentFrame].name
         geometry = source.geometry
-        if convex_meshes and isinstance(geometry, coal.BVHModelBase):
-            try:
-                geometry = convex_hull(geometry)
-            except SceneError:
-                geometry = source.geometry
+        if plan.kind(link) == HULL and isinstance(geometry, coal.BVHModelBase):
+            geometry = link_hull(robot, index) or geometry
         copy = pin.GeometryObject(
             source.name, source.parentJoint, source.parentFrame, source.placement, geometry
         )
-        out.append(LinkGeometry(robot.model.frames[source.parentFrame].name, copy))
+        out.append(LinkGeometry(link, copy))
     return tuple(out)
 
 
-def link_bodies(robot: RobotModel, convex_meshes: bool) -> tuple[Body, ...]:
+def link_bodies(robot: RobotModel, collision: bool | str | Mapping[str, str] | None = None,
+                tolerance: float = DEFAULT_HULL_TOLERANCE) -> tuple[Body, ...]:
     """The robot's links with geometry as collision bodies (see :func:`robot_link_geometry`)."""
     grouped: dict[str, list[pin.GeometryObject]] = {}
-    for link in robot_link_geometry(robot, convex_meshes):
+    for link in robot_link_geometry(robot, collision, tolerance):
         grouped.setdefault(link.link, []).append(link.geometry)
     return tuple(Body(name, tuple(geometries)) for name, geometries in grouped.items())
 

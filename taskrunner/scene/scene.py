@@ -31,6 +31,12 @@ from taskrunner.robot import RobotModel
 from taskrunner.scene.allowed import AllowedCollisions
 from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact
 from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
+from taskrunner.scene.linkgeometry import (
+    COLLISION_CHOICES,
+    DEFAULT_HULL_TOLERANCE,
+    LinkGeometryPlan,
+    plan_link_geometry,
+)
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.support import Support, gap_below
 from taskrunner.scene.sweep import PathVerifier
@@ -47,18 +53,37 @@ class SceneOptions:
     """How a scene models the robot's geometry.
 
     Attributes:
-        convex_robot_meshes: replace each robot link mesh by its convex hull (GJK on a
-            hull is much faster than on a BVH and gives signed distances; conservative
-            for non-convex link meshes). Scene object meshes always keep their BVH.
+        collision: ``exact``, ``convex`` or ``auto`` for every robot (see
+            :mod:`taskrunner.scene.linkgeometry`); None: each robot's own choice (its
+            robot.yaml or cell, else auto). Scene object meshes always keep their BVH.
+        convex_robot_meshes: the older spelling: True is ``convex``, False ``exact``;
+            ``collision`` wins when both are given.
+        hull_tolerance: under ``auto``, how far (m) a link's hull may stand off its mesh.
     """
 
-    convex_robot_meshes: bool = True
+    collision: str | None = None
+    convex_robot_meshes: bool | None = None
+    hull_tolerance: float = DEFAULT_HULL_TOLERANCE
 
     def __post_init__(self) -> None:
-        if not isinstance(self.convex_robot_meshes, bool):
+        if self.convex_robot_meshes is not None and not isinstance(self.convex_robot_meshes, bool):
             raise ValueError(
                 f"'convex_robot_meshes' must be a bool (got {self.convex_robot_meshes!r})"
             )
+        if self.collision is not None and self.collision not in COLLISION_CHOICES:
+            raise ValueError(f"'collision' must be one of {', '.join(COLLISION_CHOICES)} "
+                             f"(got {self.collision!r})")
+        if not self.hull_tolerance >= 0:
+            raise ValueError(f"'hull_tolerance' must be >= 0 m (got {self.hull_tolerance})")
+
+    @property
+    def robot_collision(self) -> str | None:
+        """The choice for every robot, or None for each robot's own."""
+        if self.collision is not None:
+            return self.collision
+        if self.convex_robot_meshes is not None:
+            return "convex" if self.convex_robot_meshes else "exact"
+        return None
 
 
 @dataclass(frozen=True)
@@ -80,7 +105,8 @@ class Scene:
     def __init__(self, robot: RobotModel, options: SceneOptions | None = None) -> None:
         self.robot = robot
         self.options = options or SceneOptions()
-        self._link_bodies = link_bodies(robot, self.options.convex_robot_meshes)
+        self._link_bodies = link_bodies(robot, self.options.robot_collision,
+                                        self.options.hull_tolerance)
         self._link_set = frozenset(robot.link_names)
         self._meshes = MeshCache()
         self._entries: dict[str, _Entry] = {}
@@ -385,6 +411,19 @@ class Scene:
         return checker.min_distance(
             self.robot.to_pin(self._as_state(self._q if q is None else q))
         )
+
+    @property
+    def link_geometry(self) -> LinkGeometryPlan:
+        """Which links are checked as convex hulls, exact meshes or primitives, and why."""
+        return plan_link_geometry(self.robot, self.options.robot_collision,
+                                  self.options.hull_tolerance)
+
+    def geometry_note(self, pairs: Iterable[Contact | tuple[str, str]]) -> str:
+        """`` (exact meshes)``, `` (convex hulls)`` or per link: the geometry the robot
+        links of these colliding pairs were checked with, for messages ("" for none)."""
+        names = [n for p in pairs for n in ((p.a, p.b) if isinstance(p, Contact) else p)]
+        described = self.link_geometry.describe(names)
+        return f" ({described})" if described else ""
 
     @property
     def checker(self) -> CollisionChecker:
