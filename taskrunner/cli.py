@@ -73,6 +73,9 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
                              "TASKRUNNER_PACKAGE_PATH, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)")
     parser.add_argument("--strict", action="store_true",
                         help="robot file warnings (what MoveIt would skip) are errors")
+    parser.add_argument("--collision", choices=("exact", "convex", "auto"), default=None,
+                        help="link geometry of every robot: exact meshes, convex hulls, or "
+                             "auto (hulls where tight; default: each robot's own choice)")
 
 
 def _apply_robot_options(args: argparse.Namespace) -> None:
@@ -91,6 +94,8 @@ def _apply_robot_options(args: argparse.Namespace) -> None:
             [*map(str, folders), *([before] if before else [])])
     if getattr(args, "strict", False):
         os.environ[STRICT_ENV] = "1"
+    if getattr(args, "collision", None):
+        os.environ["TASKRUNNER_COLLISION"] = args.collision
 
 
 def cmd_info(args: argparse.Namespace) -> int:
@@ -118,6 +123,9 @@ def cmd_info(args: argparse.Namespace) -> int:
     bare = model.links_without_collision_geometry()
     if bare:
         out.append(f"links without collision geometry: {', '.join(bare)}")
+    from taskrunner.scene.linkgeometry import describe_link_geometry
+
+    out += describe_link_geometry(model)
     if cell.objects:
         out.append("objects:")
         for obj in cell.objects:

@@ -204,8 +204,8 @@ class CartesianPlanner:
         if checker is not None and checker.in_collision(model.to_pin(q)):
             contacts = self.scene.collisions(q)
             raise StartInCollisionError(
-                f"start state of group {group.name!r} is in collision: {_describe(contacts)}",
-                [(c.a, c.b) for c in contacts])
+                f"start state of group {group.name!r} is in collision: {_describe(contacts)}"
+                f"{self.scene.geometry_note(contacts[:1])}", [(c.a, c.b) for c in contacts])
         position_only = (group.position_only_ik if options.position_only is None
                          else options.position_only)
         poses = [self._frame_pose(solver.frame, q)]

@@ -226,8 +226,8 @@ class MotionPlanner:
             contacts = self.scene.collisions(start)
             pairs = [(c.a, c.b) for c in contacts]
             raise StartInCollisionError(
-                f"start state of group {group.name!r} is in collision: " + _describe(contacts),
-                pairs)
+                f"start state of group {group.name!r} is in collision: " + _describe(contacts)
+                + self.scene.geometry_note(contacts[:3]), pairs)
         return start
 
     def _goal_states(self, request: PlanRequest, group: Group, start: np.ndarray
@@ -256,8 +256,8 @@ class MotionPlanner:
             contacts = self.scene.collisions(rejected[0][1])
             raise GoalInCollisionError(
                 f"every goal state of group {group.name!r} is in collision ("
-                f"{len(rejected)} checked); first: " + _describe(contacts),
-                [(c.a, c.b) for c in contacts])
+                f"{len(rejected)} checked); first: " + _describe(contacts)
+                + self.scene.geometry_note(contacts[:3]), [(c.a, c.b) for c in contacts])
         return valid
 
     def _goal_candidates(self, goal, group: Group, start: np.ndarray,  # type: ignore[no-untyped-def]

@@ -47,6 +47,7 @@ __all__ = [
     "LinkGeometryPlan",
     "check_collision_choice",
     "collision_choices",
+    "describe_link_geometry",
     "link_hull",
     "plan_link_geometry",
     "set_collision_choice",
@@ -319,3 +320,11 @@ def _geometry_model(robot: RobotModel, by_link: Mapping[str, list[int]],
             geometry.addGeometryObject(pin.GeometryObject(
                 source.name, source.parentJoint, source.parentFrame, source.placement, shape))
     return geometry
+
+
+def describe_link_geometry(robot: RobotModel) -> list[str]:
+    """Lines for ``run-task info``: each robot's choice, then which links are checked as
+    hulls, exact meshes (and why, under auto) or primitives."""
+    choices = ", ".join(f"{inst.name} {inst.collision}" for inst in robot.instances)
+    return [f"collision geometry ({choices}):",
+            *(f"  {line}" for line in plan_link_geometry(robot).summary())]

@@ -228,10 +228,13 @@ def _start_scene(spec: TaskSpec, cell: Cell, marked: set[Any]
     return scene, problems, missing
 
 
-def _pairs(contacts: Iterable[Contact | tuple[str, str]]) -> str:
+def _pairs(contacts: Iterable[Contact | tuple[str, str]], scene: Scene | None = None) -> str:
+    """``a–b, c–d and 2 more``, then the robot links' geometry when ``scene`` is given."""
     pairs = [(c.a, c.b) if isinstance(c, Contact) else c for c in contacts]
     shown = ", ".join(f"{a}–{b}" for a, b in pairs[:3])
-    return shown + (f" and {len(pairs) - 3} more" if len(pairs) > 3 else "")
+    geometry = scene.link_geometry.describe(n for p in pairs[:3] for n in p) if scene else ""
+    return (shown + (f" and {len(pairs) - 3} more" if len(pairs) > 3 else "")
+            + (f"; {geometry}" if geometry else ""))
 
 
 def _miss(exc: IkFailedError) -> str:
@@ -523,7 +526,7 @@ class _DryRun:
             group = model.group(leaf.group)
             seed = ctx.next_seed()  # as MoveToGoal draws it, so IK finds what the run finds
             if not self.tainted and scene.in_collision(start):
-                return f"{lead}start state in collision ({_pairs(scene.collisions(start))})"
+                return f"{lead}start state in collision ({_pairs(scene.collisions(start), scene)})"
             valid: list[np.ndarray] = []
             rejected: list[np.ndarray] = []
             for q in self.candidates(goals if isinstance(goals, tuple) else (goals,), group,
@@ -539,7 +542,7 @@ class _DryRun:
         except TaskrunnerError as exc:
             return f"{lead}{exc}"
         if not valid:
-            return f"{word} in collision ({_pairs(scene.collisions(rejected[0]))})"
+            return f"{word} in collision ({_pairs(scene.collisions(rejected[0]), scene)})"
         return valid[:MAX_GOAL_STATES]
 
     def candidates(self, goals: tuple[Any, ...], group: Group, start: np.ndarray,
@@ -627,7 +630,7 @@ class _DryRun:
         try:
             result = leaf.compute(ctx)  # the run's own computation (fallback options too)
         except StartInCollisionError as exc:
-            return f"{name}: start state in collision ({_pairs(exc.pairs)})"
+            return f"{name}: start state in collision ({_pairs(exc.pairs, ctx.scene)})"
         if not result.complete:
             verb = "blocked" if result.stop_reason == "collision" else "stopped"
             percent = f"{math.floor(100.0 * result.fraction + 1e-9):.0f} %"
