@@ -35,6 +35,7 @@ from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.resources import resolve_cell
 from taskrunner.robot import PackageMap, Placement, RobotModel, build_model, load_description
 from taskrunner.scene.geometry import LinkGeometry, robot_link_geometry
+from taskrunner.scene.linkgeometry import COLLISION_CHOICES, check_collision_choice
 
 __all__ = [
     "DisabledPair",
@@ -74,16 +75,28 @@ class MatrixOptions:
     Attributes:
         always_fraction: a pair colliding in at least this fraction of a batch is "Always".
         always_batch: states per batch of the "Always" pass (MoveIt uses 100).
-        convex_meshes: check link meshes as convex hulls, as
-            :class:`~taskrunner.scene.SceneOptions` does by default; keep both the same so
-            that the matrix matches what the scene checks.
+        collision: the link geometry to check: ``exact``, ``convex`` or ``auto``; None:
+            the robot's own choice, as :class:`~taskrunner.scene.Scene` checks it, so that
+            the matrix matches what the scene checks.
+        convex_meshes: the older spelling: True is ``convex``, False ``exact``.
     """
 
     always_fraction: float = 0.95
     always_batch: int = 100
-    convex_meshes: bool = True
+    collision: str | None = None
+    convex_meshes: bool | None = None
+
+    @property
+    def robot_collision(self) -> str | None:
+        if self.collision is not None:
+            return self.collision
+        if self.convex_meshes is not None:
+            return "convex" if self.convex_meshes else "exact"
+        return None
 
     def __post_init__(self) -> None:
+        if self.collision is not None:
+            check_collision_choice(self.collision)
         if not 0.0 < self.always_fraction <= 1.0:
             raise ValueError(f"'always_fraction' must be in (0, 1] (got {self.always_fraction})")
         if self.always_batch < 1:
@@ -113,7 +126,7 @@ def generate_collision_matrix(
     options = options or MatrixOptions()
     if samples < 1:
         raise ValueError(f"'samples' must be >= 1 (got {samples})")
-    links = robot_link_geometry(robot, options.convex_meshes)
+    links = robot_link_geometry(robot, options.robot_collision)
     reasons: dict[frozenset[str], str] = {
         pair: "Adjacent" for pair in adjacent_link_pairs(robot, {g.link for g in links})
     }
@@ -286,8 +299,10 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help="write the entries into this SRDF file (created if missing)")
     parser.add_argument("--keep-existing", action="store_true",
                         help="with --write: keep old entries for pairs not generated")
-    parser.add_argument("--meshes", action="store_true",
-                        help="check link meshes as meshes, not convex hulls")
+    parser.add_argument("--collision", choices=COLLISION_CHOICES, default=None,
+                        help="link geometry: exact meshes, convex hulls, or auto (hulls where "
+                             "tight); default: the robot's own choice, as planning checks it")
+    parser.add_argument("--meshes", action="store_true", help="the same as --collision exact")
     parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
                         type=Path, help="also look for ROS packages under DIR (repeatable)")
     args = parser.parse_args(argv)
@@ -303,8 +318,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         robot = build_model([Placement(load_description(robot_path, packages))],
                             check_self_collision=False)
         entries = generate_collision_matrix(
-            robot, args.samples, args.seed, MatrixOptions(convex_meshes=not args.meshes)
-        )
+            robot, args.samples, args.seed,
+            MatrixOptions(collision="exact" if args.meshes else args.collision))
         sys.stdout.write(format_disable_collisions(entries, indent=""))
         counts = Counter(e.reason for e in entries)
         summary = ", ".join(f"{counts[r]} {r}" for r in REASONS)
