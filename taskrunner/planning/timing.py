@@ -321,8 +321,12 @@ def _check_limits(names: tuple[str, ...], times: np.ndarray, values: np.ndarray,
 
 @functools.cache
 def _toppra_kit() -> SimpleNamespace:
-    """Import toppra on first use (~1 s: it imports matplotlib) and build what needs it."""
+    """Import toppra on first use (0.1-0.2 s without matplotlib, see
+    :mod:`~taskrunner.planning.toppra_import`) and build what needs it."""
     logging.getLogger("toppra").setLevel(logging.WARNING)  # it logs every call at INFO
+    from taskrunner.planning.toppra_import import import_toppra
+
+    import_toppra()
     import toppra
     import toppra.algorithm
     import toppra.constraint as tc

@@ -151,7 +151,9 @@ def _can_redraw() -> bool:
 
 
 def _import_toppra() -> None:
-    import toppra  # noqa: F401
+    from taskrunner.planning.toppra_import import import_toppra
+
+    import_toppra()
 
 
 def _log_line(event: RunEvent) -> str | None:
@@ -197,7 +199,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     stop = _StopSignals(out)
     with stop.installed():
         spec = load_task(path, parameters or {})
-        # toppra takes most of a second to import: do it while the rest loads.
+        # toppra takes 0.1-0.2 s to import: do it while the rest loads.
         threading.Thread(target=_import_toppra, daemon=True).start()
         events = EventLog()
         planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other

@@ -1,0 +1,169 @@
+"""Start-up benchmark: ``run-task TASK`` from process start to its first motion.
+
+Spawns ``python -m taskrunner.cli TASK --plain --backend mock --seed S`` N times (seeds
+S, S+1, …; default behaviour otherwise: the check before the run, the planning worker)
+and measures, on this side's wall clock from just before the spawn:
+
+* ``first_motion``: when the first trajectory with a duration went to the backend. The
+  run prints a ``planned`` line for each motion just before it sends the trajectory;
+  its arrival time on the pipe plus the record's time from that ``planned`` event to
+  the ``motion`` event (microseconds) gives it;
+* ``checked``: arrival of the ``checked N steps`` line (the end of the check);
+* ``wall``: process exit (includes the motion itself: the mock backend jumps to the end
+  of each trajectory, so little);
+* the exit code (a run that does not end 0 is an error, not a figure).
+
+``--cold`` adds one run first with an empty ``XDG_CACHE_HOME`` (no cached robot models,
+nothing built before) and Python's bytecode cache redirected to an empty folder
+(``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart. The warm runs
+follow, after one unmeasured run that fills the caches.
+
+Usage::
+
+    python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold]
+                                 [--json] [--pythonpath DIR]
+
+``--pythonpath DIR`` runs the taskrunner found in DIR instead (``git archive`` of an
+older commit, for a before/after in the same run). Prints a table, and with ``--json``
+one JSON object as the last line.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["run", "run_once"]
+
+_PLANNED = re.compile(r"^\s*[0-9.]+s\s+planned in ")
+_CHECKED = re.compile(r": checked \d+ steps? in ")
+
+
+def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = None,
+             timeout: float = 120.0) -> dict[str, Any]:
+    """One ``run-task`` process; times in s from just before the spawn."""
+    command = [sys.executable, "-m", "taskrunner.cli", task, "--plain", "--backend", "mock",
+               "--seed", str(seed), "--runs-dir", str(runs_dir)]
+    lines: list[tuple[float, str]] = []
+    started = time.perf_counter()
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env=env, bufsize=1)
+    assert process.stdout is not None and process.stderr is not None
+    for line in process.stdout:
+        lines.append((time.perf_counter() - started, line.rstrip("\n")))
+    stderr = process.stderr.read()
+    code = process.wait(timeout)
+    wall = time.perf_counter() - started
+    if code != 0:
+        raise RuntimeError(f"run-task {task} --seed {seed} ended {code}:\n{stderr[-2000:]}")
+    checked = next((t for t, text in lines if _CHECKED.search(text)), None)
+    planned_lines = [t for t, text in lines if _PLANNED.match(text)]
+    record_path = next((Path(text.split("record:", 1)[1].strip()) for _, text in lines
+                        if text.strip().startswith("record:")), None)
+    if record_path is None:
+        raise RuntimeError(f"run-task {task}: no record line in its output")
+    events = json.loads(record_path.read_text(encoding="utf-8"))["events"]
+    planned = [e for e in events if e["kind"] == "planned"]
+    if len(planned) != len(planned_lines):
+        raise RuntimeError(f"{len(planned)} planned events but {len(planned_lines)} lines")
+    first_motion = None
+    for k, event in enumerate(events):
+        if event["kind"] != "motion":
+            continue
+        before = max(j for j in range(k) if events[j]["kind"] == "planned")
+        line_time = planned_lines[planned.index(events[before])]
+        first_motion = line_time + event["time"] - events[before]["time"]
+        break
+    if first_motion is None:
+        raise RuntimeError(f"run-task {task}: no motion in its record")
+    return {"first_motion": first_motion, "checked": checked, "wall": wall}
+
+
+def _stats(values: list[float]) -> dict[str, float]:
+    array = np.asarray(values)
+    return {"median": float(np.median(array)), "mean": float(array.mean()),
+            "min": float(array.min()), "max": float(array.max())}
+
+
+def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = False,
+        pythonpath: str | None = None) -> dict[str, Any]:
+    """Measure ``runs`` warm starts (and one cold one with ``cold``); see the module doc."""
+    env = dict(os.environ)
+    env.pop("PYTHONPROFILEIMPORTTIME", None)
+    if pythonpath:
+        env["PYTHONPATH"] = os.pathsep.join(filter(None, [pythonpath, env.get("PYTHONPATH")]))
+    result: dict[str, Any] = {"task": task, "runs": runs, "seed": seed,
+                              "load_before": os.getloadavg()[0]}
+    with tempfile.TemporaryDirectory(prefix="startup-bench-") as tmp:
+        root = Path(tmp)
+        runs_dir = root / "runs"
+        if cold:
+            cold_env = dict(env, XDG_CACHE_HOME=str(root / "cold-cache"),
+                            PYTHONPYCACHEPREFIX=str(root / "cold-pycache"))
+            result["cold"] = run_once(task, seed, runs_dir, cold_env)
+        run_once(task, seed, runs_dir, env)  # fills the caches; not measured
+        samples = [run_once(task, seed + k, runs_dir, env) for k in range(runs)]
+    for key in ("first_motion", "checked", "wall"):
+        values = [s[key] for s in samples if s[key] is not None]
+        if values:
+            result[key] = _stats(values)
+    result["samples"] = samples
+    result["load_after"] = os.getloadavg()[0]
+    return result
+
+
+def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
+    """``(what, figure)`` rows of a :func:`run` result."""
+    out = []
+    for key, what in (("first_motion", "start to first motion"), ("checked", "start to check done"),
+                      ("wall", "start to exit (wall)")):
+        if key in result:
+            s = result[key]
+            out.append((f"run-task {result['task']}, {what}, {result['runs']} warm runs",
+                        f"{s['median']:.3f} s median, {s['mean']:.3f} s mean, "
+                        f"{s['min']:.3f}-{s['max']:.3f} s"))
+    if "cold" in result:
+        c = result["cold"]
+        out.append((f"run-task {result['task']}, cold caches (models, bytecode)",
+                    f"first motion {c['first_motion']:.3f} s, wall {c['wall']:.3f} s"))
+    out.append(("load average (1 min) before / after",
+                f"{result['load_before']:.2f} / {result['load_after']:.2f}"))
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--task", default="pick_place", help="task file or example name")
+    parser.add_argument("--runs", type=int, default=10, help="warm runs (10)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first run (0)")
+    parser.add_argument("--cold", action="store_true", help="one cold-cache run first")
+    parser.add_argument("--json", action="store_true", help="end with one JSON line")
+    parser.add_argument("--pythonpath", default=None,
+                        help="run the taskrunner in this folder (a checkout of another commit)")
+    args = parser.parse_args(argv)
+    result = run(args.task, args.runs, args.seed, args.cold, args.pythonpath)
+    table = rows(result)
+    width = max(len(what) for what, _ in table)
+    for what, figure in table:
+        print(f"{what:<{width}}  {figure}")
+    if args.json:
+        result["python"] = platform.python_version()
+        result["machine"] = platform.machine()
+        result["cpus"] = os.cpu_count()
+        print(json.dumps(result))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
