@@ -46,6 +46,14 @@ from taskrunner.robot.model import RobotModel
 from taskrunner.robot.notes import raise_if_strict
 from taskrunner.robot.packages import PackageMap
 from taskrunner.robot.selfcollision import self_collision_warnings
+from taskrunner.robot.tools import (
+    DeclaredTool,
+    EndEffectorSettings,
+    Tool,
+    install_tools,
+    merge_declared,
+    read_end_effector_settings,
+)
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.taught import apply_taught
 from taskrunner.textfile import resolve_path
@@ -95,6 +103,9 @@ class RobotSpec(_Strict):
     # How the mujoco backend holds a grasped object: one mode for the robot's arms, or
     # per arm group / end effector (the robot's own names).
     grasp_mode: GraspMode | dict[str, GraspMode] | None = None
+    # Tool frames and gripper pose names per end effector (robot's own names), over the
+    # robot.yaml's (see taskrunner.robot.tools).
+    end_effectors: dict[str, EndEffectorSettings] = {}
 
 
 class ObjectSpec(_Strict):
@@ -164,6 +175,13 @@ class Cell:
     description: str = ""
     grasp_modes: dict[str, str] = field(default_factory=dict)
     """Per arm group (prefixed): "friction" or "weld" (the mujoco backend's grasps)."""
+    tools: dict[str, Tool] = field(default_factory=dict)
+    """Per arm group: its tool frame and gripper poses (:mod:`taskrunner.robot.tools`);
+    resolved with no declarations when not given."""
+
+    def __post_init__(self) -> None:
+        if not self.tools:
+            self.tools = install_tools(self.model)
 
     def start_state(self) -> np.ndarray:
         """The state the cell starts in: default joint values, the robots'
@@ -245,6 +263,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         search_roots=[path.parent.parent])
 
     placements: list[Placement] = []
+    declared: dict[str, DeclaredTool] = {}
     seen: set[str] = set()
     for i, robot in enumerate(spec.robots):
         item = robots_node[i]
@@ -276,6 +295,9 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
                 group_node = poses_node.get(group_name, {})
                 lines[(group_name, pose_name)] = (str(path), line_of(group_node, pose_name))
         description = load_description(robot_path, packages)
+        declared.update({robot.prefix + name: entry for name, entry in merge_declared(
+            description.end_effector_settings,
+            read_end_effector_settings(item.get("end_effectors"), path)).items()})
         if robot.collision is not None:  # the cell's word wins over the robot.yaml's
             description.collision = robot.collision
         placements.append(
@@ -328,7 +350,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             raise YamlError(f"start.{group}: {exc}", path, line_of(node["start"], group)) from None
     grasp_modes = _grasp_modes(spec, node, model, path)
     cell = Cell(spec.name, path, model, tuple(objects), dict(spec.start), spec.description,
-                grasp_modes)
+                grasp_modes, tools=install_tools(model, declared))
     # Self-collision from where the cell starts (its start poses), not the zero state.
     start_name = "the cell's start state" if spec.start else None
     found = self_collision_warnings(model, cell.start_state(), start_name)
@@ -372,10 +394,10 @@ def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None,
                        strict: bool | None = None) -> Cell:
     """A cell file, or a robot (manifest, folder, URDF, xacro) as a one-robot cell with no
     objects."""
-    from taskrunner.robot import load_robot
-
     path = Path(path)
     if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
         return load_cell(path, packages, strict=strict)
-    model = load_robot(path, packages, strict=strict)
-    return Cell(model.name, path, model, (), {})
+    description = load_description(path, packages)
+    model = build_model([Placement(description)], name=description.name, strict=strict)
+    return Cell(model.name, path, model, (), {},
+                tools=install_tools(model, description.end_effector_settings))

@@ -41,6 +41,7 @@ from taskrunner.robot.moveit_yaml import (
 from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap, default_package_map
 from taskrunner.robot.srdf import Srdf, read_srdf, srdf_from_document
+from taskrunner.robot.tools import DeclaredTool, read_end_effector_settings
 from taskrunner.robot.urdf import UrdfDescription, read_urdf
 from taskrunner.robot.xacrofile import expand_xacro
 from taskrunner.robot.xmldoc import parse_xml
@@ -50,7 +51,7 @@ __all__ = ["RobotDescription", "load_description", "read_srdf_file"]
 
 MANIFEST = "robot.yaml"
 _MANIFEST_KEYS = {"name", "urdf", "srdf", "kinematics", "joint_limits", "hardware", "xacro_args",
-                  "ompl_planning", "initial_positions", "collision"}
+                  "ompl_planning", "initial_positions", "collision", "end_effectors"}
 COLLISION_CHOICES = ("exact", "convex", "auto")
 T = TypeVar("T")
 
@@ -85,6 +86,9 @@ class RobotDescription:
     load_warnings: list[LoadWarning] = field(default_factory=list)
     collision: str | None = None
     """``collision:`` of the manifest (exact, convex, auto), if it says."""
+    end_effector_settings: dict[str, DeclaredTool] = field(default_factory=dict)
+    """The manifest's ``end_effectors:`` (tool frames, gripper poses; see
+    :mod:`taskrunner.robot.tools`)."""
 
     @property
     def warnings(self) -> list[LoadWarning]:
@@ -230,6 +234,7 @@ def _load_manifest(path: Path, packages: PackageMap) -> RobotDescription:
         hardware_path=hardware_path,
         files={role: p for role, p in roles.items() if p is not None},
         layout="robot.yaml manifest",
+        end_effector_settings=read_end_effector_settings(data.get("end_effectors"), path),
     )
     _add_optional_files(description, file_field("ompl_planning"),
                         file_field("initial_positions"))

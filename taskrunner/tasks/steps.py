@@ -224,7 +224,8 @@ class PickStep(MotionStep):
     object: str
     """The object to pick."""
     grasp: Grasp = "top"
-    """'top', 'side', or the grasp pose of the tool in the object's frame."""
+    """'top', 'side', or the grasp pose of the tool in the object's frame (the arm's tool
+    frame: z out of the hand, y the axis the fingers close along)."""
     approach: Distance = 0.05
     """Distance of the straight approach to the grasp (m)."""
     retreat: Distance = 0.05
@@ -245,6 +246,11 @@ class PlaceStep(MotionStep):
     """A surface object to put it on top of."""
     offset: Vec2 | None = None
     """With 'on': x, y from the surface's centre (m, surface frame)."""
+    grasp: Grasp | None = None
+    """How the hand is over the object when it lets go: 'top' (the tool pointing down),
+    'side' (pointing sideways), or the tool's pose in the placed object's frame. The
+    object is held as it was picked, so this chooses among the ways the object can be
+    turned onto its target (its symmetries). Default: any."""
     approach: Distance = 0.05
     """Distance of the straight approach to the release pose (m)."""
     retreat: Distance = 0.05
@@ -278,6 +284,10 @@ class HandoffStep(MotionStep):
     """The arm taking it."""
     at: PlaceAt
     """A named pose of the giving arm, or the pose of the object at the hand-over."""
+    grasp: Grasp | None = None
+    """How the taking arm grasps the object where it is presented: 'top', 'side', or the
+    pose of its tool in the object's frame, as for 'pick'. Default: across the end of
+    the object that the giving arm leaves free."""
     approach: Distance = 0.05
     """Distance of the taking arm's straight approach (m)."""
     retreat: Distance = 0.05

@@ -18,7 +18,7 @@ import pinocchio as pin
 import py_trees
 from py_trees.behaviour import Behaviour
 
-from taskrunner.errors import TaskSpecError
+from taskrunner.errors import RobotDescriptionError, TaskSpecError
 from taskrunner.planning.cartesian import CartesianOptions
 from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptions, PoseGoal
 from taskrunner.planning.timing import TimingOptions
@@ -159,24 +159,30 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return _gripper(step, ctx)
         case PickStep():
             arm = _arm(step, ctx, step.arm)
-            grasp = step.grasp if isinstance(step.grasp, str) else Pose.from_se3(step.grasp.se3())
+            grasp = _grasp(step.grasp)
+            _gripper_poses(step, ctx, arm)
+            assert grasp is not None
             return idioms.pick(ctx, name, where, arm, step.object, grasp, step.approach,
                                step.retreat, planner_options(step), timing_options(step, ctx))
         case PlaceStep():
             arm = _arm(step, ctx, step.arm)
             at = step.at.to_pose() if step.at is not None else None
+            _gripper_poses(step, ctx, arm)
             return idioms.place(ctx, name, where, arm, step.object, at, step.on,
                                 step.offset or (0.0, 0.0), step.approach, step.retreat,
                                 planner_options(step), timing_options(step, ctx),
-                                *_outcome_options(step))
+                                *_outcome_options(step), grasp=_grasp(step.grasp))
         case HandoffStep():
             giver, receiver = _arm(step, ctx, step.from_arm), _arm(step, ctx, step.to_arm)
             meet = step.at if isinstance(step.at, str) else step.at.to_pose()
             if isinstance(meet, str) and meet not in ctx.scene.robot.named_state_names(giver):
                 raise _error(step, f"'at': {meet!r} is not a named pose of arm {giver!r}")
+            _gripper_poses(step, ctx, giver)
+            _gripper_poses(step, ctx, receiver)
             return idioms.handoff(ctx, name, where, step.object, giver, receiver, meet,
                                   step.approach, step.retreat, planner_options(step),
-                                  timing_options(step, ctx), *_outcome_options(step))
+                                  timing_options(step, ctx), *_outcome_options(step),
+                                  grasp=_grasp(step.grasp))
         case AttachStep():
             return SceneAction(name, where, ctx, _attach(step, ctx))
         case DetachStep():
@@ -225,6 +231,23 @@ def _arm(step: StepNode, ctx: TaskContext, name: str) -> str:
     except Exception as exc:  # UnknownNameError: not an arm
         raise _error(step, str(exc)) from None
     return name
+
+
+def _grasp(grasp) -> str | Pose | None:  # type: ignore[no-untyped-def]
+    """A step's ``grasp`` as the idioms take it (a name, a Pose, or None)."""
+    return grasp if grasp is None or isinstance(grasp, str) else Pose.from_se3(grasp.se3())
+
+
+def _gripper_poses(step: StepNode, ctx: TaskContext, arm: str) -> tuple[str, str]:
+    """The arm's open and closed gripper pose names (an error at the step when it has
+    none)."""
+    try:
+        found = ctx.arm(arm)
+        if found.gripper is None:
+            raise TaskSpecError(f"arm {arm!r} has no gripper group")
+        return found.open_pose, found.closed_pose
+    except (RobotDescriptionError, TaskSpecError) as exc:
+        raise _error(step, getattr(exc, "reason", str(exc))) from None
 
 
 def _position_only(target) -> bool | None:  # type: ignore[no-untyped-def]
@@ -280,10 +303,12 @@ def _move(step: MoveStep, ctx: TaskContext) -> Behaviour:
 
 def _gripper(step: GripperStep, ctx: TaskContext) -> Behaviour:
     model = ctx.scene.robot
+    names = {"open": "open", "close": "closed"}
     if step.arm is not None:
         gripper = ctx.arm(_arm(step, ctx, step.arm)).gripper
         if gripper is None:
             raise _error(step, f"arm {step.arm!r} has no gripper group")
+        names = dict(zip(("open", "close"), _gripper_poses(step, ctx, step.arm)))
     else:
         assert step.group is not None
         gripper = _group(step, ctx, step.group)
@@ -296,7 +321,7 @@ def _gripper(step: GripperStep, ctx: TaskContext) -> Behaviour:
         # Each finger moves half the width (a mimic finger follows its source).
         values = {j: step.width / 2 for j in joints}
     else:
-        pose = step.to or ("open" if step.action == "open" else "closed")
+        pose = step.to or names[step.action or "open"]
         if pose not in model.named_state_names(gripper):
             raise _error(step, f"gripper group {gripper!r} has no named pose {pose!r} "
                                f"(poses: {', '.join(model.named_state_names(gripper))})")

@@ -3,12 +3,14 @@
 A :class:`TaskContext` is built by the runner for one run. Leaves read the scene (the
 planning world as it is now), submit plans to the plan service, send trajectories to the
 backend, and report through the event log. Arms are resolved once into :class:`Arm`
-records (arm group, gripper group, the frame that grasps).
+records (arm group, gripper group, the tool frame that grasps and the gripper's pose
+names, from the cell's :class:`~taskrunner.robot.tools.Tool` of the arm).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -17,6 +19,7 @@ from taskrunner.errors import UnknownNameError
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
+from taskrunner.robot.tools import Tool, install_tools
 from taskrunner.runtime.events import EventLog
 from taskrunner.scene import Scene, SceneSnapshot
 from taskrunner.tree.clock import TaskClock
@@ -33,10 +36,11 @@ class Arm:
         group: the arm's planning group (it has an end effector).
         gripper: the end effector's group (its finger joints), or None.
         tip: the group's tip link (where the end effector is mounted).
-        grasp_frame: the frame placed on a grasped object: ``<prefix>tool0`` when the
-            robot has one, else the tip.
-        finger_links: links that may touch a grasped object (the gripper group's links
-            and the tip).
+        grasp_frame: the tool frame, placed on a grasped object (its y axis closes, its z
+            axis approaches; see :mod:`taskrunner.robot.tools`).
+        finger_links: links that may touch a grasped object (the gripper group's links,
+            the tip, and the link the tool frame is fixed to).
+        tool: the arm's resolved tool (gripper pose names, how the frame was found).
     """
 
     group: str
@@ -44,6 +48,21 @@ class Arm:
     tip: str
     grasp_frame: str
     finger_links: tuple[str, ...]
+    tool: Tool | None = None
+
+    @property
+    def open_pose(self) -> str:
+        """The gripper's open pose name (raises RobotDescriptionError if it has none)."""
+        return self._tool().gripper_pose("open")
+
+    @property
+    def closed_pose(self) -> str:
+        """The gripper's closed pose name (raises RobotDescriptionError if it has none)."""
+        return self._tool().gripper_pose("closed")
+
+    def _tool(self) -> Tool:
+        assert self.tool is not None
+        return self.tool
 
 
 def resolve_arm(cell: Cell, name: str) -> Arm:
@@ -57,14 +76,12 @@ def resolve_arm(cell: Cell, name: str) -> Arm:
     arms = [g.name for g in model.groups.values() if g.end_effector and g.tip_link]
     if not group.end_effector or not group.tip_link:
         raise UnknownNameError("arm (a group with an end effector)", name, arms)
-    eef = model.end_effectors[group.end_effector]
-    gripper = eef.group if eef.group != group.name else None
-    prefix = next((i.prefix for i in model.instances if i.name == group.robot), "")
-    tool = prefix + "tool0"
-    grasp_frame = tool if model.has_link(tool) else group.tip_link
-    fingers = tuple(model.group(gripper).links) if gripper else ()
-    return Arm(group.name, gripper, group.tip_link, grasp_frame,
-               tuple(dict.fromkeys((*fingers, group.tip_link))))
+    if group.name not in cell.tools:  # a model changed since the cell was made
+        cell.tools.update(install_tools(model))
+    tool = cell.tools[group.name]
+    fingers = tuple(model.group(tool.gripper).links) if tool.gripper else ()
+    return Arm(group.name, tool.gripper, group.tip_link, tool.frame,
+               tuple(dict.fromkeys((*fingers, group.tip_link, tool.link))), tool)
 
 
 @dataclass(frozen=True)
@@ -92,6 +109,8 @@ class TaskContext:
             that work then leaves this process: a server keeps its GIL for answering);
             False: timed here (a one-run CLI, whose process waits for the plan anyway,
             spares the worker importing toppra on its critical path).
+        materials: mass, density and friction the task gives its objects (by name), for a
+            physics backend.
     """
 
     cell: Cell
@@ -104,6 +123,7 @@ class TaskContext:
     executed: list[ExecutedMotion] = field(default_factory=list)
     planner_times: bool = False
     clock: TaskClock = field(default_factory=TaskClock)
+    materials: dict[str, Any] = field(default_factory=dict)
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
 
@@ -117,12 +137,23 @@ class TaskContext:
         self._calls += 1
         return self.seed * 1000 + self._calls
 
-    def sync_from_backend(self) -> None:
-        """Make the scene's robot state what the backend reports."""
+    def sync_from_backend(self, finished: tuple[str, str | None] | None = None) -> None:
+        """Make the scene's robot state what the backend reports. ``finished``: the node
+        (name, file:line) whose motion just ended: a physics backend's report of it
+        becomes a ``physics`` event."""
         state = self.backend.joint_state()
         self.scene.set_state(dict(zip(state.names, state.positions)))
         if isinstance(self.backend, ObjectTracking):  # physics: objects go where they really are
-            self.backend.bind_scene(self.scene)
+            self.backend.bind_scene(self.scene, self.materials)
+            report = self.backend.physics_report() if finished is not None else None
+            if report is not None and finished is not None:
+                message = f"{len(report.get('t', ()))} samples of joints and objects"
+                for grasp in report.get("grasps", ()):  # grasp_mode weld
+                    message += (f"; {grasp['object']!r} {grasp['action']} "
+                                f"{'to' if grasp['action'] == 'welded' else 'from'} "
+                                f"{grasp['link']!r} at {grasp['time']:.3f} s (grasp_mode weld)")
+                self.events.emit("physics", message, node=finished[0], location=finished[1],
+                                 **report)
             for name, pose in self.backend.object_poses().items():
                 if name in self.scene and not self.scene.object(name).attached \
                         and _moved(self.scene.object(name).pose, pose):

@@ -1,8 +1,9 @@
 """Grasp geometry: where a gripper's grasp frame goes to hold, take over or put down an object.
 
-Both shipped grippers close along their grasp frame's y axis and point along its z axis
-(out of the hand, into the object). Poses here are world poses (``pin.SE3``, metres);
-the functions taking a :class:`TaskContext` read objects from its scene.
+Poses here are of an arm's tool frame (:mod:`taskrunner.robot.tools`): its y axis is
+the axis the fingers close along, its z axis points out of the hand (into the object).
+They are world poses (``pin.SE3``, metres); the functions taking a :class:`TaskContext`
+read objects from its scene.
 
 - A *top* grasp points the tool down the object's most vertical axis, ``depth`` below
   its top face, the fingers closing across a pair of side faces.
@@ -17,7 +18,9 @@ the functions taking a :class:`TaskContext` read objects from its scene.
   it end-on would leave the object sticking out along the tool, which cannot be laid on a
   table without the hand hitting it.)
 - A *release* pose is where the grasp frame must be for the held object to sit at its
-  target, or at a pose the object cannot be told apart from (its symmetries).
+  target, or at a pose the object cannot be told apart from (its symmetries). A place's
+  ``grasp`` keeps those whose tool points down (``top``), sideways (``side``), or is the
+  given pose of the tool in the placed object's frame.
 
 Depths: the grasp frame goes ``min(GRASP_DEPTH, GRASP_DEPTH_FRACTION * half size)`` into
 the object from the face it enters, so fingertips stay clear of what the object stands on.
@@ -40,7 +43,7 @@ from taskrunner.types import Pose
 __all__ = [
     "GRASP_DEPTH", "GRASP_DEPTH_FRACTION", "PLACE_CLEARANCE", "backed_off", "grasp_candidates",
     "half_height", "hand_links", "handover_grasps", "nearest", "object_extent", "place_target",
-    "release_poses", "side_grasps", "symmetries", "top_grasps",
+    "release_poses", "releases_with_grasp", "side_grasps", "symmetries", "top_grasps",
 ]
 
 GRASP_DEPTH = 0.02
@@ -281,6 +284,48 @@ def release_poses(target: pin.SE3, grip: pin.SE3, shape) -> list[pin.SE3]:  # ty
     at ``target`` or at a pose of ``target`` turned by one of its symmetries."""
     inverse = grip.inverse()
     return [target * pin.SE3(s, np.zeros(3)) * inverse for s in symmetries(shape)]
+
+
+GRASP_KIND_COS = math.cos(math.pi / 4)
+"""A release is a 'top' one when its tool points within 45° of straight down, a 'side'
+one when it is within 45° of horizontal."""
+GRASP_POSE_TOLERANCE = (0.01, math.radians(15.0))
+"""How near (m, rad) a release must be to a place's explicit ``grasp`` pose: the object
+is held as it was grasped, which an arm of fewer than six joints only approximates."""
+
+
+def releases_with_grasp(poses: Sequence[pin.SE3], target: pin.SE3, grasp: str | Pose,
+                        obj: str) -> list[pin.SE3]:
+    """Of the release poses ``poses`` (for an object placed at ``target``), those that
+    match a place's ``grasp``: 'top', 'side', or the tool's pose in the placed object's
+    frame (the nearest release, within :data:`GRASP_POSE_TOLERANCE`).
+
+    Raises:
+        SceneError: none matches (the object is held otherwise).
+    """
+    if isinstance(grasp, Pose):
+        wanted = target * grasp.se3
+        best = poses[nearest(poses, wanted)]
+        apart = float(np.linalg.norm(best.translation - wanted.translation))
+        turn = float(np.linalg.norm(pin.log3(best.rotation.T @ wanted.rotation)))
+        if apart <= GRASP_POSE_TOLERANCE[0] and turn <= GRASP_POSE_TOLERANCE[1]:
+            return [best]
+        raise SceneError(
+            f"object {obj!r} is not held so that its tool can be at 'grasp' when it is "
+            f"placed: the nearest release is {1e3 * apart:.0f} mm and "
+            f"{math.degrees(turn):.0f}° from it (allowed: {1e3 * GRASP_POSE_TOLERANCE[0]:.0f} "
+            f"mm, {math.degrees(GRASP_POSE_TOLERANCE[1]):.0f}°)")
+    if grasp == "top":
+        kept = [p for p in poses if -p.rotation[2, 2] >= GRASP_KIND_COS]
+    elif grasp == "side":
+        kept = [p for p in poses if abs(p.rotation[2, 2]) < GRASP_KIND_COS]
+    else:
+        raise TaskSpecError(f"'grasp' must be 'top', 'side' or a pose (got {grasp!r})")
+    if not kept:
+        raise SceneError(f"object {obj!r} cannot be put down with a {grasp!r} grasp as it "
+                         "is held (its tool would point "
+                         f"{'sideways or up' if grasp == 'top' else 'up or down'})")
+    return kept
 
 
 def backed_off(pose: pin.SE3, distance: float) -> pin.SE3:

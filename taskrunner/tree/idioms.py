@@ -56,6 +56,7 @@ from taskrunner.tree.grasps import (
     object_extent,
     place_target,
     release_poses,
+    releases_with_grasp,
 )
 from taskrunner.tree.outcome import Orientation, Outcome, Tolerance, arm_orientation, measure
 from taskrunner.tree.reach import Lift, approach_goals
@@ -91,10 +92,13 @@ def _outcome_check(ctx: TaskContext, name: str, location: str | None, obj: str,
     return CheckOutcome(name, location, ctx, check)
 
 
-def _gripper_pose(ctx: TaskContext, arm_name: str, pose: str) -> dict[str, float]:
+def _gripper_pose(ctx: TaskContext, arm_name: str, which: str) -> dict[str, float]:
+    """The joint values of the arm's gripper pose ``which`` ('open' or 'closed', by the
+    names its tool gives them)."""
     arm = ctx.arm(arm_name)
     if arm.gripper is None:
         raise TaskSpecError(f"arm {arm_name!r} has no gripper group")
+    pose = arm.open_pose if which == "open" else arm.closed_pose
     return ctx.scene.robot.named_state(arm.gripper, pose).as_dict()
 
 
@@ -213,11 +217,14 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
           at: Pose | None = None, on: str | None = None, offset: Sequence[float] = (0.0, 0.0),
           approach: float = 0.05, retreat: float = 0.05, options: PlannerOptions | None = None,
           timing: TimingOptions | None = None, orientation: Orientation | None = None,
-          tolerance: Tolerance | None = None) -> py_trees.composites.Sequence:
+          tolerance: Tolerance | None = None, grasp: str | Pose | None = None
+          ) -> py_trees.composites.Sequence:
     """The place subtree (see the module docstring), ending with a check that the object
     is at its target (``orientation``: what of its orientation is checked, default the
     arm's :func:`default_orientation`; ``tolerance``: default 5 mm, 5°) and rests on
-    something.
+    something. ``grasp`` ('top', 'side', or the tool's pose in the placed object's frame)
+    chooses how the hand is over the object when it lets go (see
+    :func:`~taskrunner.tree.grasps.releases_with_grasp`); None: any way it can.
 
     A short arm may release the object turned a little from the target (its orientation
     is only approximated): the release is then raised so that the object's lowest point
@@ -244,8 +251,11 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         target = place_target(c, obj, at, on, offset)
         release[:] = [target]
         up = np.array([0.0, 0.0, 1.0])
-        return _goals(c, arm_name, release_poses(target, held.pose.se3, held.shape),
-                      lambda i, p: up * (approach + deficit(c, p)), held.pose.se3.translation)
+        poses = release_poses(target, held.pose.se3, held.shape)
+        if grasp is not None:
+            poses = releases_with_grasp(poses, target, grasp, obj)
+        return _goals(c, arm_name, poses, lambda i, p: up * (approach + deficit(c, p)),
+                      held.pose.se3.translation)
 
     def descent(c: TaskContext, now: pin.SE3) -> np.ndarray:
         # Down by the approach, less what would sink the object below the target's bottom.
@@ -275,12 +285,15 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
 def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: str,
             receiver: str, at: str | Pose, approach: float = 0.05, retreat: float = 0.05,
             options: PlannerOptions | None = None, timing: TimingOptions | None = None,
-            orientation: Orientation | None = None, tolerance: Tolerance | None = None
-            ) -> py_trees.composites.Sequence:
+            orientation: Orientation | None = None, tolerance: Tolerance | None = None,
+            grasp: str | Pose | None = None) -> py_trees.composites.Sequence:
     """The hand-over subtree (see the module docstring), with a check, when the object
     changes hands, that it is at the hand-over pose: ``at`` as a pose of the object, or
     where the giver's named pose ``at`` puts it (``orientation`` and ``tolerance`` as for
-    :func:`place`; the default orientation is the giver's)."""
+    :func:`place`; the default orientation is the giver's). ``grasp`` is the receiver's
+    grasp as for :func:`pick` ('top', 'side', or its tool's pose in the object's frame),
+    of the object where the giver presents it; None: the free end (see
+    :func:`~taskrunner.tree.grasps.handover_grasps`)."""
     give, take = ctx.arm(giver), ctx.arm(receiver)
     grasps: list[pin.SE3] = []
     meeting: list[pin.SE3] = []  # the object's requested world pose at the hand-over
@@ -303,7 +316,8 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
             raise SceneError(f"object {obj!r} is not held by arm {giver!r}")
         held_at = held.pose.se3.inverse().translation  # giver's grasp point, object frame
         base = c.scene.link_pose(c.scene.robot.group(take.group).base_link).se3.translation
-        grasps[:] = handover_grasps(c.scene.object_pose(obj).se3, held.shape, held_at, base)
+        grasps[:] = (handover_grasps(c.scene.object_pose(obj).se3, held.shape, held_at, base)
+                     if grasp is None else grasp_candidates(c, obj, grasp))
         return _goals(c, receiver, grasps, lambda i, p: -grasps[i].rotation[:, 2] * approach,
                       grasping=True)
 

@@ -455,7 +455,7 @@ def test_joint_limits_yaml_with_only_scaling_factors_loads(make_mini):
 MANIFEST_CASES = [
     pytest.param(
         lambda t: t + "kinematic: kinematics.yaml\n", "kinematic:",
-        "unknown field 'kinematic' (expected one of collision, hardware, initial_positions, joint_limits, "
+        "unknown field 'kinematic' (expected one of collision, end_effectors, hardware, initial_positions, joint_limits, "
         "kinematics, name, ompl_planning, srdf, urdf, xacro_args)",
         id="unknown-field",
     ),
