@@ -142,12 +142,19 @@ class ObjectTracking(Protocol):
     task's scene (its objects and what it believes is held) and reports the objects' world
     poses, which the scene then takes over."""
 
-    def bind_scene(self, scene: Any) -> None:
-        """Follow ``scene`` (a :class:`taskrunner.scene.Scene`; idempotent, cheap)."""
+    def bind_scene(self, scene: Any, materials: Mapping[str, Any] | None = None) -> None:
+        """Follow ``scene`` (a :class:`taskrunner.scene.Scene`; idempotent, cheap);
+        ``materials``: the mass and friction the task gives its objects
+        (:class:`taskrunner.materials.Material` by name; None: as before)."""
         ...
 
     def object_poses(self) -> dict[str, Pose]:
         """World pose of every free object the backend simulates."""
+        ...
+
+    def physics_report(self) -> dict[str, Any] | None:
+        """Joint states and object poses over time since the last report, JSON-ready
+        (None: nothing new); the run's ``physics`` events carry it."""
         ...
 
 

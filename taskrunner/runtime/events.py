@@ -22,6 +22,8 @@ KINDS = (
     "node_finished",    # a node ended: status SUCCESS / FAILURE / INVALID (stopped)
     "planned",          # a motion was planned; data: planning_time, duration, waypoints
     "motion",           # a trajectory was sent to the backend; data: trajectory, scene
+    "physics",          # what a physics backend did during a node's motion; data: period,
+                        # joints, t, q, objects (poses over time), grasps (welds)
     "message",          # anything else worth showing (a warning, a retry)
     "run_finished",     # the run ended; status succeeded / failed / cancelled
 )

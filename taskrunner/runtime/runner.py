@@ -95,7 +95,8 @@ class Runner:
         self.scene = task_scene(spec, cell)
         self.ctx = TaskContext(cell, self.scene, planner, backend, self.events,
                                self.options.timing, self.options.seed,
-                               planner_times=self.options.planner_times)
+                               planner_times=self.options.planner_times,
+                               materials=spec.object_materials())
         self.ctx.sync_from_backend()
         self.tree = compile_task(spec, self.ctx)
         self._cancel = threading.Event()

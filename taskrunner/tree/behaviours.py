@@ -134,7 +134,7 @@ class _Executes(TaskLeaf):
         if not self.handle.done():
             self.ctx.sync_from_backend()
             return Status.RUNNING
-        self.ctx.sync_from_backend()
+        self.ctx.sync_from_backend(finished=(self.name, self.location))
         self.ctx.clock.update()
         try:
             self.handle.wait(0.0)
@@ -145,7 +145,7 @@ class _Executes(TaskLeaf):
     def abort(self) -> None:
         if self.handle is not None and not self.handle.done():
             self.handle.cancel()
-            self.ctx.sync_from_backend()
+            self.ctx.sync_from_backend(finished=(self.name, self.location))
 
 
 class MoveToGoal(_Executes):

@@ -26,9 +26,10 @@ file:line) when:
 The task's scene is bound with :meth:`bind_scene` (the runner's context does it): the
 backend then builds its world with the scene's objects, learns what the task believes
 is held at each ``execute``, and reports where objects really are with
-:meth:`object_poses`. ``grasp_mode="weld"`` for an arm welds a held object to the
-gripper while the scene holds it, for grippers that cannot hold by friction in the
-simulation; :attr:`notes` says so. Units: m, kg, rad, s, N.
+:meth:`object_poses`. ``grasp_mode`` weld for an arm (the cell's ``grasp_mode``, or
+:class:`MujocoOptions`) welds a held object to the arm's grasp frame while the scene holds
+it, for grippers that cannot hold by friction in the simulation; :attr:`notes` and
+:meth:`physics_report` say when a weld was made and released. Units: m, kg, rad, s, N.
 """
 
 from __future__ import annotations
@@ -52,6 +53,7 @@ from taskrunner.backends.physics.mjcf import (
     PhysicsObject,
     cell_mjcf,
     compiled_model,
+    weld_name,
 )
 from taskrunner.errors import BackendError
 from taskrunner.types import JointState, Pose
@@ -64,6 +66,8 @@ _SATURATION = {"hinge": 0.05, "slide": 0.005}  # rad / m of error at which effor
 _FINGER_SATURATION = {"hinge": 0.2, "slide": 0.01}  # a finger: full grip this far off
 _STABLE_STEP = 0.3  # omega * dt at most: armature added where a servo would be too stiff
 _DEFAULT_EFFORT = 10.0  # N m or N, for a URDF joint without an effort limit
+_REPORT_SAMPLES = 500  # at most this many samples in one physics_report (thinned evenly)
+_REPORT_DECIMALS = 5  # 10 um, 1e-5 rad
 
 
 @dataclass(frozen=True)
@@ -85,13 +89,15 @@ class MujocoOptions:
         saturation: per joint, the error (rad or m) at which its servo gives full effort.
         grip_effort: the most a finger joint pushes, by joint kind ("slide": N, "hinge":
             N m), unless ``effort`` names the joint: 20 N, or 0.5 N m (10 N at 5 cm).
-        grasp_mode: per arm group, "friction" (default) or "weld".
-        objects: per object, its mass and friction; others get ``default_object``.
+        grasp_mode: per arm group, "friction" (default) or "weld"; over the cell's.
+        objects: per object, its mass and friction, over what the cell or task gives;
+            others get ``default_object``.
         default_object: see :class:`~taskrunner.backends.physics.mjcf.ObjectPhysics`.
         cache_dir: where compiled models are kept (None: the user cache).
         start_tolerance: largest accepted distance (rad or m) between a trajectory's first
             sample and a joint's measured position.
-        history_period: s of physics between recorded samples (:meth:`history`).
+        history_period: s of physics between recorded samples (:meth:`history`,
+            :meth:`physics_report`): 0.04 s, 25 Hz.
     """
 
     speed: float | None = None
@@ -175,6 +181,18 @@ class MujocoBackend(BaseBackend):
         self._scene_names: tuple[str, ...] = ()
         self._wake = threading.Condition(self._lock)
         self._history: deque[PhysicsSample] = deque(maxlen=100_000)
+        self._unreported: deque[PhysicsSample] = deque(maxlen=20_000)
+        self._grasp_log: list[dict[str, Any]] = []
+        self._weld_changes: list[tuple[str, _Held, bool]] = []
+        self._materials: dict[str, ObjectPhysics] = {}
+        self._cell_physics = {o.name: o.physics for o in cell.objects if o.physics is not None}
+        modes = {**cell.grasp_modes, **self._options.grasp_mode}
+        unknown = sorted(set(modes) - set(cell.grasp_frames))
+        if unknown:
+            raise BackendError(f"grasp_mode: {', '.join(map(repr, unknown))} is not an arm of "
+                               f"{cell.name!r} (arms: {', '.join(sorted(cell.grasp_frames))})")
+        self._weld_arms = {cell.grasp_frames[arm]: arm for arm, mode in modes.items()
+                           if mode == "weld"}
         self.notes: list[str] = []
         self.build_seconds = 0.0
         self.step_seconds = 0.0  # wall s spent stepping the physics (a benchmark's figure)
@@ -202,16 +220,57 @@ class MujocoBackend(BaseBackend):
         """The compiled ``mujoco.MjModel`` (read only, please)."""
         return self._model
 
-    def bind_scene(self, scene: Any) -> None:
+    def bind_scene(self, scene: Any, materials: Mapping[str, Any] | None = None) -> None:
         """Use the task's scene: its objects join the world (rebuilding it if they are new)
         and its attachments say what is held at each ``execute``. Duck-typed: anything
-        with ``objects`` (name, shape, pose, attached_to) and ``object_pose(name)``."""
+        with ``objects`` (name, shape, pose, attached_to) and ``object_pose(name)``.
+        ``materials``: per object, the mass, density and friction the task gives it
+        (:class:`~taskrunner.materials.Material`), over the cell's."""
         names = tuple(scene.object_names)
+        physics = {name: ObjectPhysics.from_material(m, self._options.default_object)
+                   for name, m in (materials or {}).items() if m}
         with self._lock:
-            if scene is self._scene and names == self._scene_names:
+            if (scene is self._scene and names == self._scene_names
+                    and (materials is None or physics == self._materials)):
                 return
             self._scene, self._scene_names = scene, names
+            if materials is not None:
+                self._materials = physics
             self._sync_objects()
+
+    def physics_report(self) -> dict[str, Any] | None:
+        """What the physics did since the last report (None: nothing): joints and free
+        objects every ``history_period`` s (thinned evenly to at most 500 samples), and
+        the welds made and released (``grasp_mode`` weld). JSON-ready::
+
+            {"period": 0.04, "joints": [names], "t": [s], "q": [[rad or m]],
+             "objects": {name: [[x, y, z, qx, qy, qz, qw] or None]},
+             "grasps": [{"time", "action": "welded" | "released", "object", "link", "arm"}]}
+        """
+        with self._lock:
+            samples, grasps = list(self._unreported), self._grasp_log
+            self._unreported.clear()
+            self._grasp_log = []
+        if not samples and not grasps:
+            return None
+        if len(samples) > _REPORT_SAMPLES:
+            step = len(samples) / _REPORT_SAMPLES
+            samples = [samples[int(k * step)] for k in range(_REPORT_SAMPLES - 1)] + [samples[-1]]
+        names = sorted({name for sample in samples for name in sample.objects})
+        r = _REPORT_DECIMALS
+
+        def pose(p: Pose | None) -> list[float] | None:
+            return None if p is None else [round(float(v), r) for v in (*p.xyz, *p.quat)]
+
+        return {
+            "period": self._options.history_period,
+            "joints": list(self._names),
+            "t": [round(sample.time, 4) for sample in samples],
+            "q": [[round(float(v), r) for v in sample.joints.positions] for sample in samples],
+            "objects": {name: [pose(sample.objects.get(name)) for sample in samples]
+                        for name in names},
+            "grasps": grasps,
+        }
 
     def object_poses(self) -> dict[str, Pose]:
         """World pose of every free object, as the physics has it now."""
@@ -236,7 +295,8 @@ class MujocoBackend(BaseBackend):
     def _build(self, cell: PhysicsCell) -> None:
         started = time.perf_counter()
         o = self._options
-        xml = cell_mjcf(cell, MjcfOptions(o.timestep, o.objects, o.default_object), self._cache)
+        xml = cell_mjcf(cell, MjcfOptions(o.timestep, o.objects, o.default_object,
+                                          weld_links=frozenset(self._weld_arms)), self._cache)
         model, self.cache_hit = compiled_model(xml, self._cache)
         old = getattr(self, "_data", None)
         data = mujoco.MjData(model)
@@ -280,7 +340,8 @@ class MujocoBackend(BaseBackend):
         self._set_gains()
         self._targets = self._positions.copy()
         self._velocities = np.zeros(len(self._names))
-        self._held: dict[str, _Held] = {}
+        self._held: dict[str, _Held] = {}  # a rebuilt world re-grasps at the next motion
+        self._weld_changes = []
         self._object_poses: dict[str, Pose] = {}
         self._publish()
         self._starts: dict[int, float] = {}
@@ -335,9 +396,11 @@ class MujocoBackend(BaseBackend):
             if obj.name in static:
                 continue
             pose = scene.object_pose(obj.name)
-            wanted.append(PhysicsObject(obj.name, obj.shape, pose.xyz, pose.quat, movable=True))
-        names = {o.name for o in wanted}
-        if names == set(self._objects):
+            physics = self._materials.get(obj.name, self._cell_physics.get(obj.name))
+            wanted.append(PhysicsObject(obj.name, obj.shape, pose.xyz, pose.quat, movable=True,
+                                        physics=physics))
+        built = {o.name: o.physics for o in self._cell.objects if o.movable}
+        if {o.name: o.physics for o in wanted} == built:
             return
         if self._executions:
             raise BackendError("objects were added to the scene while a motion runs; the "
@@ -378,8 +441,7 @@ class MujocoBackend(BaseBackend):
             return
         model, data = self._model, self._data
         held: dict[str, _Held] = {}
-        weld_links = {self._cell.grasp_frames.get(arm): arm
-                      for arm, mode in self._options.grasp_mode.items() if mode == "weld"}
+        weld_links = self._weld_arms
         for obj in scene.objects:
             if obj.attached_to is None or obj.name not in self._objects:
                 continue
@@ -393,20 +455,39 @@ class MujocoBackend(BaseBackend):
             rel_pos, rel_quat = _relative(data, link_body, self._objects[obj.name])
             entry = _Held(link_body, obj.attached_to, rel_pos, rel_quat)
             if obj.attached_to in weld_links:
-                entry.weld = self._weld(link_body, self._objects[obj.name])
-                note = (f"grasp_mode weld: {obj.name!r} is welded to {obj.attached_to!r} "
-                        f"(arm {weld_links[obj.attached_to]!r}), not held by friction")
-                if note not in self.notes:
-                    self.notes.append(note)
+                weld = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_EQUALITY,
+                                         weld_name(obj.attached_to, obj.name))
+                if weld >= 0:
+                    entry.weld = int(weld)
+                    self._weld_changes.append((obj.name, entry, True))
             held[obj.name] = entry
         for name, entry in self._held.items():
             if entry.weld is not None and (name not in held or held[name] is not entry):
-                data.eq_active[entry.weld] = 0
+                self._weld_changes.append((name, entry, False))
         self._held = held
 
-    def _weld(self, link_body: int, obj_body: int) -> int:
-        raise BackendError("grasp_mode weld needs the weld constraints of the model "
-                           "(not built yet)")
+    def _apply_welds(self) -> None:
+        """Make and release the welds of ``grasp_mode`` weld (the physics thread, under
+        the lock, between chunks): a weld holds the object where it is relative to the
+        grasp frame when it is made."""
+        model, data = self._model, self._data
+        for name, entry, make in self._weld_changes:
+            assert entry.weld is not None
+            if make:
+                rel_pos, rel_quat = _relative(data, entry.body, self._objects[name])
+                model.eq_data[entry.weld, 0:3] = 0.0  # anchor: the object's origin
+                model.eq_data[entry.weld, 3:6] = rel_pos
+                model.eq_data[entry.weld, 6:10] = rel_quat
+                model.eq_data[entry.weld, 10] = 1.0  # torquescale
+            data.eq_active[entry.weld] = 1 if make else 0
+            arm = self._weld_arms.get(entry.link)
+            action = "welded" if make else "released"
+            self._grasp_log.append({"time": round(float(data.time), 4), "action": action,
+                                    "object": name, "link": entry.link, "arm": arm})
+            self.notes.append(f"grasp_mode weld: {name!r} {action} "
+                              f"{'to' if make else 'from'} {entry.link!r} (arm {arm!r}) at "
+                              f"{data.time:.3f} s of physics")
+        self._weld_changes.clear()
 
     # -- the physics thread ------------------------------------------------------------
 
@@ -441,6 +522,8 @@ class MujocoBackend(BaseBackend):
 
     def _plan_chunk(self) -> list[tuple[TrajectoryExecution, float]]:
         """The running executions and their start times (under the lock)."""
+        if self._weld_changes:
+            self._apply_welds()
         return [(e, self._starts.get(id(e), float(self._data.time))) for e in self._executions]
 
     def _step_chunk(self, plan: list[tuple[TrajectoryExecution, float]]) -> None:
@@ -483,13 +566,15 @@ class MujocoBackend(BaseBackend):
                 continue
             other = b2 if robot1 else b1
             link = b1 if robot1 else b2
+            other_geom = contact.geom2 if robot1 else contact.geom1
             if link in self._hand_bodies and other in self._objects.values():
                 continue  # a grasp
             mujoco.mj_contactForce(model, data, i, force)
             if abs(force[0]) > limit and not self.failures:
                 self.failures.append(
                     f"unplanned contact: {model.body(link).name!r} pushed against "
-                    f"{model.body(other).name or 'the world'!r} with {abs(force[0]):.0f} N "
+                    f"{(model.body(other).name if other else model.geom(other_geom).name) or 'the world'!r} "
+                    f"with {abs(force[0]):.0f} N "
                     f"(limit {limit:g} N) at {data.time:.3f} s of physics")
 
     def _after_chunk(self, plan: list[tuple[TrajectoryExecution, float]]) -> None:
@@ -526,10 +611,13 @@ class MujocoBackend(BaseBackend):
                 self._starts.pop(id(execution), None)
         if failure is not None and not plan:
             self.notes.append(f"after the motions: {failure}")
-        if now >= self._next_sample:
+        ended = any(execution.finished for execution, _ in plan)
+        if now >= self._next_sample - 1e-9 or ended:  # and the state each motion ends in
             self._next_sample = now + self._options.history_period
-            self._history.append(PhysicsSample(now, JointState(self._names, self._positions),
-                                               dict(self._object_poses)))
+            sample = PhysicsSample(now, JointState(self._names, self._positions),
+                                   dict(self._object_poses))
+            self._history.append(sample)
+            self._unreported.append(sample)
 
     def _slip(self) -> str | None:
         data = self._data

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from taskrunner.errors import BackendError
+from taskrunner.materials import Material
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 
 if TYPE_CHECKING:
@@ -62,8 +63,22 @@ class ObjectPhysics:
             raise ValueError(f"'density' must be a positive number (got {self.density!r})")
         if self.mass is not None and not (self.mass > 0 and math.isfinite(self.mass)):
             raise ValueError(f"'mass' must be a positive number (got {self.mass!r})")
-        if len(self.friction) != 3 or not all(f >= 0 for f in self.friction):
+        if len(self.friction) != 3 or not all(0 <= f < math.inf for f in self.friction):
             raise ValueError(f"'friction' must be 3 numbers >= 0 (got {self.friction!r})")
+
+    @classmethod
+    def from_material(cls, material: Material, default: ObjectPhysics | None = None
+                      ) -> ObjectPhysics:
+        """``material`` (a cell's or task's object fields) over ``default``: a missing
+        density, or torsional and rolling friction, come from ``default``."""
+        default = default or cls()
+        friction = default.friction
+        if material.friction is not None:
+            friction = (*material.friction, *default.friction[len(material.friction):])[:3]
+        return cls(material.density or default.density,
+                   material.mass if material.mass is not None
+                   else None if material.density is not None else default.mass,
+                   (friction[0], friction[1], friction[2]))
 
 
 @dataclass(frozen=True)
@@ -76,6 +91,8 @@ class PhysicsObject:
         xyz, quat: world pose of its frame (m; x, y, z, w).
         movable: a free body (a task's object) or a static one (furniture).
         frame: the link a static object is fixed to ("world" for the world).
+        physics: its mass and friction as the cell or task gives them (None: the
+            backend's default; a static object uses only the friction).
     """
 
     name: str
@@ -84,6 +101,7 @@ class PhysicsObject:
     quat: tuple[float, float, float, float]
     movable: bool
     frame: str = WORLD
+    physics: ObjectPhysics | None = None
 
 
 @dataclass(frozen=True)
@@ -100,6 +118,7 @@ class PhysicsCell:
             error).
         grasp_frames: per arm group, the link a grasped object is attached to.
         mimic: follower joint -> (leader, multiplier, offset).
+        grasp_modes: per arm group, "friction" or "weld" (the cell's ``grasp_mode``).
     """
 
     name: str
@@ -109,23 +128,30 @@ class PhysicsCell:
     gripper_joints: frozenset[str] = frozenset()
     grasp_frames: Mapping[str, str] = field(default_factory=dict)
     mimic: Mapping[str, tuple[str, float, float]] = field(default_factory=dict)
+    grasp_modes: Mapping[str, str] = field(default_factory=dict)
 
     def with_objects(self, objects: Iterable[PhysicsObject]) -> PhysicsCell:
         """The same cell with ``objects`` as its objects."""
         return PhysicsCell(self.name, self.urdf_xml, tuple(objects), self.hand_links,
-                           self.gripper_joints, dict(self.grasp_frames), dict(self.mimic))
+                           self.gripper_joints, dict(self.grasp_frames), dict(self.mimic),
+                           dict(self.grasp_modes))
 
 
 def physics_cell(cell: Cell) -> PhysicsCell:
-    """The plain-data physics description of ``cell`` (its objects as static furniture)."""
+    """The plain-data physics description of ``cell``: its objects are static furniture,
+    except world objects given a mass or density (free bodies)."""
     import pinocchio as pin
 
     model = cell.model
     objects = []
     for obj in cell.objects:
         q = pin.Quaternion(obj.pose.rotation)
+        material = getattr(obj, "material", None)
+        physics = ObjectPhysics.from_material(material) if material else None
+        movable = bool(material and (material.mass or material.density)) and obj.frame == WORLD
         objects.append(PhysicsObject(obj.name, obj.shape, tuple(obj.pose.translation),
-                                     (q.x, q.y, q.z, q.w), movable=False, frame=obj.frame))
+                                     (q.x, q.y, q.z, q.w), movable=movable, frame=obj.frame,
+                                     physics=physics))
     hands: set[str] = set()
     frames: dict[str, str] = {}
     for eef in model.end_effectors.values():
@@ -143,8 +169,9 @@ def physics_cell(cell: Cell) -> PhysicsCell:
     fingers = {j.name for j in model.joints if j.child_link in hands}
     mimic = {j.name: (j.mimic.source, j.mimic.multiplier, j.mimic.offset)
              for j in model.joints if j.mimic is not None}
+    modes = dict(getattr(cell, "grasp_modes", {}) or {})
     return PhysicsCell(cell.name, model.urdf_xml, tuple(objects), frozenset(hands),
-                       frozenset(fingers), frames, mimic)
+                       frozenset(fingers), frames, mimic, modes)
 
 
 def _descendants(urdf_xml: str, links: set[str]) -> set[str]:
@@ -298,12 +325,15 @@ class MjcfOptions:
         default_object: the default :class:`ObjectPhysics`.
         gravity_compensation: the robots' links carry their own weight (as their
             controllers' gravity terms would), so position gains only track motion.
+        weld_links: links that hold grasped objects by a weld (``grasp_mode`` weld):
+            an inactive weld ``grasp/<link>/<object>`` per link and free object.
     """
 
     timestep: float = 0.002
     object_physics: Mapping[str, ObjectPhysics] = field(default_factory=dict)
     default_object: ObjectPhysics = field(default_factory=ObjectPhysics)
     gravity_compensation: bool = True
+    weld_links: frozenset[str] = frozenset()
 
 
 def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
@@ -375,7 +405,7 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
             world_lines.append("    " + _static_geom(obj, meshes))
     for obj in cell.objects:
         if obj.movable:
-            physics = options.object_physics.get(obj.name, options.default_object)
+            physics = options.object_physics.get(obj.name) or obj.physics or options.default_object
             inertia = (f'mass="{physics.mass:.10g}"' if physics.mass is not None
                        else f'density="{physics.density:.10g}"')
             geom = _shape_geom(obj.shape, meshes, 'pos="0 0 0"',
@@ -392,6 +422,11 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
                   f'polycoef="{offset:.10g} {mul:.10g} 0 0 0" solref="{2 * options.timestep:.6g} 1"/>'
                   for follower, (leader, mul, offset) in cell.mimic.items()
                   if follower in actuated and leader in actuated]
+    # Welds for grasp_mode weld: made (relative pose set, activated) when the task grasps.
+    equalities += [f'    <weld name="{_esc(weld_name(link, obj.name))}" body1="{_esc(link)}" '
+                   f'body2="{_esc(obj.name)}" active="false" relpose="0 0 0 1 0 0 0"/>'
+                   for link in sorted(options.weld_links) if link in links
+                   for obj in cell.objects if obj.movable]
     return "\n".join([
         f'<mujoco model="{_esc(cell.name)}">',
         '  <compiler angle="radian" autolimits="true" balanceinertia="true" '
@@ -407,6 +442,11 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
         "  <equality>", *equalities, "  </equality>",
         "</mujoco>",
     ])
+
+
+def weld_name(link: str, obj: str) -> str:
+    """The name of the weld that holds ``obj`` to ``link`` (grasp_mode weld)."""
+    return f"grasp/{link}/{obj}"
 
 
 def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool) -> list[str]:
@@ -448,8 +488,9 @@ def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool
 
 def _static_geom(obj: PhysicsObject, meshes: _Meshes) -> str:
     quat = (obj.quat[3], obj.quat[0], obj.quat[1], obj.quat[2])
+    friction = "" if obj.physics is None else f' friction="{_fmt(obj.physics.friction)}"'
     return _shape_geom(obj.shape, meshes, f'pos="{_fmt(obj.xyz)}" quat="{_fmt(quat)}"',
-                       f'name="{_esc(obj.name)}" {_WORLD_BITS[0]} {_WORLD_BITS[1]}')
+                       f'name="{_esc(obj.name)}" {_WORLD_BITS[0]} {_WORLD_BITS[1]}{friction}')
 
 
 def compiled_model(xml: str, cache: Path) -> tuple[Any, bool]:
