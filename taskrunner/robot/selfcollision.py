@@ -33,33 +33,43 @@ def self_colliding_pairs(robot: RobotModel, q: np.ndarray,
         robot: the model.
         q: its state vector.
         geometry: the link geometry to check (default: the model's own, meshes as
-            triangle meshes); the scene passes its choice of hulls and meshes.
+            triangle meshes).
     """
-    geometry = geometry if geometry is not None else robot.collision_model
-    objects = geometry.geometryObjects
-    frames = robot.model.frames
-    links = [frames[g.parentFrame].name for g in objects]
-    checked = pin.GeometryModel()
-    for g in objects:
-        checked.addGeometryObject(g)
-    pairs: list[tuple[str, str]] = []
-    for i in range(len(links)):
-        for j in range(i + 1, len(links)):
-            if links[i] == links[j] or frozenset((links[i], links[j])) in (
-                    robot.disabled_collisions):
-                continue
-            checked.addCollisionPair(pin.CollisionPair(i, j))
-            pairs.append((links[i], links[j]))
-    if not pairs:
-        return []
-    data = robot.model.createData()
-    geometry_data = checked.createData()
-    if not pin.computeCollisions(robot.model, data, checked, geometry_data,
-                                 robot.to_pin(q), False):
-        return []
-    found = {tuple(sorted(pairs[k])) for k, result in enumerate(geometry_data.collisionResults)
-             if result.isCollision()}
-    return sorted((a, b) for a, b in found)
+    return _SelfCheck(robot, geometry).pairs(q)
+
+
+class _SelfCheck:
+    """The pair check of :func:`self_colliding_pairs`, built once for many states."""
+
+    def __init__(self, robot: RobotModel, geometry: pin.GeometryModel | None = None) -> None:
+        self._robot = robot
+        geometry = geometry if geometry is not None else robot.collision_model
+        objects = geometry.geometryObjects
+        frames = robot.model.frames
+        links = [frames[g.parentFrame].name for g in objects]
+        self._checked = pin.GeometryModel()
+        for g in objects:
+            self._checked.addGeometryObject(g)
+        self._pairs: list[tuple[str, str]] = []
+        for i in range(len(links)):
+            for j in range(i + 1, len(links)):
+                if links[i] == links[j] or frozenset((links[i], links[j])) in (
+                        robot.disabled_collisions):
+                    continue
+                self._checked.addCollisionPair(pin.CollisionPair(i, j))
+                self._pairs.append((links[i], links[j]))
+        self._data = robot.model.createData()
+        self._geometry_data = self._checked.createData()
+
+    def pairs(self, q: np.ndarray) -> list[tuple[str, str]]:
+        if not self._pairs or not pin.computeCollisions(
+                self._robot.model, self._data, self._checked, self._geometry_data,
+                self._robot.to_pin(q), False):
+            return []
+        found = {tuple(sorted(self._pairs[k]))
+                 for k, result in enumerate(self._geometry_data.collisionResults)
+                 if result.isCollision()}
+        return sorted((a, b) for a, b in found)
 
 
 def self_collision_warnings(robot: RobotModel, start: np.ndarray | None = None,
@@ -90,7 +100,8 @@ def self_collision_warnings(robot: RobotModel, start: np.ndarray | None = None,
             "there; if these links cannot touch, the SRDF's collision matrix is incomplete: "
             "run `run-task collision-matrix ROBOT --write SRDF`", source))
 
-    start_pairs = self_colliding_pairs(robot, start)
+    check = _SelfCheck(robot)
+    start_pairs = check.pairs(start)
     if start_pairs:
         report(start_name, start_pairs, "; its named poses were not checked")
         return warnings
@@ -105,7 +116,7 @@ def self_collision_warnings(robot: RobotModel, start: np.ndarray | None = None,
         for name, values in poses.items():
             if name in aliases:
                 continue
-            pairs = self_colliding_pairs(robot, robot.state_with(start, values))
+            pairs = check.pairs(robot.state_with(start, values))
             if own is not None:
                 pairs = [(a, b) for a, b in pairs if a in own and b in own]
             if pairs:

@@ -4,8 +4,8 @@ A convex hull is exact for a convex mesh and fatter for a concave one: the UR5's
 arm and forearm hulls bridge their hollows and stand up to 4 cm off the mesh. The
 *excess* of a hull is the largest distance from a point of the hull's surface to the
 mesh's surface (a one-sided Hausdorff distance: every mesh point lies on or inside the
-hull). It is estimated on points sampled on the hull's faces (area-weighted, seeded, plus
-every face's centroid), each measured to the mesh's triangles with coal; sampling makes
+hull). It is estimated at every hull face's centroid and at points sampled (area-weighted, seeded) on
+the faces that stand off the mesh, each measured to the mesh's triangles with coal; sampling makes
 the estimate a lower bound that is within a fraction of a millimetre of the true value
 on the meshes measured (UR5, so_arm, z1, Panda).
 
@@ -33,17 +33,21 @@ from scipy.spatial import ConvexHull, QhullError
 from taskrunner.errors import SceneError
 from taskrunner.resources import user_cache_dir
 
-__all__ = ["CACHE_FILE", "convex_hull", "hull_excess", "measure_hull_excess"]
+__all__ = ["CACHE_FILE", "convex_hull", "hull_excess", "measure_hull_excess", "shared_convex_hull"]
 
 log = logging.getLogger(__name__)
 
 CACHE_FILE = "hull_excess.json"
 # Changing how the excess is measured must not reuse old numbers.
-_METHOD = "v1-faces800"
-_SAMPLES = 800
+_METHOD = "v2-centroids+600"
+_SAMPLES = 600
+# A hull face whose centroid is this close to the mesh (m) is taken as lying on it (a
+# convex mesh's hull faces are its triangles, give or take its modeller's rounding).
+_ON_MESH = 5e-4
 
 _lock = threading.Lock()
 _memory: dict[str, float] = {}
+_hulls: dict[str, coal.Convex | None] = {}
 _disk_loaded: set[Path] = set()
 
 
@@ -73,7 +77,10 @@ def convex_hull(mesh: coal.BVHModelBase) -> coal.Convex:
 
 def measure_hull_excess(mesh: coal.BVHModelBase, samples: int = _SAMPLES) -> float:
     """The largest distance (m) from the mesh's convex hull surface to the mesh surface,
-    estimated on ``samples`` seeded points of the hull's faces plus their centroids.
+    estimated at every hull face's centroid and at ``samples`` seeded points spread by
+    area over the faces that stand off the mesh (a face whose centroid lies within 0.5 mm
+    of the mesh is taken as one of its triangles: a convex mesh costs one probe per hull
+    face).
 
     Returns:
         The excess in m; ``inf`` for a mesh with no 3-D hull (flat or degenerate).
@@ -84,29 +91,43 @@ def measure_hull_excess(mesh: coal.BVHModelBase, samples: int = _SAMPLES) -> flo
     except (QhullError, ValueError):
         return float("inf")
     corners = vertices[hull.simplices]  # (faces, 3, 3)
-    edges1 = corners[:, 1] - corners[:, 0]
-    edges2 = corners[:, 2] - corners[:, 0]
-    areas = 0.5 * np.linalg.norm(np.cross(edges1, edges2), axis=1)
+    areas = 0.5 * np.linalg.norm(
+        np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
     if not areas.sum() > 0:
         return float("inf")
+    probe = _Probe(mesh)
+    centroid_distance = np.array([probe.distance(c) for c in corners.mean(axis=1)])
+    off = np.flatnonzero(centroid_distance > _ON_MESH)
+    worst = float(centroid_distance.max())
+    if len(off) == 0:
+        return worst
     rng = np.random.default_rng(0)
-    faces = rng.choice(len(corners), samples, p=areas / areas.sum())
+    faces = off[rng.choice(len(off), samples, p=areas[off] / areas[off].sum())]
     uv = rng.random((samples, 2))
     flip = uv.sum(axis=1) > 1.0
     uv[flip] = 1.0 - uv[flip]
-    points = corners[faces, 0] + uv[:, :1] * edges1[faces] + uv[:, 1:] * edges2[faces]
-    points = np.vstack([points, corners.mean(axis=1)])
-    probe = coal.Sphere(0.0)
-    request = coal.DistanceRequest()
-    result = coal.DistanceResult()
-    identity = coal.Transform3s()
-    at = coal.Transform3s()
-    worst = 0.0
-    for point in points:
-        result.clear()
-        at.setTranslation(point)
-        worst = max(worst, coal.distance(mesh, identity, probe, at, request, result))
-    return float(worst)
+    edges1 = corners[faces, 1] - corners[faces, 0]
+    edges2 = corners[faces, 2] - corners[faces, 0]
+    points = corners[faces, 0] + uv[:, :1] * edges1 + uv[:, 1:] * edges2
+    return max(worst, max(probe.distance(p) for p in points))
+
+
+class _Probe:
+    """Distance from a point to a mesh's triangles (coal, a zero-radius sphere)."""
+
+    def __init__(self, mesh: coal.BVHModelBase) -> None:
+        self._mesh = mesh
+        self._point = coal.Sphere(0.0)
+        self._request = coal.DistanceRequest()
+        self._result = coal.DistanceResult()
+        self._identity = coal.Transform3s()
+        self._at = coal.Transform3s()
+
+    def distance(self, point: np.ndarray) -> float:
+        self._result.clear()
+        self._at.setTranslation(point)
+        return float(coal.distance(self._mesh, self._identity, self._point, self._at,
+                                   self._request, self._result))
 
 
 def _key(mesh: coal.BVHModelBase) -> str:
@@ -169,3 +190,16 @@ def hull_excess(meshes: list[coal.BVHModelBase]) -> list[float]:
             _memory.update(new)
             _write_disk(path, new)
         return [_memory[key] for key in keys]
+
+
+def shared_convex_hull(mesh: coal.BVHModelBase) -> coal.Convex | None:
+    """:func:`convex_hull` of ``mesh``, computed once per process for equal meshes (two
+    copies of an arm share their hulls), or None for a flat mesh. Never edit the result."""
+    key = _key(mesh)
+    with _lock:
+        if key not in _hulls:
+            try:
+                _hulls[key] = convex_hull(mesh)
+            except SceneError:
+                _hulls[key] = None
+        return _hulls[key]

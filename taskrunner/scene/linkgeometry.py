@@ -31,10 +31,9 @@ import coal
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import InputError, SceneError
+from taskrunner.errors import InputError
 from taskrunner.robot import RobotModel
-from taskrunner.robot.selfcollision import self_colliding_pairs
-from taskrunner.scene.hullfit import convex_hull, hull_excess
+from taskrunner.scene.hullfit import hull_excess, shared_convex_hull
 
 __all__ = [
     "COLLISION_CHOICES",
@@ -197,10 +196,8 @@ def link_hull(robot: RobotModel, index: int) -> coal.Convex | None:
     cache = _cache(robot)
     with _lock:
         if index not in cache.hulls:
-            try:
-                cache.hulls[index] = convex_hull(robot.collision_model.geometryObjects[index].geometry)
-            except SceneError:
-                cache.hulls[index] = None
+            cache.hulls[index] = shared_convex_hull(
+                robot.collision_model.geometryObjects[index].geometry)
         return cache.hulls[index]
 
 
@@ -260,7 +257,8 @@ def plan_link_geometry(robot: RobotModel, collision: str | Mapping[str, str] | N
             else:
                 links[link] = LinkChoice(link, HULL, choice, f"hull within {mm:.1f} mm of the mesh",
                                          excess)
-    _keep_named_poses_free(robot, by_link, links)
+    if any(c.kind == HULL and c.choice == "auto" for c in links.values()):
+        _keep_named_poses_free(robot, by_link, links)
     plan = LinkGeometryPlan(links)
     with _lock:
         cache.plans[key] = plan
@@ -270,18 +268,27 @@ def plan_link_geometry(robot: RobotModel, collision: str | Mapping[str, str] | N
 def _keep_named_poses_free(robot: RobotModel, by_link: Mapping[str, list[int]],
                            links: dict[str, LinkChoice]) -> None:
     """Under ``auto``, make meshes of the hull links of every pair that collides at the
-    start state or a named pose with hulls but not with meshes."""
-    if not any(c.kind == HULL and c.choice == "auto" for c in links.values()):
-        return
+    start state or a named pose with hulls but not with meshes.
+
+    Only pairs with an ``auto`` hull can differ, so only those are checked: first with the
+    current geometry, then, for the pairs that collide, with meshes."""
     states = _named_states(robot)
-    exact = {name: set(self_colliding_pairs(robot, q)) for name, q in states}
     for _ in range(_MAX_ROUNDS):
-        geometry = _geometry_model(robot, by_link, links)
+        movable = {link for link, c in links.items() if c.kind == HULL and c.choice == "auto"}
+        names = sorted(by_link)
+        pairs = [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
+                 if (a in movable or b in movable)
+                 and frozenset((a, b)) not in robot.disabled_collisions]
+        if not pairs:
+            return
+        current = _PairCheck(robot, by_link, pairs, links)
+        exact = _PairCheck(robot, by_link, pairs, None)
         changed = False
         for name, q in states:
-            for a, b in self_colliding_pairs(robot, q, geometry):
-                if (a, b) in exact[name]:
-                    continue
+            touching = current.colliding(q)
+            if not touching:
+                continue
+            for a, b in sorted(touching - exact.colliding(q)):
                 for link in (a, b):
                     old = links[link]
                     if old.kind == HULL and old.choice == "auto":
@@ -293,33 +300,58 @@ def _keep_named_poses_free(robot: RobotModel, by_link: Mapping[str, list[int]],
             return
 
 
+class _PairCheck:
+    """Which of some link pairs collide at a state, with the links' chosen geometry (or
+    their meshes when ``links`` is None)."""
+
+    def __init__(self, robot: RobotModel, by_link: Mapping[str, list[int]],
+                 pairs: list[tuple[str, str]], links: Mapping[str, LinkChoice] | None) -> None:
+        self._robot = robot
+        objects = robot.collision_model.geometryObjects
+        self._geometry = pin.GeometryModel()
+        slots: dict[str, list[int]] = {}
+        for link in sorted({n for pair in pairs for n in pair}):
+            for i in by_link[link]:
+                source = objects[i]
+                shape = source.geometry
+                if (links is not None and links[link].kind == HULL
+                        and isinstance(shape, coal.BVHModelBase)):
+                    shape = link_hull(robot, i) or shape
+                slots.setdefault(link, []).append(self._geometry.addGeometryObject(
+                    pin.GeometryObject(source.name, source.parentJoint, source.parentFrame,
+                                       source.placement, shape)))
+        self._pairs: list[tuple[str, str]] = []
+        for a, b in pairs:
+            for i in slots[a]:
+                for j in slots[b]:
+                    self._geometry.addCollisionPair(pin.CollisionPair(i, j))
+                    self._pairs.append((a, b))
+        self._data = robot.model.createData()
+        self._geometry_data = self._geometry.createData()
+
+    def colliding(self, q: np.ndarray) -> set[tuple[str, str]]:
+        if not pin.computeCollisions(self._robot.model, self._data, self._geometry,
+                                     self._geometry_data, self._robot.to_pin(q), False):
+            return set()
+        results = self._geometry_data.collisionResults
+        return {self._pairs[k] for k in range(len(self._pairs)) if results[k].isCollision()}
+
+
 def _named_states(robot: RobotModel) -> list[tuple[str, np.ndarray]]:
     """The start state (initial_positions.yaml applied) and every named pose set on it."""
     start = robot.default_state()
     if robot.initial_values:
         start = robot.state_with(start, robot.initial_values)
     states = [("the start state", start)]
+    seen = {start.tobytes()}
     for group, poses in robot.named_states.items():
         aliases = robot.pose_aliases.get(group, {})
         for name, values in poses.items():
-            if name not in aliases:
-                states.append((f"named pose {name!r}", robot.state_with(start, values)))
+            q = robot.state_with(start, values)
+            if name not in aliases and q.tobytes() not in seen:
+                seen.add(q.tobytes())
+                states.append((f"named pose {name!r}", q))
     return states
-
-
-def _geometry_model(robot: RobotModel, by_link: Mapping[str, list[int]],
-                    links: Mapping[str, LinkChoice]) -> pin.GeometryModel:
-    objects = robot.collision_model.geometryObjects
-    geometry = pin.GeometryModel()
-    for link, indices in by_link.items():
-        for i in indices:
-            source = objects[i]
-            shape = source.geometry
-            if links[link].kind == HULL and isinstance(shape, coal.BVHModelBase):
-                shape = link_hull(robot, i) or shape
-            geometry.addGeometryObject(pin.GeometryObject(
-                source.name, source.parentJoint, source.parentFrame, source.placement, shape))
-    return geometry
 
 
 def describe_link_geometry(robot: RobotModel) -> list[str]:
