@@ -445,18 +445,22 @@ class MujocoBackend(BaseBackend):
         for obj in scene.objects:
             if obj.attached_to is None or obj.name not in self._objects:
                 continue
-            link_body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, obj.attached_to)
-            if link_body < 0:
+            link = self._cell.frame_links.get(obj.attached_to, obj.attached_to)
+            link_body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
+            if link_body < 0:  # fails the motion: nothing would check that it is held
+                self.failures.append(f"object {obj.name!r} is attached to "
+                                     f"{obj.attached_to!r}, which is not a link of the cell's "
+                                     "MuJoCo model")
                 continue
             previous = self._held.get(obj.name)
             if previous is not None and previous.body == link_body:
                 held[obj.name] = previous
                 continue
             rel_pos, rel_quat = _relative(data, link_body, self._objects[obj.name])
-            entry = _Held(link_body, obj.attached_to, rel_pos, rel_quat)
-            if obj.attached_to in weld_links:
+            entry = _Held(link_body, link, rel_pos, rel_quat)
+            if link in weld_links:
                 weld = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_EQUALITY,
-                                         weld_name(obj.attached_to, obj.name))
+                                         weld_name(link, obj.name))
                 if weld >= 0:
                     entry.weld = int(weld)
                     self._weld_changes.append((obj.name, entry, True))

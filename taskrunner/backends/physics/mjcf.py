@@ -119,6 +119,7 @@ class PhysicsCell:
         grasp_frames: per arm group, the link a grasped object is attached to.
         mimic: follower joint -> (leader, multiplier, offset).
         grasp_modes: per arm group, "friction" or "weld" (the cell's ``grasp_mode``).
+        frame_links: frames that are not links (tool frames) -> the link each is fixed to.
     """
 
     name: str
@@ -129,12 +130,13 @@ class PhysicsCell:
     grasp_frames: Mapping[str, str] = field(default_factory=dict)
     mimic: Mapping[str, tuple[str, float, float]] = field(default_factory=dict)
     grasp_modes: Mapping[str, str] = field(default_factory=dict)
+    frame_links: Mapping[str, str] = field(default_factory=dict)
 
     def with_objects(self, objects: Iterable[PhysicsObject]) -> PhysicsCell:
         """The same cell with ``objects`` as its objects."""
         return PhysicsCell(self.name, self.urdf_xml, tuple(objects), self.hand_links,
                            self.gripper_joints, dict(self.grasp_frames), dict(self.mimic),
-                           dict(self.grasp_modes))
+                           dict(self.grasp_modes), dict(self.frame_links))
 
 
 def physics_cell(cell: Cell) -> PhysicsCell:
@@ -159,11 +161,19 @@ def physics_cell(cell: Cell) -> PhysicsCell:
         hands.update(model.groups[eef.group].links)
         # The palm the fingers hang from (its children are the hand's other links).
         hands.update(model.joint(j).parent_link for j in model.groups[eef.group].joint_names)
+    aliases: dict[str, str] = {}
+    tools = getattr(cell, "tools", None) or {}
     for group in model.groups.values():
         if group.end_effector and group.tip_link:
-            prefix = next((i.prefix for i in model.instances if i.name == group.robot), "")
-            tool = prefix + "tool0"
-            frames[group.name] = tool if model.has_link(tool) else group.tip_link
+            tool = tools.get(group.name)
+            if tool is not None:  # the arm's tool frame, on the link it is fixed to
+                frames[group.name] = tool.link
+                if tool.frame != tool.link:
+                    aliases[tool.frame] = tool.link
+            else:
+                prefix = next((i.prefix for i in model.instances if i.name == group.robot), "")
+                tool0 = prefix + "tool0"
+                frames[group.name] = tool0 if model.has_link(tool0) else group.tip_link
             hands.add(frames[group.name])
     hands |= _descendants(model.urdf_xml, hands)
     fingers = {j.name for j in model.joints if j.child_link in hands}
@@ -171,7 +181,7 @@ def physics_cell(cell: Cell) -> PhysicsCell:
              for j in model.joints if j.mimic is not None}
     modes = dict(getattr(cell, "grasp_modes", {}) or {})
     return PhysicsCell(cell.name, model.urdf_xml, tuple(objects), frozenset(hands),
-                       frozenset(fingers), frames, mimic, modes)
+                       frozenset(fingers), frames, mimic, modes, aliases)
 
 
 def _descendants(urdf_xml: str, links: set[str]) -> set[str]:
