@@ -34,7 +34,7 @@ import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
-from typing import cast
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
@@ -45,6 +45,9 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnknownNameError,
 )
+
+if TYPE_CHECKING:
+    from taskrunner.runtime.prestart import EarlyWorker
 
 __all__ = ["main"]
 
@@ -251,11 +254,22 @@ def cmd_run(args: argparse.Namespace) -> int:
         raise InputError(f"'--speed' must be a positive number (got {args.speed})")
     path = resolve_task(args.file)
     parameters = _parameters(args.param)
-    with _taught_poses(args).active():
-        return _check_and_run(args, path, parameters)
+    # The planning worker loads the cell while this process imports and checks.
+    early = None
+    if not args.in_process:
+        from taskrunner.runtime.prestart import start_worker_early
+
+        early = start_worker_early(path)
+    try:
+        with _taught_poses(args).active():
+            return _check_and_run(args, path, parameters, early)
+    finally:
+        if early is not None:
+            early.close()  # a no-op once the run adopted it
 
 
-def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, str]) -> int:
+def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, str],
+                   early: EarlyWorker | None = None) -> int:
     from taskrunner.errors import TaskSpecError
     from taskrunner.runtime.preflight import check_before_run
     from taskrunner.runtime.session import run_task_file
@@ -275,7 +289,7 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
                          speed=args.speed, seed=args.seed, runs_dir=runs_dir,
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
                          port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
-                         home=args.home, check=False)
+                         home=args.home, check=False, early=early)
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:

@@ -52,6 +52,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
     if nice and hasattr(os, "nice"):
         os.nice(nice)
     from taskrunner.planning.planner import MotionPlanner
+    from taskrunner.planning.toppra_import import import_toppra
     from taskrunner.robot.cell import load_cell_or_robot
 
     try:
@@ -60,6 +61,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
         scene = Scene(cell.model)
         planner = MotionPlanner(scene)
         scene.checker  # noqa: B018 - build the collision geometry before the first request
+        import_toppra()  # every plan is timed: import it while the caller still loads
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:
         conn.send(("failed", exc, 0.0))
@@ -142,20 +144,26 @@ class PlanningWorker:
     """
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
-                 wait_ready: bool = True, nice: int = 0) -> None:
+                 wait_ready: bool = True, nice: int = 0,
+                 started: tuple[Any, Connection, Any] | None = None) -> None:
         if isinstance(nice, bool) or not isinstance(nice, int) or not 0 <= nice <= 19:
             raise ValueError(f"'nice' must be an integer from 0 to 19 (got {nice!r})")
         self.source = str(source)
         self.nice = nice
         self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads
-        self._cancel = self._ctx.Value("q", _NO_CANCEL, lock=False)
+        # started: (process, connection, cancel value) of a process already serving
+        # ``source`` (taskrunner.runtime.prestart), adopted instead of launching one.
+        self._cancel = started[2] if started else self._ctx.Value("q", _NO_CANCEL, lock=False)
         self._ids = itertools.count(1)
         self._lock = threading.Lock()
         self._pending: PlanHandle | None = None
         self._sent_scene: tuple[int, int] | None = None
         self._start_timeout = start_timeout
         self._ready = False
-        self._launch()
+        if started is None:
+            self._launch()
+        else:
+            self._process, self._conn = started[0], started[1]
         _OPEN.add(self)
         if wait_ready:
             self._await_ready(start_timeout)

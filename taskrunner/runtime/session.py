@@ -45,6 +45,7 @@ from taskrunner.tasks.loader import load_task
 if TYPE_CHECKING:
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.planning.worker import PlanningWorker
+    from taskrunner.runtime.prestart import EarlyWorker
 
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
@@ -180,12 +181,14 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   live: bool = False, worker: bool = True, out: TextIO | None = None,
                   port: str | None = None, url: str | None = None,
                   firmware_speedup: float = 1.0, home: bool = False,
-                  check: bool = True) -> int:
+                  check: bool = True, early: EarlyWorker | None = None) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
     moves when the check finds a problem. Called from the main thread, Ctrl-C and
-    SIGTERM cancel the run (see the module docstring) instead of raising.
+    SIGTERM cancel the run (see the module docstring) instead of raising. ``early``: a
+    planning worker process started beforehand (:mod:`taskrunner.runtime.prestart`),
+    adopted when it loads the task's cell, else stopped; closed at the end either way.
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -206,7 +209,10 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         if worker:
             from taskrunner.planning.worker import PlanningWorker
 
-            planner_service = PlanningWorker(spec.cell, wait_ready=False)
+            started = early.take(spec.cell) if early is not None else None
+            planner_service = PlanningWorker(spec.cell, wait_ready=False, started=started)
+        elif early is not None:
+            early.close()
         try:
             cell = load_cell(spec.cell)
             if not worker:

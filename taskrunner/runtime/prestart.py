@@ -1,0 +1,131 @@
+"""Start the planning worker before the run knows it needs one.
+
+A planning worker (:class:`~taskrunner.planning.worker.PlanningWorker`) takes 0.5-0.8 s
+to start: a new interpreter imports the planner, loads the cell and builds its
+collision geometry. ``run-task FILE`` used to start it after its own imports and the
+check before the run, so the two waits added up. :func:`start_worker_early` starts it
+first, on the cell the task file names (read with a plain YAML parse, before any
+taskrunner module that takes time to import), and the run adopts it
+(:meth:`EarlyWorker.take`) when the loaded task's cell is that file; otherwise the early
+process is stopped and the run starts its own. Whatever happens, nothing is planned
+before the task is loaded and checked: the early process only loads the cell.
+
+This module imports only the standard library and PyYAML: it is imported first.
+"""
+
+from __future__ import annotations
+
+import atexit
+import multiprocessing as mp
+import signal
+import threading
+import weakref
+from multiprocessing.connection import Connection
+from pathlib import Path
+from typing import Any
+
+__all__ = ["EarlyWorker", "start_worker_early", "task_cell"]
+
+_NO_CANCEL = -1  # as taskrunner.planning.worker's
+
+
+def task_cell(task: Path) -> Path | None:
+    """The cell file a task file names, resolved, when it is a plain relative or
+    absolute path to an existing file; None otherwise (not YAML, no ``cell``, a
+    ``${parameter}`` in it …: the task loader decides and reports, not this)."""
+    try:
+        import yaml
+
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        text = task.read_text(encoding="utf-8")
+        if len(text) > 1_000_000:
+            return None
+        tree = yaml.load(text, Loader=loader)  # a safe loader (the C one when built)
+    except (OSError, UnicodeDecodeError, ValueError, ImportError, yaml.YAMLError):
+        return None
+    value = tree.get("cell") if isinstance(tree, dict) else None
+    if not isinstance(value, str) or not value or "${" in value:
+        return None
+    cell = (task.parent / value).resolve()
+    return cell if cell.is_file() else None
+
+
+def _serve(source: str, conn: Connection, cancel: Any) -> None:
+    """The early process: the planning worker's own loop (imported here, in the child)."""
+    from taskrunner.planning.worker import _serve as serve_requests
+
+    serve_requests(source, conn, cancel)
+
+
+class EarlyWorker:
+    """A planning worker process started on a cell before the run needs it.
+
+    Attributes:
+        source: the cell file it loads (resolved).
+    """
+
+    def __init__(self, source: Path) -> None:
+        self.source = source
+        context = mp.get_context("spawn")
+        self.cancel = context.Value("q", _NO_CANCEL, lock=False)
+        self.conn, child = context.Pipe()
+        self.process = context.Process(target=_serve, args=(str(source), child, self.cancel),
+                                       name="taskrunner-planner", daemon=False)
+        # As PlanningWorker does: the child starts with SIGINT ignored, so a Ctrl-C while
+        # it imports cannot end it with a traceback; its parent decides what Ctrl-C means.
+        main = threading.current_thread() is threading.main_thread()
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+        try:
+            self.process.start()
+        finally:
+            if main:
+                signal.signal(signal.SIGINT, previous)
+        child.close()
+        self._taken = False
+        _OPEN.add(self)
+
+    def take(self, cell: str | Path) -> tuple[Any, Connection, Any] | None:
+        """``(process, connection, cancel value)`` for a PlanningWorker to adopt when
+        ``cell`` is the file this process loads; otherwise stop it and return None."""
+        if self._taken:
+            return None
+        if Path(cell).resolve() != self.source or not self.process.is_alive():
+            self.close()
+            return None
+        self._taken = True
+        _OPEN.discard(self)
+        return self.process, self.conn, self.cancel
+
+    def close(self) -> None:
+        """Stop the process unless a PlanningWorker adopted it (idempotent)."""
+        _OPEN.discard(self)
+        if self._taken:
+            return
+        self._taken = True
+        if self.process.is_alive():
+            self.process.kill()  # it only loads the cell: nothing to finish
+        self.process.join(timeout=5.0)
+        self.conn.close()
+
+
+def start_worker_early(task: Path) -> EarlyWorker | None:
+    """An :class:`EarlyWorker` on the task's cell, or None when the task file does not
+    name one plainly (see :func:`task_cell`) or a folder policy is active (a contained
+    server checks every path before it is read)."""
+    from taskrunner.folders import active_policy
+
+    if active_policy() is not None:
+        return None
+    cell = task_cell(task)
+    return EarlyWorker(cell) if cell is not None else None
+
+
+_OPEN: weakref.WeakSet[EarlyWorker] = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all() -> None:
+    """Stop early workers nobody adopted (registered after multiprocessing's exit handler,
+    so it runs before that joins the non-daemon processes)."""
+    for worker in list(_OPEN):
+        worker.close()
