@@ -85,6 +85,7 @@ class ObjectEdit:
     touch_links: tuple[str, ...] = ()
     where: str = ""
     line: int | None = None
+    frame_line: int | None = None
 
 
 @dataclass(frozen=True)
@@ -167,8 +168,10 @@ def read_collision_object(msg: Msg, names: NameMap, attach_to: str | None = None
     for key in ("planes", "subframe_names"):
         if msg.seq(key):
             msg.warn(key, "is not supported; ignored")
+    header = msg.raw("header")
+    frame_line = header.line_of("frame_id") if isinstance(header, LineDict) else msg.line
     return ObjectEdit(object_id, operation, frame, tuple(parts), attach_to, touch_links,
-                      msg.where, msg.line)
+                      msg.where, msg.line, frame_line)
 
 
 def read_robot_state(msg: Msg | None, names: NameMap) -> RobotStateData:
@@ -413,7 +416,7 @@ def apply_object(scene: Scene, edit: ObjectEdit, source: PlanningSceneFile) -> l
                 else:
                     scene.remove_object(name)
             return []
-        poses = [source.pose_in_scene(scene, pose, edit.where, edit.line, edit.id)
+        poses = [source.pose_in_scene(scene, pose, edit.where, edit.frame_line, edit.id)
                  for _, pose in edit.parts]
         if edit.operation == "MOVE":
             if len(existing) != len(edit.parts):
