@@ -13,6 +13,8 @@ Subcommands:
 - ``run-task demo [CELL]``: load a cell, solve IK for a point in front of the arm, check
   it for collisions, plan a collision-free path there and time it.
 - ``run-task info CELL_OR_ROBOT``: robots, groups, named poses and objects of a cell or robot.
+- ``run-task plan ROBOT --request R.yaml [--scene S.yaml] [--json]``: plan a MoveIt
+  MotionPlanRequest file in a PlanningScene file (MotionBenchMaker's format) and report.
 - ``run-task collision-matrix ROBOT``: generate the SRDF self-collision matrix.
 - ``run-task firmware-sim [--speedup X]``: build and start the host build of the ESP32
   firmware; prints the pseudo-terminal path, then the HTTP URL.
@@ -55,7 +57,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw", "view", "test", "sweep")
+            "firmware-sim", "hw", "view", "test", "sweep", "plan")
 
 
 def _load(name_or_path: str):  # type: ignore[no-untyped-def]
@@ -137,6 +139,30 @@ def cmd_info(args: argparse.Namespace) -> int:
         out.append(f"warning: {warning}")
     print("\n".join(out))
     return EXIT_OK
+
+
+def cmd_plan(args: argparse.Namespace) -> int:
+    import json
+
+    from taskrunner.moveit import plan_files
+
+    report, warnings = plan_files(_load(args.robot), args.request, args.scene,
+                                  robot=args.instance, group=args.group, seed=args.seed,
+                                  merge=True if args.merge else None)
+    if args.json:
+        print(json.dumps({**report.to_json(), "warnings": [str(w) for w in warnings]}, indent=2))
+    else:
+        for warning in warnings:
+            print(f"warning: {warning}", file=sys.stderr)
+        if report.success:
+            print(f"plan {report.group} ({report.planner}): success\n"
+                  f"  planning time {report.planning_time:.3f} s (total {report.total_time:.3f} s)"
+                  f", {report.waypoints} waypoints, length {report.path_length:.3f} rad, "
+                  f"duration {report.duration:.3f} s")
+        else:
+            print(f"plan {report.group} ({report.planner}): failed ({report.error_kind}): "
+                  f"{report.message}")
+    return EXIT_OK if report.success else EXIT_PLANNING
 
 
 def cmd_demo(args: argparse.Namespace) -> int:
@@ -629,7 +655,20 @@ def _parser() -> argparse.ArgumentParser:
     info = sub.add_parser("info", help="describe a cell or robot")
     info.add_argument("path", help="cell file, robot folder or file, MoveIt config package, "
                                    "or a shipped cell's or robot's name")
-    for loads_robots in (run, check, demo, hw, info):
+    plan = sub.add_parser("plan", help="plan a MoveIt MotionPlanRequest file in a "
+                                       "PlanningScene file, and report")
+    plan.add_argument("robot", help="robot or cell: a path or a shipped name (panda)")
+    plan.add_argument("--request", required=True, metavar="R.yaml",
+                      help="moveit_msgs/MotionPlanRequest YAML")
+    plan.add_argument("--scene", metavar="S.yaml", help="moveit_msgs/PlanningScene YAML")
+    plan.add_argument("--robot", dest="instance", default=None, metavar="NAME",
+                      help="the cell's robot the files are for (its prefix goes before names)")
+    plan.add_argument("--group", default=None, help="plan for this group instead of group_name")
+    plan.add_argument("--merge", action="store_true",
+                      help="keep the cell's objects even when the scene is a full one")
+    plan.add_argument("--seed", type=int, default=0, help="planner and IK seed (0)")
+    plan.add_argument("--json", action="store_true", help="print the report as JSON")
+    for loads_robots in (run, check, demo, hw, info, plan):
         _add_robot_options(loads_robots)
     serve = sub.add_parser("serve", help="serve the REST API with uvicorn")
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
@@ -669,7 +708,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         argv = ["run", *argv]
     args = parser.parse_args(argv)
     commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
-                "demo": cmd_demo, "info": cmd_info,
+                "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep}
     try:

@@ -17,7 +17,7 @@ for :class:`~taskrunner.planning.MotionPlanner`::
 from __future__ import annotations
 
 from taskrunner.moveit.names import NameMap
-from taskrunner.moveit.report import PlanReport, plan_request_file
+from taskrunner.moveit.report import PlanReport, plan_files, plan_request_file
 from taskrunner.moveit.request_file import MotionPlanRequestFile, load_motion_plan_request, planner_name
 from taskrunner.moveit.scene_file import ObjectEdit, PlanningSceneFile, load_planning_scene
 
@@ -29,6 +29,7 @@ __all__ = [
     "PlanningSceneFile",
     "load_motion_plan_request",
     "load_planning_scene",
+    "plan_files",
     "plan_request_file",
     "planner_name",
 ]

@@ -4,17 +4,21 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from taskrunner.errors import PlanningError
-from taskrunner.moveit.request_file import MotionPlanRequestFile
+from taskrunner.moveit.request_file import MotionPlanRequestFile, load_motion_plan_request
+from taskrunner.moveit.scene_file import load_planning_scene
 from taskrunner.planning.planner import MotionPlanner
 from taskrunner.planning.request import PlanResult
-from taskrunner.scene import Scene
+from taskrunner.robot.cell import Cell
+from taskrunner.robot.notes import LoadWarning
+from taskrunner.scene import Scene, scene_from_cell
 
-__all__ = ["PlanReport", "plan_request_file"]
+__all__ = ["PlanReport", "plan_files", "plan_request_file"]
 
 
 @dataclass(frozen=True)
@@ -79,3 +83,27 @@ def plan_request_file(scene: Scene, request: MotionPlanRequestFile, *, seed: int
     return PlanReport(not missed, request.group, result.planner, result.planning_time,
                       result.total_time, length, len(positions), duration,
                       "GoalConstraintsViolated" if missed else "", "; ".join(missed), result)
+
+
+def plan_files(cell: Cell, request_path: str | Path, scene_path: str | Path | None = None, *,
+               robot: str | None = None, group: str | None = None, seed: int = 0,
+               merge: bool | None = None, strict: bool | None = None,
+               ) -> tuple[PlanReport, list[LoadWarning]]:
+    """Load ``cell``'s scene, apply a PlanningScene file, plan a MotionPlanRequest file.
+
+    Returns:
+        the report and every warning of both files.
+
+    Raises:
+        InputError, YamlError: an invalid file (file:line, field).
+    """
+    scene = scene_from_cell(cell)
+    warnings: list[LoadWarning] = []
+    if scene_path is not None:
+        scene_file = load_planning_scene(scene_path, cell.model, robot=robot, strict=strict)
+        scene_file.apply(scene, merge=merge)
+        warnings += scene_file.warnings
+    request = load_motion_plan_request(request_path, cell.model, robot=robot, group=group,
+                                       strict=strict)
+    report = plan_request_file(scene, request, seed=seed)
+    return report, warnings + request.warnings
