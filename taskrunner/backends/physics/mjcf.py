@@ -72,7 +72,7 @@ class ObjectPhysics:
         """``material`` (a cell's or task's object fields) over ``default``: a missing
         density, or torsional and rolling friction, come from ``default``."""
         default = default or cls()
-        friction = default.friction
+        friction: tuple[float, ...] = default.friction
         if material.friction is not None:
             friction = (*material.friction, *default.friction[len(material.friction):])[:3]
         return cls(material.density or default.density,
