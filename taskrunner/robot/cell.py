@@ -28,6 +28,7 @@ group per robot group (prefixed), the spanning groups, and the fixed objects.
 
 from __future__ import annotations
 
+import copy
 import logging
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -41,7 +42,7 @@ from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
 from taskrunner.materials import Density, Friction, Kilograms, Material, check_material, material_of
 from taskrunner.robot.build import WORLD, Placement, build_model
-from taskrunner.robot.description import load_description
+from taskrunner.robot.description import RobotDescription, load_description
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.notes import raise_if_strict
 from taskrunner.robot.packages import PackageMap
@@ -263,6 +264,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         search_roots=[path.parent.parent])
 
     placements: list[Placement] = []
+    descriptions: dict[Path, RobotDescription] = {}
     declared: dict[str, DeclaredTool] = {}
     seen: set[str] = set()
     for i, robot in enumerate(spec.robots):
@@ -294,7 +296,10 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             for pose_name in poses:
                 group_node = poses_node.get(group_name, {})
                 lines[(group_name, pose_name)] = (str(path), line_of(group_node, pose_name))
-        description = load_description(robot_path, packages)
+        # Two copies of one arm read (and expand the xacro of) their files once.
+        if robot_path not in descriptions:
+            descriptions[robot_path] = load_description(robot_path, packages)
+        description = copy.copy(descriptions[robot_path])
         declared.update({robot.prefix + name: entry for name, entry in merge_declared(
             description.end_effector_settings,
             read_end_effector_settings(item.get("end_effectors"), path)).items()})
