@@ -307,13 +307,14 @@ def _resolve(model: RobotModel, arm: str, eef_name: str, entry: DeclaredTool | N
         frame = link
     else:
         frame = _add_frame(model, f"{eef_name}_tcp", link, offset)
-    names = model.named_state_names(gripper) if gripper else []
+    aliases = model.pose_aliases.get(gripper or "", {})
+    # The SRDF's own names (not the aliases the model adds for open/closed).
+    names = [n for n in model.named_state_names(gripper) if n not in aliases] if gripper else []
     open_pose = _pose(settings.open, OPEN_SPELLINGS, names, gripper, eef_name, "open", entry)
     closed_pose = _pose(settings.closed, CLOSED_SPELLINGS, names, gripper, eef_name, "closed",
                         entry)
-    aliases = model.pose_aliases.get(gripper or "", {})
     return Tool(arm, eef_name, gripper, frame, link, offset, open_pose, closed_pose, origin,
-                tuple(n for n in names if n not in aliases))
+                tuple(names))
 
 
 def _pose(declared: str | None, spellings: tuple[str, ...], names: list[str],

@@ -455,7 +455,7 @@ class _DryRun:
                 return f"{step.object!r} is already held (by {holder!r})", False
             if isinstance(step, (PlaceStep, HandoffStep)):
                 arm = step.arm if isinstance(step, PlaceStep) else step.from_arm
-                if scene.object(step.object).attached_to != ctx.arm(arm).grasp_frame:
+                if scene.object(step.object).attached_to != ctx.arm(arm).holder:
                     return f"arm {arm!r} is not holding {step.object!r}", False
             if isinstance(step, PlaceStep):
                 at = step.at.to_pose() if step.at is not None else None

@@ -339,7 +339,7 @@ def _attach(step: AttachStep, ctx: TaskContext) -> Callable[[TaskContext], objec
     obj = step.object
     if step.arm is not None:
         arm = ctx.arm(_arm(step, ctx, step.arm))
-        link, touch = arm.grasp_frame, idioms.hand_links(ctx, step.arm)
+        link, touch = arm.holder, idioms.hand_links(ctx, step.arm)
     else:
         assert step.link is not None
         if not ctx.scene.robot.has_link(step.link):

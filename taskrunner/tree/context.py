@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import pinocchio as pin
 
 from taskrunner.backends.base import Backend, ObjectTracking
 from taskrunner.errors import UnknownNameError
@@ -41,6 +42,10 @@ class Arm:
         finger_links: links that may touch a grasped object (the gripper group's links,
             the tip, and the link the tool frame is fixed to).
         tool: the arm's resolved tool (gripper pose names, how the frame was found).
+        holder: the link a grasped object is attached to: the tool frame when it is a
+            link, else the link it is fixed to (the scene and a physics backend attach
+            objects to links).
+        holder_to_tool: the tool frame in ``holder``'s frame.
     """
 
     group: str
@@ -49,6 +54,13 @@ class Arm:
     grasp_frame: str
     finger_links: tuple[str, ...]
     tool: Tool | None = None
+    holder: str = ""
+    holder_to_tool: pin.SE3 = field(default_factory=pin.SE3.Identity)
+
+    def grip(self, held: pin.SE3) -> pin.SE3:
+        """The pose in the tool frame of an object held at ``held`` (its pose in
+        :attr:`holder`'s frame, as the scene keeps it)."""
+        return self.holder_to_tool.actInv(held)
 
     @property
     def open_pose(self) -> str:
@@ -80,8 +92,11 @@ def resolve_arm(cell: Cell, name: str) -> Arm:
         cell.tools.update(install_tools(model))
     tool = cell.tools[group.name]
     fingers = tuple(model.group(tool.gripper).links) if tool.gripper else ()
+    on_link = tool.frame in model.link_names
     return Arm(group.name, tool.gripper, group.tip_link, tool.frame,
-               tuple(dict.fromkeys((*fingers, group.tip_link, tool.link))), tool)
+               tuple(dict.fromkeys((*fingers, group.tip_link, tool.link))), tool,
+               holder=tool.frame if on_link else tool.link,
+               holder_to_tool=pin.SE3.Identity() if on_link else tool.offset)
 
 
 @dataclass(frozen=True)

@@ -89,7 +89,7 @@ def _object(ctx: TaskContext, name: str, want: ObjectExpectation) -> list[str]:
     obj = scene.object(name)
     holder = obj.attached_to
     if want.held_by is not None:
-        link = ctx.arm(want.held_by).grasp_frame if want.held_by in _arms(ctx) \
+        link = ctx.arm(want.held_by).holder if want.held_by in _arms(ctx) \
             else want.held_by
         if holder != link:
             held = f"attached to {holder!r}" if holder else "attached to nothing"

@@ -106,11 +106,14 @@ def hand_links(ctx: TaskContext, arm_name: str) -> tuple[str, ...]:
     The fingers (every link their joints move, joints that mimic a finger joint
     included: the Panda's group ``hand`` names only ``panda_finger_joint1``, yet
     ``panda_rightfinger`` closes on the object too), the link the fingers are mounted on
-    (the palm) and the arm's tip and grasp frame.
+    (the palm) and the arm's tip and grasp frame (when the grasp frame is a link; else the
+    link it is fixed to).
     """
     arm = ctx.arm(arm_name)
     model = ctx.scene.robot
-    links = list(arm.finger_links) + [arm.grasp_frame]
+    links = list(arm.finger_links)
+    if arm.grasp_frame in model.link_names:
+        links.append(arm.grasp_frame)
     if arm.gripper is not None:
         sources = set(model.group(arm.gripper).joint_names)
         fingers = [j for j in model.joints

@@ -184,8 +184,7 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
         return grasps[nearest(backed, now)].translation
 
     def attach(c: TaskContext) -> None:
-        c.scene.attach_object(obj, c.arm(arm_name).grasp_frame,
-                              touch_links=hand_links(c, arm_name))
+        c.scene.attach_object(obj, c.arm(arm_name).holder, touch_links=hand_links(c, arm_name))
         # What the object rests on may touch it while it is lifted off.
         resting[:] = [(k.a, k.b) for k in c.scene.collisions() if obj in (k.a, k.b)]
         for a, b in resting:
@@ -238,7 +237,7 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         """How far the object, carried with the grasp frame at ``reached``, reaches below
         the target's lowest point (m; 0 if not: an exact orientation never does)."""
         held = c.scene.object(obj)
-        carried = reached * held.pose.se3
+        carried = reached * arm.grip(held.pose.se3)
         target = release[0]
         lowest = target.translation[2] - half_height(held.shape, target.rotation)
         bottom = carried.translation[2] - half_height(held.shape, carried.rotation)
@@ -246,16 +245,17 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
 
     def pre_places(c: TaskContext) -> tuple[Goal, ...]:
         held = c.scene.object(obj)
-        if held.attached_to != arm.grasp_frame:
+        if held.attached_to != arm.holder:
             raise SceneError(f"object {obj!r} is not held by arm {arm_name!r}")
         target = place_target(c, obj, at, on, offset)
         release[:] = [target]
         up = np.array([0.0, 0.0, 1.0])
-        poses = release_poses(target, held.pose.se3, held.shape)
+        grip = arm.grip(held.pose.se3)
+        poses = release_poses(target, grip, held.shape)
         if grasp is not None:
             poses = releases_with_grasp(poses, target, grasp, obj)
         return _goals(c, arm_name, poses, lambda i, p: up * (approach + deficit(c, p)),
-                      held.pose.se3.translation)
+                      grip.translation)
 
     def descent(c: TaskContext, now: pin.SE3) -> np.ndarray:
         # Down by the approach, less what would sink the object below the target's bottom.
@@ -304,17 +304,17 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
             model = c.scene.robot
             there = model.state_with(c.scene.state, model.named_state(give.group, at))
             tool = c.scene.to_world(Pose.from_se3(pin.SE3.Identity(), give.grasp_frame), there)
-            meeting[:] = [tool * held.pose.se3]
+            meeting[:] = [tool * give.grip(held.pose.se3)]
             return NamedGoal(at)
         meeting[:] = [c.scene.to_world(at)]
-        return PoseGoal(Pose.from_se3(meeting[0] * held.pose.se3.inverse()),
+        return PoseGoal(Pose.from_se3(meeting[0] * give.grip(held.pose.se3).inverse()),
                         link=give.grasp_frame, position_only=False)
 
     def pre_grasps(c: TaskContext) -> tuple[Goal, ...]:
         held = c.scene.object(obj)
-        if held.attached_to != give.grasp_frame:
+        if held.attached_to != give.holder:
             raise SceneError(f"object {obj!r} is not held by arm {giver!r}")
-        held_at = held.pose.se3.inverse().translation  # giver's grasp point, object frame
+        held_at = give.grip(held.pose.se3).inverse().translation  # giver grasp point, object frame
         base = c.scene.link_pose(c.scene.robot.group(take.group).base_link).se3.translation
         grasps[:] = (handover_grasps(c.scene.object_pose(obj).se3, held.shape, held_at, base)
                      if grasp is None else grasp_candidates(c, obj, grasp))
@@ -327,7 +327,7 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
 
     def transfer(c: TaskContext) -> None:
         c.scene.detach_object(obj)
-        c.scene.attach_object(obj, take.grasp_frame, touch_links=hand_links(c, receiver))
+        c.scene.attach_object(obj, take.holder, touch_links=hand_links(c, receiver))
         _allow_hand(obj, giver, True)(c)
 
     steps = [
