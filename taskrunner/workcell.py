@@ -337,6 +337,61 @@ class Workcell:
         return Plan(group, result.path, trajectory, self._full(result.start),
                     self._full(result.end), planning_time=result.total_time)
 
+    def load_planning_scene(self, path: str | os.PathLike[str], *, robot: str | None = None,
+                            merge: bool | None = None, strict: bool | None = None) -> list[str]:
+        """Apply a MoveIt ``PlanningScene`` YAML file (ROS 1 or ROS 2, MotionBenchMaker's
+        format) to this cell's scene: objects, attached objects, robot state, allowed
+        collisions (see :mod:`taskrunner.moveit.scene_file`).
+
+        Args:
+            robot: the cell's robot the file is for: its prefix goes before the file's
+                joint and link names (needed when several robots have the name).
+            merge: keep the cell's objects; None keeps them for a diff scene and
+                replaces them for a full one (``is_diff: false``), as MoveIt does.
+            strict: unused or unsupported fields are errors, not warnings.
+
+        Returns:
+            the scene objects the file added or changed (an object of several shapes
+            becomes ``id``, ``id/1`` …).
+
+        Raises:
+            InputError: an invalid file, an unknown joint, link or frame (file:line, field).
+        """
+        from taskrunner.moveit import load_planning_scene
+
+        loaded = load_planning_scene(path, self.model, robot=robot, strict=strict)
+        return loaded.apply(self._scene, merge=merge)
+
+    def plan_request(self, path: str | os.PathLike[str], *,
+                     scene: str | os.PathLike[str] | None = None, robot: str | None = None,
+                     group: str | None = None, seed: int = 0, strict: bool | None = None) -> Plan:
+        """Plan a MoveIt ``MotionPlanRequest`` YAML file (group, start state, joint or pose
+        goal constraints, planner, time, attempts, scaling factors) and time it.
+
+        Args:
+            scene: a ``PlanningScene`` file applied first (as :meth:`load_planning_scene`).
+            robot: the cell's robot the files are for (see :meth:`load_planning_scene`).
+            group: plan for this group instead of the file's ``group_name``.
+            seed: seeds OMPL and the IK goal sampling.
+
+        Raises:
+            InputError: an invalid or unsupported request (file:line, field).
+            PlanningError: no motion, or one whose end misses the goal constraints.
+        """
+        from taskrunner.errors import PlanningError
+        from taskrunner.moveit import load_motion_plan_request, plan_request_file
+
+        if scene is not None:
+            self.load_planning_scene(scene, robot=robot, strict=strict)
+        request = load_motion_plan_request(path, self.model, robot=robot, group=group,
+                                           strict=strict)
+        report = plan_request_file(self._scene, request, seed=seed)
+        result = report.result
+        if result is None or not report.success or result.trajectory is None:
+            raise PlanningError(report.message or "no motion")
+        return Plan(request.group, result.path, result.trajectory, self._full(result.start),
+                    self._full(result.end), planning_time=result.total_time)
+
     def plan_cartesian(self, group: str, waypoints: Pose | Position | Sequence[Pose | Position]
                        | None = None, *, by: Position | None = None,
                        frame: Literal["world", "link"] = "world", link: str | None = None,

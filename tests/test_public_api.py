@@ -42,6 +42,11 @@ def test_the_exported_names_are_pinned():
         taskrunner.nope  # noqa: B018
 
 
+def test_the_workcell_reads_moveit_scene_and_request_files():
+    for method in ("load_planning_scene", "plan_request"):
+        assert getattr(taskrunner.Workcell, method).__doc__, f"Workcell.{method} has no docstring"
+
+
 def test_import_taskrunner_loads_no_heavy_module():
     code = ("import sys, taskrunner; heavy = [m for m in ('numpy', 'pinocchio', 'pydantic', "
             "'ompl', 'toppra', 'py_trees') if m in sys.modules]; print(heavy)")

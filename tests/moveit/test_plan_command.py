@@ -38,3 +38,24 @@ def test_plan_command_fails_with_the_planning_code_when_the_goal_collides(tmp_pa
     out = capsys.readouterr().out
     assert code == EXIT_PLANNING
     assert "failed (" in out
+
+
+def test_workcell_loads_a_scene_file_and_plans_a_request_file() -> None:
+    import taskrunner
+
+    cell = taskrunner.load_workcell("panda")
+    added = cell.load_planning_scene(FIXTURES / "attached_scene.yaml")
+    assert added == ["post", "held_box"] and cell.scene.object("held_box").attached
+    plan = cell.plan_request(FIXTURES / "pose_goal_request.yaml",
+                             scene=FIXTURES / "ros1_table_scene.yaml", seed=2)
+    assert plan.group == "arm" and plan.duration > 0
+    assert "held_box" not in cell.scene  # the full scene replaced the objects
+
+
+def test_the_moveit_file_api_is_pinned() -> None:
+    import taskrunner.moveit
+
+    assert sorted(taskrunner.moveit.__all__) == [
+        "MotionPlanRequestFile", "NameMap", "ObjectEdit", "PlanReport", "PlanningSceneFile",
+        "load_motion_plan_request", "load_planning_scene", "plan_files", "plan_request_file",
+        "planner_name"]
