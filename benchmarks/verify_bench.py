@@ -1,0 +1,272 @@
+"""Exact path verification benchmark: cost per path, and an independent fine re-check.
+
+    python benchmarks/verify_bench.py [--quick] [--json] [--seed N] [--baseline REV]
+                                      [--problems P,Q] [--repeats N]
+
+Collects the paths the planner returns (RRTConnect, seeded) on the thin-plate scenes of
+``tests/planning/test_path_guarantee.py`` (a 1-3 mm plate across the straight line from the
+Panda's ready pose to a random goal) and on the problems of ``benchmarks/planning_scenes.py``
+(``panda_table_pick``, ``panda_shelf``, ``panda_box``, ``panda_cage`` by default), plus the
+toppra trajectory sampled from each path (what ``timing`` verifies), plus straight lines
+through the plates (which must be rejected). Then it times
+:meth:`taskrunner.scene.sweep.PathVerifier.verify` on every one, interleaved with the
+verifier of git revision ``--baseline`` (loaded from ``git show REV:taskrunner/scene/sweep.py``;
+``--baseline none`` skips it), alternating which runs first, ``--repeats`` times each
+(the fastest run counts). Margin 0.5 mm, as the planner's default.
+
+Every path the current verifier accepts is re-checked independently: the scene's boolean
+collision check at states so dense that no point of the Panda moves more than 0.1 mm between
+two (1.25 m, the Panda's reach, times the sum of the joint steps; not the verifier's lever
+arms). ``fine_invalid`` counts accepted paths that collide there (must be 0); ``rejected_free``
+counts rejected paths the fine check finds free (a rejection within the margin is allowed,
+listed for information). Verdicts of the two verifiers are compared too.
+
+Output: a table per class (paths, median and p90 ms per path, median distance queries, old
+and new), and with ``--json`` one JSON line at the end.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pinocchio as pin
+
+BENCH = Path(__file__).resolve().parent
+ROOT = BENCH.parent
+sys.path.insert(0, str(BENCH))
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+import planning_scenes
+
+from taskrunner.errors import PlanningError
+from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
+from taskrunner.planning.timing import parameterize_path
+from taskrunner.scene import Scene
+from taskrunner.scene.sweep import PathVerifier
+from taskrunner.shapes import Box
+from taskrunner.types import Pose
+
+PANDA_REACH = 1.25  # m: joint 1's axis to the fingertips, stretched out, rounded up
+FINE = 1e-4  # m: displacement between two states of the independent check
+MARGIN = 5e-4  # m: the planner's default verify_margin
+READY = {"panda_joint1": 0.0, "panda_joint2": -0.785, "panda_joint3": 0.0,
+         "panda_joint4": -2.356, "panda_joint5": 0.0, "panda_joint6": 1.571,
+         "panda_joint7": 0.785}
+DEFAULT_PROBLEMS = ("panda_table_pick", "panda_shelf", "panda_box", "panda_cage")
+
+
+def load_baseline(rev: str) -> Any:
+    """The ``sweep`` module of git revision ``rev`` (None if it cannot be read)."""
+    try:
+        text = subprocess.run(["git", "-C", str(ROOT), "show", f"{rev}:taskrunner/scene/sweep.py"],
+                              check=True, capture_output=True, text=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    folder = Path(tempfile.mkdtemp(prefix="verify_bench_"))
+    path = folder / "sweep_baseline.py"
+    path.write_text(text, encoding="utf-8")
+    spec = importlib.util.spec_from_file_location("sweep_baseline", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["sweep_baseline"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def plate_scene(robot, rng: np.random.Generator, thickness: float
+                ) -> tuple[Scene, np.ndarray] | None:
+    """The Panda at 'ready', a goal state and a plate across the straight line between
+    (the construction of ``tests/planning/test_path_guarantee.py``)."""
+    scene = Scene(robot)
+    scene.set_state(READY)
+    start = scene.state.copy()
+    goal = robot.random_state(rng, "arm", base=start)
+    if scene.in_collision(goal):
+        return None
+    t = rng.uniform(0.3, 0.7)
+    data = robot.model.createData()
+    pin.framesForwardKinematics(robot.model, data, robot.to_pin(start + t * (goal - start)))
+    hand = data.oMf[robot.frame_id("panda_hand")]
+    rotation = pin.rpy.rpyToMatrix(*rng.uniform(-np.pi, np.pi, 3))
+    offset = np.array([*rng.uniform(-0.2, 0.2, 2), 0.0])
+    centre = hand.translation + hand.rotation @ np.array([0.0, 0.0, 0.1]) + rotation @ offset
+    scene.add_object("plate", Box((0.3, 0.3, thickness)),
+                     Pose.from_se3(pin.SE3(rotation, centre)))
+    if scene.in_collision(start) or scene.in_collision(goal):
+        return None
+    return scene, goal
+
+
+def full_states(scene: Scene, start: np.ndarray, names, rows: np.ndarray) -> np.ndarray:
+    robot = scene.robot
+    states = np.repeat(start[None, :], len(rows), axis=0)
+    states[:, robot.indices(names)] = rows
+    for q in states:
+        robot.apply_mimic(q)
+    return states
+
+
+def fine_collision(scene: Scene, states: np.ndarray) -> bool:
+    """True if the polyline collides at a state of the 0.1 mm check."""
+    robot = scene.robot
+    for a, b in zip(states[:-1], states[1:]):
+        steps = max(1, int(np.ceil(np.sum(np.abs(b - a)) * PANDA_REACH / FINE)))
+        for t in np.linspace(0.0, 1.0, steps + 1):
+            if scene.in_collision(robot.apply_mimic(a + t * (b - a))):
+                return True
+    return False
+
+
+def collect(quick: bool, seed: int, problems: list[str]) -> list[dict]:
+    """Cases: ``{"cls", "scene", "states"}``, one per path, trajectory or straight line."""
+    from taskrunner.resources import DATA_ROOT
+    from taskrunner.robot import load_robot
+
+    cases: list[dict] = []
+    robot = load_robot(DATA_ROOT / "robots" / "panda")
+
+    def add(cls: str, scene: Scene, result) -> None:  # type: ignore[no-untyped-def]
+        states = full_states(scene, result.start, result.path.names, result.path.waypoints)
+        cases.append({"cls": cls, "scene": scene, "states": states})
+        try:
+            trajectory = parameterize_path(scene.robot, result.path)
+        except PlanningError:
+            return
+        cases.append({"cls": cls + "/traj", "scene": scene,
+                      "states": full_states(scene, result.start, trajectory.names,
+                                            trajectory.positions)})
+
+    rng = np.random.default_rng(seed)
+    plates = 0
+    while plates < (6 if quick else 16):
+        found = plate_scene(robot, rng, float(rng.uniform(0.001, 0.003)))
+        if found is None:
+            continue
+        plates += 1
+        scene, goal = found
+        cases.append({"cls": "plate_line", "scene": scene, "states": np.vstack([scene.state, goal])})
+        arm = robot.group("arm")
+        request = PlanRequest("arm", JointGoal(dict(zip(arm.joint_names, goal[arm.joint_indices]))),
+                              options=PlannerOptions(seed=plates, planning_time=2.0))
+        try:
+            add("plate", scene, MotionPlanner(scene).plan(request))
+        except PlanningError:
+            pass
+    for problem in planning_scenes.build_problems(3 if quick else 8, seed, problems):
+        planner = MotionPlanner(problem.scene)
+        for i, query in enumerate(problem.queries):
+            options = PlannerOptions(planning_time=problem.planning_time, seed=seed + i)
+            try:
+                result = planner.plan(PlanRequest(problem.group, query.goal, start=query.start,
+                                                  options=options))
+            except PlanningError:
+                continue
+            add(problem.name.removeprefix("panda_"), problem.scene, result)
+    return cases
+
+
+def run(args: argparse.Namespace) -> dict:
+    problems = args.problems.split(",") if args.problems else list(DEFAULT_PROBLEMS)
+    baseline = None if args.baseline == "none" else load_baseline(args.baseline)
+    cases = collect(args.quick, args.seed, problems)
+    rows: list[dict] = []
+    for n, case in enumerate(cases):
+        scene, states = case["scene"], case["states"]
+        new = PathVerifier(scene.robot, scene.checker, MARGIN)
+        verifiers = [("new", new)]
+        if baseline is not None:
+            verifiers.append(("old", baseline.PathVerifier(scene.robot, scene.checker, MARGIN)))
+        if n % 2:
+            verifiers.reverse()
+        best: dict[str, Any] = {}
+        for _ in range(args.repeats):
+            for name, verifier in verifiers:
+                t0 = time.perf_counter()
+                result = verifier.verify(states)
+                seconds = time.perf_counter() - t0
+                if name not in best or seconds < best[name][0]:
+                    best[name] = (seconds, result)
+        row = {"cls": case["cls"], "waypoints": len(states)}
+        for name, (seconds, result) in best.items():
+            row[f"{name}_ms"] = seconds * 1000
+            row[f"{name}_queries"] = result.distance_queries
+            row[f"{name}_valid"] = bool(result.valid)
+        fine_hit = fine_collision(scene, states)
+        row["fine_collides"] = fine_hit
+        rows.append(row)
+    return summarize(rows, baseline is not None, args)
+
+
+def summarize(rows: list[dict], with_old: bool, args: argparse.Namespace) -> dict:
+    classes = sorted({r["cls"] for r in rows}, key=lambda c: (c.endswith("/traj"), c))
+    table = []
+    for cls in classes:
+        rs = [r for r in rows if r["cls"] == cls]
+        entry: dict[str, Any] = {"cls": cls, "paths": len(rs)}
+        for name in ("new", "old") if with_old else ("new",):
+            ms = [r[f"{name}_ms"] for r in rs]
+            entry[f"{name}_median_ms"] = round(float(np.median(ms)), 3)
+            entry[f"{name}_p90_ms"] = round(float(np.percentile(ms, 90)), 3)
+            entry[f"{name}_median_queries"] = int(np.median([r[f"{name}_queries"] for r in rs]))
+            entry[f"{name}_accepted"] = sum(r[f"{name}_valid"] for r in rs)
+        entry["fine_invalid"] = sum(r["new_valid"] and r["fine_collides"] for r in rs)
+        entry["rejected_free"] = sum((not r["new_valid"]) and not r["fine_collides"] for r in rs)
+        if with_old:
+            entry["verdicts_differ"] = sum(r["new_valid"] != r["old_valid"] for r in rs)
+        table.append(entry)
+    return {"machine": f"{platform.node()} {platform.processor() or platform.machine()}, "
+                       f"{os.cpu_count()} cores",
+            "load": os.getloadavg()[0], "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+            "quick": args.quick, "seed": args.seed, "baseline": args.baseline, "classes": table}
+
+
+def print_table(report: dict) -> None:
+    with_old = "old_median_ms" in report["classes"][0] if report["classes"] else False
+    head = f"{'class':<18}{'paths':>6}{'new ms':>9}{'p90':>8}{'queries':>9}"
+    if with_old:
+        head += f"{'old ms':>9}{'p90':>8}{'queries':>9}{'differ':>8}"
+    head += f"{'accepted':>10}{'fine bad':>10}{'rej. free':>10}"
+    print(head)
+    for e in report["classes"]:
+        line = (f"{e['cls']:<18}{e['paths']:>6}{e['new_median_ms']:>9.2f}{e['new_p90_ms']:>8.2f}"
+                f"{e['new_median_queries']:>9}")
+        if with_old:
+            line += (f"{e['old_median_ms']:>9.2f}{e['old_p90_ms']:>8.2f}"
+                     f"{e['old_median_queries']:>9}{e['verdicts_differ']:>8}")
+        line += f"{e['new_accepted']:>10}{e['fine_invalid']:>10}{e['rejected_free']:>10}"
+        print(line)
+    print(f"machine {report['machine']}, load {report['load']:.2f}, {report['date']}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer paths")
+    parser.add_argument("--json", action="store_true", help="end with one JSON line")
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--baseline", default="6f9d59d",
+                        help="git revision of the verifier to compare with ('none': skip)")
+    parser.add_argument("--problems", help="comma-separated problems of planning_scenes")
+    parser.add_argument("--repeats", type=int, default=3)
+    args = parser.parse_args(argv)
+    report = run(args)
+    print_table(report)
+    if args.json:
+        print(json.dumps(report))
+    bad = sum(e["fine_invalid"] for e in report["classes"])
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
