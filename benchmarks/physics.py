@@ -4,7 +4,8 @@ For each task: the whole run (planning, behaviour tree, physics) on the mujoco b
 as fast as it steps, ``repeats`` times; figures are medians. ``rtf_run`` is physics time
 over the run's wall time; ``rtf_physics`` is physics time over the wall time spent
 stepping it (what the simulation alone costs). Also the model's conversion and compile
-time (cache cold and warm) and where each task's objects ended.
+time (cache cold and warm), where each task's objects ended, and the size of the run's
+``physics`` events (joints and objects at 25 Hz) in its record.
 
     python benchmarks/physics.py            # table
     python benchmarks/physics.py --json     # JSON
@@ -19,7 +20,8 @@ import statistics
 import tempfile
 import time
 
-TASKS = {"handoff": 5.0, "pick_place_panda": 2.0, "pick_place": None}  # target rtf_run
+TASKS = {"handoff": 5.0, "pick_place_panda": 2.0, "pick_place": None, "stack": None,
+         "handoff_panda": None}  # target rtf_run
 
 
 def run_once(task: str, cache: str) -> dict[str, float | str]:
@@ -40,7 +42,8 @@ def run_once(task: str, cache: str) -> dict[str, float | str]:
         started = time.perf_counter()
         record = runner.run()
         wall = time.perf_counter() - started
-        return {"status": record.status, "sim_s": backend.sim_time, "wall_s": wall,
+        physics = [e.as_dict() for e in record.events if e.kind == "physics"]
+        return {"physics_kb": len(json.dumps(physics)) / 1e3,"status": record.status, "sim_s": backend.sim_time, "wall_s": wall,
                 "step_s": backend.step_seconds, "build_s": backend.build_seconds,
                 "cache_hit": backend.cache_hit,
                 "objects": {k: [round(v, 4) for v in p.xyz]
@@ -54,8 +57,11 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
+    import os
+
     import mujoco
 
+    load_before = os.getloadavg()[0]
     results = {}
     with tempfile.TemporaryDirectory() as cache:
         for task, target in TASKS.items():
@@ -72,22 +78,25 @@ def main() -> None:
                 "build_warm_s": statistics.median(float(r["build_s"]) for r in runs[1:]) if
                 len(runs) > 1 else None,
                 "objects": runs[-1]["objects"],
+                "physics_record_kb": float(runs[-1]["physics_kb"]),
                 "target_rtf_run": target,
             }
     meta = {"machine": f"{platform.machine()} {platform.processor() or ''}".strip(),
             "python": platform.python_version(), "mujoco": mujoco.__version__,
-            "date": time.strftime("%Y-%m-%d")}
+            "date": time.strftime("%Y-%m-%d"), "cores": os.cpu_count(),
+            "load_1min": [round(load_before, 2), round(os.getloadavg()[0], 2)]}
     if args.json:
         print(json.dumps({"meta": meta, "results": results}, indent=2))
         return
     print(meta)
     print(f"{'task':18} {'status':12} {'physics s':>9} {'rtf run':>8} {'rtf physics':>11} "
-          f"{'build cold/warm ms':>19}  target")
+          f"{'build cold/warm ms':>19} {'record kB':>9}  target")
     for task, r in results.items():
         warm = "-" if r["build_warm_s"] is None else f"{1e3 * r['build_warm_s']:.0f}"
+        target = f"≥ {r['target_rtf_run']:g}x" if r["target_rtf_run"] else ""
         print(f"{task:18} {','.join(r['status']):12} {r['sim_s']:9.2f} {r['rtf_run']:8.1f} "
-              f"{r['rtf_physics']:11.1f} {1e3 * r['build_cold_s']:>12.0f}/{warm:<6}  "
-              (f"≥ {r['target_rtf_run']:g}x" if r["target_rtf_run"] else ""))
+              f"{r['rtf_physics']:11.1f} {1e3 * r['build_cold_s']:>12.0f}/{warm:<6} "
+              f"{r['physics_record_kb']:9.0f}  {target}")
 
 
 if __name__ == "__main__":
