@@ -23,10 +23,11 @@ Where the tool frame is, for each end effector, first match wins:
 3. the end effector's ``parent_link``, when it already lies between the fingers (as a
    MoveIt ``*_tcp`` link does), closing along its y axis;
 4. derived from the fingers' collision geometry, when the parent link is behind them (a
-   flange, as MoveIt Setup Assistant configs end): the TCP is the centre of the two
-   fingers' geometry (halfway between them, halfway along their length, at the gripper's
-   open pose), closing along the line between the fingers, approaching along the
-   parent link's axis that points from it to the fingers;
+   flange, as MoveIt Setup Assistant configs end): the TCP is halfway between the two
+   fingers' geometry (at the gripper's open pose) and a fifth of their length back from
+   their tips (the middle of the fingertip pads, where a grasp holds), closing along the
+   line between the fingers, approaching along the parent link's axis that points from
+   it to the fingers;
 5. else the parent link itself, closing along its y axis.
 
 A TCP that is not a link of the URDF is added to the model as a frame named
@@ -62,6 +63,8 @@ CLOSED_SPELLINGS = ("closed", "close")
 _NAMED_AXES = {"x": 0, "y": 1, "z": 2}
 _SNAP = math.radians(5.0)  # a derived axis this near a link axis is that axis
 _BEHIND = 1e-3  # m: fingers wholly this far in front of the parent link: it is behind them
+PAD_FRACTION = 0.2
+"""A derived TCP is this fraction of the fingers' length back from their tips."""
 
 Axis = Annotated[list[float], Field(min_length=3, max_length=3)] | Literal[
     "x", "y", "z", "-x", "-y", "-z", "+x", "+y", "+z"]
@@ -420,9 +423,12 @@ def _derive(model: RobotModel, link: str, gripper: str | None) -> pin.SE3 | None
     if np.linalg.norm(out) < 1e-6:
         return None
     approach = _snapped(out / np.linalg.norm(out))
-    if float((corners @ approach).min()) < _BEHIND:
+    along = corners @ approach
+    if float(along.min()) < _BEHIND:
         return None  # the link reaches between the fingers: it is the TCP already
-    return pin.SE3(_axes(closing, approach), centre)
+    back = PAD_FRACTION * float(along.max() - along.min())
+    tcp = centre + (float(along.max()) - back - float(centre @ approach)) * approach
+    return pin.SE3(_axes(closing, approach), tcp)
 
 
 def _snapped(vector: np.ndarray) -> np.ndarray:
