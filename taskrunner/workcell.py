@@ -292,7 +292,7 @@ class Workcell:
     def plan(self, group: str, *, to: str | None = None,
              joints: Mapping[str, float] | None = None, pose: Pose | None = None,
              position: Position | None = None, link: str | None = None,
-             start: StateLike | None = None, planner: str = "RRTConnect",
+             start: StateLike | None = None, planner: str | None = None,
              planning_time: float = 5.0, seed: int = 0,
              velocity_scaling: float | None = None,
              acceleration_scaling: float | None = None) -> Plan:
@@ -310,7 +310,8 @@ class Workcell:
             link: the link placed at ``pose`` / ``position`` (default: the group's tip).
             start: where the motion starts (default: the current state); joints left
                 out keep their current values. ``start=previous_plan.end`` chains plans.
-            planner: an OMPL planner (see :data:`taskrunner.planning.PLANNERS`).
+            planner: an OMPL planner (see :data:`taskrunner.planning.PLANNERS`); None:
+                the group's default of its ``ompl_planning.yaml``, else RRTConnect.
             planning_time: seconds allowed per attempt, a cap and not a target (the
                 search stops at the first path; MoveIt's default is also 5 s).
             seed: seeds OMPL and the IK goal sampling (same seed, same motion).

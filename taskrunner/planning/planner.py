@@ -42,6 +42,7 @@ from taskrunner.planning.request import (
     PlanRequest,
     PlanResult,
     PoseGoal,
+    group_planner,
 )
 from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
@@ -114,6 +115,9 @@ class MotionPlanner:
             PlanningCancelledError: ``should_stop`` said so.
             PlanningError: the path cannot be timed (with ``request.timing``).
         """
+        if request.options.planner is None:  # the group's default (ompl_planning.yaml)
+            planner = group_planner(self.scene.robot.group(request.group))
+            request = replace(request, options=replace(request.options, planner=planner))
         result = self._plan(request, should_stop)
         if request.timing is None:
             return result

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from taskrunner.planning.timing import TimingOptions
+from taskrunner.robot.model import Group
+from taskrunner.robot.moveit_yaml import OMPL_PLANNERS
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = [
@@ -25,6 +27,7 @@ __all__ = [
     "PlanResult",
     "PlannerOptions",
     "PoseGoal",
+    "group_planner",
 ]
 
 
@@ -66,13 +69,15 @@ class PoseGoal:
 
 Goal = JointGoal | NamedGoal | PoseGoal
 
-# The geometric planners the ompl 2.0.1 bindings offer that solve our queries. AORRTC is
-# left out: it reports "Zero-length path found" on every query here. BiTRRT, TRRT,
-# LazyPRM and EST have no Python class in these bindings.
-PLANNERS = (
-    "RRTConnect", "RRT", "RRTstar", "InformedRRTstar", "SORRTstar", "PRM", "PRMstar",
-    "BITstar", "KPIECE1", "BKPIECE1", "LBKPIECE1", "FMT", "BFMT",
-)
+# The geometric planners of the OMPL bindings that solve our queries (see OMPL_PLANNERS).
+PLANNERS = OMPL_PLANNERS
+DEFAULT_PLANNER = "RRTConnect"
+
+
+def group_planner(group: Group) -> str:
+    """The planner a request for ``group`` that names none uses: the group's default in
+    ``ompl_planning.yaml`` when it is one of :data:`PLANNERS`, else RRTConnect."""
+    return (group.planner.planner if group.planner is not None else None) or DEFAULT_PLANNER
 
 
 @dataclass(frozen=True)
@@ -80,7 +85,9 @@ class PlannerOptions:
     """How to plan.
 
     Attributes:
-        planner: OMPL planner by name (see ``PLANNERS``); RRTConnect by default.
+        planner: OMPL planner by name (see ``PLANNERS``); None: the group's default
+            planner of its ``ompl_planning.yaml`` (MoveIt's ``default_planner_config``),
+            else RRTConnect (see :func:`group_planner`).
         planning_time: seconds per attempt, a cap and not a target: every planner but
             the optimizing ones with ``refine`` returns at its first solution. 5 s by
             default (MoveIt's default), long enough for the hard benchmark classes.
@@ -101,7 +108,7 @@ class PlannerOptions:
         goal_samples: IK solutions sampled as goal states for a pose goal.
     """
 
-    planner: str = "RRTConnect"
+    planner: str | None = None
     planning_time: float = 5.0
     attempts: int = 1
     seed: int = 0
@@ -113,7 +120,7 @@ class PlannerOptions:
     goal_samples: int = 6
 
     def __post_init__(self) -> None:
-        if self.planner not in PLANNERS:
+        if self.planner is not None and self.planner not in PLANNERS:
             raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
         for name in ("planning_time", "longest_valid_segment", "validation_resolution",
                      "verify_margin"):
