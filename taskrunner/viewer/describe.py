@@ -157,14 +157,25 @@ def describe_tree(root: Behaviour) -> dict[str, Any]:
 def describe_replay(record: RunRecord) -> dict[str, Any]:
     """A record for the page's replay: the run's summary, its ``motions`` in order (node,
     file:line, time of the event, trajectory, the scene it started in, ``executed``: s
-    of trajectory run), ``first_scene`` and ``final_scene``."""
+    of trajectory run; ``physics``: what a physics backend measured during it, or None),
+    ``first_scene`` and ``final_scene``."""
     replay = replay_of(record)
+    # A physics backend's measured joints and objects of each motion (its step's
+    # ``physics`` event, after the motion's): the replay shows them instead of the plan.
+    measured: dict[int, dict[str, Any]] = {}
+    for event in record.events:
+        if event.kind == "physics":
+            earlier = [k for k, m in enumerate(replay.motions)
+                       if m.seq < event.seq and m.node == event.node and k not in measured]
+            if earlier:
+                measured[earlier[-1]] = event.data
     return {
         "run_id": record.run_id, "task": record.task, "cell": record.cell,
         "status": record.status, "error": record.error, "backend": record.backend,
         "motions": [{"seq": m.seq, "node": m.node, "location": m.location, "time": m.time,
-                     "trajectory": m.trajectory, "scene": m.scene, "executed": m.executed}
-                    for m in replay.motions],
+                     "trajectory": m.trajectory, "scene": m.scene, "executed": m.executed,
+                     "physics": measured.get(k)}
+                    for k, m in enumerate(replay.motions)],
         "first_scene": replay.first_scene,
         "final_scene": replay.final_scene,
     }

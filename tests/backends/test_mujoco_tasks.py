@@ -237,6 +237,11 @@ def test_the_run_record_has_joints_and_objects_over_time(tmp_path):
     assert max(heights) > 0.8 and heights[-1] == pytest.approx(0.771, abs=0.01)
     size = len(json.dumps([e.as_dict() for e in physics]))
     assert size < 100_000, f"{size} bytes of physics for 10 s of motion"
+    # The web view's replay gets each motion's measurements.
+    from taskrunner.viewer.describe import describe_replay
+
+    replay = describe_replay(record)
+    assert [m["physics"]["t"] for m in replay["motions"]] == [e.data["t"] for e in physics]
 
 
 def test_an_unplanned_contact_fails_its_step_with_file_and_line(tmp_path):

@@ -295,7 +295,10 @@ async function viewRun(runId) {
     logLine(e);
     if (e.kind === 'run_started') replay.first_scene = e.data.scene || null;
     else if (e.kind === 'motion') motions.push({ seq: e.seq, node: e.node, location: e.location, time: e.time, trajectory: e.data.trajectory, scene: e.data.scene, executed: null });
-    else if (e.kind === 'node_finished' && e.data.executed) {
+    else if (e.kind === 'physics') {
+      const m = [...motions].reverse().find((x) => x.node === e.node && !x.physics);
+      if (m) m.physics = e.data;
+    } else if (e.kind === 'node_finished' && e.data.executed) {
       const m = [...motions].reverse().find((x) => x.node === e.node && x.executed == null);
       if (m) m.executed = e.data.executed.until;
     } else if (e.kind === 'run_finished') {
@@ -303,7 +306,7 @@ async function viewRun(runId) {
       describe(e.status, e.status === 'succeeded' ? null : e.message);
       cancel.hidden = true;
     }
-    if (e.kind === 'motion' || e.kind === 'run_finished' || (e.kind === 'node_finished' && e.data.executed)) {
+    if (e.kind === 'motion' || e.kind === 'physics' || e.kind === 'run_finished' || (e.kind === 'node_finished' && e.data.executed)) {
       const t = state.time;
       state.timeline = new Timeline(replay);
       renderMotions();

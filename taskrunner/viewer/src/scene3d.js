@@ -146,7 +146,8 @@ export class CellView {
       obj.position.set(...spec.pose.xyz);
       obj.quaternion.set(...spec.pose.quat);
       obj.userData.attachedTo = spec.attached_to || null;
-      obj.children.forEach((c) => { if (c.material) c.material.emissive?.setHex(spec.attached_to ? 0x223355 : 0); });
+      const held = spec.attached_to || spec.held;  // held: measured by physics, in the world
+      obj.children.forEach((c) => { if (c.material) c.material.emissive?.setHex(held ? 0x223355 : 0); });
     }
     for (const [name, obj] of this.objects) {
       if (!seen.has(name)) { obj.removeFromParent(); this.objects.delete(name); }

@@ -2,7 +2,9 @@
 // it ran), and the scene at any time on it: the joints of the motion playing
 // (interpolated between its samples) over the scene it started in, objects as they
 // were then (attached ones ride on their link). Before the first motion: the run's first
-// scene; after the last: its final scene.
+// scene; after the last: its final scene. A motion measured by a physics backend
+// (``physics``: joints and object world poses over physics time) shows what was measured:
+// its joints, and its free objects where the physics had them.
 
 export class Timeline {
   constructor(replay) {
@@ -45,9 +47,35 @@ export class Timeline {
       return { joints, objects: scene.objects, motion: -1 };
     }
     const m = this.motions[i];
+    if (m.physics && m.physics.t && m.physics.t.length) {
+      return Object.assign(measuredAt(m, t - m.start), { motion: i });
+    }
     const joints = Object.assign({}, m.scene.joints, sample(m.trajectory, t - m.start).positions);
     return { joints, objects: m.scene.objects, motion: i };
   }
+}
+
+// Joints and objects of a measured motion at local time tau (s from its start): the
+// physics samples from the first one on, linear between samples.
+function measuredAt(m, tau) {
+  const p = m.physics;
+  const times = p.t;
+  const n = times.length;
+  const at = times[0] + Math.max(0, tau);
+  let k = 0;
+  while (k < n - 2 && times[k + 1] <= at) k++;
+  const k1 = Math.min(k + 1, n - 1);
+  const a = times[k1] > times[k] ? Math.min(1, Math.max(0, (at - times[k]) / (times[k1] - times[k]))) : 0;
+  const joints = Object.assign({}, m.scene.joints);
+  p.joints.forEach((name, j) => { joints[name] = p.q[k][j] + a * (p.q[k1][j] - p.q[k][j]); });
+  const objects = (m.scene.objects || []).map((obj) => {
+    const track = p.objects && p.objects[obj.name];
+    const pose = track && (track[a < 0.5 ? k : k1] || track[k]);
+    if (!pose) return obj;
+    return Object.assign({}, obj, { pose: { xyz: pose.slice(0, 3), quat: pose.slice(3, 7) },
+                                    attached_to: null, held: obj.attached_to || null });
+  });
+  return { joints, objects };
 }
 
 function endOf(motion) {
