@@ -56,10 +56,17 @@ class SeedTable:
         quaternion = pin.Quaternion(target.rotation).coeffs()
         point = np.concatenate([target.translation, _ORIENTATION_WEIGHT * quaternion])
         _, rows = self._pose_tree.query(point, k=2 * count)
-        rows = np.atleast_1d(rows) % len(self.samples)
-        # A row can come twice (once per quaternion sign): keep the first of each.
-        _, first = np.unique(rows, return_index=True)
-        return rows[np.sort(first)][:count]
+        n = len(self.samples)
+        # A row can come twice (once per quaternion sign): keep the first of each (a
+        # loop over 2·count ints is several times faster than np.unique here).
+        kept: list[int] = []
+        for row in np.atleast_1d(rows).tolist():
+            row %= n
+            if row not in kept:
+                kept.append(row)
+                if len(kept) == count:
+                    break
+        return np.asarray(kept, dtype=np.intp)
 
     def nearest_to_position(self, target: np.ndarray, count: int) -> np.ndarray:
         """Rows of the ``count`` stored configurations whose frame origin is nearest."""

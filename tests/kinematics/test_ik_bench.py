@@ -30,4 +30,8 @@ def test_bench_reports_every_robot_and_formats_rows() -> None:
     assert len(rows) == 4
     assert rows[0][0].startswith("machine speed")
     assert rows[1][0].startswith("IK Panda arm, full pose, 5 random reachable targets")
-    assert "% success" in rows[3][1] and "ms mean" in rows[3][1]
+    assert "% success" in rows[3][1] and "ms mean" in rows[3][1] and "ms p99" in rows[3][1]
+    for key in ("panda_ik", "ur5_ik"):
+        assert result[f"{key}_ms_p99"] <= result[f"{key}_ms_max"]
+        assert 0.0 <= result[f"{key}_first_attempt"] <= result[f"{key}_success"]
+        assert result[f"{key}_failures"] == round(5 * (1 - result[f"{key}_success"]))
