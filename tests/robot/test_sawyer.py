@@ -165,3 +165,14 @@ def test_plans_between_the_named_poses_avoid_the_table_and_pillars():
             q[cell.model.indices(plan.path.names)] = values
             assert not scene.in_collision(q)
         cell.execute(plan)
+
+
+def test_the_manifest_by_name_is_the_config_package_with_the_cells_tool():
+    by_name = load_workcell("sawyer")
+    cell = load_cell(cells_dir() / "sawyer_table.yaml")
+    assert by_name.model.joint_names == cell.model.joint_names
+    assert by_name.model.warnings == []
+    ours, theirs = by_name.cell.tools["right_arm"], cell.tools["right_arm"]
+    assert (ours.frame, ours.open_pose, ours.closed_pose) == (theirs.frame, theirs.open_pose,
+                                                              theirs.closed_pose)
+    assert np.allclose(ours.offset.homogeneous, theirs.offset.homogeneous)
