@@ -125,6 +125,9 @@ def cmd_info(args: argparse.Namespace) -> int:
         for eef in model.end_effectors.values():
             out.append(f"  {eef.name}: group {eef.group} on {eef.parent_link}"
                        f" (arm {eef.parent_group or '-'})")
+    if cell.tools:
+        out.append("tools (TCP: the tool frame's origin; y closes, z approaches):")
+        out += [f"  {tool.describe()}" for tool in cell.tools.values()]
     bare = model.links_without_collision_geometry()
     if bare:
         out.append(f"links without collision geometry: {', '.join(bare)}")
@@ -193,9 +196,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
     # A point in front of the arm's base, a hand's height above the table.
     base = model.instances[0].base
     target = base.act(np.array(args.target, dtype=float))
-    # Aim the grasp point between the fingers when the arm has one.
-    frame = model.instances[0].prefix + "tool0"
-    frame = frame if model.has_link(frame) else tip
+    # Aim the grasp point between the fingers: the arm's tool frame.
+    frame = cell.tools[arm.name].frame if arm.name in cell.tools else tip
     solver = IkSolver(model, arm.name, frame=frame)
     t0 = time.perf_counter()
     solutions = solver.solve_all(target, seed_q=start, options=IkOptions(
