@@ -15,13 +15,15 @@ from __future__ import annotations
 
 import json
 import time
-
-import httpx
+from typing import TYPE_CHECKING
 
 from taskrunner.backends.calibration import ServoCalibration
 from taskrunner.backends.servo_backend import ServoBackend, ServoOptions
 from taskrunner.backends.servo_protocol import IDEMPOTENT_COMMANDS, command_name
 from taskrunner.errors import BackendError
+
+if TYPE_CHECKING:
+    import httpx
 
 __all__ = ["HttpBackend", "HttpTransport"]
 
@@ -40,9 +42,12 @@ class HttpTransport:
     def __init__(self, url: str, reply_timeout: float = 1.0, retries: int = 2) -> None:
         if not url.startswith(("http://", "https://")):
             raise BackendError(f"servo firmware URL must be http(s)://... (got {url!r})")
+        import httpx  # here, not at module level: 50 ms off every run that drives no board
+
+        self._httpx = httpx
         self._url = url
         self._retries = retries
-        self._client = httpx.Client(
+        self._client: httpx.Client = httpx.Client(
             timeout=httpx.Timeout(reply_timeout), trust_env=False,
             limits=httpx.Limits(max_connections=1, max_keepalive_connections=1),
             headers={"Content-Type": "application/json"})
@@ -61,6 +66,7 @@ class HttpTransport:
         idempotent = command_name(line) in IDEMPOTENT_COMMANDS
         attempts = 1 + (self._retries if idempotent and timeout is None else 0)
         body = json.dumps({"cmd": line}).encode()
+        httpx = self._httpx
         request_timeout = httpx.USE_CLIENT_DEFAULT if timeout is None else httpx.Timeout(timeout)
         for attempt in range(attempts):
             try:
@@ -92,6 +98,7 @@ class HttpTransport:
         """POST ``line`` on a fresh connection, waiting at most 100 ms, errors ignored;
         then close."""
         body = json.dumps({"cmd": line}).encode()
+        httpx = self._httpx
         try:
             httpx.post(self._url, content=body, timeout=0.1, trust_env=False,
                        headers={"Content-Type": "application/json"})
