@@ -66,7 +66,8 @@ def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = 
     code = process.wait(timeout)
     wall = time.perf_counter() - started
     if code != 0:
-        raise RuntimeError(f"run-task {task} --seed {seed} ended {code}:\n{stderr[-2000:]}")
+        shown = "\n".join(text for _, text in lines[-15:])
+        raise RuntimeError(f"run-task {task} --seed {seed} ended {code}:\n{shown}\n{stderr[-2000:]}")
     checked = next((t for t, text in lines if _CHECKED.search(text)), None)
     planned_lines = [t for t, text in lines if _PLANNED.match(text)]
     record_path = next((Path(text.split("record:", 1)[1].strip()) for _, text in lines

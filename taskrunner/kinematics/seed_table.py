@@ -10,10 +10,13 @@ frame's world pose at each, and answers nearest-pose queries with a k-d tree.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
-from scipy.spatial import cKDTree
+
+if TYPE_CHECKING:
+    from scipy.spatial import cKDTree
 
 __all__ = ["SeedTable"]
 
@@ -31,6 +34,8 @@ class SeedTable:
     """
 
     def __init__(self, samples: np.ndarray, frame_pose_of: Callable[[np.ndarray], pin.SE3]):
+        from scipy.spatial import cKDTree  # here: scipy.spatial takes 50-70 ms to import
+
         self.samples = np.asarray(samples, dtype=float)
         n = len(self.samples)
         positions = np.empty((n, 3))
@@ -71,6 +76,8 @@ class SeedTable:
     def nearest_to_position(self, target: np.ndarray, count: int) -> np.ndarray:
         """Rows of the ``count`` stored configurations whose frame origin is nearest."""
         if self._position_tree is None:
+            from scipy.spatial import cKDTree
+
             self._position_tree = cKDTree(self._positions)
         _, rows = self._position_tree.query(target, k=count)
         return np.atleast_1d(rows)
