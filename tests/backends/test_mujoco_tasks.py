@@ -261,3 +261,33 @@ def test_a_tracking_error_fails_its_step_with_file_and_line(tmp_path):
     assert record.status == "failed"
     assert f"{resolve_task('pick_place_panda')}:14: execution failed: tracking error: joint" \
         in record.error
+
+
+OFF_CENTRE = """task: offcentre
+cell: {cell}
+parameters:
+  grasp_x: {{default: 0.1, type: float, description: "grasp from the bar's centre (m)"}}
+objects:
+  - {{name: bar, shape: box, size: [0.24, 0.03, 0.03], pose: {{xyz: [0.5, 0.1, 0.765]}}, mass: 1.5}}
+steps:
+  - pick: {{arm: arm, object: bar, grasp: {{xyz: ["${{grasp_x}}", 0, 0.005], rpy: [0, 3.14159265, 0]}},
+           approach: 0.08, retreat: 0.1}}
+  - go: {{group: arm, to: ready}}
+"""
+
+
+@pytest.mark.parametrize("grasp_x", [0.1, 0.0])
+def test_a_heavy_bar_grasped_far_from_its_centre_slips_at_its_pick(grasp_x, tmp_path):
+    # 1.5 kg, 10 cm from the centre: 1.5 N m about the fingers' axis, more than the pads'
+    # torsional friction resists. The same bar grasped at its centre is carried.
+    task = tmp_path / "offcentre.yaml"
+    task.write_text(OFF_CENTRE.format(cell=ROBOTS / "cells" / "panda_table.yaml"))
+    record, poses, _ = run(task, tmp_path, parameters={"grasp_x": grasp_x})
+    if grasp_x:
+        assert record.status == "failed"
+        assert f"{task}:8: execution failed: object 'bar' slipped out of the gripper" \
+            in record.error
+        assert poses["bar"].xyz[2] < 0.8  # back down on the table
+    else:
+        assert record.status == "succeeded", record.error
+        assert poses["bar"].xyz[2] > 1.0  # held up at the ready pose
