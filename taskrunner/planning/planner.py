@@ -332,8 +332,10 @@ class MotionPlanner:
             bounds.setLow(k, float(lower[k]))
             bounds.setHigh(k, float(upper[k]))
         space.setBounds(bounds)
+        # OMPL wants a fraction in (0, 1): a gripper's few centimetres of travel are
+        # shorter than one segment.
         space.setLongestValidSegmentFraction(
-            min(1.0, options.longest_valid_segment / space.getMaximumExtent()))
+            min(0.5, options.longest_valid_segment / space.getMaximumExtent()))
         setup = og.SimpleSetup(space)
         values = np.empty(n)
         rng = range(n)

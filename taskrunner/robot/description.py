@@ -2,7 +2,8 @@
 
 A robot is described by a URDF (or xacro), an optional SRDF (or ``.srdf.xacro``), and
 optional MoveIt ``kinematics.yaml``, ``joint_limits.yaml``, ``ompl_planning.yaml``,
-``initial_positions.yaml`` and our ``hardware.yaml`` (servo calibration).
+``initial_positions.yaml``, ``pilz_cartesian_limits.yaml`` and our ``hardware.yaml``
+(servo calibration).
 :func:`load_description` accepts any of:
 
 - a ``robot.yaml`` manifest (or a folder holding one) naming those files;
@@ -12,7 +13,8 @@ optional MoveIt ``kinematics.yaml``, ``joint_limits.yaml``, ``ompl_planning.yaml
 - a bare ``.urdf`` / ``.xacro`` file, with an SRDF beside it if one has the same stem.
 
 A defect in a file the robot can do without (``ompl_planning.yaml``,
-``initial_positions.yaml``) is a warning and the file is not used.
+``initial_positions.yaml``, ``pilz_cartesian_limits.yaml``) is a warning and the file is
+not used.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from taskrunner.robot.configpackage import (
     optional_error_warning,
 )
 from taskrunner.robot.moveit_yaml import (
+    CartesianLimits,
     JointLimitsConfig,
     KinematicsSettings,
     OmplConfig,
@@ -37,6 +40,7 @@ from taskrunner.robot.moveit_yaml import (
     read_joint_limits_yaml,
     read_kinematics_yaml,
     read_ompl_planning_yaml,
+    read_pilz_cartesian_limits_yaml,
 )
 from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap, default_package_map
@@ -51,7 +55,8 @@ __all__ = ["RobotDescription", "load_description", "read_srdf_file"]
 
 MANIFEST = "robot.yaml"
 _MANIFEST_KEYS = {"name", "urdf", "srdf", "kinematics", "joint_limits", "hardware", "xacro_args",
-                  "ompl_planning", "initial_positions", "collision", "end_effectors"}
+                  "ompl_planning", "initial_positions", "collision", "end_effectors",
+                  "pilz_cartesian_limits"}
 COLLISION_CHOICES = ("exact", "convex", "auto")
 T = TypeVar("T")
 
@@ -86,6 +91,8 @@ class RobotDescription:
     load_warnings: list[LoadWarning] = field(default_factory=list)
     collision: str | None = None
     """``collision:`` of the manifest (exact, convex, auto), if it says."""
+    cartesian_limits: CartesianLimits | None = None
+    """``pilz_cartesian_limits.yaml``, if the robot has one."""
     end_effector_settings: dict[str, DeclaredTool] = field(default_factory=dict)
     """The manifest's ``end_effectors:`` (tool frames, gripper poses; see
     :mod:`taskrunner.robot.tools`)."""
@@ -165,8 +172,16 @@ def _optional(read: Callable[[Path], T], path: Path, what: str,
 
 
 def _add_optional_files(description: RobotDescription, ompl: Path | None,
-                        initial: Path | None) -> None:
+                        initial: Path | None, cartesian: Path | None = None) -> None:
     warnings = description.load_warnings
+    if cartesian is not None:
+        description.cartesian_limits = _optional(
+            read_pilz_cartesian_limits_yaml, cartesian, "pilz_cartesian_limits.yaml", warnings)
+        if description.cartesian_limits is not None:
+            description.files["pilz_cartesian_limits"] = cartesian
+            description.notes.append(
+                f"Cartesian limits: {description.cartesian_limits.describe()} (read; straight "
+                "moves are timed by the joint limits only)")
     if ompl is not None:
         description.ompl = _optional(read_ompl_planning_yaml, ompl, "ompl_planning.yaml",
                                      warnings)
@@ -237,7 +252,7 @@ def _load_manifest(path: Path, packages: PackageMap) -> RobotDescription:
         end_effector_settings=read_end_effector_settings(data.get("end_effectors"), path),
     )
     _add_optional_files(description, file_field("ompl_planning"),
-                        file_field("initial_positions"))
+                        file_field("initial_positions"), file_field("pilz_cartesian_limits"))
     collision = data.get("collision")
     if collision is not None and collision not in COLLISION_CHOICES:
         raise YamlError(f"'collision' must be one of {', '.join(COLLISION_CHOICES)} "
@@ -270,5 +285,6 @@ def _load_moveit_config(folder: Path, packages: PackageMap) -> RobotDescription:
         load_warnings=list(found.warnings),
     )
     _add_optional_files(description, found.yaml.get("ompl_planning"),
-                        found.yaml.get("initial_positions"))
+                        found.yaml.get("initial_positions"),
+                        found.yaml.get("pilz_cartesian_limits"))
     return description

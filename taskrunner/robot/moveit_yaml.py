@@ -327,6 +327,67 @@ def read_ompl_planning_yaml(path: str | Path) -> OmplConfig:
     return OmplConfig(path, groups, tuple(warnings))
 
 
+# --------------------------------------------------------------------------- pilz_cartesian_limits
+_CARTESIAN_KEYS = ("max_trans_vel", "max_trans_acc", "max_trans_dec", "max_rot_vel")
+
+
+@dataclass(frozen=True)
+class CartesianLimits:
+    """``pilz_cartesian_limits.yaml``: limits of a straight-line (Cartesian) motion of the
+    tool. Read, checked and reported; the Cartesian timing does not apply them yet.
+
+    Attributes:
+        max_trans_vel: translational speed (m/s).
+        max_trans_acc: translational acceleration (m/s²).
+        max_trans_dec: translational deceleration, a magnitude (m/s²; MoveIt writes it
+            negative).
+        max_rot_vel: rotational speed (rad/s).
+    """
+
+    path: Path
+    max_trans_vel: float
+    max_trans_acc: float
+    max_trans_dec: float
+    max_rot_vel: float
+
+    def describe(self) -> str:
+        return (f"translation {self.max_trans_vel:g} m/s, {self.max_trans_acc:g} m/s² up, "
+                f"{self.max_trans_dec:g} m/s² down; rotation {self.max_rot_vel:g} rad/s")
+
+
+def read_pilz_cartesian_limits_yaml(path: str | Path) -> CartesianLimits:
+    """Read MoveIt's ``pilz_cartesian_limits.yaml`` (``cartesian_limits: {max_trans_vel,
+    max_trans_acc, max_trans_dec, max_rot_vel}``, plain or in ROS 2 parameter form).
+
+    Raises:
+        YamlError: bad YAML, a missing or unknown key, a value that is not a non-zero
+            finite number, or a negative speed or acceleration (with the line).
+    """
+    path = Path(path)
+    data = _unwrap_ros_parameters(load_yaml(path), "robot_description_planning")
+    node = data.get("cartesian_limits") if isinstance(data, LineDict) else None
+    if not isinstance(node, LineDict):
+        raise YamlError("expected 'cartesian_limits: {max_trans_vel, max_trans_acc, "
+                        "max_trans_dec, max_rot_vel}'", path, line_of(data))
+    for key in node:
+        if key not in _CARTESIAN_KEYS:
+            raise YamlError(f"unknown field {key!r} (expected one of {', '.join(_CARTESIAN_KEYS)})",
+                            path, line_of(node, key))
+    values: dict[str, float] = {}
+    for key in _CARTESIAN_KEYS:
+        if key not in node:
+            raise YamlError(f"'{key}' is required", path, node.line)
+        value = _number(path, node, key)
+        assert value is not None
+        if not np.isfinite(value) or value == 0:
+            raise YamlError(f"'{key}' must be a non-zero finite number (got {value})", path,
+                            line_of(node, key))
+        if key != "max_trans_dec" and value < 0:
+            raise YamlError(f"'{key}' must be > 0 (got {value})", path, line_of(node, key))
+        values[key] = abs(value)
+    return CartesianLimits(path, **values)
+
+
 # --------------------------------------------------------------------------- initial_positions
 def read_initial_positions_yaml(path: str | Path) -> tuple[dict[str, float], dict[str, int | None]]:
     """Read ``initial_positions.yaml`` (``initial_positions: {joint: value}``, rad or m):

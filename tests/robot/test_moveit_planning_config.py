@@ -1,0 +1,138 @@
+"""What a MoveIt config says about planning: each group's default planner
+(ompl_planning.yaml) is the planner of a request that names none; the Cartesian limits
+(pilz_cartesian_limits.yaml) are read, checked and reported."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from taskrunner.errors import YamlError
+from taskrunner.planning.planner import MotionPlanner
+from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PlanRequest, group_planner
+from taskrunner.robot import load_robot
+from taskrunner.robot.cell import load_cell_or_robot
+from taskrunner.robot.moveit_yaml import (
+    OmplGroupSettings,
+    ompl_planner_name,
+    read_pilz_cartesian_limits_yaml,
+)
+from taskrunner.scene import scene_from_cell
+
+CONFIG = Path(__file__).resolve().parent / "fixtures" / "moveit" / "src" / "arm3_ros2_moveit_config"
+
+
+@pytest.fixture(autouse=True)
+def _no_ros_environment(monkeypatch: pytest.MonkeyPatch) -> None:
+    for name in ("TASKRUNNER_PACKAGE_PATH", "ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH",
+                 "TASKRUNNER_STRICT", "TASKRUNNER_COLLISION"):
+        monkeypatch.delenv(name, raising=False)
+
+
+def _copy(tmp_path: Path) -> Path:
+    """The ROS 2 config next to its description package (found as a sibling)."""
+    shutil.copytree(CONFIG.parent / "arm3_description", tmp_path / "arm3_description")
+    return Path(shutil.copytree(CONFIG, tmp_path / CONFIG.name))
+
+
+@pytest.mark.parametrize(("written", "name"), [
+    ("geometric::RRTConnect", "RRTConnect"), ("RRTConnectkConfigDefault", "RRTConnect"),
+    ("PRMkConfigDefault", "PRM"), ("geometric::BITstar", "BITstar"), ("KPIECE1", "KPIECE1"),
+    ("BiTRRTkConfigDefault", "BiTRRT"),
+])
+def test_moveit_planner_ids_map_to_planner_names(written: str, name: str):
+    assert ompl_planner_name(written) == name
+
+
+def test_a_request_naming_no_planner_uses_the_groups_default_from_ompl_planning_yaml():
+    cell = load_cell_or_robot(CONFIG)
+    model = cell.model
+    assert group_planner(model.group("hand")) == "PRM"  # its first planner_configs entry
+    assert group_planner(model.group("arm")) == "RRTConnect"  # its default_planner_config
+    planner = MotionPlanner(scene_from_cell(cell))
+    hand = planner.plan(PlanRequest("hand", NamedGoal("open"), options=PlannerOptions(seed=1)))
+    assert hand.planner == "PRM"
+    arm = planner.plan(PlanRequest("arm", NamedGoal("ready")))
+    assert arm.planner == "RRTConnect"
+    # A planner named in the request wins.
+    chosen = planner.plan(PlanRequest("hand", JointGoal({"finger_joint1": 0.01}),
+                                      options=PlannerOptions(planner="RRT")))
+    assert chosen.planner == "RRT"
+
+
+def test_a_default_planner_the_bindings_lack_is_a_warning_and_rrtconnect_plans(tmp_path: Path):
+    config = _copy(tmp_path)
+    ompl = config / "config" / "ompl_planning.yaml"
+    text = ompl.read_text().replace("PRMkConfigDefault:\n    type: geometric::PRM",
+                                    "PRMkConfigDefault:\n    type: geometric::BiTRRT")
+    ompl.write_text(text)
+    model = load_robot(config)
+    line = text.splitlines().index("hand:") + 1
+    assert (f"{ompl}:{line}: group 'hand': default planner 'geometric::BiTRRT' is not available "
+            "(available: RRTConnect, RRT,") in "\n".join(model.warnings)
+    assert model.group("hand").planner is not None and model.group("hand").planner.planner is None
+    assert group_planner(model.group("hand")) == "RRTConnect"
+
+
+def test_group_settings_without_a_planner_fall_back_to_rrtconnect():
+    settings = OmplGroupSettings(None, None, {}, {}, None)
+    assert settings.planner is None
+
+
+# ----------------------------------------------------------------- pilz_cartesian_limits.yaml
+PILZ = """cartesian_limits:
+  max_trans_vel: 1.0
+  max_trans_acc: 2.25
+  max_trans_dec: -5.0
+  max_rot_vel: 1.57
+"""
+
+
+def test_cartesian_limits_are_read_and_reported_as_not_applied(tmp_path: Path):
+    config = _copy(tmp_path)
+    (config / "config" / "pilz_cartesian_limits.yaml").write_text(PILZ)
+    cell = load_cell_or_robot(config)
+    [inst] = cell.model.instances
+    lines = inst.describe_files()
+    assert f"pilz_cartesian_limits: {config / 'config' / 'pilz_cartesian_limits.yaml'}" in lines
+    assert ("note: Cartesian limits: translation 1 m/s, 2.25 m/s² up, 5 m/s² down; rotation "
+            "1.57 rad/s (read; straight moves are timed by the joint limits only)") in lines
+    assert cell.model.warnings == [w for w in cell.model.warnings if "pilz" not in w]
+
+
+def test_cartesian_limits_in_ros2_parameter_form_are_read(tmp_path: Path):
+    path = tmp_path / "pilz_cartesian_limits.yaml"
+    path.write_text("/**:\n  ros__parameters:\n    robot_description_planning:\n" + "".join(
+        "      " + line + "\n" for line in PILZ.splitlines()))
+    limits = read_pilz_cartesian_limits_yaml(path)
+    assert (limits.max_trans_vel, limits.max_trans_acc, limits.max_trans_dec,
+            limits.max_rot_vel) == (1.0, 2.25, 5.0, 1.57)
+
+
+@pytest.mark.parametrize(("edit", "message", "line"), [
+    (("  max_rot_vel: 1.57\n", ""), "'max_rot_vel' is required", 2),
+    (("max_trans_vel: 1.0", "max_trans_vel: fast"), "'max_trans_vel' must be a number (got 'fast')", 2),
+    (("max_trans_acc: 2.25", "max_trans_acc: -2.25"), "'max_trans_acc' must be > 0 (got -2.25)", 3),
+    (("max_trans_dec: -5.0", "max_trans_dec: 0"), "'max_trans_dec' must be a non-zero finite number (got 0.0)", 4),
+    (("max_rot_vel", "max_rot_speed"), "unknown field 'max_rot_speed' (expected one of max_trans_vel, "
+                                        "max_trans_acc, max_trans_dec, max_rot_vel)", 5),
+    (("cartesian_limits:", "limits:"), "expected 'cartesian_limits: {max_trans_vel, max_trans_acc, "
+                                       "max_trans_dec, max_rot_vel}'", 1),
+])
+def test_bad_cartesian_limits_are_errors_at_their_line(tmp_path: Path, edit, message: str, line: int):
+    path = tmp_path / "pilz_cartesian_limits.yaml"
+    path.write_text(PILZ.replace(*edit))
+    with pytest.raises(YamlError) as info:
+        read_pilz_cartesian_limits_yaml(path)
+    assert str(info.value) == f"{path}:{line}: {message}"
+
+
+def test_a_broken_cartesian_limits_file_is_a_warning_when_loading(tmp_path: Path):
+    config = _copy(tmp_path)
+    pilz = config / "config" / "pilz_cartesian_limits.yaml"
+    pilz.write_text(PILZ.replace("max_trans_vel: 1.0", "max_trans_vel: -1.0"))
+    model = load_robot(config)
+    assert (f"{pilz}:2: 'max_trans_vel' must be > 0 (got -1.0); pilz_cartesian_limits.yaml "
+            "not used") in model.warnings
