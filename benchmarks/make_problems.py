@@ -1,0 +1,420 @@
+"""Seeded MotionBenchMaker-style Panda problem sets, written as MoveIt YAML files.
+
+Each problem is a ``moveit_msgs/PlanningScene`` (``NNNN_scene.yaml``: the objects, the
+start state, the allowed-collision matrix) and a ``moveit_msgs/MotionPlanRequest``
+(``NNNN_request.yaml``: the start state and a joint goal; ``NNNN_pose_request.yaml``: the
+same goal as a pose of the hand's TCP), in the layout MotionBenchMaker writes (ROS 1
+field names, the whole message at the top level), so that any tool reading those files
+reads these, and ``run-task plan panda --scene … --request …`` plans them.
+
+Classes (world frame = the Panda's base, z up, m), after MotionBenchMaker's:
+
+* ``table_pick``: objects on a table; ready → hand above a random object, pointing down.
+* ``table_under_pick``: the Panda on a pedestal; ready → hand under a table top.
+* ``bookshelf_small`` / ``bookshelf_tall`` / ``bookshelf_thin``: a shelf of 2 / 4 / 5
+  compartments (the thin one with 1 cm boards and low compartments); ready → the hand
+  in a random compartment, pointing in.
+* ``box``: hand beside an open box → inside it, over a wall.
+* ``cage``: hand inside a cage of bars → out of its window, behind the cage.
+
+Every problem moves the whole scene by a random offset (up to 4 cm in x and y, 0.1 rad of
+yaw about the scene's centre); start and goal come from seeded IK (the sampler of
+``planning_scenes.py``) and are checked within limits and collision-free in their scene
+before they are written; ``--check`` reads every written file back through
+:mod:`taskrunner.moveit` and checks both states again. Problem ``i`` of a class depends
+only on the seed, the class and ``i``.
+
+Usage::
+
+    python benchmarks/make_problems.py [--count 100] [--seed 0] [--out benchmarks/problems]
+                                       [--classes table_pick,cage] [--check]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+import sys
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pinocchio as pin
+
+BENCH = Path(__file__).resolve().parent
+sys.path.insert(0, str(BENCH))
+if str(BENCH.parent) not in sys.path:
+    sys.path.insert(0, str(BENCH.parent))
+
+import planning_scenes as ps
+
+from taskrunner.resources import DATA_ROOT
+from taskrunner.robot import RobotModel, load_robot
+from taskrunner.scene import Scene
+from taskrunner.shapes import Box, Cylinder, Shape
+from taskrunner.types import Pose
+
+CLASSES = ("table_pick", "table_under_pick", "bookshelf_small", "bookshelf_tall",
+           "bookshelf_thin", "box", "cage")
+GROUP = "arm"
+PLANNING_TIME = 5.0  # s, MoveIt's default; written into every request
+SHIFT, YAW = 0.04, 0.1  # m, rad: how far each problem's scene moves
+
+Placed = tuple[str, Shape, Pose]
+Target = Callable[[np.random.Generator], Pose]
+
+
+def _placed(objects: Sequence[ps.Placed]) -> list[Placed]:
+    return [(n, s, w if isinstance(w, Pose) else Pose(w)) for n, s, w in objects]
+
+
+def _shelf(depth: float, width: float, boards: Sequence[float], thickness: float,
+           x: float = 0.75) -> list[Placed]:
+    """Side panels, and a board at each height of ``boards`` (its top face there)."""
+    height = boards[-1] + thickness
+    objects: list[Placed] = [
+        ("shelf_left", Box((depth, thickness, height)), Pose((x, width / 2, height / 2))),
+        ("shelf_right", Box((depth, thickness, height)), Pose((x, -width / 2, height / 2))),
+    ]
+    for i, top in enumerate(boards):
+        objects.append((f"shelf_board_{i}", Box((depth, width, thickness)),
+                        Pose((x, 0.0, top - thickness / 2))))
+    return objects
+
+
+def _in_compartment(boards: Sequence[float], usable: int, x: tuple[float, float],
+                    low: float, high: float) -> Target:
+    """Hand pointing in (+x), in a random compartment of the first ``usable`` ones."""
+    def target(rng: np.random.Generator) -> Pose:
+        i = int(rng.integers(usable))
+        z0, z1 = boards[i] + low, boards[i + 1] - high
+        xyz = ps._uniform(rng, (x[0], -0.12, z0), (x[1], 0.12, max(z0, z1)))
+        return Pose.from_se3(pin.SE3(ps._tilted(ps.FORWARD, rng, 0.15, math.pi), xyz))
+    return target
+
+
+def class_layout(name: str) -> tuple[list[Placed], list[tuple[str, str]], Target | None, Target]:
+    """Objects, allowed pairs, start target (None: ready) and goal target of a class."""
+    ready = None
+    table = _placed([ps.TABLE])
+    base_pair = [("panda_link0", "table")]
+    if name == "table_pick":
+        return table + _placed(ps.PICK_OBJECTS), base_pair, ready, ps._grasp_target(ps.PICK_OBJECTS)
+    if name == "table_under_pick":
+        top_z = 0.10
+        objects: list[ps.Placed] = [
+            ("high_table", Box((0.60, 0.80, 0.03)), (0.70, 0.0, top_z)),
+            ("floor", Box((2.0, 2.0, 0.02)), (0.3, 0.0, -0.61)),
+            ("pedestal", Box((0.30, 0.30, 0.60)), (0.0, 0.0, -0.30)),
+        ]
+        for i, (x, y) in enumerate([(0.42, -0.38), (0.42, 0.38), (0.98, -0.38), (0.98, 0.38)]):
+            objects.append((f"leg_{i}", Box((0.04, 0.04, 0.70)), (x, y, top_z - 0.015 - 0.35)))
+        goal = ps._pose_target((0.48, -0.25, -0.25), (0.62, 0.25, -0.05), ps.FORWARD, tilt=0.3,
+                               spin=math.pi)
+        return _placed(objects), [("panda_link0", "pedestal")], ready, goal
+    if name == "bookshelf_small":
+        boards = (0.02, 0.31, 0.61)
+        return (table + _shelf(0.3, 0.6, boards, 0.02), base_pair, ready,
+                _in_compartment(boards, 2, (0.56, 0.68), 0.10, 0.10))
+    if name == "bookshelf_tall":
+        boards = (0.02, 0.30, 0.58, 0.86, 1.14)
+        return (table + _shelf(0.3, 0.7, boards, 0.02), base_pair, ready,
+                _in_compartment(boards, 3, (0.56, 0.66), 0.09, 0.09))
+    if name == "bookshelf_thin":
+        boards = (0.02, 0.25, 0.48, 0.71, 0.94, 1.17)
+        return (table + _shelf(0.25, 0.6, boards, 0.01, x=0.72), base_pair, ready,
+                _in_compartment(boards, 3, (0.58, 0.64), 0.08, 0.08))
+    if name == "box":
+        cx, cy = ps.BOX_CENTRE
+        half, length = (ps.BOX_INNER + ps.BOX_WALL) / 2, ps.BOX_INNER + 2 * ps.BOX_WALL
+        h, wall, inner = ps.BOX_HEIGHT, ps.BOX_WALL, ps.BOX_INNER
+        walls: list[ps.Placed] = [
+            ("box_near", Box((wall, length, h)), (cx - half, cy, h / 2)),
+            ("box_far", Box((wall, length, h)), (cx + half, cy, h / 2)),
+            ("box_left", Box((inner, wall, h)), (cx, cy + half, h / 2)),
+            ("box_right", Box((inner, wall, h)), (cx, cy - half, h / 2)),
+        ]
+
+        def beside(rng: np.random.Generator) -> Pose:
+            side = 1.0 if rng.random() < 0.5 else -1.0
+            xyz = ps._uniform(rng, (cx - 0.1, cy + 0.30, 0.06), (cx + 0.1, cy + 0.40, 0.15))
+            xyz[1] = cy + side * (xyz[1] - cy)
+            return Pose.from_se3(pin.SE3(ps._tilted(ps.DOWN, rng, 0.2, math.pi / 2), xyz))
+
+        inside = ps._pose_target((cx - 0.05, cy - 0.05, 0.05), (cx + 0.05, cy + 0.05, 0.12),
+                                 ps.DOWN, tilt=0.15, spin=math.pi / 2)
+        return table + _placed(walls), base_pair, beside, inside
+    if name == "cage":
+        inside = ps._pose_target((0.46, -0.06, 0.17), (0.55, 0.06, 0.27), ps.FORWARD, tilt=0.15,
+                                 spin=0.5)
+        behind = ps._pose_target((0.70, -0.20, 0.10), (0.78, 0.20, 0.30), ps.DOWN, tilt=0.3,
+                                 spin=math.pi)
+        return table + _placed(ps.cage_bars()), base_pair, inside, behind
+    raise ValueError(f"'class' must be one of {', '.join(CLASSES)} (got {name!r})")
+
+
+def _moved(pose: Pose, shift: pin.SE3) -> Pose:
+    return Pose.from_se3(shift * pose.se3)
+
+
+def _shift(rng: np.random.Generator, about: tuple[float, float]) -> pin.SE3:
+    """A yaw about the vertical through ``about`` and a shift in x, y."""
+    yaw = rng.uniform(-YAW, YAW)
+    centre = np.array([about[0], about[1], 0.0])
+    rotation = pin.rpy.rpyToMatrix(0.0, 0.0, yaw)
+    offset = np.append(rng.uniform(-SHIFT, SHIFT, 2), 0.0)
+    return pin.SE3(rotation, centre - rotation @ centre + offset)
+
+
+def make_problem(base: Scene, sampler: ps._StateSampler, name: str, rng: np.random.Generator
+                 ) -> tuple[list[Placed], list[tuple[str, str]], np.ndarray, np.ndarray, Pose]:
+    """One problem: its objects (moved), allowed pairs, start, goal state and goal pose."""
+    objects, allowed, start_target, goal_target = class_layout(name)
+    shift = _shift(rng, (0.6, 0.0))
+    # The table and the pedestal carry the robot: they do not move with the scene.
+    fixed = {"table", "pedestal", "floor"}
+    moved = [(n, s, p if n in fixed else _moved(p, shift)) for n, s, p in objects]
+    scene = base.copy()
+    for n, s, p in moved:
+        scene.add_object(n, s, p)
+    for a, b in allowed:
+        scene.allow_collision(a, b)
+    sampler.scene = scene
+    ready = scene.state.copy()
+
+    def shifted(target: Target) -> Target:
+        return lambda r: _moved(target(r), shift)
+
+    start = ready if start_target is None else sampler.sample(rng, shifted(start_target), ready)[0]
+    if not ps.is_valid_state(scene, start):
+        raise RuntimeError(f"{name}: the start state collides")
+    goal, pose = sampler.sample(rng, shifted(goal_target), ready)
+    assert isinstance(pose, Pose) and ps.is_valid_state(scene, goal)
+    return moved, allowed, start, goal, pose
+
+
+# ---------------------------------------------------------------------- YAML messages
+def _header(frame: str = "world") -> dict[str, Any]:
+    return {"seq": 0, "stamp": {"secs": 0, "nsecs": 0}, "frame_id": frame}
+
+
+def _pose_msg(pose: Pose) -> dict[str, Any]:
+    x, y, z = (round(v, 9) for v in pose.xyz)
+    qx, qy, qz, qw = (round(v, 9) for v in pose.quat)
+    return {"position": {"x": x, "y": y, "z": z},
+            "orientation": {"x": qx, "y": qy, "z": qz, "w": qw}}
+
+
+def _primitive(shape: Shape) -> dict[str, Any]:
+    if isinstance(shape, Box):
+        return {"type": 1, "dimensions": [round(v, 9) for v in shape.size]}
+    if isinstance(shape, Cylinder):
+        return {"type": 3, "dimensions": [round(shape.length, 9), round(shape.radius, 9)]}
+    raise TypeError(f"no primitive for {shape!r}")
+
+
+def _joint_state(model: RobotModel, q: np.ndarray) -> dict[str, Any]:
+    return {"header": _header(), "name": list(model.joint_names),
+            "position": [round(float(v), 9) for v in q], "velocity": [], "effort": []}
+
+
+def scene_message(model: RobotModel, name: str, objects: list[Placed],
+                  allowed: list[tuple[str, str]], start: np.ndarray) -> dict[str, Any]:
+    entries = sorted({n for pair in allowed for n in pair})
+    matrix = [{"enabled": [frozenset((a, b)) in {frozenset(p) for p in allowed} for b in entries]}
+              for a in entries]
+    return {
+        "name": name,
+        "fixed_frame_transforms": [{"header": _header(), "child_frame_id": "panda_link0",
+                                    "transform": {"translation": {"x": 0.0, "y": 0.0, "z": 0.0},
+                                                  "rotation": {"x": 0.0, "y": 0.0, "z": 0.0,
+                                                               "w": 1.0}}}],
+        "robot_state": {"joint_state": _joint_state(model, start),
+                        "multi_dof_joint_state": {"header": _header(), "joint_names": [],
+                                                  "transforms": [], "twist": [], "wrench": []},
+                        "attached_collision_objects": [], "is_diff": False},
+        "robot_model_name": "panda",
+        "world": {"collision_objects": [
+            {"header": _header(), "id": n, "type": {"key": "", "db": ""},
+             "primitives": [_primitive(s)], "primitive_poses": [_pose_msg(p)],
+             "meshes": [], "mesh_poses": [], "planes": [], "plane_poses": [],
+             "subframe_names": [], "subframe_poses": [], "operation": 0}
+            for n, s, p in objects]},
+        "allowed_collision_matrix": {"entry_names": entries, "entry_values": matrix,
+                                     "default_entry_names": [], "default_entry_values": []},
+        "link_padding": [], "link_scale": [], "object_colors": [],
+        "is_diff": False,
+    }
+
+
+def request_message(model: RobotModel, start: np.ndarray, goal: np.ndarray,
+                    pose: Pose | None, tip: str) -> dict[str, Any]:
+    group = model.group(GROUP)
+    empty = {"name": "", "joint_constraints": [], "position_constraints": [],
+             "orientation_constraints": [], "visibility_constraints": []}
+    if pose is None:
+        goal_constraints = {**empty, "joint_constraints": [
+            {"joint_name": j, "position": round(float(goal[i]), 9), "tolerance_above": 0.001,
+             "tolerance_below": 0.001, "weight": 1.0}
+            for j, i in zip(group.joint_names, group.joint_indices)]}
+    else:
+        region_pose = _pose_msg(Pose(pose.xyz))
+        goal_constraints = {**empty, "position_constraints": [{
+            "header": _header(), "link_name": tip,
+            "target_point_offset": {"x": 0.0, "y": 0.0, "z": 0.0},
+            "constraint_region": {"primitives": [{"type": 2, "dimensions": [0.001]}],
+                                  "primitive_poses": [region_pose], "meshes": [],
+                                  "mesh_poses": []},
+            "weight": 1.0}],
+            "orientation_constraints": [{
+                "header": _header(), "orientation": _pose_msg(pose)["orientation"],
+                "link_name": tip, "absolute_x_axis_tolerance": 0.01,
+                "absolute_y_axis_tolerance": 0.01, "absolute_z_axis_tolerance": 0.01,
+                "weight": 1.0}]}
+    return {
+        "workspace_parameters": {"header": _header(), "min_corner": {"x": -1.5, "y": -1.5, "z": -1.5},
+                                 "max_corner": {"x": 1.5, "y": 1.5, "z": 1.5}},
+        "start_state": {"joint_state": _joint_state(model, start), "is_diff": False},
+        "goal_constraints": [goal_constraints],
+        "path_constraints": empty,
+        "trajectory_constraints": {"constraints": []},
+        "reference_trajectories": [],
+        "pipeline_id": "ompl",
+        "planner_id": "RRTConnect",
+        "group_name": GROUP,
+        "num_planning_attempts": 1,
+        "allowed_planning_time": PLANNING_TIME,
+        "max_velocity_scaling_factor": 1.0,
+        "max_acceleration_scaling_factor": 1.0,
+    }
+
+
+_PLAIN = re.compile(r"[A-Za-z_][A-Za-z0-9_./-]*")
+
+
+def _scalar(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, str):
+        plain = _PLAIN.fullmatch(value) and value not in ("true", "false", "null", "yes", "no")
+        return value if plain else json.dumps(value)
+    raise TypeError(f"cannot write {value!r}")
+
+
+def _flow(value: Any) -> str | None:
+    """``value`` on one line when it holds only scalars (a point, a list of numbers)."""
+    if isinstance(value, dict) and all(not isinstance(v, (dict, list)) for v in value.values()):
+        return "{" + ", ".join(f"{k}: {_scalar(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, list) and all(not isinstance(v, (dict, list)) for v in value):
+        return "[" + ", ".join(_scalar(v) for v in value) + "]"
+    if not isinstance(value, (dict, list)):
+        return _scalar(value)
+    return None
+
+
+def _lines(value: Any, indent: str) -> list[str]:
+    out = []
+    if isinstance(value, dict):
+        for key, item in value.items():
+            flow = _flow(item)
+            if flow is not None:
+                out.append(f"{indent}{key}: {flow}")
+            else:
+                out.append(f"{indent}{key}:")
+                out += _lines(item, indent + "  ")
+    else:
+        for item in value:
+            flow = _flow(item)
+            if flow is not None:
+                out.append(f"{indent}- {flow}")
+                continue
+            inner = _lines(item, indent + "  ")
+            out.append(f"{indent}- {inner[0].lstrip()}")
+            out += inner[1:]
+    return out
+
+
+def _dump(data: dict[str, Any], path: Path) -> None:
+    """Write ``data`` as block YAML (scalars-only mappings and lists on one line)."""
+    path.write_text("\n".join(_lines(data, "")) + "\n")
+
+
+def check_problem(model: RobotModel, folder: Path, stem: str) -> None:
+    """Read a written problem back and check both states in the scene it describes."""
+    from taskrunner.moveit import load_motion_plan_request, load_planning_scene
+
+    scene = Scene(model)
+    loaded = load_planning_scene(folder / f"{stem}_scene.yaml", model, strict=True)
+    loaded.apply(scene)
+    request = load_motion_plan_request(folder / f"{stem}_request.yaml", model, strict=True)
+    load_motion_plan_request(folder / f"{stem}_pose_request.yaml", model, strict=True)
+    start = model.state_with(scene.state, request.start)
+    checks = request.joint_goals[0]
+    assert checks is not None
+    goal = model.state_with(start, {c.joint: c.position for c in checks})
+    for what, q in (("start", start), ("goal", goal)):
+        if not ps.is_valid_state(scene, q):
+            raise RuntimeError(f"{folder / stem}: the {what} state collides or is out of limits "
+                               f"({scene.collisions(q)[:2]})")
+
+
+def generate(out: Path, count: int, seed: int = 0, classes: Sequence[str] = CLASSES,
+             check: bool = False) -> dict[str, Any]:
+    """Write ``count`` problems per class under ``out/<class>/``; returns a summary."""
+    robot = load_robot(DATA_ROOT / "robots" / "panda")
+    base = Scene(robot)
+    base.set_state(ps.READY)
+    sampler = ps._StateSampler(base, GROUP)
+    tip = robot.group(GROUP).tip_link
+    assert tip is not None
+    summary: dict[str, Any] = {"seed": seed, "count": count, "classes": {}}
+    for name in classes:
+        if name not in CLASSES:
+            raise SystemExit(f"error: unknown class {name!r}; known: {', '.join(CLASSES)}")
+        started = time.perf_counter()
+        folder = out / name
+        folder.mkdir(parents=True, exist_ok=True)
+        for i in range(count):
+            rng = np.random.default_rng([seed, CLASSES.index(name), i])
+            objects, allowed, start, goal, pose = make_problem(base, sampler, name, rng)
+            stem = f"{i + 1:04d}"
+            _dump(scene_message(robot, f"{name}_{stem}", objects, allowed, start),
+                  folder / f"{stem}_scene.yaml")
+            _dump(request_message(robot, start, goal, None, tip), folder / f"{stem}_request.yaml")
+            _dump(request_message(robot, start, goal, pose, tip), folder / f"{stem}_pose_request.yaml")
+            if check:
+                check_problem(robot, folder, stem)
+        summary["classes"][name] = {"problems": count,
+                                    "seconds": round(time.perf_counter() - started, 2)}
+    return summary
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--count", type=int, default=100, help="problems per class (100)")
+    parser.add_argument("--seed", type=int, default=0, help="seed (0)")
+    parser.add_argument("--out", type=Path, default=BENCH / "problems",
+                        help="output folder (benchmarks/problems)")
+    parser.add_argument("--classes", default=",".join(CLASSES),
+                        help=f"comma-separated classes ({','.join(CLASSES)})")
+    parser.add_argument("--check", action="store_true",
+                        help="read every problem back and check its states again")
+    args = parser.parse_args(argv)
+    started = time.perf_counter()
+    summary = generate(args.out, args.count, args.seed, args.classes.split(","), args.check)
+    summary["seconds"] = round(time.perf_counter() - started, 2)
+    print(json.dumps(summary, indent=2))
+    print(f"\n{'class':<18} {'problems':>8} {'seconds':>8}")
+    for name, row in summary["classes"].items():
+        print(f"{name:<18} {row['problems']:>8} {row['seconds']:>8.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
