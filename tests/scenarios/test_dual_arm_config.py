@@ -93,3 +93,19 @@ def test_duo_hands_the_bar_from_left_to_right_and_lays_it_down(backend, tmp_path
     # The gripper closed on the SRDF's own 'close' pose.
     closes = [m for m in runner.ctx.executed if m.node.endswith("closes")]
     assert closes and np.allclose(closes[0].trajectory.positions[-1], 0.0)
+
+
+def test_duo_receiver_takes_the_bar_at_an_explicit_grasp_pose(tmp_path):
+    runner = run("handoff_grasp.yaml", "mock", tmp_path)
+    assert_record_complete(runner)
+    near(runner, "bar", [0.30, -0.20, 0.766], [1.5708, 0, 0])
+    # While the right arm held the bar, its tool frame was at the grasp pose written in
+    # the task, in the bar's frame (within the approach's straight-line tolerance).
+    wanted = pin.SE3(pin.rpy.rpyToMatrix(-1.5708, -1.5708, 0), np.array([0, -0.006, -0.03]))
+    arm = runner.ctx.arm("right_arm")
+    held = [o for m in runner.ctx.executed if m.node.endswith("right_arm backs off")
+            for o in m.scene.objects if o.name == "bar"]
+    assert held and held[0].attached_to == "right_flange"
+    tool_in_bar = arm.grip(held[0].pose.se3).inverse()
+    assert np.linalg.norm(tool_in_bar.translation - wanted.translation) < 1e-3
+    assert np.linalg.norm(pin.log3(wanted.rotation.T @ tool_in_bar.rotation)) < 1e-2
