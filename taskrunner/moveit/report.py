@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -67,7 +67,7 @@ def plan_request_file(scene: Scene, request: MotionPlanRequestFile, *, seed: int
     scene = scene.copy()
     request.apply_start(scene)
     plan_request = request.plan_request(scene, seed=seed, timing=timing)
-    name = plan_request.options.planner
+    name = plan_request.options.planner or "default"
     planner = planner if planner is not None and planner.scene is scene else MotionPlanner(scene)
     started = time.perf_counter()
     try:
@@ -80,12 +80,13 @@ def plan_request_file(scene: Scene, request: MotionPlanRequestFile, *, seed: int
     positions = np.asarray(result.path.waypoints)
     length = float(np.sum(np.linalg.norm(np.diff(positions, axis=0), axis=1))) if len(positions) > 1 else 0.0
     duration = result.trajectory.duration if result.trajectory is not None else 0.0
-    return PlanReport(not missed, request.group, result.planner, result.planning_time,
+    return PlanReport(not missed, request.group, result.planner or name, result.planning_time,
                       result.total_time, length, len(positions), duration,
                       "GoalConstraintsViolated" if missed else "", "; ".join(missed), result)
 
 
-def plan_files(cell: Cell, request_path: str | Path, scene_path: str | Path | None = None, *,
+def plan_files(cell: Cell, request_path: str | os.PathLike[str],
+               scene_path: str | os.PathLike[str] | None = None, *,
                robot: str | None = None, group: str | None = None, seed: int = 0,
                merge: bool | None = None, strict: bool | None = None,
                ) -> tuple[PlanReport, list[LoadWarning]]:

@@ -31,6 +31,7 @@ limits.
 from __future__ import annotations
 
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -50,7 +51,15 @@ from taskrunner.moveit.scene_file import (
     read_robot_state,
     unwrap,
 )
-from taskrunner.planning.request import PLANNERS, Goal, JointGoal, PlannerOptions, PlanRequest, PoseGoal
+from taskrunner.planning.request import (
+    PLANNERS,
+    Goal,
+    JointGoal,
+    PlannerOptions,
+    PlanRequest,
+    PoseGoal,
+    group_planner,
+)
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.notes import LoadWarning
@@ -330,7 +339,7 @@ def _scaling(msg: Msg, key: str) -> float | None:
     return value
 
 
-def load_motion_plan_request(path: str | Path, model: RobotModel, *, robot: str | None = None,
+def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *, robot: str | None = None,
                              group: str | None = None, strict: bool | None = None,
                              limits: YamlLimits | None = None) -> MotionPlanRequestFile:
     """Read a ``moveit_msgs/MotionPlanRequest`` YAML file for ``model``.
@@ -347,9 +356,9 @@ def load_motion_plan_request(path: str | Path, model: RobotModel, *, robot: str 
         InputError: an invalid or unsupported field, an unknown group, joint or link
             (file:line and field); in strict mode, the first warning.
     """
-    reader = MessageReader(path, strict)
+    reader = MessageReader(Path(path), strict)
     names = NameMap(model, robot)
-    msg = unwrap(load_yaml(path, limits), ("request", "motion_plan_request", "MotionPlanRequest",
+    msg = unwrap(load_yaml(Path(path), limits), ("request", "motion_plan_request", "MotionPlanRequest",
                                            "moveit_msgs/MotionPlanRequest",
                                            "moveit_msgs/msg/MotionPlanRequest"),
                  reader, REQUEST_FIELDS, "MotionPlanRequest")
@@ -408,8 +417,7 @@ def load_motion_plan_request(path: str | Path, model: RobotModel, *, robot: str 
 
 def _planner(msg: Msg, model: RobotModel, group: str) -> str:
     written = msg.string("planner_id")
-    fallback = planner_name(model.group(group).default_planner or "RRTConnect")
-    fallback = fallback if fallback in PLANNERS else "RRTConnect"
+    fallback = group_planner(model.group(group))
     if not written:
         return fallback
     name = planner_name(written)
@@ -418,4 +426,3 @@ def _planner(msg: Msg, model: RobotModel, group: str) -> str:
     msg.warn("planner_id", f"names {written!r}, not an available planner ({', '.join(PLANNERS)}); "
                            f"planning with {fallback}")
     return fallback
-

@@ -28,6 +28,7 @@ subframes, octomaps with data, link padding and scale other than 0 and 1) are wa
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -205,13 +206,13 @@ def read_robot_state(msg: Msg | None, names: NameMap) -> RobotStateData:
                          ("link_name", "object", "touch_links", "detach_posture", "weight")):
         link_name = item.string("link_name")
         link = _mapped(item, "link_name", names.link, link_name, "link", list(names.model.link_names))
-        touch = []
+        touch: list[str] = []
         for touch_name in item.strings("touch_links"):
-            mapped = _try(item, "touch_links", names.link, touch_name)
-            if mapped is None:
+            touch_link: str | None = _try(item, "touch_links", names.link, touch_name)
+            if touch_link is None:
                 item.warn("touch_links", f"names {touch_name!r}, not a link of the model; ignored")
-            elif mapped != link:
-                touch.append(mapped)
+            elif touch_link != link:
+                touch.append(touch_link)
         obj = item.msg("object", OBJECT_FIELDS, required=True)
         assert obj is not None
         attached.append(read_collision_object(obj, names, link, tuple(touch)))
@@ -504,7 +505,7 @@ def _check_unused(msg: Msg) -> None:
             inner.warn("data", "(an octomap) is not supported; ignored")
 
 
-def load_planning_scene(path: str | Path, model: RobotModel, *, robot: str | None = None,
+def load_planning_scene(path: str | os.PathLike[str], model: RobotModel, *, robot: str | None = None,
                         strict: bool | None = None,
                         limits: YamlLimits | None = None) -> PlanningSceneFile:
     """Read a ``moveit_msgs/PlanningScene`` YAML file for ``model``.
@@ -522,9 +523,9 @@ def load_planning_scene(path: str | Path, model: RobotModel, *, robot: str | Non
         InputError: a field of the wrong type or value, an unknown joint or link
             (file:line and field); in strict mode, the first warning.
     """
-    reader = MessageReader(path, strict)
+    reader = MessageReader(Path(path), strict)
     names = NameMap(model, robot)
-    document = load_yaml(path, limits)
+    document = load_yaml(Path(path), limits)
     msg = unwrap(document, ("planning_scene", "scene", "moveit_msgs/PlanningScene",
                             "moveit_msgs/msg/PlanningScene"), reader, SCENE_FIELDS, "PlanningScene")
     model_name = msg.string("robot_model_name")
