@@ -75,11 +75,13 @@ __all__ = ["GAIN", "PathVerification", "PathVerifier", "lever_arms"]
 _DISTANCE_SLACK = 1e-6  # m: GJK's distance tolerance; measured distances are reduced by it
 _EARLY = 0.25  # a pair due within this fraction of its step is measured with the others
 GAIN = 1.0  # optimistic step: (1 + GAIN) times the last distance (see the module's text)
-_SHRINK = 1e-9  # fill steps aim this fraction short, so rounding never misses coverage
+_BISECTIONS = 12  # at most this many evaluations to place a step inside a segment
+_CLOSE = 0.02  # a step placed within this fraction short of its bound is close enough
 
 # Columns of the per-pair walk state (a float array, one row per pair).
-_HAS_L, _ML, _DL, _HAS_R, _MR, _DR, _DUE, _TARGET, _DONE, _MEND = range(10)
-_COLUMNS = 10
+_HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _DUE, _EARLY_AT, _DONE = range(9)
+_COLUMNS = 9
+_REVOLUTE, _PRISMATIC = 1, 2
 
 
 def lever_arms(robot: RobotModel, geometry_model: pin.GeometryModel) -> np.ndarray:
@@ -170,18 +172,59 @@ class PathVerifier:
         pairs = [(p.first, p.second) for p in self._geometry.collisionPairs]
         self._names = [(self._geometry.geometryObjects[i].name,
                         self._geometry.geometryObjects[j].name) for i, j in pairs]
-        first = np.array([i for i, _ in pairs], dtype=int)
-        second = np.array([j for _, j in pairs], dtype=int)
+        first = np.array([i for i, _ in pairs], dtype=np.int64)
+        second = np.array([j for _, j in pairs], dtype=np.int64)
+        nq = robot.nq
         # Joints moving both bodies of a pair move them rigidly together: they do not count.
         self._pair_levers = np.ascontiguousarray(
             levers[first] * ~moves[second] + levers[second] * ~moves[first]) if pairs \
-            else np.zeros((0, robot.nq))
+            else np.zeros((0, nq))
+        # Whose lever arm counts for each pair and joint: the body that joint moves.
+        self._owner = np.full((len(pairs), nq), -1, dtype=np.int64)
+        if pairs:
+            self._owner[moves[first] & ~moves[second]] = np.broadcast_to(
+                first[:, None], (len(pairs), nq))[moves[first] & ~moves[second]]
+            self._owner[moves[second] & ~moves[first]] = np.broadcast_to(
+                second[:, None], (len(pairs), nq))[moves[second] & ~moves[first]]
+        self._kinematics = _Kinematics(robot, self._geometry, levers)
+        self._below = self._kinematics.below(self._owner, levers)
+        self._order = self._kinematics.deepest_first()
 
     @property
     def pair_levers(self) -> np.ndarray:
         """``(n_pairs, nq)``: how far each joint can move one body of a pair relative to
-        the other (m/rad, m/m), per unit of joint motion."""
+        the other (m/rad, m/m), per unit of joint motion, anywhere (at full reach)."""
         return self._pair_levers
+
+    @property
+    def configuration_dependent(self) -> bool:
+        """True when lever arms are taken at each measured state (every joint of the
+        robot is revolute, continuous or prismatic); else the full-reach bounds serve."""
+        return self._kinematics.supported
+
+    def segment_bounds(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Per pair, the bound (m) the verifier uses on how far any point of one body
+        moves relative to the other along the straight segment from state ``a`` to ``b``
+        (lever arms taken at ``a``)."""
+        states = np.ascontiguousarray(np.vstack([a, b]).astype(float))
+        cumulative = np.zeros_like(states)
+        cumulative[1] = np.abs(states[1] - states[0])
+        n_pairs = len(self._names)
+        nq = self.robot.nq
+        lever_rows = np.zeros((n_pairs, nq))
+        kin = self._kinematics
+        frames = kin.frames(states[0])
+        out = np.zeros(n_pairs)
+        for k in range(n_pairs):
+            if kin.supported:
+                _levers_at(k, self._owner, self._pair_levers, kin.state_joint, kin.joint_kind,
+                           kin.axis, kin.geometry_radius, frames[0], frames[1], frames[2],
+                           lever_rows[k])
+            else:
+                lever_rows[k] = self._pair_levers[k]
+            out[k] = _bound(cumulative, self._pair_levers, self._below, self._order, k,
+                            cumulative[0], lever_rows[k], 1.0, np.zeros(nq), np.zeros(nq))
+        return out
 
     def verify(self, states: np.ndarray) -> PathVerification:
         """Verify the polyline through full state vectors ``states`` (``(n, nq)``).
@@ -196,19 +239,22 @@ class PathVerifier:
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
         cumulative = np.zeros_like(states)                      # per joint, sum of |dq|
         np.cumsum(np.abs(np.diff(states, axis=0)), axis=0, out=cumulative[1:])
-        levers = self._pair_levers
+        nq = states.shape[1]
         walk = np.zeros((n_pairs, _COLUMNS))
-        walk[:, _MEND] = levers @ cumulative[-1]
+        lever_left = np.zeros((n_pairs, nq))
+        lever_right = np.zeros((n_pairs, nq))
         selected = np.zeros(n_pairs, dtype=np.int64)
         distances = np.zeros(n_pairs)
-        q = np.zeros(states.shape[1])
+        q = np.zeros(nq)
+        kin = self._kinematics
+        rotations, origins, centres = kin.buffers()
         queries = evaluated = 0
         model, data = self.robot.model, self._data
         geometry, geometry_data = self._geometry, self._geometry_data
         to_pin = self.robot.to_pin
         compute = pin.computeDistance
         while True:
-            count, s = _pick(cumulative, levers, walk, selected, states, q, _EARLY)
+            count, s = _pick(walk, selected, states, q)
             if count == 0:
                 break
             pin.updateGeometryPlacements(model, data, geometry, geometry_data, to_pin(q))
@@ -216,12 +262,117 @@ class PathVerifier:
             for i in range(count):
                 distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
             queries += count
-            bad = _update(cumulative, levers, walk, selected, distances, count, s,
-                          self.margin, _DISTANCE_SLACK, GAIN, _SHRINK)
+            bad = _update(cumulative, self._pair_levers, self._below, self._order, self._owner, walk,
+                          lever_left, lever_right, selected, distances, count, s, q,
+                          kin.parent, kin.joint_kind, kin.state_index, kin.placement_rotation,
+                          kin.placement_translation, kin.axis, kin.state_joint,
+                          kin.geometry_joint, kin.geometry_centre, kin.geometry_radius,
+                          rotations, origins, centres, kin.supported, self.margin,
+                          _DISTANCE_SLACK, GAIN, _EARLY)
             if bad >= 0:
                 return PathVerification(False, queries, evaluated, time.perf_counter() - t0,
                                         float(s), self._names[int(selected[bad])], q.copy())
         return PathVerification(True, queries, evaluated, time.perf_counter() - t0)
+
+
+class _Kinematics:
+    """The robot's joint tree and the bounding spheres of the collision geometry, as
+    arrays for the compiled kernels (forward kinematics of revolute, continuous and
+    prismatic joints; anything else leaves ``supported`` False)."""
+
+    def __init__(self, robot: RobotModel, geometry_model: pin.GeometryModel,
+                 levers: np.ndarray) -> None:
+        model = robot.model
+        n = model.njoints
+        self.parent = np.array([int(p) for p in model.parents], dtype=np.int64)
+        self.joint_kind = np.zeros(n, dtype=np.int64)
+        self.state_index = np.full(n, -1, dtype=np.int64)
+        self.placement_rotation = np.zeros((n, 3, 3))
+        self.placement_translation = np.zeros((n, 3))
+        self.axis = np.zeros((n, 3))
+        self.state_joint = np.full(robot.nq, -1, dtype=np.int64)
+        self.depth = np.zeros(n, dtype=np.int64)
+        for joint in robot.joints:
+            jid = int(model.getJointId(joint.name))
+            self.state_index[jid] = joint.index
+            self.state_joint[joint.index] = jid
+        data = model.createData()
+        pin.forwardKinematics(model, data, pin.neutral(model))
+        supported = True
+        for jid in range(1, n):
+            placement = model.jointPlacements[jid]
+            self.placement_rotation[jid] = placement.rotation
+            self.placement_translation[jid] = placement.translation
+            self.depth[jid] = self.depth[self.parent[jid]] + 1
+            subspace = np.asarray(data.joints[jid].S, dtype=float)
+            if subspace.size != 6 or "Mimic" in model.joints[jid].shortname() \
+                    or self.state_index[jid] < 0:
+                supported = False
+                continue
+            linear, angular = subspace.reshape(6)[:3], subspace.reshape(6)[3:]
+            if np.linalg.norm(angular) > 0.5 and np.linalg.norm(linear) < 1e-12:
+                self.joint_kind[jid] = _REVOLUTE
+                self.axis[jid] = angular / np.linalg.norm(angular)
+            elif np.linalg.norm(linear) > 0.5 and np.linalg.norm(angular) < 1e-12:
+                self.joint_kind[jid] = _PRISMATIC
+                self.axis[jid] = linear / np.linalg.norm(linear)
+            else:
+                supported = False
+        self.supported = supported
+        count = len(geometry_model.geometryObjects)
+        self.geometry_joint = np.zeros(count, dtype=np.int64)
+        self.geometry_centre = np.zeros((count, 3))
+        self.geometry_radius = np.zeros(count)
+        for g, geometry_object in enumerate(geometry_model.geometryObjects):
+            geometry = geometry_object.geometry
+            geometry.computeLocalAABB()
+            self.geometry_joint[g] = int(geometry_object.parentJoint)
+            self.geometry_centre[g] = geometry_object.placement.act(
+                np.asarray(geometry.aabb_center, dtype=float))
+            self.geometry_radius[g] = float(geometry.aabb_radius)
+        self._nq = robot.nq
+
+    def buffers(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Work arrays for the joint frames and the geometry centres."""
+        n = len(self.parent)
+        return np.zeros((n, 3, 3)), np.zeros((n, 3)), np.zeros((len(self.geometry_joint), 3))
+
+    def frames(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """World joint rotations, joint origins and geometry centres at state ``q``."""
+        rotations, origins, centres = self.buffers()
+        _forward(np.ascontiguousarray(q, dtype=float), self.parent, self.joint_kind,
+                 self.state_index, self.placement_rotation, self.placement_translation,
+                 self.axis, self.geometry_joint, self.geometry_centre, rotations, origins,
+                 centres)
+        return rotations, origins, centres
+
+    def deepest_first(self) -> np.ndarray:
+        """State joint indices, deepest in the joint tree first."""
+        depth = np.array([self.depth[j] if j >= 0 else 0 for j in self.state_joint])
+        return np.argsort(-depth, kind="stable").astype(np.int64)
+
+    def below(self, owner: np.ndarray, levers: np.ndarray) -> np.ndarray:
+        """``(n_pairs, nq, nq)``: 1 where joint ``i`` (column) lies between joint ``j``
+        (row, revolute) and the body whose lever arm ``j`` uses for the pair: those
+        joints move the body relative to ``j``'s axis, so ``j``'s lever arm grows by
+        at most what they contribute. All zero when the lever arms are not taken per
+        state (they are then the full-reach bounds)."""
+        n_pairs, nq = owner.shape
+        out = np.zeros((n_pairs, nq, nq))
+        if not self.supported:
+            return out
+        depth = np.array([self.depth[j] if j >= 0 else 0 for j in self.state_joint])
+        deeper = depth[None, :] > depth[:, None]                     # [j, i]: i deeper
+        revolute = np.array([j >= 0 and self.joint_kind[j] == _REVOLUTE
+                             for j in self.state_joint])
+        for k in range(n_pairs):
+            for j in range(nq):
+                g = owner[k, j]
+                if g < 0 or not revolute[j]:
+                    continue
+                # Both on the body's chain, i deeper: i is between j and the body.
+                out[k, j] = deeper[j] & (levers[g] > 0)
+        return out
 
 
 # ---------------------------------------------------------------------- kernels
@@ -229,58 +380,187 @@ _jit = numba.njit(cache=True, nogil=True, error_model="numpy")
 
 
 @_jit
-def _motion_at(cumulative, levers, k, position):  # type: ignore[no-untyped-def]
-    """Pair ``k``'s motion bound (m) at path position ``position`` (``segment + t``)."""
+def _forward(q, parent, joint_kind, state_index, placement_rotation,  # type: ignore[no-untyped-def]
+             placement_translation, axis, geometry_joint, geometry_centre, rotations,
+             origins, centres):
+    """World frames of the joints (rotation, origin) and the geometry centres at ``q``."""
+    for a in range(3):
+        for b in range(3):
+            rotations[0, a, b] = 1.0 if a == b else 0.0
+        origins[0, a] = 0.0
+    local = np.zeros((3, 3))
+    for jid in range(1, parent.shape[0]):
+        p = parent[jid]
+        # Parent frame times the joint's placement.
+        for a in range(3):
+            origins[jid, a] = origins[p, a]
+            for b in range(3):
+                origins[jid, a] += rotations[p, a, b] * placement_translation[jid, b]
+                total = 0.0
+                for c in range(3):
+                    total += rotations[p, a, c] * placement_rotation[jid, c, b]
+                rotations[jid, a, b] = total
+        value = q[state_index[jid]] if state_index[jid] >= 0 else 0.0
+        if joint_kind[jid] == _PRISMATIC:
+            for a in range(3):
+                for b in range(3):
+                    origins[jid, a] += rotations[jid, a, b] * axis[jid, b] * value
+        elif joint_kind[jid] == _REVOLUTE:
+            # Rodrigues: the joint's rotation about its (local) axis.
+            x, y, z = axis[jid, 0], axis[jid, 1], axis[jid, 2]
+            c, s = math.cos(value), math.sin(value)
+            t = 1.0 - c
+            local[0, 0] = c + x * x * t
+            local[0, 1] = x * y * t - z * s
+            local[0, 2] = x * z * t + y * s
+            local[1, 0] = y * x * t + z * s
+            local[1, 1] = c + y * y * t
+            local[1, 2] = y * z * t - x * s
+            local[2, 0] = z * x * t - y * s
+            local[2, 1] = z * y * t + x * s
+            local[2, 2] = c + z * z * t
+            row = np.zeros(3)
+            for a in range(3):
+                for b in range(3):
+                    total = 0.0
+                    for cc in range(3):
+                        total += rotations[jid, a, cc] * local[cc, b]
+                    row[b] = total
+                for b in range(3):
+                    rotations[jid, a, b] = row[b]
+    for g in range(geometry_joint.shape[0]):
+        jid = geometry_joint[g]
+        for a in range(3):
+            total = origins[jid, a]
+            for b in range(3):
+                total += rotations[jid, a, b] * geometry_centre[g, b]
+            centres[g, a] = total
+
+
+@_jit
+def _levers_at(k, owner, pair_levers, state_joint, joint_kind, axis,  # type: ignore[no-untyped-def]
+               geometry_radius, rotations, origins, centres, out):
+    """Pair ``k``'s lever arms at the state of the frames given: for a revolute joint,
+    the distance from its axis to the moved body's bounding sphere centre plus the
+    radius (never more than the full-reach bound); otherwise the full-reach bound."""
+    for j in range(pair_levers.shape[1]):
+        full = pair_levers[k, j]
+        out[j] = full
+        g = owner[k, j]
+        jid = state_joint[j]
+        if full == 0.0 or g < 0 or jid < 0 or joint_kind[jid] != _REVOLUTE:
+            continue
+        along = 0.0
+        length2 = 0.0
+        for a in range(3):
+            world_axis = 0.0
+            for b in range(3):
+                world_axis += rotations[jid, a, b] * axis[jid, b]
+            v = centres[g, a] - origins[jid, a]
+            along += v * world_axis
+            length2 += v * v
+        off_axis = length2 - along * along
+        lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometry_radius[g]
+        if lever < full:
+            out[j] = lever
+    return out
+
+
+@_jit
+def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
     n = cumulative.shape[0]
-    nq = cumulative.shape[1]
     if n == 1:
-        return 0.0
+        for j in range(cumulative.shape[1]):
+            out[j] = 0.0
+        return
     seg = int(position)
     if seg > n - 2:
         seg = n - 2
     frac = position - seg
-    total = 0.0
-    for j in range(nq):
-        c = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
-        total += levers[k, j] * c
-    return total
-
-
-@_jit
-def _node_motion(cumulative, levers, k, i):  # type: ignore[no-untyped-def]
-    total = 0.0
     for j in range(cumulative.shape[1]):
-        total += levers[k, j] * cumulative[i, j]
+        out[j] = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
+
+
+@_jit
+def _bound(cumulative, pair_levers, below, order, k, c0, lever_row, position,  # type: ignore[no-untyped-def]
+           c1, share):
+    """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
+    is ``c0`` to ``position``, with the lever arms ``lever_row`` taken at the former
+    (``c1``, ``share``: work arrays).
+
+    A joint's lever arm grows by at most how far the joints below it move the body
+    relative to its axis, which is their own contribution (deepest joints first)."""
+    nq = cumulative.shape[1]
+    _cumulative_at(cumulative, position, c1)
+    total = 0.0
+    for index in range(nq):             # deepest joints first
+        j = order[index]
+        share[j] = 0.0
+        moved = c1[j] - c0[j]
+        if moved <= 0.0 or pair_levers[k, j] == 0.0:
+            continue
+        lever = lever_row[j]
+        for i in range(nq):
+            if below[k, j, i] != 0.0:
+                lever += share[i]
+        if lever > pair_levers[k, j]:
+            lever = pair_levers[k, j]
+        share[j] = lever * moved
+        total += share[j]
     return total
 
 
 @_jit
-def _position_of(cumulative, levers, k, target):  # type: ignore[no-untyped-def]
-    """The furthest path position where pair ``k``'s motion bound is at most ``target``."""
+def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row,  # type: ignore[no-untyped-def]
+                  step, c1, share):
+    """The furthest path position (from ``start`` on, up to a 2**-_BISECTIONS part of a
+    segment) where pair ``k``'s motion bound from ``start`` is at most ``step``."""
     last = cumulative.shape[0] - 1
-    if _node_motion(cumulative, levers, k, last) <= target:
+    if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(last),
+              c1, share) <= step:
         return float(last)
-    lo, hi = 0, last        # motion(lo) <= target < motion(hi)
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if _node_motion(cumulative, levers, k, mid) <= target:
-            lo = mid
+    lo_node = int(start) + 1      # first node after start
+    lo = start
+    if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(lo_node),
+              c1, share) <= step:
+        hi_node = last            # bound(lo_node) <= step < bound(hi_node)
+        while hi_node - lo_node > 1:
+            mid = (lo_node + hi_node) // 2
+            if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(mid),
+                      c1, share) <= step:
+                lo_node = mid
+            else:
+                hi_node = mid
+        lo = float(lo_node)
+        hi = float(hi_node)
+    else:
+        hi = float(lo_node)
+    # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi). The bound is
+    # convex along a segment (lever arms only grow), so the steps come from below.
+    f_lo = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, lo, c1, share)
+    f_hi = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, hi, c1, share)
+    for _ in range(_BISECTIONS):
+        if f_lo >= (1.0 - _CLOSE) * step or f_hi <= f_lo:
+            break
+        width = hi - lo
+        mid = lo + width * (step - f_lo) / (f_hi - f_lo)
+        if mid < lo + _CLOSE * width:
+            mid = lo + _CLOSE * width
+        if mid > hi - _CLOSE * width:
+            mid = hi - _CLOSE * width
+        f_mid = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, mid, c1, share)
+        if f_mid <= step:
+            lo, f_lo = mid, f_mid
         else:
-            hi = mid
-    m_lo = _node_motion(cumulative, levers, k, lo)
-    m_hi = _node_motion(cumulative, levers, k, hi)
-    frac = (target - m_lo) / (m_hi - m_lo)
-    if frac < 0.0:
-        frac = 0.0
-    if frac > 1.0:
-        frac = 1.0
-    return lo + frac
+            hi, f_hi = mid, f_mid
+    return lo
 
 
 @_jit
-def _pick(cumulative, levers, walk, selected, states, q, early):  # type: ignore[no-untyped-def]
+def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
     """The next position to evaluate (the earliest due pair's), the pairs measured there
-    (written to ``selected``) and the state there (written to ``q``). Count 0: done."""
+    (written to ``selected``: due there, or due soon and past their early position) and
+    the state there (written to ``q``). Count 0: done."""
     n_pairs = walk.shape[0]
     s = np.inf
     for k in range(n_pairs):
@@ -292,14 +572,9 @@ def _pick(cumulative, levers, walk, selected, states, q, early):  # type: ignore
     for k in range(n_pairs):
         if walk[k, _DONE] != 0.0:
             continue
-        due = walk[k, _DUE]
-        take = due <= s
-        if not take and walk[k, _HAS_L] != 0.0 and due > s:
-            # Measuring early is always sound; it saves a forward kinematics.
-            here = _motion_at(cumulative, levers, k, s)
-            step = walk[k, _TARGET] - walk[k, _ML]
-            take = here >= walk[k, _ML] and walk[k, _TARGET] - here <= early * step
-        if take:
+        # Measuring early (after the last measurement) is always sound.
+        if walk[k, _DUE] <= s or (walk[k, _EARLY_AT] <= s and walk[k, _PL] < s
+                                  and walk[k, _HAS_L] != 0.0):
             selected[count] = k
             count += 1
     n = states.shape[0]
@@ -316,43 +591,78 @@ def _pick(cumulative, levers, walk, selected, states, q, early):  # type: ignore
 
 
 @_jit
-def _update(cumulative, levers, walk, selected, distances, count, s, margin, slack,
-            gain, shrink):  # type: ignore[no-untyped-def]
-    """Take the distances measured at position ``s``; schedule each pair's next
-    measurement. Returns the index (into ``selected``) of a pair in contact, or -1."""
+def _update(cumulative, pair_levers, below, order, owner, walk, lever_left,  # type: ignore[no-untyped-def]
+            lever_right, selected, distances, count, s, q, parent, joint_kind, state_index,
+            placement_rotation, placement_translation, axis, state_joint, geometry_joint,
+            geometry_centre, geometry_radius, rotations, origins, centres, per_state,
+            margin, slack, gain, early):
+    """Take the distances measured at position ``s`` (state ``q``); schedule each pair's
+    next measurement. Returns the index (into ``selected``) of a pair in contact, or -1."""
+    nq = cumulative.shape[1]
+    if per_state:
+        _forward(q, parent, joint_kind, state_index, placement_rotation,
+                 placement_translation, axis, geometry_joint, geometry_centre, rotations,
+                 origins, centres)
+    here = np.empty(nq)
+    c0 = np.empty(nq)
+    c1 = np.empty(nq)
+    share = np.empty(nq)
+    last = float(cumulative.shape[0] - 1)
     for i in range(count):
         k = selected[i]
         d = distances[i] - slack
         if not d > 0.0:  # also NaN
             return i
-        m = _motion_at(cumulative, levers, k, s)
-        if walk[k, _HAS_L] == 0.0:
-            walk[k, _HAS_L] = 1.0
-            walk[k, _ML] = m
-            walk[k, _DL] = d
-        elif m - walk[k, _ML] <= max(walk[k, _DL] + d, margin):
-            walk[k, _ML] = m            # covered from the left: extends the stretch
-            walk[k, _DL] = d
+        if per_state:
+            _levers_at(k, owner, pair_levers, state_joint, joint_kind, axis, geometry_radius,
+                       rotations, origins, centres, here)
         else:
-            walk[k, _HAS_R] = 1.0       # a gap: this one waits on the right
-            walk[k, _MR] = m
+            for j in range(nq):
+                here[j] = pair_levers[k, j]
+        if walk[k, _HAS_L] == 0.0:
+            extends = True
+        else:
+            _cumulative_at(cumulative, walk[k, _PL], c0)
+            moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], s,
+                           c1, share)
+            extends = moved <= max(walk[k, _DL] + d, margin)
+        if extends:                      # covered from the left: extends the stretch
+            walk[k, _HAS_L] = 1.0
+            walk[k, _PL] = s
+            walk[k, _DL] = d
+            for j in range(nq):
+                lever_left[k, j] = here[j]
+        else:                            # a gap: this one waits on the right
+            walk[k, _HAS_R] = 1.0
+            walk[k, _PR] = s
             walk[k, _DR] = d
-        if walk[k, _HAS_R] != 0.0 and \
-                walk[k, _MR] - walk[k, _ML] <= max(walk[k, _DL] + walk[k, _DR], margin):
-            walk[k, _HAS_R] = 0.0
-            walk[k, _ML] = walk[k, _MR]
-            walk[k, _DL] = walk[k, _DR]
-        m_left, d_left, m_end = walk[k, _ML], walk[k, _DL], walk[k, _MEND]
+            for j in range(nq):
+                lever_right[k, j] = here[j]
+        start = walk[k, _PL]
+        _cumulative_at(cumulative, start, c0)
+        if walk[k, _HAS_R] != 0.0:
+            moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k],
+                           walk[k, _PR], c1, share)
+            if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
+                walk[k, _HAS_R] = 0.0
+                walk[k, _PL] = walk[k, _PR]
+                walk[k, _DL] = walk[k, _DR]
+                for j in range(nq):
+                    lever_left[k, j] = lever_right[k, j]
+                start = walk[k, _PL]
+                _cumulative_at(cumulative, start, c0)
+        d_left = walk[k, _DL]
         if walk[k, _HAS_R] != 0.0:
             # Fill the gap from the left: this step is covered whatever the distance there.
-            target = m_left + max(d_left, margin) * (1.0 - shrink)
-        elif m_left + d_left >= m_end:
-            walk[k, _DONE] = 1.0        # its distance cannot reach 0 before the end
-            continue
+            step = max(d_left, margin)
         else:
-            target = m_left + max(d_left * (1.0 + gain), margin)
-            if target > m_end:
-                target = m_end
-        walk[k, _TARGET] = target
-        walk[k, _DUE] = _position_of(cumulative, levers, k, target)
+            if _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last,
+                      c1, share) <= d_left:
+                walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
+                continue
+            step = max(d_left * (1.0 + gain), margin)
+        due = _position_for(cumulative, pair_levers, below, order, k, start, c0,
+                            lever_left[k], step, c1, share)
+        walk[k, _DUE] = due
+        walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
     return -1
