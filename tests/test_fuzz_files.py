@@ -139,7 +139,11 @@ def assert_clean(outcome: Outcome, *names: object, refused: bool = True) -> None
 def data(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A private copy of the shipped robots, cells and tasks."""
     root = tmp_path_factory.mktemp("data")
-    shutil.copytree(DATA_ROOT / "robots", root / "robots")
+    shutil.copytree(DATA_ROOT / "robots", root / "robots",
+                    ignore=shutil.ignore_patterns("meshes"))
+    # Meshes are large (the Sawyer's 15 MB) and no case edits one: every copy links them.
+    for meshes in (DATA_ROOT / "robots").glob("*/meshes"):
+        (root / "robots" / meshes.parent.name / "meshes").symlink_to(meshes)
     shutil.copytree(DATA_ROOT / "tasks", root / "tasks")
     # The commands import what they need on first use: do it once here, before the
     # forks, so that each case costs its own work only.
