@@ -55,11 +55,12 @@ _RANGES: dict[tuple[str, str], tuple[float, float, str, bool]] = {
     ("cylinder", "radius"): (0.0, _M, "m", True),
     ("cylinder", "length"): (0.0, _M, "m", True),
     ("sphere", "radius"): (0.0, _M, "m", True),
-    ("mesh", "scale"): (0.0, 1e6, "", True),
+    ("mesh", "scale"): (-1e6, 1e6, "", False),  # a negative scale mirrors the mesh
     ("mass", "value"): (0.0, 1e6, "kg", False),
-    ("inertia", "ixx"): (0.0, 1e6, "kg·m²", False),
-    ("inertia", "iyy"): (0.0, 1e6, "kg·m²", False),
-    ("inertia", "izz"): (0.0, 1e6, "kg·m²", False),
+    # Exporters write rounding noise such as -5e-20 for a zero moment of inertia.
+    ("inertia", "ixx"): (-1e-12, 1e6, "kg·m²", False),
+    ("inertia", "iyy"): (-1e-12, 1e6, "kg·m²", False),
+    ("inertia", "izz"): (-1e-12, 1e6, "kg·m²", False),
     ("limit", "effort"): (0.0, math.inf, "", False),
     ("limit", "velocity"): (0.0, math.inf, "", False),
 }
@@ -192,9 +193,12 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
             continue
         target = mimic.get("joint")
         if target not in joints:
-            raise doc.error(
-                joint, f"joint {joint.get('name')!r} mimics {target!r}, which is not a joint"
-            )
+            # MoveIt logs this and loads the joint as an independent one: so do we.
+            warnings.append(LoadWarning(
+                f"joint {joint.get('name')!r} mimics {target!r}, which is not a joint; it moves "
+                "on its own", source, doc.line(mimic)))
+            joint.remove(mimic)
+            continue
         if joints[target][0] not in MOVABLE_TYPES:
             raise doc.error(joint, f"joint {joint.get('name')!r} mimics fixed joint {target!r}")
 
@@ -234,6 +238,9 @@ def _check_numbers(doc: XmlDocument) -> None:
                 low, high, unit, low_open = _RANGES.get((element.tag, attribute), _ANY)
                 for number in numbers:
                     problem = check_number(number, low, high, unit, low_open)
+                    if problem is None and (element.tag, attribute) == ("mesh", "scale") \
+                            and number == 0:
+                        problem = "must be non-zero"
                     if problem is not None:
                         shown = f" (got {value!r})" if count > 1 else ""
                         raise doc.error(

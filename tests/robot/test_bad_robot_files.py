@@ -22,6 +22,27 @@ def test_unedited_mini_manifest_loads(make_mini):
 
 
 # ---------------------------------------------------------------- meshes
+def test_mimic_of_an_unknown_joint_is_a_warning_and_the_joint_moves_on_its_own(make_mini):
+    """MoveIt logs such a mimic and loads the joint as an independent one (example-robot-data's
+    alex_psyonic_hands has one)."""
+    robot = make_mini({"mini.urdf": (
+        '<limit effort="10" lower="0" upper="0.1" velocity="0.2"/>',
+        '<limit effort="10" lower="0" upper="0.1" velocity="0.2"/>\n    <mimic joint="j7"/>')})
+    m = robot.load()
+    line = robot.line("mini.urdf", "<mimic", after='<joint name="j3"')
+    assert m.warnings == [f"{robot.path('mini.urdf')}:{line}: joint 'j3' mimics 'j7', which is "
+                          "not a joint; it moves on its own"]
+    assert m.joint("j3").mimic is None
+
+
+def test_a_negative_mesh_scale_mirrors_and_a_zero_scale_is_an_error(make_mini, located):
+    mirrored = make_mini({"mini.urdf": ('scale="5 5 5"', 'scale="-5 5 5"')})
+    assert mirrored.load().warnings == []
+    robot = make_mini({"mini.urdf": ('scale="5 5 5"', 'scale="0 5 5"')})
+    error = robot.error(RobotDescriptionError)
+    assert "<mesh> 'scale' must be non-zero" in str(error)
+
+
 def test_missing_collision_mesh_is_a_warning_and_the_link_uses_its_visual(make_mini):
     robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
     m = robot.load()
@@ -150,13 +171,6 @@ URDF_CASES = [
         '<joint name="j2"', None,
         "joint 'j2': 'type' must be one of revolute, continuous, prismatic, fixed (got 'revolving')",
         id="bad-joint-type",
-    ),
-    pytest.param(
-        ('<limit effort="10" lower="0" upper="0.1" velocity="0.2"/>',
-         '<limit effort="10" lower="0" upper="0.1" velocity="0.2"/>\n    <mimic joint="j7"/>'),
-        '<joint name="j3"', None,
-        "joint 'j3' mimics 'j7', which is not a joint",
-        id="mimic-unknown-joint",
     ),
     pytest.param(
         ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>', '<limit effort="10" velocity="1.0"/>'),
@@ -456,7 +470,7 @@ MANIFEST_CASES = [
     pytest.param(
         lambda t: t + "kinematic: kinematics.yaml\n", "kinematic:",
         "unknown field 'kinematic' (expected one of collision, end_effectors, hardware, initial_positions, joint_limits, "
-        "kinematics, name, ompl_planning, srdf, urdf, xacro_args)",
+        "kinematics, name, ompl_planning, pilz_cartesian_limits, srdf, urdf, xacro_args)",
         id="unknown-field",
     ),
     pytest.param(

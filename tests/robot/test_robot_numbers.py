@@ -40,7 +40,7 @@ URDF = """<robot name="r">
          "<mass> 'value' must be a finite number ≥ 0 and ≤ 1e+06 kg (got -1.0)"),
         ('<inertial><mass value="1"/><inertia ixx="inf" ixy="0" ixz="0" iyy="1" iyz="0" '
          'izz="1"/></inertial>',
-         "<inertia> 'ixx' must be a finite number ≥ 0 and ≤ 1e+06 kg·m² (got inf)"),
+         "<inertia> 'ixx' must be a finite number ≥ -1e-12 and ≤ 1e+06 kg·m² (got inf)"),
         ('<visual><origin xyz="0 1e400 0"/><geometry><sphere radius="0.1"/></geometry></visual>',
          "<origin> 'xyz' must be a finite number within ±1000 m (got inf) (got '0 1e400 0')"),
         ('<visual><origin rpy="0 -1e308 0"/><geometry><sphere radius="0.1"/></geometry></visual>',
