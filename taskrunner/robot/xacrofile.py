@@ -13,6 +13,9 @@ the size limit), so an include of a FIFO or ``/dev/zero`` is refused at once.
 
 This bounds the damage of a hostile file; it is not a sandbox: xacro's expressions run
 with the rights of the process. Load xacro only from folders the operator owns.
+
+Expansions are cached (:mod:`taskrunner.robot.xacro_cache`) with every file, variable
+and package they read, and reused only while all of these are unchanged.
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ from typing import Any
 from xml.parsers import expat
 
 from taskrunner.errors import RobotDescriptionError
+from taskrunner.robot import xacro_cache
 from taskrunner.robot.packages import PackageMap
 from taskrunner.textfile import DEFAULT_MAX_BYTES, file_problem, read_text_file
 
@@ -83,13 +87,20 @@ def expand_xacro(path: str | Path, packages: PackageMap, mappings: dict[str, str
     problem = file_problem(path)
     if problem is not None:
         raise RobotDescriptionError(problem, path)
+    cached = xacro_cache.lookup(path, mappings, lambda package: str(packages.find(package)))
+    if cached is not None:
+        return cached
+    inputs = xacro_cache.XacroInputs()
     if options.in_process:
-        return _expand(path, packages, mappings, options.max_bytes)
-    return _expand_in_child(path, packages, mappings, options)
+        text = _expand(path, packages, mappings, options.max_bytes, inputs)
+    else:
+        text = _expand_in_child(path, packages, mappings, options, inputs)
+    xacro_cache.store(path, mappings, text, inputs)
+    return text
 
 
 def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
-                     options: XacroOptions) -> str:
+                     options: XacroOptions, inputs: xacro_cache.XacroInputs) -> str:
     context = multiprocessing.get_context("fork")
     receiver, sender = context.Pipe(duplex=False)
     child = context.Process(target=_child_main, daemon=True,
@@ -115,7 +126,9 @@ def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] 
         child.join()
     if kind == "error":
         raise value
-    text, found_warnings = value
+    text, found_warnings, read = value
+    inputs.files, inputs.env, inputs.finds = read.files, read.env, read.finds
+    inputs.cacheable = read.cacheable
     # A package found twice that the expansion used: the child's copy of the map warned.
     for warning in found_warnings:
         if warning not in packages.warnings:
@@ -129,8 +142,9 @@ def _child_main(sender: Connection, path: Path, packages: PackageMap,
     try:
         _limit_address_space(options.memory_limit_mb)
         known = len(packages.warnings)
-        text = _expand(path, packages, mappings, options.max_bytes)
-        result: tuple[str, Any] = ("text", (text, packages.warnings[known:]))
+        inputs = xacro_cache.XacroInputs()
+        text = _expand(path, packages, mappings, options.max_bytes, inputs)
+        result: tuple[str, Any] = ("text", (text, packages.warnings[known:], inputs))
     except RobotDescriptionError as exc:
         result = ("error", exc)
     except MemoryError:
@@ -159,9 +173,10 @@ def _limit_address_space(extra_mb: int) -> None:
     resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
 
 
-def _guarded_includes(xacro: Any, max_bytes: int) -> tuple[Callable[..., Any], Callable[..., Any]]:
-    """Wrap xacro's file readers so every file it opens is checked first; returns the
-    originals to restore."""
+def _guarded_includes(xacro: Any, max_bytes: int, inputs: xacro_cache.XacroInputs
+                      ) -> tuple[Callable[..., Any], Callable[..., Any]]:
+    """Wrap xacro's file readers so every file it opens is checked first (and recorded
+    in ``inputs``); returns the originals to restore."""
     original_parse, original_load_yaml = xacro.parse, xacro.load_yaml
 
     def parse(inp: Any, filename: str | None = None) -> Any:
@@ -171,23 +186,51 @@ def _guarded_includes(xacro: Any, max_bytes: int) -> tuple[Callable[..., Any], C
                 return original_parse(inp, filename)
             try:
                 inp = read_text_file(full, RobotDescriptionError, max_bytes)
+                inputs.read_file(full, Path(full).read_bytes())
             except RobotDescriptionError as exc:
                 raise xacro.XacroException(exc.reason) from None
+            except OSError as exc:
+                raise xacro.XacroException(f"{full}: {exc.strerror or exc}") from None
         return original_parse(inp, filename)
 
     def load_yaml(filename: str) -> Any:
-        problem = file_problem(xacro.abs_filename_spec(filename))
+        full = xacro.abs_filename_spec(filename)
+        problem = file_problem(full)
         if problem is not None:
             raise xacro.XacroException(f"{filename}: {problem}")
+        try:
+            inputs.read_file(full, Path(full).read_bytes())
+        except OSError as exc:
+            raise xacro.XacroException(f"{filename}: {exc.strerror or exc}") from None
         return original_load_yaml(filename)
 
     xacro.parse, xacro.load_yaml = parse, load_yaml
     return original_parse, original_load_yaml
 
 
+def _recorded_includes(xacro: Any, inputs: xacro_cache.XacroInputs) -> Callable[..., Any]:
+    """Wrap xacro's include resolution: an include by glob pattern makes the expansion
+    depend on which files exist, which the cache does not track (not cached then).
+    Returns the original to restore."""
+    original = xacro.get_include_files
+
+    def get_include_files(filename_spec: Any, symbols: Any) -> Any:
+        try:
+            spec = str(xacro.eval_text(filename_spec, symbols))
+        except Exception:  # xacro's own call below reports it
+            spec = str(filename_spec)
+        if any(c in spec for c in "*[?"):
+            inputs.cacheable = False
+        return original(filename_spec, symbols)
+
+    xacro.get_include_files = get_include_files
+    return original
+
+
 def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
-            max_bytes: int) -> str:
-    """Expand in this process (unbounded; see :func:`expand_xacro`)."""
+            max_bytes: int, inputs: xacro_cache.XacroInputs) -> str:
+    """Expand in this process (unbounded; see :func:`expand_xacro`), recording what it
+    reads in ``inputs``."""
     import xacro
     import xacro.substitution_args as substitution_args
 
@@ -195,19 +238,42 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
 
     def find(pkg: str) -> str:
         try:
-            return str(packages.find(pkg))
+            folder = str(packages.find(pkg))
         except RobotDescriptionError as exc:
             lookup_errors.append(exc)
             raise
+        inputs.finds[pkg] = folder
+        return folder
+
+    def env(name: str) -> str:
+        inputs.env[name] = os.environ.get(name)
+        return str(saved_env(name))
+
+    def optenv(name: str, default: str = "") -> str:
+        inputs.env[name] = os.environ.get(name)
+        return str(saved_optenv(name, default))
 
     with _XACRO_LOCK:
         saved_find = substitution_args._eval_find
+        saved_env, saved_optenv = substitution_args._eval_env, substitution_args._eval_optenv
+        saved_table = dict(substitution_args._eval_dict)
         substitution_args._eval_find = find
-        saved_readers = _guarded_includes(xacro, max_bytes)
+        substitution_args._eval_env, substitution_args._eval_optenv = env, optenv
+        substitution_args._eval_dict.update(find=find, env=env, optenv=optenv)
+        saved_readers = _guarded_includes(xacro, max_bytes, inputs)
+        saved_includes = _recorded_includes(xacro, inputs)
+        known_includes = len(xacro.all_includes)
         chatter = io.StringIO()
         try:
             with redirect_stdout(chatter), redirect_stderr(chatter):
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            # Every file xacro read, ``load_yaml`` from expressions included (xacro's
+            # expression namespace holds its own reference to load_yaml, not the wrapper).
+            for name in xacro.all_includes[known_includes:]:
+                try:
+                    inputs.read_file(name, Path(name).read_bytes())
+                except OSError:
+                    inputs.cacheable = False
             return str(document.toprettyxml(indent="  "))
         except MemoryError:
             raise
@@ -232,5 +298,9 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
             raise RobotDescriptionError(f"xacro expansion failed: {detail}", where) from None
         finally:
             substitution_args._eval_find = saved_find
+            substitution_args._eval_env, substitution_args._eval_optenv = saved_env, saved_optenv
+            substitution_args._eval_dict.clear()
+            substitution_args._eval_dict.update(saved_table)
             xacro.parse, xacro.load_yaml = saved_readers
+            xacro.get_include_files = saved_includes
             xacro.init_stacks(None)
