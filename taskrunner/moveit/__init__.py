@@ -19,7 +19,7 @@ from __future__ import annotations
 from taskrunner.moveit.names import NameMap
 from taskrunner.moveit.report import PlanReport, plan_files, plan_request_file
 from taskrunner.moveit.request_file import MotionPlanRequestFile, load_motion_plan_request, planner_name
-from taskrunner.moveit.scene_file import ObjectEdit, PlanningSceneFile, load_planning_scene
+from taskrunner.moveit.scene_file import ObjectEdit, PlanningSceneFile, apply_scene_file, load_planning_scene
 
 __all__ = [
     "MotionPlanRequestFile",
@@ -27,6 +27,7 @@ __all__ = [
     "ObjectEdit",
     "PlanReport",
     "PlanningSceneFile",
+    "apply_scene_file",
     "load_motion_plan_request",
     "load_planning_scene",
     "plan_files",

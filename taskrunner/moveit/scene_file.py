@@ -28,6 +28,7 @@ subframes, octomaps with data, link padding and scale other than 0 and 1) are wa
 
 from __future__ import annotations
 
+import logging
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -47,8 +48,11 @@ from taskrunner.shapes import Shape
 from taskrunner.types import Pose
 from taskrunner.yamlfile import LineDict, YamlLimits, load_yaml
 
-__all__ = ["ObjectEdit", "PlanningSceneFile", "RobotStateData", "load_planning_scene",
+__all__ = ["ObjectEdit", "PlanningSceneFile", "RobotStateData", "apply_scene_file",
+           "load_planning_scene",
            "read_robot_state", "unwrap"]
+
+_log = logging.getLogger("taskrunner.moveit")
 
 OPERATIONS = {0: "ADD", 1: "REMOVE", 2: "APPEND", 3: "MOVE"}
 SCENE_FIELDS = ("name", "robot_state", "robot_model_name", "fixed_frame_transforms",
@@ -280,6 +284,20 @@ class PlanningSceneFile:
     def object_ids(self) -> tuple[str, ...]:
         return tuple(dict.fromkeys(o.id for o in self.objects))
 
+    @property
+    def object_names(self) -> tuple[str, ...]:
+        """The scene objects the file makes when applied to a scene that has none of its
+        ids: ``id`` for an object's first shape, ``id/1``, ``id/2`` … for the others."""
+        parts: dict[str, int] = {}
+        for edit in self.objects:
+            if edit.operation == "REMOVE":
+                parts.pop(edit.id, None)
+            elif edit.operation in ("ADD", "APPEND"):
+                start = parts.get(edit.id, 0) if edit.operation == "APPEND" else 0
+                parts[edit.id] = start + len(edit.parts)
+        return tuple(name if i == 0 else f"{name}/{i}" for name, n in parts.items()
+                     for i in range(n))
+
     def apply(self, scene: Scene, *, merge: bool | None = None) -> list[str]:
         """Apply the file to ``scene`` (a scene of the model it was read for).
 
@@ -391,6 +409,21 @@ class PlanningSceneFile:
             line = self.allowed[0].line if self.allowed else None
             self.reader.warn(f"'allowed_collision_matrix' checks pairs the robot's SRDF (or an "
                              f"attachment) allows: {shown}; they stay allowed", line)
+
+
+def apply_scene_file(scene: Scene, path: str | os.PathLike[str], *, robot: str | None = None,
+                     strict: bool | None = None) -> PlanningSceneFile:
+    """Add a PlanningScene file's objects and allowances to ``scene``, keeping its own
+    (what a task's ``scene:`` does); warnings are logged (``taskrunner.moveit``).
+
+    Raises:
+        InputError: an invalid file (file:line, field).
+    """
+    loaded = load_planning_scene(path, scene.robot, robot=robot, strict=strict)
+    loaded.apply(scene, merge=True)
+    for warning in loaded.warnings:
+        _log.warning("%s", warning)
+    return loaded
 
 
 def object_parts(scene: Scene, object_id: str) -> list[str]:

@@ -73,8 +73,13 @@ class RunOptions:
 
 
 def task_scene(spec: TaskSpec, cell: Cell) -> Scene:
-    """The scene a task starts in: the cell's objects and robots, then the task's objects."""
+    """The scene a task starts in: the cell's objects and robots, the objects of its
+    ``scene:`` file (a MoveIt PlanningScene), then the task's objects."""
     scene = scene_from_cell(cell)
+    if spec.scene is not None:
+        from taskrunner.moveit import apply_scene_file
+
+        apply_scene_file(scene, spec.scene)
     for obj in spec.objects:
         scene.add_object(obj.name, object_shape(obj), obj.pose.to_pose())
         for link in obj.touch_links:

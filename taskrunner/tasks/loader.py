@@ -118,6 +118,7 @@ class _Loader:
     problems: list[Problem] = field(default_factory=list)
     objects: list[ObjectSpec] = field(default_factory=list)
     root_cell: Path | None = None
+    root_scene: Path | None = None
     policy: FolderPolicy | None = None
     includes: int = 0
     depth: int = 0
@@ -139,6 +140,29 @@ class _Loader:
         """Add ``problems``, leaving out those about a value that is still a ``${…}``
         reference: its cause (an unknown or broken parameter) is reported already."""
         self.problems += [p for p in problems if "(got '${" not in p.message]
+
+    def resolve_scene(self, tree: LineDict, path: Path, root: bool) -> None:
+        """The root file's ``scene:`` (a MoveIt PlanningScene file), relative to it."""
+        value, line = tree.get("scene"), line_of(tree, "scene")
+        if not isinstance(value, str) or not value:
+            return  # absent, or refused by the TaskFile model
+        if not root:
+            self.add(path, line, "an included file's 'scene' is not used: only the task run "
+                                 "has one")
+            return
+        try:
+            scene = resolve_path(path.parent / value, TaskSpecError, path, line)
+        except TaskSpecError as exc:
+            self.add(exc.path, exc.line, exc.reason)
+            return
+        if self.refused(scene, FileKind.TASK, value, path, line):
+            return
+        problem = file_problem(scene)
+        if problem is not None:
+            self.add(path, line, f"scene file not found: {_shown(scene, path)}"
+                     if problem == "file not found" else f"scene {_shown(scene, path)}: {problem}")
+            return
+        self.root_scene = scene
 
     def refused(self, path: Path, kind: FileKind, written: str, file: Path,
                 line: int | None) -> bool:
@@ -177,7 +201,7 @@ class _Loader:
         if result is not None and result.cell is not None and not self.problems:
             spec = TaskSpec(
                 name=result.task, description=result.description, path=path, cell=result.cell,
-                parameters=result.parameters, objects=objects,
+                parameters=result.parameters, objects=objects, scene=self.root_scene,
                 defaults=result.defaults or MotionOptions(), steps=result.steps,
                 expect=result.expect, scenarios=result.scenarios,
             ).located(Location(path, result.line))
@@ -213,6 +237,7 @@ class _Loader:
         top = self.validate(TaskFile, {k: v for k, v in tree.items() if k != "parameters"}
                             | {"parameters": {}}, tree, path, ())
         cell = self.resolve_cell(tree, path, root)
+        self.resolve_scene(tree, path, root)
         if top is not None and not self.refused_meshes(top.objects, path):
             self.objects += top.objects
         defaults = top.defaults if top is not None else None

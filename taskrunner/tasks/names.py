@@ -99,7 +99,22 @@ class _Checker:
         self.objects: dict[str, str] = {o.name: f"cell {cell.name!r}" for o in cell.objects}
         self.removed: dict[str, str] = {}
 
+    def scene_file(self, path: Path) -> None:
+        """The objects of the task's MoveIt scene file are known from the start."""
+        from taskrunner.errors import InputError
+        from taskrunner.moveit import load_planning_scene
+
+        try:
+            loaded = load_planning_scene(path, self.model)
+        except InputError as exc:
+            self.problems.append(Problem(exc.path, exc.line, exc.reason))
+            return
+        for name in loaded.object_names:
+            self.objects[name] = f"scene file {path.name!r}"
+
     def run(self) -> list[Problem]:
+        if self.spec.scene is not None:
+            self.scene_file(self.spec.scene)
         for obj in self.spec.objects:
             self.add_object(obj)
         for step in self.spec.steps:

@@ -85,6 +85,9 @@ class TaskFile(Node):
     """Parameters with their defaults: 'name: default' or 'name: {default, type, min, max}'."""
     objects: list[ObjectSpec] = []
     """Scene objects added before the first step."""
+    scene: str | None = None
+    """A MoveIt PlanningScene YAML file, relative to this file: its objects, attached
+    objects and allowed collisions join the cell's world before the first step."""
     defaults: MotionOptions | None = None
     """Planner options for every motion step that does not set its own."""
     steps: Annotated[list[Any], WithJsonSchema(STEP_LIST_SCHEMA), Field(min_length=1)]
@@ -109,6 +112,8 @@ class TaskSpec(Node):
     """The task's own parameters with their bound values."""
     objects: tuple[ObjectSpec, ...] = ()
     """Objects added before the first step: the task's, then those of included files."""
+    scene: Path | None = None
+    """The MoveIt PlanningScene file applied to the cell's world first (absolute)."""
     defaults: MotionOptions = MotionOptions()
     steps: StepList
     expect: TaskExpectation | None = None
@@ -146,6 +151,8 @@ class TaskSpec(Node):
                 for p in self.parameters.values()}
         if self.objects:
             doc["objects"] = [_dump(o) for o in self.objects]
+        if self.scene is not None:
+            doc["scene"] = str(self.scene)
         defaults = _dump(self.defaults)
         if defaults:
             doc["defaults"] = defaults

@@ -215,6 +215,14 @@ def _start_scene(spec: TaskSpec, cell: Cell, marked: set[Any]
     names of the objects left out."""
     scene = scene_from_cell(cell)
     problems, missing = [], set()
+    if spec.scene is not None:
+        from taskrunner.errors import InputError
+        from taskrunner.moveit import apply_scene_file
+
+        try:
+            apply_scene_file(scene, spec.scene)
+        except InputError as exc:
+            problems.append(Problem(exc.path, exc.line, exc.reason))
     for obj in spec.objects:
         try:
             scene.add_object(obj.name, object_shape(obj), obj.pose.to_pose())

@@ -57,5 +57,5 @@ def test_the_moveit_file_api_is_pinned() -> None:
 
     assert sorted(taskrunner.moveit.__all__) == [
         "MotionPlanRequestFile", "NameMap", "ObjectEdit", "PlanReport", "PlanningSceneFile",
-        "load_motion_plan_request", "load_planning_scene", "plan_files", "plan_request_file",
+        "apply_scene_file", "load_motion_plan_request", "load_planning_scene", "plan_files", "plan_request_file",
         "planner_name"]
