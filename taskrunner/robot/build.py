@@ -526,7 +526,8 @@ def _add_srdf(
             continue
         group_joints = set(resolve(state.group, (state.group,))[0])
         values = _state_values(srdf, state, pre, group_joints, joints, warn)
-        states.setdefault(model_group.name, {})[state.name] = values
+        if values is not None:
+            states.setdefault(model_group.name, {})[state.name] = values
 
     for pair in srdf.disabled_collisions:
         a, b = pre + pair.link1, pre + pair.link2
@@ -541,10 +542,11 @@ def _add_srdf(
 
 def _state_values(srdf: Srdf, state: SrdfGroupState, pre: str, group_joints: set[str],
                   joints: dict[str, JointInfo],
-                  warn: Callable[[int | None, str], None]) -> dict[str, float]:
+                  warn: Callable[[int | None, str], None]) -> dict[str, float] | None:
     """The values a named pose sets: its group's active joints. A mimic joint's
     value is checked against its relation, then left to follow its source (a value of its
-    own would put the state off the relation). Fixed joints set nothing."""
+    own would put the state off the relation). Fixed joints set nothing. None, with a
+    warning, for a pose outside the joint limits (MoveIt loads it, then cannot plan to it)."""
     values: dict[str, float] = {}
     mimics: list[tuple[str, float, int | None]] = []
     for joint_name, value in state.values.items():
@@ -556,8 +558,12 @@ def _state_values(srdf: Srdf, state: SrdfGroupState, pre: str, group_joints: set
             continue
         if full not in joints:
             continue  # a fixed joint listed in a pose: nothing to set
-        _check_in_limits(joints[full], value, lambda msg, line=line: srdf.error(line, msg),
-                         f"group_state {state.name!r}")
+        try:
+            _check_in_limits(joints[full], value, lambda msg, line=line: srdf.error(line, msg),
+                             f"group_state {state.name!r}")
+        except RobotDescriptionError as exc:
+            warn(line, f"{exc.reason}; named pose skipped")
+            return None
         if joints[full].mimic is not None:
             mimics.append((full, value, line))
         elif not joints[full].passive:  # nothing moves a passive joint (MoveIt's rule too)
