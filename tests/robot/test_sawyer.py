@@ -53,7 +53,7 @@ def test_the_description_xacro_loads_as_published(bare):
 def test_the_config_package_is_read_as_a_ros1_moveit_config(sawyer):
     files = find_config_files(CONFIG, PackageMap(search_roots=[robots_dir()]))
     assert files.layout.startswith("ROS 1")
-    assert files.urdf == CONFIG / "urdf" / "sawyer_electric_gripper.urdf.xacro"
+    assert files.urdf == CONFIG / "urdf" / "sawyer_with_gripper.urdf.xacro"
     assert files.srdf == CONFIG / "config" / "sawyer.srdf.xacro"
     assert files.srdf_args == {"tip_name": "right_gripper_tip"}
     assert {"kinematics", "joint_limits", "ompl_planning"} <= set(files.yaml)
