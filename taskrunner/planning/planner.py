@@ -3,7 +3,11 @@
 :class:`MotionPlanner` plans a group of a scene's robot model from a start state to one of
 several goals. The group's joints form an OMPL real-vector space bounded by the joint
 limits; every other joint stays where the start state has it. States are checked by the
-scene's collision checker (self, world and attached objects). The path found is
+scene's collision checker (self, world and attached objects), every
+``longest_valid_segment`` along each edge; with ``fast_check``, the search checks a
+conservative sphere model first (:mod:`taskrunner.planning.fastcheck`: spheres apart
+proves the exact geometry apart; each edge is checked whole, continuously, in one
+compiled call) and asks the exact checker only where spheres touch. The path found is
 shortcut, then verified exactly by conservative advancement (per-joint lever arms bound
 how far any point of any body moves between checks, coal distances against the scene's
 geometry: :mod:`taskrunner.scene.sweep`); with timing, the sampled trajectory that is
@@ -53,6 +57,14 @@ from taskrunner.types import JointPath, JointTrajectory
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
 _REFINEMENTS = 3
+# The sphere model's edge walk: spheres closer than this (m) hand the rest of the edge to
+# the exact checker, as does a walk that needs more than _EDGE_CHECKS states.
+_EDGE_EPS = 0.002
+_EDGE_CHECKS = 200
+# After _WALK_TRIAL edges, a search stops walking edges when fewer than _WALK_SUCCESS of
+# its walks have cleared their edge.
+_WALK_TRIAL = 30
+_WALK_SUCCESS = 0.25
 _SINGLE_GOAL = {"PRM", "PRMstar"}
 _OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
 
@@ -92,11 +104,21 @@ class MotionPlanner:
 
     The planner reads the scene (objects, attachments, allowed collisions, current state)
     at every request; it keeps IK solvers between requests.
+
+    Args:
+        scene: the planning scene.
+        fast_check: search with the sphere model first (see the module docstring). Off
+            by default: on the benchmark problems it is slower than the exact checker
+            (``benchmarks/fastcheck_bench.py``). The returned path is verified exactly
+            either way.
     """
 
-    def __init__(self, scene: Scene) -> None:
+    def __init__(self, scene: Scene, fast_check: bool = False) -> None:
         self.scene = scene
+        self.fast_check = fast_check
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
+        self._spheres: tuple[object, object] | None = None  # (checker, SphereModel)
+        self._groups: dict[str, object] = {}
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
@@ -287,6 +309,70 @@ class MotionPlanner:
         raise TypeError(f"unsupported goal type {type(goal).__name__}")
 
     # ------------------------------------------------------------------ search
+    def _fast_checker(self, group: Group):  # type: ignore[no-untyped-def]
+        """The sphere-model checker of ``group`` for the scene as it is, or None (fast
+        checks off, or a robot the compiled kinematics does not handle)."""
+        if not self.fast_check:
+            return None
+        from taskrunner.planning import fastcheck
+
+        checker = self.scene.checker
+        if self._spheres is None or self._spheres[0] is not checker:
+            try:
+                self._spheres = (checker, fastcheck.SphereModel(self.scene.robot, checker))
+            except fastcheck.UnsupportedModelError:
+                self.fast_check = False
+                return None
+            self._groups = {}
+        if group.name not in self._groups:
+            model = self._spheres[1]
+            assert isinstance(model, fastcheck.SphereModel)
+            fast = model.group(group.joint_indices)
+            fast.warm_up(self.scene.state)
+            self._groups[group.name] = fast
+        return self._groups[group.name]
+
+    def _checks(self, group: Group, start: np.ndarray, resolution: float
+                ) -> tuple[Callable[[np.ndarray], bool],
+                           Callable[[np.ndarray, np.ndarray], bool], list[int]]:
+        """A state check and an edge check over the group's values (an edge's first
+        state is taken as checked), and a counter of the states they checked."""
+        exact, count = self._validity(group, start)
+        fast = self._fast_checker(group)
+        if fast is None:
+            def exact_edge(a: np.ndarray, b: np.ndarray) -> bool:
+                return _segment_valid(exact, a, b, resolution)
+
+            return exact, exact_edge, count
+        base = start.copy()
+
+        def is_valid(values: np.ndarray) -> bool:
+            if fast.state_free(base, values):
+                count[0] += 1
+                return True
+            return exact(values)
+
+        walks = [0, 0]  # sphere walks tried, walks that cleared their edge
+
+        def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
+            s = 0.0
+            # Where the spheres rarely clear a whole edge (a narrow passage, an object in
+            # the hand), the walk costs more than it saves: go straight to the states.
+            if walks[0] < _WALK_TRIAL or walks[1] >= _WALK_SUCCESS * walks[0]:
+                s, checked = fast.edge(base, a, b, _EDGE_EPS, _EDGE_CHECKS)
+                count[0] += checked
+                walks[0] += 1
+                if s >= 1.0:
+                    walks[1] += 1
+                    return True
+            # The rest of the edge, state by state as the exact search checks it; coal
+            # only where the spheres touch.
+            steps = max(1, int(np.ceil(np.max(np.abs(b - a)) * (1.0 - s) / resolution)))
+            count[0] += steps + 1
+            return all(exact(a + t * (b - a)) for t in fast.touching(base, a, b, s, steps))
+
+        return is_valid, edge_valid, count
+
     def _validity(self, group: Group, start: np.ndarray) -> tuple[Callable[[np.ndarray], bool], list[int]]:
         """A fast validity check over the group's values, and a call counter."""
         model = self.scene.robot
@@ -318,7 +404,8 @@ class MotionPlanner:
             # with several goal states they deadlock. Give it the nearest goal only.
             goals = [min(goals, key=lambda g: float(np.linalg.norm(g[1][idx] - start[idx])))]
         n = len(idx)
-        is_valid, count = self._validity(group, start)
+        is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment)
+        fast = self._fast_checker(group) is not None
         lower = model.lower[idx].copy()
         upper = model.upper[idx].copy()
         # Continuous joints: one turn around wherever the start and goals are.
@@ -346,11 +433,23 @@ class MotionPlanner:
             return bool(is_valid(values))
 
         setup.setStateValidityChecker(ompl_valid)
+        si = setup.getSpaceInformation()
+        if fast:
+            a_values = np.empty(n)
+            b_values = np.empty(n)
+
+            def ompl_edge(s1, s2) -> bool:  # type: ignore[no-untyped-def]
+                for k in rng:
+                    a_values[k] = s1[k]
+                    b_values[k] = s2[k]
+                return bool(edge_valid(a_values, b_values))
+
+            validator = _edge_validator(ob)(si, ompl_edge)
+            si.setMotionValidator(validator)
         start_state = space.allocState()
         for k in rng:
             start_state[k] = float(start[idx[k]])
         setup.setStartState(start_state)
-        si = setup.getSpaceInformation()
         goal_states = []
         for _, q in goals:
             state = space.allocState()
@@ -410,10 +509,10 @@ class MotionPlanner:
                     ) -> tuple[np.ndarray | None, list[PathVerification]]:
         """Shortcut the path, then verify it exactly; fall back to the raw path if needed.
         None (with the verifications made) when both collide."""
-        is_valid, _ = self._validity(group, start)
+        _, edge_valid, _ = self._checks(group, start, options.longest_valid_segment)
         candidates = []
         if options.simplify and len(waypoints) > 2:
-            candidates.append(_shortcut(is_valid, waypoints, options, options.seed))
+            candidates.append(_shortcut(edge_valid, waypoints, options.seed))
         candidates.append(waypoints)
         verifications = []
         for candidate in candidates:
@@ -488,17 +587,16 @@ def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.
     return True
 
 
-def _shortcut(is_valid: Callable[[np.ndarray], bool], waypoints: np.ndarray,
-              options: PlannerOptions, seed: int) -> np.ndarray:
-    """Greedy vertex removal then random shortcuts, checked at the planning resolution."""
-    resolution = options.longest_valid_segment
+def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: np.ndarray,
+              seed: int) -> np.ndarray:
+    """Greedy vertex removal then random shortcuts, each checked by ``edge_valid``."""
     path = [w for w in waypoints]
     # Greedy: from each vertex, jump to the farthest vertex reachable in a straight line.
     reduced = [path[0]]
     i = 0
     while i < len(path) - 1:
         j = len(path) - 1
-        while j > i + 1 and not _segment_valid(is_valid, path[i], path[j], resolution):
+        while j > i + 1 and not edge_valid(path[i], path[j]):
             j -= 1
         reduced.append(path[j])
         i = j
@@ -514,9 +612,27 @@ def _shortcut(is_valid: Callable[[np.ndarray], bool], waypoints: np.ndarray,
         t1, t2 = rng.uniform(0.0, 1.0, size=2)
         p1 = path[s1] + t1 * (path[s1 + 1] - path[s1])
         p2 = path[s2] + t2 * (path[s2 + 1] - path[s2])
-        if _segment_valid(is_valid, p1, p2, resolution):
+        if edge_valid(p1, p2):
             path = path[: s1 + 1] + [p1, p2] + path[s2 + 1:]
     return np.array(path)
+
+
+_VALIDATOR: list[type] = []
+
+
+def _edge_validator(ob) -> type:  # type: ignore[no-untyped-def]
+    """An OMPL motion validator class that checks a whole edge with one Python call."""
+    if not _VALIDATOR:
+        class EdgeValidator(ob.MotionValidator):  # type: ignore[misc, name-defined]
+            def __init__(self, si, check) -> None:  # type: ignore[no-untyped-def]
+                super().__init__(si)
+                self._check = check
+
+            def checkMotion(self, s1, s2) -> bool:  # type: ignore[no-untyped-def]
+                return bool(self._check(s1, s2))
+
+        _VALIDATOR.append(EdgeValidator)
+    return _VALIDATOR[0]
 
 
 def _pair(verification: PathVerification) -> str:
