@@ -54,6 +54,7 @@ import os
 import time
 from dataclasses import dataclass
 
+import coal
 import numpy as np
 import pinocchio as pin
 
@@ -70,7 +71,7 @@ import numba
 if not numba.config.CACHE_DIR:  # numba was imported before this module set the variable
     numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
 
-__all__ = ["GAIN", "PathVerification", "PathVerifier", "lever_arms"]
+__all__ = ["CHEAP_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms"]
 
 _DISTANCE_SLACK = 1e-6  # m: GJK's distance tolerance; measured distances are reduced by it
 _EARLY = 0.25  # a pair due within this fraction of its step is measured with the others
@@ -82,6 +83,7 @@ _CLOSE = 0.02  # a step placed within this fraction short of its bound is close 
 _HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _DUE, _EARLY_AT, _DONE = range(9)
 _COLUMNS = 9
 _REVOLUTE, _PRISMATIC = 1, 2
+CHEAP_FROM = 0.01  # m: a pair whose cheap lower bound is at least this takes it, not coal's
 
 
 def lever_arms(robot: RobotModel, geometry_model: pin.GeometryModel) -> np.ndarray:
@@ -127,13 +129,14 @@ class PathVerification:
 
     Attributes:
         valid: no checked pair overlaps anywhere along the path (see the module's guarantee).
-        distance_queries: pair distances computed.
+        distance_queries: exact pair distances computed (coal).
         states: states at which forward kinematics ran.
         seconds: wall time of the verification.
         fraction: where the contact is, as ``segment + t`` (waypoint index plus the
             fraction of the next segment); None for a valid path.
         pair: the geometry names of that contact; None for a valid path.
         state: the full state vector there; None for a valid path.
+        bounds: cheap lower bounds taken instead of an exact distance (far pairs).
     """
 
     valid: bool
@@ -143,6 +146,7 @@ class PathVerification:
     fraction: float | None = None
     pair: tuple[str, str] | None = None
     state: np.ndarray | None = None
+    bounds: int = 0
 
 
 class PathVerifier:
@@ -186,8 +190,9 @@ class PathVerifier:
                 first[:, None], (len(pairs), nq))[moves[first] & ~moves[second]]
             self._owner[moves[second] & ~moves[first]] = np.broadcast_to(
                 second[:, None], (len(pairs), nq))[moves[second] & ~moves[first]]
+        self._first, self._second = first, second
         self._kinematics = _Kinematics(robot, self._geometry, levers)
-        self._below = self._kinematics.below(self._owner, levers)
+        self._below = self._kinematics.below(self._owner, first)
         self._order = self._kinematics.deepest_first()
 
     @property
@@ -217,13 +222,24 @@ class PathVerifier:
         out = np.zeros(n_pairs)
         for k in range(n_pairs):
             if kin.supported:
-                _levers_at(k, self._owner, self._pair_levers, kin.state_joint, kin.joint_kind,
-                           kin.axis, kin.geometry_radius, frames[0], frames[1], frames[2],
-                           lever_rows[k])
+                _levers_at(k, self._owner, self._pair_levers, kin.arrays, frames, lever_rows[k])
             else:
                 lever_rows[k] = self._pair_levers[k]
             out[k] = _bound(cumulative, self._pair_levers, self._below, self._order, k,
                             cumulative[0], lever_rows[k], 1.0, np.zeros(nq), np.zeros(nq))
+        return out
+
+    def lower_bounds(self, q: np.ndarray) -> np.ndarray:
+        """Per pair, the cheap lower bound on its distance (m) at state ``q`` that the
+        verifier uses for far pairs (bounding spheres; a box's exact distance to the other
+        body's bounding sphere); ``-inf`` without compiled kinematics."""
+        kin = self._kinematics
+        out = np.full(len(self._names), -np.inf)
+        if not kin.supported:
+            return out
+        frames = kin.frames(np.asarray(q, dtype=float))
+        for k in range(len(out)):
+            out[k] = _lower_bound(self._first[k], self._second[k], kin.arrays, frames)
         return out
 
     def verify(self, states: np.ndarray) -> PathVerification:
@@ -247,14 +263,20 @@ class PathVerifier:
         distances = np.zeros(n_pairs)
         q = np.zeros(nq)
         kin = self._kinematics
-        rotations, origins, centres = kin.buffers()
+        frames = kin.buffers()
+        walked = (cumulative, self._pair_levers, self._below, self._order, self._owner,
+                  self._first, self._second, walk, lever_left, lever_right)
+        # margin, slack, gain, early, cheap-from; counts: compiled states, cheap bounds
+        settings = np.array([self.margin, _DISTANCE_SLACK, GAIN, _EARLY,
+                             CHEAP_FROM if kin.supported else np.inf, 0.0, 0.0])
         queries = evaluated = 0
         model, data = self.robot.model, self._data
         geometry, geometry_data = self._geometry, self._geometry_data
         to_pin = self.robot.to_pin
         compute = pin.computeDistance
         while True:
-            count, s = _pick(walk, selected, states, q)
+            count, s = _advance(walked, kin.arrays, frames, selected, states, q, kin.supported,
+                                settings)
             if count == 0:
                 break
             pin.updateGeometryPlacements(model, data, geometry, geometry_data, to_pin(q))
@@ -262,17 +284,15 @@ class PathVerifier:
             for i in range(count):
                 distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
             queries += count
-            bad = _update(cumulative, self._pair_levers, self._below, self._order, self._owner, walk,
-                          lever_left, lever_right, selected, distances, count, s, q,
-                          kin.parent, kin.joint_kind, kin.state_index, kin.placement_rotation,
-                          kin.placement_translation, kin.axis, kin.state_joint,
-                          kin.geometry_joint, kin.geometry_centre, kin.geometry_radius,
-                          rotations, origins, centres, kin.supported, self.margin,
-                          _DISTANCE_SLACK, GAIN, _EARLY)
+            bad = _update(walked, kin.arrays, frames, selected, distances, count, s,
+                          kin.supported, settings)
             if bad >= 0:
-                return PathVerification(False, queries, evaluated, time.perf_counter() - t0,
-                                        float(s), self._names[int(selected[bad])], q.copy())
-        return PathVerification(True, queries, evaluated, time.perf_counter() - t0)
+                return PathVerification(False, queries, max(evaluated, int(settings[5])),
+                                        time.perf_counter() - t0, float(s),
+                                        self._names[int(selected[bad])], q.copy(),
+                                        int(settings[6]))
+        return PathVerification(True, queries, max(evaluated, int(settings[5])),
+                                time.perf_counter() - t0, bounds=int(settings[6]))
 
 
 class _Kinematics:
@@ -321,57 +341,59 @@ class _Kinematics:
         self.supported = supported
         count = len(geometry_model.geometryObjects)
         self.geometry_joint = np.zeros(count, dtype=np.int64)
-        self.geometry_centre = np.zeros((count, 3))
+        self.geometry_rotation = np.zeros((count, 3, 3))
+        self.geometry_translation = np.zeros((count, 3))
+        self.geometry_centre = np.zeros((count, 3))      # bounding sphere, geometry frame
         self.geometry_radius = np.zeros(count)
+        self.geometry_box = np.zeros(count, dtype=np.int64)
+        self.box_half = np.zeros((count, 3))
         for g, geometry_object in enumerate(geometry_model.geometryObjects):
             geometry = geometry_object.geometry
             geometry.computeLocalAABB()
             self.geometry_joint[g] = int(geometry_object.parentJoint)
-            self.geometry_centre[g] = geometry_object.placement.act(
-                np.asarray(geometry.aabb_center, dtype=float))
+            self.geometry_rotation[g] = geometry_object.placement.rotation
+            self.geometry_translation[g] = geometry_object.placement.translation
+            self.geometry_centre[g] = np.asarray(geometry.aabb_center, dtype=float)
             self.geometry_radius[g] = float(geometry.aabb_radius)
-        self._nq = robot.nq
+            if isinstance(geometry, coal.Box):
+                self.geometry_box[g] = 1
+                self.box_half[g] = np.asarray(geometry.halfSide, dtype=float)
+        self.arrays = (self.parent, self.joint_kind, self.state_index, self.placement_rotation,
+                       self.placement_translation, self.axis, self.state_joint,
+                       self.geometry_joint, self.geometry_rotation, self.geometry_translation,
+                       self.geometry_centre, self.geometry_radius, self.geometry_box,
+                       self.box_half)
 
-    def buffers(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Work arrays for the joint frames and the geometry centres."""
-        n = len(self.parent)
-        return np.zeros((n, 3, 3)), np.zeros((n, 3)), np.zeros((len(self.geometry_joint), 3))
+    def buffers(self) -> tuple[np.ndarray, ...]:
+        """Work arrays: joint rotations and origins, geometry rotations, origins and
+        bounding sphere centres (world)."""
+        n, count = len(self.parent), len(self.geometry_joint)
+        return (np.zeros((n, 3, 3)), np.zeros((n, 3)), np.zeros((count, 3, 3)),
+                np.zeros((count, 3)), np.zeros((count, 3)))
 
-    def frames(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """World joint rotations, joint origins and geometry centres at state ``q``."""
-        rotations, origins, centres = self.buffers()
-        _forward(np.ascontiguousarray(q, dtype=float), self.parent, self.joint_kind,
-                 self.state_index, self.placement_rotation, self.placement_translation,
-                 self.axis, self.geometry_joint, self.geometry_centre, rotations, origins,
-                 centres)
-        return rotations, origins, centres
+    def frames(self, q: np.ndarray) -> tuple[np.ndarray, ...]:
+        """The frames of :meth:`buffers` at state ``q``."""
+        frames = self.buffers()
+        _forward(np.ascontiguousarray(q, dtype=float), self.arrays, frames)
+        return frames
 
     def deepest_first(self) -> np.ndarray:
         """State joint indices, deepest in the joint tree first."""
         depth = np.array([self.depth[j] if j >= 0 else 0 for j in self.state_joint])
         return np.argsort(-depth, kind="stable").astype(np.int64)
 
-    def below(self, owner: np.ndarray, levers: np.ndarray) -> np.ndarray:
-        """``(n_pairs, nq, nq)``: 1 where joint ``i`` (column) lies between joint ``j``
-        (row, revolute) and the body whose lever arm ``j`` uses for the pair: those
-        joints move the body relative to ``j``'s axis, so ``j``'s lever arm grows by
-        at most what they contribute. All zero when the lever arms are not taken per
-        state (they are then the full-reach bounds)."""
+    def below(self, owner: np.ndarray, first: np.ndarray) -> np.ndarray:
+        """``(n_pairs, nq)``, per pair and joint: 0 if the joint does not count for the
+        pair; 1 or 2 if it moves the pair's first or second body only; 3 or 4 likewise
+        for a revolute joint whose lever arm is taken per state. The joints of the same
+        body deeper in the tree lie between such a joint and the body: they move the body
+        relative to its axis, so its lever arm grows by at most what they contribute."""
         n_pairs, nq = owner.shape
-        out = np.zeros((n_pairs, nq, nq))
-        if not self.supported:
-            return out
-        depth = np.array([self.depth[j] if j >= 0 else 0 for j in self.state_joint])
-        deeper = depth[None, :] > depth[:, None]                     # [j, i]: i deeper
-        revolute = np.array([j >= 0 and self.joint_kind[j] == _REVOLUTE
-                             for j in self.state_joint])
-        for k in range(n_pairs):
-            for j in range(nq):
-                g = owner[k, j]
-                if g < 0 or not revolute[j]:
-                    continue
-                # Both on the body's chain, i deeper: i is between j and the body.
-                out[k, j] = deeper[j] & (levers[g] > 0)
+        out = np.where(owner < 0, 0, np.where(owner == first[:, None], 1, 2)).astype(np.int64)
+        if self.supported:
+            revolute = np.array([j >= 0 and self.joint_kind[j] == _REVOLUTE
+                                 for j in self.state_joint])
+            out[(out > 0) & revolute[None, :]] += 2
         return out
 
 
@@ -380,15 +402,18 @@ _jit = numba.njit(cache=True, nogil=True, error_model="numpy")
 
 
 @_jit
-def _forward(q, parent, joint_kind, state_index, placement_rotation,  # type: ignore[no-untyped-def]
-             placement_translation, axis, geometry_joint, geometry_centre, rotations,
-             origins, centres):
-    """World frames of the joints (rotation, origin) and the geometry centres at ``q``."""
+def _forward(q, arrays, frames):  # type: ignore[no-untyped-def]
+    """World frames of the joints and the geometries, and the geometry bounding sphere
+    centres, at state ``q`` (into ``frames``)."""
+    (parent, joint_kind, state_index, placement_rotation, placement_translation, axis, _,
+     geometry_joint, geometry_rotation, geometry_translation, geometry_centre, _, _, _) = arrays
+    rotations, origins, geo_rotations, geo_origins, centres = frames
     for a in range(3):
         for b in range(3):
             rotations[0, a, b] = 1.0 if a == b else 0.0
         origins[0, a] = 0.0
     local = np.zeros((3, 3))
+    row = np.zeros(3)
     for jid in range(1, parent.shape[0]):
         p = parent[jid]
         # Parent frame times the joint's placement.
@@ -419,7 +444,6 @@ def _forward(q, parent, joint_kind, state_index, placement_rotation,  # type: ig
             local[2, 0] = z * x * t - y * s
             local[2, 1] = z * y * t + x * s
             local[2, 2] = c + z * z * t
-            row = np.zeros(3)
             for a in range(3):
                 for b in range(3):
                     total = 0.0
@@ -433,16 +457,26 @@ def _forward(q, parent, joint_kind, state_index, placement_rotation,  # type: ig
         for a in range(3):
             total = origins[jid, a]
             for b in range(3):
-                total += rotations[jid, a, b] * geometry_centre[g, b]
+                total += rotations[jid, a, b] * geometry_translation[g, b]
+                value = 0.0
+                for c in range(3):
+                    value += rotations[jid, a, c] * geometry_rotation[g, c, b]
+                geo_rotations[g, a, b] = value
+            geo_origins[g, a] = total
+        for a in range(3):
+            total = geo_origins[g, a]
+            for b in range(3):
+                total += geo_rotations[g, a, b] * geometry_centre[g, b]
             centres[g, a] = total
 
 
 @_jit
-def _levers_at(k, owner, pair_levers, state_joint, joint_kind, axis,  # type: ignore[no-untyped-def]
-               geometry_radius, rotations, origins, centres, out):
-    """Pair ``k``'s lever arms at the state of the frames given: for a revolute joint,
-    the distance from its axis to the moved body's bounding sphere centre plus the
-    radius (never more than the full-reach bound); otherwise the full-reach bound."""
+def _levers_at(k, owner, pair_levers, arrays, frames, out):  # type: ignore[no-untyped-def]
+    """Pair ``k``'s lever arms at the state of ``frames``: for a revolute joint, the
+    distance from its axis to the moved body's bounding sphere centre plus the radius
+    (never more than the full-reach bound); otherwise the full-reach bound."""
+    joint_kind, axis, state_joint, geometry_radius = arrays[1], arrays[5], arrays[6], arrays[11]
+    rotations, origins, centres = frames[0], frames[1], frames[4]
     for j in range(pair_levers.shape[1]):
         full = pair_levers[k, j]
         out[j] = full
@@ -467,6 +501,43 @@ def _levers_at(k, owner, pair_levers, state_joint, joint_kind, axis,  # type: ig
 
 
 @_jit
+def _sphere_to_box(centre, radius, box, arrays, frames):  # type: ignore[no-untyped-def]
+    """Distance from a sphere to box geometry ``box`` (negative: may overlap)."""
+    half = arrays[13]
+    geo_rotations, geo_origins = frames[2], frames[3]
+    outside = 0.0
+    for b in range(3):
+        local = 0.0
+        for a in range(3):
+            local += geo_rotations[box, a, b] * (centre[a] - geo_origins[box, a])
+        excess = abs(local) - half[box, b]
+        if excess > 0.0:
+            outside += excess * excess
+    return math.sqrt(outside) - radius
+
+
+@_jit
+def _lower_bound(a, b, arrays, frames):  # type: ignore[no-untyped-def]
+    """A lower bound on the distance of geometries ``a`` and ``b``: their bounding
+    spheres' distance, or a box's exact distance to the other's bounding sphere."""
+    radius, is_box = arrays[11], arrays[12]
+    centres = frames[4]
+    gap = 0.0
+    for i in range(3):
+        gap += (centres[a, i] - centres[b, i]) ** 2
+    best = math.sqrt(gap) - radius[a] - radius[b]
+    if is_box[b] != 0:
+        value = _sphere_to_box(centres[a], radius[a], b, arrays, frames)
+        if value > best:
+            best = value
+    if is_box[a] != 0:
+        value = _sphere_to_box(centres[b], radius[b], a, arrays, frames)
+        if value > best:
+            best = value
+    return best
+
+
+@_jit
 def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
     n = cumulative.shape[0]
     if n == 1:
@@ -488,25 +559,29 @@ def _bound(cumulative, pair_levers, below, order, k, c0, lever_row, position,  #
     is ``c0`` to ``position``, with the lever arms ``lever_row`` taken at the former
     (``c1``, ``share``: work arrays).
 
-    A joint's lever arm grows by at most how far the joints below it move the body
-    relative to its axis, which is their own contribution (deepest joints first)."""
+    A revolute joint's lever arm grows by at most how far the joints below it (same
+    body, deeper in the tree: see :meth:`_Kinematics.below`) move the body relative to
+    its axis, which is their own contribution: deepest joints first."""
     nq = cumulative.shape[1]
     _cumulative_at(cumulative, position, c1)
+    share[0] = 0.0                      # what each body's deeper joints contributed
+    share[1] = 0.0
     total = 0.0
-    for index in range(nq):             # deepest joints first
+    for index in range(nq):
         j = order[index]
-        share[j] = 0.0
+        code = below[k, j]
         moved = c1[j] - c0[j]
-        if moved <= 0.0 or pair_levers[k, j] == 0.0:
+        if code == 0 or moved <= 0.0:
             continue
+        body = (code - 1) % 2
         lever = lever_row[j]
-        for i in range(nq):
-            if below[k, j, i] != 0.0:
-                lever += share[i]
-        if lever > pair_levers[k, j]:
-            lever = pair_levers[k, j]
-        share[j] = lever * moved
-        total += share[j]
+        if code >= 3:
+            lever += share[body]
+            if lever > pair_levers[k, j]:
+                lever = pair_levers[k, j]
+        contribution = lever * moved
+        share[body] += contribution
+        total += contribution
     return total
 
 
@@ -591,78 +666,117 @@ def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
 
 
 @_jit
-def _update(cumulative, pair_levers, below, order, owner, walk, lever_left,  # type: ignore[no-untyped-def]
-            lever_right, selected, distances, count, s, q, parent, joint_kind, state_index,
-            placement_rotation, placement_translation, axis, state_joint, geometry_joint,
-            geometry_centre, geometry_radius, rotations, origins, centres, per_state,
-            margin, slack, gain, early):
-    """Take the distances measured at position ``s`` (state ``q``); schedule each pair's
-    next measurement. Returns the index (into ``selected``) of a pair in contact, or -1."""
+def _measure(walked, k, d, s, here, scratch, settings):  # type: ignore[no-untyped-def]
+    """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (lever
+    arms ``here`` there) and schedule the pair's next measurement."""
+    cumulative, pair_levers, below, order, _, _, _, walk, lever_left, lever_right = walked
+    margin, gain, early = settings[0], settings[2], settings[3]
+    c0, c1, share = scratch[0], scratch[1], scratch[2]
     nq = cumulative.shape[1]
-    if per_state:
-        _forward(q, parent, joint_kind, state_index, placement_rotation,
-                 placement_translation, axis, geometry_joint, geometry_centre, rotations,
-                 origins, centres)
-    here = np.empty(nq)
-    c0 = np.empty(nq)
-    c1 = np.empty(nq)
-    share = np.empty(nq)
     last = float(cumulative.shape[0] - 1)
+    if walk[k, _HAS_L] == 0.0:
+        extends = True
+    else:
+        _cumulative_at(cumulative, walk[k, _PL], c0)
+        moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], s, c1, share)
+        extends = moved <= max(walk[k, _DL] + d, margin)
+    if extends:                      # covered from the left: extends the stretch
+        walk[k, _HAS_L] = 1.0
+        walk[k, _PL] = s
+        walk[k, _DL] = d
+        for j in range(nq):
+            lever_left[k, j] = here[j]
+    else:                            # a gap: this one waits on the right
+        walk[k, _HAS_R] = 1.0
+        walk[k, _PR] = s
+        walk[k, _DR] = d
+        for j in range(nq):
+            lever_right[k, j] = here[j]
+    start = walk[k, _PL]
+    _cumulative_at(cumulative, start, c0)
+    if walk[k, _HAS_R] != 0.0:
+        moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k],
+                       walk[k, _PR], c1, share)
+        if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
+            walk[k, _HAS_R] = 0.0
+            walk[k, _PL] = walk[k, _PR]
+            walk[k, _DL] = walk[k, _DR]
+            for j in range(nq):
+                lever_left[k, j] = lever_right[k, j]
+            start = walk[k, _PL]
+            _cumulative_at(cumulative, start, c0)
+    d_left = walk[k, _DL]
+    if walk[k, _HAS_R] != 0.0:
+        # Fill the gap from the left: this step is covered whatever the distance there.
+        step = max(d_left, margin)
+    else:
+        if _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last,
+                  c1, share) <= d_left:
+            walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
+            return
+        step = max(d_left * (1.0 + gain), margin)
+    due = _position_for(cumulative, pair_levers, below, order, k, start, c0,
+                        lever_left[k], step, c1, share)
+    walk[k, _DUE] = due
+    walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
+
+
+@_jit
+def _levers_here(walked, k, arrays, frames, per_state, here):  # type: ignore[no-untyped-def]
+    pair_levers, owner = walked[1], walked[4]
+    if per_state:
+        _levers_at(k, owner, pair_levers, arrays, frames, here)
+    else:
+        for j in range(pair_levers.shape[1]):
+            here[j] = pair_levers[k, j]
+
+
+@_jit
+def _advance(walked, arrays, frames, selected, states, q, per_state, settings):  # type: ignore[no-untyped-def]
+    """Walk on to the next position where some pair needs an exact distance: returns
+    their count (in ``selected``) and the position (state in ``q``, its frames in
+    ``frames``); 0 when every pair is done. Pairs whose cheap lower bound is at least
+    ``settings[4]`` take it as their measurement."""
+    first, second = walked[5], walked[6]
+    nq = q.shape[0]
+    here = np.empty(nq)
+    scratch = np.empty((3, nq))
+    cheap_from = settings[4]
+    while True:
+        count, s = _pick(walked[7], selected, states, q)
+        if count == 0 or not per_state:
+            return count, s
+        _forward(q, arrays, frames)
+        settings[5] += 1.0
+        exact = 0
+        for i in range(count):
+            k = selected[i]
+            bound = _lower_bound(first[k], second[k], arrays, frames)
+            if bound >= cheap_from:
+                settings[6] += 1.0
+                _levers_here(walked, k, arrays, frames, per_state, here)
+                _measure(walked, k, bound, s, here, scratch, settings)
+            else:
+                selected[exact] = k
+                exact += 1
+        if exact > 0:
+            return exact, s
+
+
+@_jit
+def _update(walked, arrays, frames, selected, distances, count, s, per_state,  # type: ignore[no-untyped-def]
+            settings):
+    """Take the exact distances measured at position ``s`` (frames of its state in
+    ``frames``). Returns the index (into ``selected``) of a pair in contact, or -1."""
+    nq = walked[0].shape[1]
+    here = np.empty(nq)
+    scratch = np.empty((3, nq))
+    slack = settings[1]
     for i in range(count):
         k = selected[i]
         d = distances[i] - slack
         if not d > 0.0:  # also NaN
             return i
-        if per_state:
-            _levers_at(k, owner, pair_levers, state_joint, joint_kind, axis, geometry_radius,
-                       rotations, origins, centres, here)
-        else:
-            for j in range(nq):
-                here[j] = pair_levers[k, j]
-        if walk[k, _HAS_L] == 0.0:
-            extends = True
-        else:
-            _cumulative_at(cumulative, walk[k, _PL], c0)
-            moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], s,
-                           c1, share)
-            extends = moved <= max(walk[k, _DL] + d, margin)
-        if extends:                      # covered from the left: extends the stretch
-            walk[k, _HAS_L] = 1.0
-            walk[k, _PL] = s
-            walk[k, _DL] = d
-            for j in range(nq):
-                lever_left[k, j] = here[j]
-        else:                            # a gap: this one waits on the right
-            walk[k, _HAS_R] = 1.0
-            walk[k, _PR] = s
-            walk[k, _DR] = d
-            for j in range(nq):
-                lever_right[k, j] = here[j]
-        start = walk[k, _PL]
-        _cumulative_at(cumulative, start, c0)
-        if walk[k, _HAS_R] != 0.0:
-            moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k],
-                           walk[k, _PR], c1, share)
-            if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
-                walk[k, _HAS_R] = 0.0
-                walk[k, _PL] = walk[k, _PR]
-                walk[k, _DL] = walk[k, _DR]
-                for j in range(nq):
-                    lever_left[k, j] = lever_right[k, j]
-                start = walk[k, _PL]
-                _cumulative_at(cumulative, start, c0)
-        d_left = walk[k, _DL]
-        if walk[k, _HAS_R] != 0.0:
-            # Fill the gap from the left: this step is covered whatever the distance there.
-            step = max(d_left, margin)
-        else:
-            if _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last,
-                      c1, share) <= d_left:
-                walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
-                continue
-            step = max(d_left * (1.0 + gain), margin)
-        due = _position_for(cumulative, pair_levers, below, order, k, start, c0,
-                            lever_left[k], step, c1, share)
-        walk[k, _DUE] = due
-        walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
+        _levers_here(walked, k, arrays, frames, per_state, here)
+        _measure(walked, k, d, s, here, scratch, settings)
     return -1
