@@ -22,7 +22,7 @@ from taskrunner.robot.notes import LoadWarning, resolve_strict
 from taskrunner.types import Pose
 from taskrunner.yamlfile import LineDict, LineList, line_of
 
-__all__ = ["HEADER", "MessageReader", "Msg"]
+__all__ = ["HEADER", "MessageReader", "Msg", "as_bool"]
 
 HEADER = ("seq", "stamp", "frame_id")
 
@@ -117,11 +117,9 @@ class Msg:
         return value
 
     def boolean(self, key: str, default: bool = False) -> bool:
-        value = self.node.get(key, default)
-        if isinstance(value, int) and not isinstance(value, bool) and value in (0, 1):
-            return bool(value)  # ROS 1 dumps of bool fields sometimes write 0 / 1
-        if not isinstance(value, bool):
-            raise self.error(key, f"must be true or false (got {_shown(value)})")
+        value = as_bool(self.node.get(key, default))
+        if value is None:
+            raise self.error(key, f"must be true or false (got {_shown(self.node.get(key))})")
         return value
 
     def numbers(self, key: str) -> list[float]:
@@ -144,20 +142,38 @@ class Msg:
                                         f"(got {_shown(value)})", line)
         return [str(v) for v in items]
 
+    def _tuple(self, key: str, size: int) -> tuple[float, ...] | None:
+        """A ``[x, y, z(, w)]`` list (robowflex / MotionBenchMaker writes points and
+        quaternions so), or None when the field is a mapping or absent."""
+        value = self.node.get(key)
+        if not isinstance(value, LineList):
+            return None
+        numbers = self.numbers(key)
+        if len(numbers) != size:
+            raise self.error(key, f"must be {size} numbers {'[x, y, z, w]' if size == 4 else '[x, y, z]'} "
+                                  f"or a mapping (got {len(numbers)} values)")
+        return tuple(numbers)
+
     def vector3(self, key: str) -> tuple[float, float, float]:
-        """A geometry_msgs Vector3 / Point (x, y, z; missing components are 0)."""
+        """A geometry_msgs Vector3 / Point: ``{x, y, z}`` (missing components are 0) or
+        ``[x, y, z]``."""
+        listed = self._tuple(key, 3)
+        if listed is not None:
+            return (listed[0], listed[1], listed[2])
         sub = self.msg(key, ("x", "y", "z"))
         return (0.0, 0.0, 0.0) if sub is None else sub.point()
 
     def quaternion(self, key: str) -> tuple[float, float, float, float]:
-        """A geometry_msgs Quaternion (x, y, z, w): unit length within 1e-3, else an error.
-
-        An absent quaternion is the identity (as ROS defaults it, w = 1 is assumed only
-        when the whole field is missing; all four zero is an error)."""
-        sub = self.msg(key, ("x", "y", "z", "w"))
-        if sub is None:
-            return (0.0, 0.0, 0.0, 1.0)
-        quat = (sub.number("x"), sub.number("y"), sub.number("z"), sub.number("w"))
+        """A geometry_msgs Quaternion ``{x, y, z, w}`` or ``[x, y, z, w]``: unit length
+        within 1e-3, else an error. An absent quaternion is the identity."""
+        listed = self._tuple(key, 4)
+        if listed is not None:
+            quat = (listed[0], listed[1], listed[2], listed[3])
+        else:
+            sub = self.msg(key, ("x", "y", "z", "w"))
+            if sub is None:
+                return (0.0, 0.0, 0.0, 1.0)
+            quat = (sub.number("x"), sub.number("y"), sub.number("z"), sub.number("w"))
         norm = math.sqrt(sum(v * v for v in quat))
         if abs(norm - 1.0) > 1e-3:
             raise self.error(key, f"must be a unit quaternion x, y, z, w (got {quat}, norm {norm:.4g})")
@@ -183,6 +199,18 @@ class Msg:
         if header is None:
             return ""
         return header.string("frame_id").lstrip("/")
+
+
+def as_bool(value: Any) -> bool | None:
+    """A bool field's value: true / false, 0 / 1 (some ROS 1 dumps), ``"true"`` /
+    ``"false"`` (robowflex writes strings); None for anything else."""
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, int) and value in (0, 1):
+        return bool(value)
+    if isinstance(value, str) and value.lower() in ("true", "false"):
+        return value.lower() == "true"
+    return None
 
 
 class MessageReader:

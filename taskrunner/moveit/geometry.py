@@ -28,6 +28,7 @@ import numpy as np
 
 from taskrunner.moveit.fields import Msg
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.yamlfile import LineList, line_of
 
 __all__ = ["CONE_SIDES", "PRIMITIVE_TYPES", "mesh_folder", "read_mesh", "read_primitive",
            "triangle_mesh_file"]
@@ -108,26 +109,73 @@ def _ros2_byte(text: str) -> int | None:
 
 
 def read_mesh(msg: Msg) -> Mesh:
-    """A ``shape_msgs/Mesh`` (vertices: points; triangles: ``vertex_indices``) as a mesh.
+    """A ``shape_msgs/Mesh`` (``vertices``: points, ``triangles``: ``vertex_indices``) as a
+    mesh; also robowflex's forms: ``[x, y, z]`` vertices, ``[a, b, c]`` triangles, and
+    ``resource`` (a mesh file: ``package://``, ``file://`` or a path relative to the
+    file) scaled by ``dimensions``.
 
     Raises:
-        InputError: no triangles, an index outside the vertices, a non-finite vertex.
+        InputError: no triangles, an index outside the vertices, a non-finite vertex, a
+            resource that cannot be found.
     """
-    vertices = [v.point() for v in msg.msgs("vertices", ("x", "y", "z"))]
-    triangles = []
-    items = msg.msgs("triangles", ("vertex_indices",))
+    if msg.has("resource"):
+        return _resource_mesh(msg)
+    vertices = [_point(msg, "vertices", i, v) for i, v in enumerate(msg.seq("vertices"))]
+    items = msg.seq("triangles")
     if not items:
         raise msg.error("triangles", "must list at least one triangle")
     if len(items) > _MAX_TRIANGLES:
         raise msg.error("triangles", f"must have at most {_MAX_TRIANGLES} triangles (got {len(items)})")
-    for triangle in items:
-        raw = triangle.seq("vertex_indices")
+    triangles = []
+    for index, item in enumerate(items):
+        line = line_of(items, index) or msg.line_of("triangles")
+        where = f"{msg.field('triangles')}[{index}]"
+        if isinstance(item, LineList):
+            raw, name = list(item), where
+        else:
+            triangle = msg.reader.msg(item, where, ("vertex_indices",), line)
+            raw, name = list(triangle.seq("vertex_indices")), f"{where}.vertex_indices"
+            line = triangle.line_of("vertex_indices") or line
         if (len(raw) != 3 or any(isinstance(i, bool) or not isinstance(i, int) for i in raw)
                 or not all(0 <= i < len(vertices) for i in raw)):
-            raise triangle.error("vertex_indices", f"must be 3 indices of 'vertices' "
-                                                   f"(0 to {len(vertices) - 1}) (got {list(raw)})")
+            raise msg.reader.error(f"'{name}' must be 3 indices of 'vertices' (0 to "
+                                   f"{len(vertices) - 1}) (got {raw})", line)
         triangles.append((int(raw[0]), int(raw[1]), int(raw[2])))
     return Mesh(triangle_mesh_file(np.array(vertices, dtype=float), np.array(triangles, dtype=int)))
+
+
+def _point(msg: Msg, key: str, index: int, item: object) -> tuple[float, float, float]:
+    items = msg.seq(key)
+    line = line_of(items, index) or msg.line_of(key)
+    where = f"{msg.field(key)}[{index}]"
+    if isinstance(item, LineList):
+        if len(item) != 3 or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                     and math.isfinite(v) for v in item):
+            raise msg.reader.error(f"'{where}' must be 3 finite numbers [x, y, z] (got {list(item)})",
+                                   line)
+        return (float(item[0]), float(item[1]), float(item[2]))
+    return msg.reader.msg(item, where, ("x", "y", "z"), line).point()
+
+
+def _resource_mesh(msg: Msg) -> Mesh:
+    from taskrunner.errors import RobotDescriptionError
+    from taskrunner.robot.packages import default_package_map
+
+    resource = msg.string("resource")
+    base = msg.reader.path.parent if msg.reader.path is not None else Path.cwd()
+    try:
+        path = default_package_map(base).resolve(resource, base)
+    except RobotDescriptionError as exc:
+        raise msg.error("resource", f"cannot be found: {exc.reason}") from None
+    if not path.is_file():
+        raise msg.error("resource", f"names a mesh file that does not exist ({path})")
+    scale = (1.0, 1.0, 1.0)
+    if msg.has("dimensions"):
+        values = msg.numbers("dimensions")
+        if len(values) != 3 or not all(v > 0 for v in values):
+            raise msg.error("dimensions", f"must be 3 positive scale factors (got {values})")
+        scale = (values[0], values[1], values[2])
+    return Mesh(path, scale)
 
 
 def _cone(height: float, radius: float) -> tuple[np.ndarray, np.ndarray]:

@@ -38,7 +38,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import InputError, SceneError, UnknownNameError
-from taskrunner.moveit.fields import MessageReader, Msg
+from taskrunner.moveit.fields import MessageReader, Msg, as_bool
 from taskrunner.moveit.geometry import read_mesh, read_primitive
 from taskrunner.moveit.names import AmbiguousName, NameMap
 from taskrunner.robot.model import RobotModel
@@ -46,7 +46,7 @@ from taskrunner.robot.notes import LoadWarning
 from taskrunner.scene import Scene
 from taskrunner.shapes import Shape
 from taskrunner.types import Pose
-from taskrunner.yamlfile import LineDict, YamlLimits, load_yaml
+from taskrunner.yamlfile import LineDict, LineList, YamlLimits, line_of, load_yaml
 
 __all__ = ["ObjectEdit", "PlanningSceneFile", "RobotStateData", "apply_scene_file",
            "load_planning_scene",
@@ -149,7 +149,7 @@ def read_collision_object(msg: Msg, names: NameMap, attach_to: str | None = None
     for shapes_key, poses_key, reader in (("primitives", "primitive_poses", read_primitive),
                                           ("meshes", "mesh_poses", read_mesh)):
         known = ("type", "dimensions", "polygon") if shapes_key == "primitives" else (
-            "triangles", "vertices")
+            "triangles", "vertices", "resource", "dimensions")
         shapes = msg.msgs(shapes_key, known)
         poses = msg.msgs(poses_key, POSE_FIELDS)
         if len(poses) != len(shapes) and not (operation in ("REMOVE", "MOVE") and not shapes):
@@ -496,29 +496,41 @@ def _read_acm(msg: Msg | None) -> tuple[tuple[_Entry, ...], tuple[_Entry, ...]]:
     if msg is None:
         return (), ()
     names = msg.strings("entry_names")
-    rows = msg.msgs("entry_values", ("enabled",))
+    rows = []  # {enabled: [...]} as ROS writes it, or the bare list robowflex writes
+    listed = msg.seq("entry_values")
+    for index, item in enumerate(listed):
+        line = line_of(listed, index) or msg.line_of("entry_values")
+        if isinstance(item, LineList):
+            rows.append((list(item), line))
+        else:
+            row = msg.reader.msg(item, f"{msg.field('entry_values')}[{index}]", ("enabled",), line)
+            rows.append((list(row.seq("enabled")), line))
     if len(rows) != len(names):
         raise msg.error("entry_values", f"must have one row per entry name ({len(names)}) "
                                         f"(got {len(rows)})")
     entries = []
-    for i, row in enumerate(rows):
-        enabled = row.seq("enabled")
-        if len(enabled) != len(names):
-            raise row.error("enabled", f"must have one value per entry name ({len(names)}) "
-                                       f"(got {len(enabled)})")
+    for i, (row, line) in enumerate(rows):
+        if len(row) != len(names):
+            raise msg.reader.error(f"'{msg.field('entry_values')}[{i}]' must have one value per "
+                                   f"entry name ({len(names)}) (got {len(row)})", line)
         for j in range(i + 1, len(names)):
-            value = enabled[j]
-            if value not in (True, False, 0, 1):
-                raise row.error("enabled", f"must be true or false values (got {value!r})")
-            entries.append(_Entry(names[i], names[j], bool(value), row.line))
+            value = as_bool(row[j])
+            if value is None:
+                raise msg.reader.error(f"'{msg.field('entry_values')}[{i}]' must hold true or "
+                                       f"false values (got {row[j]!r})", line)
+            entries.append(_Entry(names[i], names[j], value, line))
     defaults = msg.strings("default_entry_names")
     values = msg.seq("default_entry_values")
     if len(values) != len(defaults):
         raise msg.error("default_entry_values", f"must have one value per default entry name "
                                                 f"({len(defaults)}) (got {len(values)})")
-    default_entries = tuple(_Entry(n, "", bool(v), msg.line_of("default_entry_values"))
-                            for n, v in zip(defaults, values))
-    return tuple(entries), default_entries
+    default_entries = []
+    for name, raw in zip(defaults, values):
+        value = as_bool(raw)
+        if value is None:
+            raise msg.error("default_entry_values", f"must hold true or false values (got {raw!r})")
+        default_entries.append(_Entry(name, "", value, msg.line_of("default_entry_values")))
+    return tuple(entries), tuple(default_entries)
 
 
 def _check_unused(msg: Msg) -> None:

@@ -224,3 +224,20 @@ def test_cone_mesh_covers_the_cone(panda, tmp_path: Path) -> None:
         cross = edges[:, 0] * (point[1] - rim[:, 1]) - edges[:, 1] * (point[0] - rim[:, 0])
         assert np.all(cross >= -1e-12)
     assert triangles.shape == (64, 3)
+
+
+def test_robowflex_form_of_motionbenchmaker_files_is_read(panda) -> None:
+    scene = scene_from_cell(panda)
+    loaded = load_planning_scene(FIXTURES / "robowflex_scene.yaml", panda.model, strict=True)
+    assert loaded.is_diff
+    assert loaded.apply(scene) == ["Can1", "side_cap", "rock", "shard"]
+    assert np.allclose(scene.object_pose("Can1").xyz, (0.45, 0.35, 0.07))  # moved
+    assert np.allclose(scene.object_pose("side_cap").xyz, (0.6, -0.3, 0.3))
+    rock = scene.object("rock").shape
+    assert isinstance(rock, Mesh) and rock.path == FIXTURES / "tetra.stl" and rock.scale == (0.1,) * 3
+    assert isinstance(scene.object("shard").shape, Mesh)
+    assert scene.collision_allowed("Can1", "panda_hand")
+    request = load_motion_plan_request(FIXTURES / "robowflex_request.yaml", panda.model, strict=True)
+    assert request.options.planning_time == 10 and request.velocity_scaling == 0.8
+    report = plan_request_file(scene, request, seed=0)
+    assert report.success, report.message
