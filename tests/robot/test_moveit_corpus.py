@@ -165,3 +165,31 @@ def test_gripper_pose_listing_a_mimic_joint_runs_on_mock(tmp_path):
                     "  - gripper: {arm: arm, action: open}\n"
                     "  - go: {group: arm, to: ready}\n")
     assert run_task(task).status == "succeeded"
+
+
+@pytest.mark.parametrize("config", sorted(p.name for p in SRC.glob("*_moveit_config")))
+def test_every_config_plans_between_every_pair_of_its_collision_free_named_poses(config):
+    import itertools
+
+    from taskrunner.planning.planner import MotionPlanner
+    from taskrunner.planning.request import NamedGoal, PlannerOptions, PlanRequest
+    from taskrunner.scene import scene_from_cell
+
+    cell = load_cell_or_robot(SRC / config)
+    model, scene = cell.model, scene_from_cell(cell)
+    planner = MotionPlanner(scene)
+    start = cell.start_state()
+    planned = 0
+    for group, poses in model.named_states.items():
+        aliases = model.pose_aliases.get(group, {})
+        states = {n: model.state_with(start, model.named_state(group, n))
+                  for n in poses if n not in aliases}
+        free = [n for n, q in states.items() if not scene.in_collision(q)]
+        for a, b in itertools.permutations(free, 2):
+            result = planner.plan(PlanRequest(group, NamedGoal(b), start=states[a],
+                                              options=PlannerOptions(seed=0)))
+            end = dict(zip(result.path.names, result.path.waypoints[-1]))
+            for joint, value in model.named_state(group, b).as_dict().items():
+                assert end[joint] == pytest.approx(value, abs=1e-6), (a, b, joint)
+            planned += 1
+    assert planned >= 2  # every config has an arm pose and two hand poses at least
