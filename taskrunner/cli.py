@@ -49,7 +49,9 @@ from taskrunner.errors import (
 )
 
 if TYPE_CHECKING:
+    from taskrunner.kinematics import IkSolver
     from taskrunner.runtime.prestart import EarlyWorker
+    from taskrunner.scene import Scene
 
 __all__ = ["main"]
 
@@ -168,6 +170,37 @@ def cmd_plan(args: argparse.Namespace) -> int:
     return EXIT_OK if report.success else EXIT_PLANNING
 
 
+def _demo_below_surface(scene: Scene, solver: IkSolver, target: np.ndarray,
+                        seed_q: np.ndarray) -> None:
+    """The demo's collision example: IK to 2 cm below the surface under ``target`` (found
+    by lowering a probe onto it), and what that pose hits."""
+    from taskrunner.errors import IkFailedError
+    from taskrunner.kinematics import IkOptions
+    from taskrunner.shapes import Sphere
+    from taskrunner.types import Pose
+
+    probe = "__demo_probe__"
+    scene.add_object(probe, Sphere(0.001), Pose(xyz=tuple(float(v) for v in target)))
+    try:
+        support = scene.support(probe)
+    finally:
+        scene.remove_object(probe)
+    if support.below is None:
+        print("nothing below the target within 1 m: no surface to reach into")
+        return
+    surface = float(target[2]) - support.gap - 0.001
+    below = np.array([target[0], target[1], surface - 0.02])
+    try:
+        sunk = solver.solve(below, seed_q=seed_q, options=IkOptions(position_only=True))
+    except IkFailedError:
+        print(f"2 cm below the top of {support.below!r}: out of reach")
+        return
+    hits = scene.collisions(sunk.q)
+    pairs = ", ".join(f"{c.a}–{c.b} ({1e3 * c.depth:.1f} mm deep)" for c in hits[:3])
+    print(f"IK 2 cm below the top of {support.below!r}: reachable, "
+          + (f"but in collision: {pairs}" if hits else "and (unexpectedly) collision-free"))
+
+
 def cmd_demo(args: argparse.Namespace) -> int:
     from taskrunner.kinematics import IkOptions, IkSolver, frame_pose
     from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
@@ -213,11 +246,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     print(f"  chose {_fmt(solution.joint_state.positions)} rad, error "
           f"{1e3 * solution.position_error:.4f} mm")
 
-    below = base.act(np.array([args.target[0], args.target[1], -0.02]))
-    sunk = solver.solve(below, seed_q=solution.q, options=IkOptions(position_only=True))
-    pairs = ", ".join(f"{c.a}–{c.b} ({1e3 * c.depth:.1f} mm deep)"
-                      for c in scene.collisions(sunk.q)[:3])
-    print(f"IK 2 cm below the table top: reachable, but in collision: {pairs}")
+    _demo_below_surface(scene, solver, target, solution.q)
 
     planner = MotionPlanner(scene)
     request = PlanRequest(arm.name, JointGoal(solution.joint_state.as_dict()),
