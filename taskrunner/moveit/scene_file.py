@@ -33,6 +33,7 @@ import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pinocchio as pin
@@ -496,15 +497,15 @@ def _read_acm(msg: Msg | None) -> tuple[tuple[_Entry, ...], tuple[_Entry, ...]]:
     if msg is None:
         return (), ()
     names = msg.strings("entry_names")
-    rows = []  # {enabled: [...]} as ROS writes it, or the bare list robowflex writes
+    rows: list[tuple[list[Any], int | None]] = []  # {enabled: [...]} (ROS), or a bare list (robowflex)
     listed = msg.seq("entry_values")
     for index, item in enumerate(listed):
         line = line_of(listed, index) or msg.line_of("entry_values")
         if isinstance(item, LineList):
             rows.append((list(item), line))
         else:
-            row = msg.reader.msg(item, f"{msg.field('entry_values')}[{index}]", ("enabled",), line)
-            rows.append((list(row.seq("enabled")), line))
+            entry = msg.reader.msg(item, f"{msg.field('entry_values')}[{index}]", ("enabled",), line)
+            rows.append((list(entry.seq("enabled")), line))
     if len(rows) != len(names):
         raise msg.error("entry_values", f"must have one row per entry name ({len(names)}) "
                                         f"(got {len(rows)})")
