@@ -121,8 +121,10 @@ def apply_taught(cell: Cell, poses: TaughtPoses | None = None) -> list[TaughtPos
     for pose in poses.of(cell.path):
         own = cell.model.named_states.get(pose.group, {})
         if pose.name in own or not fits(cell, pose):
-            log.warning("taught pose %r of group %r no longer fits cell %s: skipped",
-                        pose.name, pose.group, cell.path)
+            message = (f"taught pose {pose.name!r} of group {pose.group!r} no longer fits "
+                       f"cell {cell.path}: skipped")
+            log.warning("%s", message)
+            cell.model.warnings.append(message)  # run-task info lists every load warning
             continue
         cell.model.named_states.setdefault(pose.group, {})[pose.name] = dict(pose.joints)
         added.append(pose)
