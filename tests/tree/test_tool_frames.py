@@ -11,11 +11,13 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
+from taskrunner.cli import EXIT_OK, main
 from taskrunner.errors import RobotDescriptionError, SceneError, TaskSpecError, YamlError
 from taskrunner.kinematics import frame_pose
 from taskrunner.robot.cell import load_cell, load_cell_or_robot
 from taskrunner.robot.tools import Tool
 from taskrunner.shapes import Box
+from taskrunner.tree.check import check_task
 from taskrunner.tree.context import resolve_arm
 from taskrunner.tree.grasps import release_poses, releases_with_grasp
 from taskrunner.types import Pose
@@ -190,3 +192,30 @@ def test_a_top_release_of_an_object_held_from_the_side_is_refused():
     poses = [p for p in release_poses(target, grip, cube)]
     with pytest.raises(SceneError, match="cannot be put down with a 'top' grasp"):
         releases_with_grasp(poses, target, "top", "cube")
+
+
+def test_info_lists_each_arms_tool_frame(capsys):
+    assert main(["info", str(DUO_CELL)]) == EXIT_OK
+    out = capsys.readouterr().out
+    assert "tools (TCP: the tool frame's origin; y closes, z approaches):" in out
+    assert ("  left_arm (end effector left_hand): tool frame left_hand_tcp on left_flange at "
+            "xyz [+0.0000, +0.0000, +0.0750]") in out
+    assert "closes along +x, approaches along +z of right_flange" in out
+    assert "gripper right_gripper: open open, closed close (derived from the fingers'" in out
+
+
+def test_a_pick_with_a_gripper_that_has_no_open_pose_is_refused_at_its_line(tmp_path):
+    cell = _duo_cell(tmp_path, "")
+    srdf = tmp_path / "fixtures" / "moveit" / "src" / "duo_moveit_config" / "config" / "duo.srdf"
+    srdf.write_text(srdf.read_text().replace('name="open"', 'name="release"'))
+    cell.write_text(cell.read_text().replace(", left_gripper: open, right_gripper: open", ""))
+    task = cell.parent / "task.yaml"
+    task.write_text("task: t\ncell: cell.yaml\n"
+                    "objects:\n  - {name: cube, shape: box, size: [0.04, 0.04, 0.04], "
+                    "pose: {xyz: [0.32, 0.22, 0.7705]}}\n"
+                    "steps:\n  - pick: {arm: left_arm, object: cube}\n")
+    report = check_task(task)
+    assert [(p.line, p.message) for p in report.problems] == [(
+        6, "gripper group 'left_gripper' of arm 'left_arm' has no open pose (looked for "
+           "'open' or 'opened'; its poses: close, release): name it as 'end_effectors: "
+           "{left_hand: {open: POSE}}' in robot.yaml or on the robot in the cell")]
