@@ -711,6 +711,9 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--data-dir", "--state-dir", dest="data_dir", default=None,
                        help="where the server keeps its data, the run database "
                             "(TASKRUNNER_DATA_DIR, else state/)")
+    serve.add_argument("--collision", choices=("exact", "convex", "auto"), default=None,
+                       help="link geometry of every robot the server loads (default: each "
+                            "robot's own choice: its cell's or robot.yaml's collision:, else auto)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
                        help="plan in a worker process per run (default) or in-process")
     serve.add_argument("--log-level", default="info", help="uvicorn's log level (info)",
