@@ -25,6 +25,7 @@ from taskrunner.yamlfile import LineDict, LineList, line_of
 __all__ = ["HEADER", "MessageReader", "Msg", "as_bool"]
 
 HEADER = ("seq", "stamp", "frame_id")
+MAX_COORDINATE = 1e4  # m: points and offsets beyond this are mistakes
 
 
 def _shown(value: Any) -> str:
@@ -159,6 +160,9 @@ class Msg:
         ``[x, y, z]``."""
         listed = self._tuple(key, 3)
         if listed is not None:
+            if max(abs(v) for v in listed) > MAX_COORDINATE:
+                raise self.error(key, f"must be within {MAX_COORDINATE:g} m of the origin "
+                                      f"(got {list(listed)})")
             return (listed[0], listed[1], listed[2])
         sub = self.msg(key, ("x", "y", "z"))
         return (0.0, 0.0, 0.0) if sub is None else sub.point()
@@ -187,8 +191,11 @@ class Msg:
         return sub.as_pose(frame)
 
     def point(self) -> tuple[float, float, float]:
-        """This message as a Point / Vector3 (x, y, z)."""
-        return (self.number("x"), self.number("y"), self.number("z"))
+        """This message as a Point / Vector3 (x, y, z), each within ±:data:`MAX_COORDINATE`."""
+        values = (self.number("x"), self.number("y"), self.number("z"))
+        if max(abs(v) for v in values) > MAX_COORDINATE:
+            raise self.error(None, f"must be within {MAX_COORDINATE:g} m of the origin (got {values})")
+        return values
 
     def as_pose(self, frame: str) -> Pose:
         return Pose(self.vector3("position"), self.quaternion("orientation"), frame)

@@ -36,6 +36,7 @@ __all__ = ["CONE_SIDES", "PRIMITIVE_TYPES", "mesh_folder", "read_mesh", "read_pr
 PRIMITIVE_TYPES = {1: "BOX", 2: "SPHERE", 3: "CYLINDER", 4: "CONE", 5: "PRISM"}
 _DIMENSIONS = {1: ("x", "y", "z"), 2: ("radius",), 3: ("height", "radius"), 4: ("height", "radius")}
 CONE_SIDES = 32
+MAX_LENGTH = 1e4  # m: a size or coordinate beyond this is a mistake (and overflows an STL)
 _MAX_TRIANGLES = 200_000
 MESH_FOLDER_ENV = "TASKRUNNER_MESH_CACHE"
 
@@ -70,10 +71,10 @@ def read_primitive(msg: Msg) -> Shape:
         raise msg.error("type", "5 (PRISM) is not supported: write the prism as a mesh")
     dims = msg.numbers("dimensions")
     names = _DIMENSIONS[kind]
-    if len(dims) != len(names) or not all(d > 0 for d in dims):
+    if len(dims) != len(names) or not all(0 < d <= MAX_LENGTH for d in dims):
         raise msg.error("dimensions", f"must be {len(names)} positive lengths "
-                                      f"[{', '.join(names)}] (m) for a {PRIMITIVE_TYPES[kind]} "
-                                      f"(got {dims})")
+                                      f"[{', '.join(names)}] (m, at most {MAX_LENGTH:g}) for a "
+                                      f"{PRIMITIVE_TYPES[kind]} (got {dims})")
     if kind == 1:
         return Box((dims[0], dims[1], dims[2]))
     if kind == 2:
@@ -153,8 +154,13 @@ def _point(msg: Msg, key: str, index: int, item: object) -> tuple[float, float, 
                                      and math.isfinite(v) for v in item):
             raise msg.reader.error(f"'{where}' must be 3 finite numbers [x, y, z] (got {list(item)})",
                                    line)
-        return (float(item[0]), float(item[1]), float(item[2]))
-    return msg.reader.msg(item, where, ("x", "y", "z"), line).point()
+        point = (float(item[0]), float(item[1]), float(item[2]))
+    else:
+        point = msg.reader.msg(item, where, ("x", "y", "z"), line).point()
+    if max(abs(v) for v in point) > MAX_LENGTH:
+        raise msg.reader.error(f"'{where}' must be within {MAX_LENGTH:g} m of the origin "
+                               f"(got {point})", line)
+    return point
 
 
 def _resource_mesh(msg: Msg) -> Mesh:
@@ -172,7 +178,7 @@ def _resource_mesh(msg: Msg) -> Mesh:
     scale = (1.0, 1.0, 1.0)
     if msg.has("dimensions"):
         values = msg.numbers("dimensions")
-        if len(values) != 3 or not all(v > 0 for v in values):
+        if len(values) != 3 or not all(0 < v <= MAX_LENGTH for v in values):
             raise msg.error("dimensions", f"must be 3 positive scale factors (got {values})")
         scale = (values[0], values[1], values[2])
     return Mesh(path, scale)
