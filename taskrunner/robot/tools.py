@@ -48,7 +48,7 @@ from typing import Annotated, Any, Literal
 
 import numpy as np
 import pinocchio as pin
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from taskrunner.errors import RobotDescriptionError, YamlError
 from taskrunner.robot.model import RobotModel
@@ -122,22 +122,32 @@ class _Table(_Strict):
 
 @dataclass(frozen=True)
 class DeclaredTool:
-    """Settings of one end effector as a file declares them, with where.
+    """Settings of one end effector as files declare them, with where.
 
     Attributes:
-        fields: the fields given (later declarations replace these only).
-        lines: line of each given field, and of the entry under ``""``.
+        settings: the fields given (``settings.model_fields_set``).
+        sources: the file and line of each given field, and of the entry under ``""``
+            (a cell's fields over a manifest's keep their own files).
     """
 
     settings: EndEffectorSettings
-    path: Path | None = None
-    lines: Mapping[str, int | None] = field(default_factory=dict)
+    sources: Mapping[str, tuple[Path | None, int | None]] = field(default_factory=dict)
+
+    def source(self, key: str = "") -> tuple[Path | None, int | None]:
+        """File and line of field ``key`` (else of the entry)."""
+        return self.sources.get(key, self.sources.get("", (None, None)))
+
+    def error(self, key: str, message: str) -> YamlError:
+        """A located error about field ``key`` (``""``: the entry)."""
+        path, line = self.source(key)
+        return YamlError(message, path, line)
 
     def where(self, key: str = "") -> str:
-        line = self.lines.get(key, self.lines.get(""))
-        if self.path is None:
-            return ""
-        return f"{self.path}:{line}: " if line else f"{self.path}: "
+        """``path:line`` of field ``key`` (else of the entry)."""
+        path, line = self.source(key)
+        if path is None:
+            return "(no file)"
+        return f"{path}:{line}" if line else str(path)
 
 
 def read_end_effector_settings(node: Any, path: Path | None) -> dict[str, DeclaredTool]:
@@ -152,16 +162,20 @@ def read_end_effector_settings(node: Any, path: Path | None) -> dict[str, Declar
     out = {}
     for name, settings in table.end_effectors.items():
         entry = node.get(name) if isinstance(node, dict) else None
-        lines: dict[str, int | None] = {"": line_of(node, name)}
+        sources = {"": (path, line_of(node, name))}
         for key in settings.model_fields_set:
-            lines[key] = line_of(entry, key) if entry is not None else lines[""]
-        out[name] = DeclaredTool(settings, path, lines)
+            sources[key] = (path, line_of(entry, key) if entry is not None else sources[""][1])
+        out[name] = DeclaredTool(settings, sources)
     return out
 
 
 def merge_declared(base: Mapping[str, DeclaredTool], over: Mapping[str, DeclaredTool]
                    ) -> dict[str, DeclaredTool]:
-    """``base`` with ``over``'s given fields replacing its own (a cell over a manifest)."""
+    """``base`` with ``over``'s given fields replacing its own (a cell over a manifest).
+
+    Raises:
+        YamlError: the merged settings disagree (a closing axis along the approach axis).
+    """
     out = dict(base)
     for name, later in over.items():
         earlier = out.get(name)
@@ -172,11 +186,15 @@ def merge_declared(base: Mapping[str, DeclaredTool], over: Mapping[str, Declared
         values = {k: getattr(earlier.settings, k) for k in earlier.settings.model_fields_set
                   if k not in given}
         values.update({k: getattr(later.settings, k) for k in given})
-        lines = {k: v for k, v in earlier.lines.items() if k not in given}
-        # A field keeps the file it came from only through its message's text: the later
-        # file is named for the entry (its fields override).
-        lines.update(later.lines)
-        out[name] = DeclaredTool(EndEffectorSettings(**values), later.path, lines)
+        sources = {k: v for k, v in earlier.sources.items() if k not in given}
+        sources.update(later.sources)
+        try:
+            merged = EndEffectorSettings(**values)
+        except ValidationError as exc:
+            reason = exc.errors(include_url=False)[0].get("ctx", {}).get("error", exc)
+            raise later.error("", f"end_effectors.{name}: {reason} (with the robot's own "
+                                  f"declaration at {earlier.where()})") from None
+        out[name] = DeclaredTool(merged, sources)
     return out
 
 
@@ -266,9 +284,8 @@ def install_tools(model: RobotModel, declared: Mapping[str, DeclaredTool] | None
     declared = dict(declared or {})
     for name, entry in declared.items():
         if name not in model.end_effectors:
-            raise YamlError(f"end_effectors: {name!r} is not an end effector (end effectors: "
-                            f"{', '.join(model.end_effectors) or 'none'})", entry.path,
-                            entry.lines.get(""))
+            raise entry.error("", f"end_effectors: {name!r} is not an end effector (end "
+                                  f"effectors: {', '.join(model.end_effectors) or 'none'})")
     tools: dict[str, Tool] = {}
     for group in model.groups.values():
         if not group.end_effector or not group.tip_link:
@@ -289,17 +306,17 @@ def _resolve(model: RobotModel, arm: str, eef_name: str, entry: DeclaredTool | N
     if given & {"link", "tcp_offset", "closing_axis", "approach_axis"}:
         assert entry is not None
         if settings.link is not None:
-            link = settings.link if model.has_link(settings.link) else prefix + settings.link
+            link = prefix + settings.link  # the robot's own name, placed with its prefix
             if not model.has_link(link):
-                raise YamlError(f"end_effectors.{eef_name}.link: {settings.link!r} is not a "
-                                "link of the robot", entry.path, entry.lines.get("link"))
+                raise entry.error("link", f"end_effectors.{eef_name}.link: {settings.link!r} "
+                                          "is not a link of the robot")
         tcp = settings.tcp_offset.se3() if settings.tcp_offset else pin.SE3.Identity()
         closing = axis_vector(settings.closing_axis) if settings.closing_axis is not None \
             else np.array([0.0, 1.0, 0.0])
         approach = axis_vector(settings.approach_axis) if settings.approach_axis is not None \
             else np.array([0.0, 0.0, 1.0])
         offset = tcp * pin.SE3(_axes(closing, approach), np.zeros(3))
-        origin = f"declared at {entry.where().rstrip(': ')}"
+        origin = f"declared at {entry.where()}"
     elif model.has_link(prefix + "tool0"):
         link, origin = prefix + "tool0", f"the robot's {prefix}tool0 link"
     else:
@@ -325,12 +342,12 @@ def _pose(declared: str | None, spellings: tuple[str, ...], names: list[str],
     if declared is not None:
         assert entry is not None
         if gripper is None:
-            raise YamlError(f"end_effectors.{eef}.{key}: end effector {eef!r} has no gripper "
-                            "group (its group is the arm)", entry.path, entry.lines.get(key))
+            raise entry.error(key, f"end_effectors.{eef}.{key}: end effector {eef!r} has no "
+                                   "gripper group (its group is the arm)")
         if declared not in names:
-            raise YamlError(f"end_effectors.{eef}.{key}: {declared!r} is not a named pose of "
-                            f"gripper group {gripper!r} (poses: {', '.join(names) or 'none'})",
-                            entry.path, entry.lines.get(key))
+            raise entry.error(key, f"end_effectors.{eef}.{key}: {declared!r} is not a named "
+                                   f"pose of gripper group {gripper!r} (poses: "
+                                   f"{', '.join(names) or 'none'})")
         return declared
     return next((s for s in spellings if s in names), None)
 

@@ -219,3 +219,29 @@ def test_a_pick_with_a_gripper_that_has_no_open_pose_is_refused_at_its_line(tmp_
         6, "gripper group 'left_gripper' of arm 'left_arm' has no open pose (looked for "
            "'open' or 'opened'; its poses: close, release): name it as 'end_effectors: "
            "{left_hand: {open: POSE}}' in robot.yaml or on the robot in the cell")]
+
+
+def test_a_cell_over_a_manifest_reports_each_field_in_its_own_file(tmp_path):
+    package = tmp_path / "src"
+    shutil.copytree(SRC, package)
+    manifest = package / "robot.yaml"
+    manifest.write_text(
+        "urdf: package://duo_description/urdf/duo.urdf.xacro\n"
+        "srdf: package://duo_moveit_config/config/duo.srdf\n"
+        "end_effectors:\n"
+        "  right_hand:\n"
+        "    approach_axis: x\n"
+        "    link: right_palm\n")
+    cell = tmp_path / "cell.yaml"
+    cell.write_text(f"name: c\nrobots:\n  - name: duo\n    robot: {manifest}\n"
+                    "    end_effectors:\n      right_hand: {tcp_offset: {xyz: [0, 0, 0.1]}}\n")
+    with pytest.raises(YamlError) as caught:
+        load_cell(cell)  # the manifest's link, at the manifest's line
+    assert str(caught.value).startswith(f"{manifest}:6: end_effectors.right_hand.link: "
+                                        "'right_palm' is not a link of the robot")
+    cell.write_text(cell.read_text().replace("tcp_offset: {xyz: [0, 0, 0.1]}", "closing_axis: x"))
+    with pytest.raises(YamlError) as caught:
+        load_cell(cell)  # the two files disagree: said at the cell's entry
+    assert str(caught.value).startswith(
+        f"{cell}:6: end_effectors.right_hand: 'closing_axis' must be across 'approach_axis'")
+    assert f"(with the robot's own declaration at {manifest}:4)" in str(caught.value)
