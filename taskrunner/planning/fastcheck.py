@@ -549,68 +549,86 @@ def _off_box(lo, hi, g, x, y, z, r):  # type: ignore[no-untyped-def]
 
 
 @_jit
-def _pair_touch(views, centres, bounds, a, b, grow):  # type: ignore[no-untyped-def]
-    """Whether the spheres of ``a``, grown by ``grow`` m, touch geometry ``b`` (its
-    spheres or primitive); ``views`` from :func:`_geometry_views`. Bounding spheres of
-    the geometries, then of clusters, then the spheres."""
+def _touching(views, centres, bounds, pa, pb, pending, first, last, rates, half, out,
+              stop_at_first):  # type: ignore[no-untyped-def]
+    """The pairs ``pending[first:last]`` whose spheres, grown by ``rates[p] * half`` m,
+    touch: written to ``pending[out:]``; returns the index after the last one written.
+    Bounding spheres of the geometries first, then of clusters, then the spheres. (One
+    call for all pairs: a call per pair would cost more than its tests.)"""
     (gkind, gstart, gend, radii, bradius, grot, gpos, dims, lo, hi, gcstart, gcend,
      cfirst, clast) = views
-    kind = gkind[b]
-    if kind != _SPHERES:
-        if _off_box(lo, hi, b, bounds[a, 0], bounds[a, 1], bounds[a, 2], bradius[a] + grow):
-            return False
-        if _point_primitive(grot, gpos, dims, b, kind, bounds[a, 0], bounds[a, 1],
-                            bounds[a, 2]) > bradius[a] + grow:
-            return False
-        for c in range(gcstart[a], gcend[a]):
-            if _off_box(lo, hi, b, centres[c, 0], centres[c, 1], centres[c, 2], radii[c] + grow):
+    for n in range(first, last):
+        p = pending[n]
+        a = pa[p]
+        b = pb[p]
+        grow = rates[p] * half
+        kind = gkind[b]
+        touch = False
+        if kind != _SPHERES:
+            if _off_box(lo, hi, b, bounds[a, 0], bounds[a, 1], bounds[a, 2], bradius[a] + grow):
                 continue
-            if _point_primitive(grot, gpos, dims, b, kind, centres[c, 0], centres[c, 1],
-                                centres[c, 2]) > radii[c] + grow:
+            if _point_primitive(grot, gpos, dims, b, kind, bounds[a, 0], bounds[a, 1],
+                                bounds[a, 2]) > bradius[a] + grow:
                 continue
-            for i in range(cfirst[c], clast[c]):
-                if _off_box(lo, hi, b, centres[i, 0], centres[i, 1], centres[i, 2],
-                            radii[i] + grow):
+            for c in range(gcstart[a], gcend[a]):
+                if _off_box(lo, hi, b, centres[c, 0], centres[c, 1], centres[c, 2],
+                            radii[c] + grow):
                     continue
-                if _point_primitive(grot, gpos, dims, b, kind, centres[i, 0], centres[i, 1],
-                                    centres[i, 2]) <= radii[i] + grow:
-                    return True
-        return False
-    if not _balls_touch(centres, bounds, bradius, a, b, grow, True):
-        return False
-    for c in range(gcstart[a], gcend[a]):
-        dx = centres[c, 0] - bounds[b, 0]
-        dy = centres[c, 1] - bounds[b, 1]
-        dz = centres[c, 2] - bounds[b, 2]
-        reach = radii[c] + bradius[b] + grow
-        if dx * dx + dy * dy + dz * dz > reach * reach:
-            continue
-        for e in range(gcstart[b], gcend[b]):
-            dx = centres[c, 0] - centres[e, 0]
-            dy = centres[c, 1] - centres[e, 1]
-            dz = centres[c, 2] - centres[e, 2]
-            reach = radii[c] + radii[e] + grow
+                if _point_primitive(grot, gpos, dims, b, kind, centres[c, 0], centres[c, 1],
+                                    centres[c, 2]) > radii[c] + grow:
+                    continue
+                for i in range(cfirst[c], clast[c]):
+                    if _off_box(lo, hi, b, centres[i, 0], centres[i, 1], centres[i, 2],
+                                radii[i] + grow):
+                        continue
+                    if _point_primitive(grot, gpos, dims, b, kind, centres[i, 0],
+                                        centres[i, 1], centres[i, 2]) <= radii[i] + grow:
+                        touch = True
+                        break
+                if touch:
+                    break
+        else:
+            dx = bounds[a, 0] - bounds[b, 0]
+            dy = bounds[a, 1] - bounds[b, 1]
+            dz = bounds[a, 2] - bounds[b, 2]
+            reach = bradius[a] + bradius[b] + grow
             if dx * dx + dy * dy + dz * dz > reach * reach:
                 continue
-            for i in range(cfirst[c], clast[c]):
-                for k in range(cfirst[e], clast[e]):
-                    dx = centres[i, 0] - centres[k, 0]
-                    dy = centres[i, 1] - centres[k, 1]
-                    dz = centres[i, 2] - centres[k, 2]
-                    reach = radii[i] + radii[k] + grow
-                    if dx * dx + dy * dy + dz * dz <= reach * reach:
-                        return True
-    return False
-
-
-@_jit
-def _balls_touch(centres, bounds, bradius, a, b, grow, whole):  # type: ignore[no-untyped-def]
-    """Whether the bounding spheres of geometries ``a`` and ``b`` touch (grown)."""
-    dx = bounds[a, 0] - bounds[b, 0]
-    dy = bounds[a, 1] - bounds[b, 1]
-    dz = bounds[a, 2] - bounds[b, 2]
-    reach = bradius[a] + bradius[b] + grow
-    return dx * dx + dy * dy + dz * dz <= reach * reach
+            for c in range(gcstart[a], gcend[a]):
+                dx = centres[c, 0] - bounds[b, 0]
+                dy = centres[c, 1] - bounds[b, 1]
+                dz = centres[c, 2] - bounds[b, 2]
+                reach = radii[c] + bradius[b] + grow
+                if dx * dx + dy * dy + dz * dz > reach * reach:
+                    continue
+                for e in range(gcstart[b], gcend[b]):
+                    dx = centres[c, 0] - centres[e, 0]
+                    dy = centres[c, 1] - centres[e, 1]
+                    dz = centres[c, 2] - centres[e, 2]
+                    reach = radii[c] + radii[e] + grow
+                    if dx * dx + dy * dy + dz * dz > reach * reach:
+                        continue
+                    for i in range(cfirst[c], clast[c]):
+                        for k in range(cfirst[e], clast[e]):
+                            dx = centres[i, 0] - centres[k, 0]
+                            dy = centres[i, 1] - centres[k, 1]
+                            dz = centres[i, 2] - centres[k, 2]
+                            reach = radii[i] + radii[k] + grow
+                            if dx * dx + dy * dy + dz * dz <= reach * reach:
+                                touch = True
+                                break
+                        if touch:
+                            break
+                    if touch:
+                        break
+                if touch:
+                    break
+        if touch:
+            pending[out] = p
+            out += 1
+            if stop_at_first:
+                return out
+    return out
 
 
 @_jit
@@ -644,10 +662,10 @@ def _state_free(ints, floats, work, base, values):  # type: ignore[no-untyped-de
     pa = ints[ints[_I_PA]:ints[_I_PA] + npairs]
     pb = ints[ints[_I_PB]:ints[_I_PB] + npairs]
     views = _geometry_views(ints, floats)
-    for p in range(npairs):
-        if _pair_touch(views, centres, bounds, pa[p], pb[p], 0.0):
-            return False
-    return True
+    pending = np.arange(npairs + 1)
+    rates = np.zeros(npairs)
+    return _touching(views, centres, bounds, pa, pb, pending, 0, npairs, rates, 0.0, npairs,
+                     True) == npairs
 
 
 @_jit
@@ -700,18 +718,13 @@ def _edge(ints, floats, work, pending, rates, base, a, b, eps, max_checks):  # t
         _place(ints, floats, rot, pos, centres, bounds)
         checks += 1
         # The pairs still touching go above everything pending (a stack in the buffer).
-        out = last
-        grow_max = 0.0
-        for i in range(first, last):
-            p = pending[i]
-            grow = rates[p] * half
-            if _pair_touch(views, centres, bounds, pa[p], pb[p], grow):
-                pending[out] = p
-                out += 1
-                if grow > grow_max:
-                    grow_max = grow
+        out = _touching(views, centres, bounds, pa, pb, pending, first, last, rates, half,
+                        last, False)
         if out == last:
             continue  # the whole interval is clear
+        grow_max = 0.0
+        for i in range(last, out):
+            grow_max = max(grow_max, rates[pending[i]] * half)
         if grow_max <= eps or top + 2 > depth_limit:
             return s0, checks  # spheres (nearly) touch here
         starts[top], ends[top], firsts[top], lasts[top] = middle, s1, last, out
@@ -732,6 +745,8 @@ def _scan(ints, floats, work, base, a, b, s, steps, out):  # type: ignore[no-unt
     n_values = len(a)
     values = np.empty(n_values)
     views = _geometry_views(ints, floats)
+    pending = np.arange(npairs + 1)
+    rates = np.zeros(npairs)
     found = 0
     for i in range(steps + 1):
         t = s + (1.0 - s) * i / steps
@@ -740,11 +755,10 @@ def _scan(ints, floats, work, base, a, b, s, steps, out):  # type: ignore[no-unt
         _fill(ints, floats, state, base, values)
         _fk(ints, floats, state, rot, pos)
         _place(ints, floats, rot, pos, centres, bounds)
-        for p in range(npairs):
-            if _pair_touch(views, centres, bounds, pa[p], pb[p], 0.0):
-                out[found] = t
-                found += 1
-                break
+        if _touching(views, centres, bounds, pa, pb, pending, 0, npairs, rates, 0.0, npairs,
+                     True) > npairs:
+            out[found] = t
+            found += 1
     return found
 
 

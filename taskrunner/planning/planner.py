@@ -65,6 +65,10 @@ _EDGE_CHECKS = 200
 # its walks have cleared their edge.
 _WALK_TRIAL = 30
 _WALK_SUCCESS = 0.25
+# After _SCAN_TRIAL states, a search checks with coal alone when the spheres touched in
+# more than _SCAN_TOUCHING of them.
+_SCAN_TRIAL = 200
+_SCAN_TOUCHING = 0.5
 _SINGLE_GOAL = {"PRM", "PRMstar"}
 _OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
 
@@ -345,31 +349,43 @@ class MotionPlanner:
 
             return exact, exact_edge, count
         base = start.copy()
+        # walks tried, walks that cleared their edge, states scanned, states whose spheres
+        # touched (where spheres touch most states, the exact check alone is cheaper)
+        seen = [0, 0, 0, 0]
+
+        def spheres_pay() -> bool:
+            return seen[2] < _SCAN_TRIAL or seen[3] <= _SCAN_TOUCHING * seen[2]
 
         def is_valid(values: np.ndarray) -> bool:
-            if fast.state_free(base, values):
-                count[0] += 1
-                return True
+            if spheres_pay():
+                seen[2] += 1
+                if fast.state_free(base, values):
+                    count[0] += 1
+                    return True
+                seen[3] += 1
             return exact(values)
 
-        walks = [0, 0]  # sphere walks tried, walks that cleared their edge
-
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
+            if not spheres_pay():
+                return _segment_valid(exact, a, b, resolution)
             s = 0.0
             # Where the spheres rarely clear a whole edge (a narrow passage, an object in
             # the hand), the walk costs more than it saves: go straight to the states.
-            if walks[0] < _WALK_TRIAL or walks[1] >= _WALK_SUCCESS * walks[0]:
+            if seen[0] < _WALK_TRIAL or seen[1] >= _WALK_SUCCESS * seen[0]:
                 s, checked = fast.edge(base, a, b, _EDGE_EPS, _EDGE_CHECKS)
                 count[0] += checked
-                walks[0] += 1
+                seen[0] += 1
                 if s >= 1.0:
-                    walks[1] += 1
+                    seen[1] += 1
                     return True
             # The rest of the edge, state by state as the exact search checks it; coal
             # only where the spheres touch.
             steps = max(1, int(np.ceil(np.max(np.abs(b - a)) * (1.0 - s) / resolution)))
-            count[0] += steps + 1
-            return all(exact(a + t * (b - a)) for t in fast.touching(base, a, b, s, steps))
+            touching = fast.touching(base, a, b, s, steps)
+            seen[2] += steps + 1
+            seen[3] += len(touching)
+            count[0] += steps + 1 - len(touching)  # exact() counts its own
+            return all(exact(a + t * (b - a)) for t in touching)
 
         return is_valid, edge_valid, count
 
