@@ -12,6 +12,8 @@ A cell file (YAML) looks like::
         poses:                     # more named poses, robot's own names
           arm:
             PickUp: {"Revolute 1": 1.57, "Revolute 2": -0.6}
+        end_effectors:             # tool frames, over robot.yaml's (taskrunner.robot.tools)
+          gripper_eef: {tcp_offset: {xyz: [0, 0, 0.05]}, closing_axis: y, closed: close}
     groups:                        # groups spanning robots
       both_arms: [left_arm, right_arm]
     start: {arm: home}             # named pose per group at the start
