@@ -329,7 +329,7 @@ class Workcell:
         timing = TimingOptions(velocity_scaling=velocity_scaling,
                                acceleration_scaling=acceleration_scaling)
         request = PlanRequest(group, goal, self._state_vector(start) if start is not None
-                              else None, PlannerOptions(planner=planner,
+                              else None, PlannerOptions(planner=planner or "",
                                                         planning_time=planning_time, seed=seed))
         if self._planner is None:
             self._planner = MotionPlanner(self._scene)

@@ -55,8 +55,8 @@ from taskrunner.scene.sweep import lever_arms
 
 __all__ = ["GroupChecker", "SphereModel", "UnsupportedModelError"]
 
-if not numba.config.CACHE_DIR:  # numba was imported before this module set the variable
-    numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
+if not numba.config.CACHE_DIR:  # type: ignore[attr-defined]  # numba was imported first
+    numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]  # type: ignore[attr-defined]
 
 _REVOLUTE, _PRISMATIC = 0, 1
 _SPHERES, _BOX, _CYLINDER = 0, 1, 2

@@ -141,7 +141,7 @@ class MotionPlanner:
             PlanningCancelledError: ``should_stop`` said so.
             PlanningError: the path cannot be timed (with ``request.timing``).
         """
-        if request.options.planner is None:  # the group's default (ompl_planning.yaml)
+        if not request.options.planner:  # the group's default (ompl_planning.yaml)
             planner = group_planner(self.scene.robot.group(request.group))
             request = replace(request, options=replace(request.options, planner=planner))
         result = self._plan(request, should_stop)
@@ -192,6 +192,7 @@ class MotionPlanner:
         t_start = time.perf_counter()
         model = self.scene.robot
         options = request.options
+        assert options.planner is not None  # plan() has put in the group's default
         group = model.group(request.group)
         if len(group.joint_names) == 0:
             raise InvalidStateError(f"group {group.name!r} has no joints to plan for")
@@ -495,7 +496,7 @@ class MotionPlanner:
 
         for attempt in range(options.attempts):
             _seed_ompl(ou, options.seed + attempt)
-            planner = getattr(og, options.planner)(si)
+            planner = getattr(og, str(options.planner))(si)
             setup.setPlanner(planner)
             setup.setup()
             ptc = ob.timedPlannerTerminationCondition(options.planning_time)

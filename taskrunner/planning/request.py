@@ -85,9 +85,9 @@ class PlannerOptions:
     """How to plan.
 
     Attributes:
-        planner: OMPL planner by name (see ``PLANNERS``); None: the group's default
-            planner of its ``ompl_planning.yaml`` (MoveIt's ``default_planner_config``),
-            else RRTConnect (see :func:`group_planner`).
+        planner: OMPL planner by name (see ``PLANNERS``); empty (MoveIt's empty
+            ``planner_id``): the group's default planner of its ``ompl_planning.yaml``
+            (``default_planner_config``), else RRTConnect (see :func:`group_planner`).
         planning_time: seconds per attempt, a cap and not a target: every planner but
             the optimizing ones with ``refine`` returns at its first solution. 5 s by
             default (MoveIt's default), long enough for the hard benchmark classes.
@@ -108,7 +108,7 @@ class PlannerOptions:
         goal_samples: IK solutions sampled as goal states for a pose goal.
     """
 
-    planner: str | None = None
+    planner: str = ""
     planning_time: float = 5.0
     attempts: int = 1
     seed: int = 0
@@ -120,7 +120,7 @@ class PlannerOptions:
     goal_samples: int = 6
 
     def __post_init__(self) -> None:
-        if self.planner is not None and self.planner not in PLANNERS:
+        if self.planner and self.planner not in PLANNERS:
             raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
         for name in ("planning_time", "longest_valid_segment", "validation_resolution",
                      "verify_margin"):

@@ -67,8 +67,8 @@ def polytope_vertices(geometry: coal.CollisionGeometry) -> np.ndarray | None:
     if isinstance(geometry, coal.Sphere):
         return None
     if isinstance(geometry, coal.Box):
-        h = np.asarray(geometry.halfSide, dtype=float)
-        return np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]) * h
+        half = np.asarray(geometry.halfSide, dtype=float)
+        return np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]) * half
     if isinstance(geometry, (coal.Cylinder, coal.Capsule, coal.Cone)):
         r = float(geometry.radius)
         h = float(geometry.halfLength)
