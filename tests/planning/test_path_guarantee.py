@@ -125,3 +125,179 @@ def test_returned_paths_are_free_at_a_tenth_of_a_millimetre(panda_model, seed, t
     hit = _first_fine_collision(scene, result.start, result.path.names,
                                 result.path.waypoints, 1e-4)
     assert hit is None, f"returned path collides at {hit}"
+
+
+# ------------------------------------------------------------ adversarial straight lines
+def _outermost(scene: Scene, q: np.ndarray) -> tuple[np.ndarray, str]:
+    """The vertex of the moving geometry farthest from joint 1's axis (the world z axis)."""
+    robot = scene.robot
+    geometry = scene.checker.geometry_model
+    geometry_data, data = geometry.createData(), robot.model.createData()
+    pin.updateGeometryPlacements(robot.model, data, geometry, geometry_data, robot.to_pin(q))
+    best: tuple[float, np.ndarray, str] = (-1.0, np.zeros(3), "")
+    for g, obj in enumerate(geometry.geometryObjects):
+        if obj.parentJoint == 0:
+            continue
+        if hasattr(obj.geometry, "points"):
+            points = np.array(obj.geometry.points())
+        elif hasattr(obj.geometry, "halfSide"):
+            half = np.asarray(obj.geometry.halfSide)
+            points = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * half
+        else:
+            continue
+        placed = geometry_data.oMg[g]
+        world = points @ placed.rotation.T + placed.translation
+        radius = np.linalg.norm(world[:, :2], axis=1)
+        i = int(np.argmax(radius))
+        if radius[i] > best[0]:
+            best = (float(radius[i]), world[i], obj.name)
+    return best[1], best[2]
+
+
+def _clipped_sweep(panda_model, rng: np.random.Generator, depth: float
+                   ) -> tuple[Scene, np.ndarray] | None:
+    """A fast joint-1 swing (1-2 rad, every point on a circle, so the lever arm bound is
+    nearly tight) and a 0.5 mm plate across it that only the outermost ``depth`` (m) of
+    the arm reaches, at a random point of the swing."""
+    scene = Scene(panda_model)
+    robot = scene.robot
+    start = robot.random_state(rng, "arm")
+    if scene.in_collision(start):
+        return None
+    goal = start.copy()
+    goal[0] = np.clip(start[0] + rng.choice([-1.0, 1.0]) * rng.uniform(1.0, 2.0), -2.8, 2.8)
+    point, _ = _outermost(scene, start + rng.uniform(0.3, 0.7) * (goal - start))
+    radial = np.array([point[0], point[1], 0.0]) / np.linalg.norm(point[:2])
+    up = np.array([0.0, 0.0, 1.0])
+    rotation = np.column_stack([radial, up, np.cross(radial, up)])   # thin across the swing
+    scene.add_object("plate", Box((0.06, 0.06, 0.0005)),
+                     Pose.from_se3(pin.SE3(rotation, point + radial * (0.03 - depth))))
+    if scene.in_collision(start) or scene.in_collision(goal):
+        return None
+    return scene, np.vstack([start, goal])
+
+
+def _collides_somewhere(scene: Scene, states: np.ndarray, samples: int = 10001) -> bool:
+    a, b = states
+    return any(scene.in_collision(a + t * (b - a)) for t in np.linspace(0.0, 1.0, samples))
+
+
+def test_a_plate_clipped_between_any_coarse_states_is_found(panda_model):
+    """Every swing clips its plate (1 mm deep, 0.5 mm thick) and is rejected, from its
+    two end states alone; a verifier whose lever arms were 40 % short accepts some of
+    them, so these cases would catch an unsound motion bound."""
+    rng = np.random.default_rng(3)
+    cases = []
+    while len(cases) < 16:
+        found = _clipped_sweep(panda_model, rng, depth=0.001)
+        if found is not None:
+            cases.append(found)
+    fooled = 0
+    for scene, states in cases:
+        assert _collides_somewhere(scene, states)
+        result = PathVerifier(scene.robot, scene.checker).verify(states)
+        assert not result.valid and result.pair is not None and "plate/0" in result.pair
+        assert result.state is not None and scene.in_collision(result.state)
+        weakened = PathVerifier(scene.robot, scene.checker)
+        weakened._pair_levers = weakened._pair_levers * 0.6   # a deliberately unsound bound
+        fooled += weakened.verify(states).valid
+    assert fooled > 0
+
+
+def test_compiled_kinematics_match_pinocchio(panda_model, ur5_model):
+    for robot_model in (panda_model, ur5_model):
+        scene = Scene(robot_model)
+        robot = scene.robot
+        verifier = PathVerifier(robot, scene.checker)
+        assert verifier.configuration_dependent
+        geometry = scene.checker.geometry_model
+        data, geometry_data = robot.model.createData(), geometry.createData()
+        rng = np.random.default_rng(11)
+        for _ in range(20):
+            q = robot.random_state(rng)
+            rotations, origins, geo_rotations, geo_origins, _ = verifier._kinematics.frames(q)
+            pin.updateGeometryPlacements(robot.model, data, geometry, geometry_data,
+                                         robot.to_pin(q))
+            for jid in range(1, robot.model.njoints):
+                assert np.allclose(rotations[jid], data.oMi[jid].rotation, atol=1e-12)
+                assert np.allclose(origins[jid], data.oMi[jid].translation, atol=1e-12)
+            for g in range(len(geometry.geometryObjects)):
+                assert np.allclose(geo_rotations[g], geometry_data.oMg[g].rotation, atol=1e-12)
+                assert np.allclose(geo_origins[g], geometry_data.oMg[g].translation, atol=1e-12)
+
+
+def _common_ancestor(model, a: int, b: int) -> int:
+    chain = set()
+    while a > 0:
+        chain.add(a)
+        a = int(model.parents[a])
+    while b > 0 and b not in chain:
+        b = int(model.parents[b])
+    return b
+
+
+def test_segment_bounds_cover_every_vertex_path(panda_model):
+    """The per-state lever arms (grown over the step) bound how far every vertex of each
+    body travels in the frame of the pair's common ancestor joint, summed over the pair:
+    short and long segments, with a box and a cylinder in the scene."""
+    scene = Scene(panda_model)
+    scene.add_object("box", Box((0.1, 0.2, 0.1)), Pose.from_se3(pin.SE3(np.eye(3), np.array([0.5, 0.0, 0.3]))))
+    robot = scene.robot
+    verifier = PathVerifier(robot, scene.checker)
+    geometry = scene.checker.geometry_model
+    data, geometry_data = robot.model.createData(), geometry.createData()
+    pairs = [(p.first, p.second) for p in geometry.collisionPairs]
+    rng = np.random.default_rng(5)
+    tight = 0.0
+    for trial in range(9):
+        a = robot.random_state(rng)
+        b = a.copy()
+        b[robot.active_indices] += rng.normal(0.0, (0.02, 0.2, 0.8)[trial % 3],
+                                              len(robot.active_indices))
+        robot.apply_mimic(b)
+        bounds = verifier.segment_bounds(a, b)
+        joints, placed = [], []
+        for t in np.linspace(0.0, 1.0, 121):
+            pin.updateGeometryPlacements(robot.model, data, geometry, geometry_data,
+                                         robot.to_pin(a + t * (b - a)))
+            joints.append([pin.SE3(m) for m in data.oMi])
+            placed.append([pin.SE3(m) for m in geometry_data.oMg])
+        for k, (i, j) in enumerate(pairs):
+            ancestor = _common_ancestor(robot.model, geometry.geometryObjects[i].parentJoint,
+                                        geometry.geometryObjects[j].parentJoint)
+            travelled = 0.0
+            for g in (i, j):
+                shape = geometry.geometryObjects[g].geometry
+                if not hasattr(shape, "points"):
+                    continue
+                points = np.array(shape.points())
+                seen = [(frames[ancestor].actInv(poses[g]).rotation @ points.T).T
+                        + frames[ancestor].actInv(poses[g]).translation
+                        for frames, poses in zip(joints, placed)]
+                travelled += np.sum(np.linalg.norm(np.diff(seen, axis=0), axis=2), axis=0).max()
+            assert travelled <= bounds[k] + 1e-9
+            tight = max(tight, travelled / max(bounds[k], 1e-12))
+    assert tight > 0.5   # the bound is not vacuous
+
+
+def test_cheap_lower_bounds_never_exceed_the_distance(panda_model):
+    from taskrunner.shapes import Cylinder
+
+    scene = Scene(panda_model)
+    scene.add_object("box", Box((0.3, 0.05, 0.2)), Pose.from_se3(pin.SE3(
+        pin.rpy.rpyToMatrix(0.3, 0.2, 0.1), np.array([0.45, 0.1, 0.35]))))
+    scene.add_object("post", Cylinder(0.03, 0.4), Pose.from_se3(pin.SE3(np.eye(3), np.array([0.3, -0.3, 0.2]))))
+    robot = scene.robot
+    verifier = PathVerifier(robot, scene.checker)
+    geometry = scene.checker.geometry_model
+    data, geometry_data = robot.model.createData(), geometry.createData()
+    rng = np.random.default_rng(8)
+    useful = 0
+    for _ in range(40):
+        q = robot.random_state(rng)
+        bounds = verifier.lower_bounds(q)
+        pin.computeDistances(robot.model, data, geometry, geometry_data, robot.to_pin(q))
+        exact = np.array([r.min_distance for r in geometry_data.distanceResults])
+        assert np.all(bounds <= exact + 1e-9)
+        useful += int(np.sum(bounds > 0.5 * exact))
+    assert useful > 0
