@@ -21,6 +21,13 @@ arms). ``fine_invalid`` counts accepted paths that collide there (must be 0); ``
 counts rejected paths the fine check finds free (a rejection within the margin is allowed,
 listed for information). Verdicts of the two verifiers are compared too.
 
+``--planning`` times whole :meth:`MotionPlanner.plan` calls instead (RRTConnect, the
+problems' queries, seeded, one attempt each): every query is planned with the current
+verifier and with the baseline's (patched into the scene), alternating which goes first;
+per problem the median wall time of ``plan`` and the median verification time
+(``PlanResult.verify_time``) of each. The search is the same for both (same seed), so
+the difference is the verification's.
+
 Output: a table per class (paths, median and p90 ms per path, median distance queries, old
 and new), and with ``--json`` one JSON line at the end.
 """
@@ -250,6 +257,60 @@ def print_table(report: dict) -> None:
     print(f"machine {report['machine']}, load {report['load']:.2f}, {report['date']}")
 
 
+def run_planning(args: argparse.Namespace) -> dict:
+    """Whole ``plan`` calls, current verifier against the baseline's, interleaved."""
+    import taskrunner.scene.scene as scene_module
+
+    problems = args.problems.split(",") if args.problems else list(DEFAULT_PROBLEMS)
+    baseline = load_baseline(args.baseline)
+    if baseline is None:
+        raise SystemExit(f"cannot read taskrunner/scene/sweep.py at {args.baseline!r}")
+    current = scene_module.PathVerifier
+    table = []
+    for problem in planning_scenes.build_problems(5 if args.quick else 20, args.seed, problems):
+        planner = MotionPlanner(problem.scene)
+        runs: dict[str, list[tuple[float, float, bool]]] = {"new": [], "old": []}
+        for i, query in enumerate(problem.queries):
+            order = [("new", current), ("old", baseline.PathVerifier)]
+            if i % 2:
+                order.reverse()
+            for name, verifier_class in order:
+                scene_module.PathVerifier = verifier_class  # type: ignore[misc]
+                problem.scene._verifier = None
+                options = PlannerOptions(planning_time=problem.planning_time, seed=args.seed + i)
+                request = PlanRequest(problem.group, query.goal, start=query.start,
+                                      options=options)
+                t0 = time.perf_counter()
+                try:
+                    result = planner.plan(request)
+                    runs[name].append((time.perf_counter() - t0, result.verify_time, True))
+                except PlanningError:
+                    runs[name].append((time.perf_counter() - t0, 0.0, False))
+        scene_module.PathVerifier = current  # type: ignore[misc]
+        problem.scene._verifier = None
+        entry: dict[str, Any] = {"problem": problem.name, "queries": len(problem.queries)}
+        for name, rs in runs.items():
+            entry[f"{name}_solved"] = sum(ok for *_, ok in rs)
+            entry[f"{name}_plan_median_ms"] = round(float(np.median([w for w, _, _ in rs])) * 1e3, 3)
+            entry[f"{name}_verify_median_ms"] = round(
+                float(np.median([v for _, v, ok in rs if ok] or [0.0])) * 1e3, 3)
+        table.append(entry)
+    return {"machine": f"{platform.node()} {platform.processor() or platform.machine()}, "
+                       f"{os.cpu_count()} cores",
+            "load": os.getloadavg()[0], "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+            "quick": args.quick, "seed": args.seed, "baseline": args.baseline, "planning": table}
+
+
+def print_planning(report: dict) -> None:
+    print(f"{'problem':<20}{'queries':>8}{'plan new':>10}{'plan old':>10}"
+          f"{'verify new':>12}{'verify old':>12}{'solved':>10}")
+    for e in report["planning"]:
+        print(f"{e['problem']:<20}{e['queries']:>8}{e['new_plan_median_ms']:>10.2f}"
+              f"{e['old_plan_median_ms']:>10.2f}{e['new_verify_median_ms']:>12.3f}"
+              f"{e['old_verify_median_ms']:>12.3f}{e['new_solved']:>5}/{e['old_solved']}")
+    print(f"machine {report['machine']}, load {report['load']:.2f}, {report['date']}")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer paths")
@@ -259,7 +320,15 @@ def main(argv: list[str] | None = None) -> int:
                         help="git revision of the verifier to compare with ('none': skip)")
     parser.add_argument("--problems", help="comma-separated problems of planning_scenes")
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--planning", action="store_true",
+                        help="time whole plan calls with each verifier instead")
     args = parser.parse_args(argv)
+    if args.planning:
+        report = run_planning(args)
+        print_planning(report)
+        if args.json:
+            print(json.dumps(report))
+        return 0
     report = run(args)
     print_table(report)
     if args.json:

@@ -68,8 +68,8 @@ if not os.environ.get("NUMBA_CACHE_DIR"):
 
 import numba
 
-if not numba.config.CACHE_DIR:  # numba was imported before this module set the variable
-    numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]
+if not numba.config.CACHE_DIR:  # type: ignore[attr-defined]  # numba was imported first
+    numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]  # type: ignore[attr-defined]
 
 __all__ = ["CHEAP_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms"]
 
