@@ -13,6 +13,7 @@ where that adds no collision at a named pose (see :mod:`taskrunner.scene.linkgeo
 
 from __future__ import annotations
 
+import coal
 import numpy as np
 import pinocchio as pin
 
@@ -95,9 +96,11 @@ def self_collision_warnings(robot: RobotModel, start: np.ndarray | None = None,
     def report(what: str, pairs: list[tuple[str, str]], tail: str = "") -> None:
         shown = ", ".join(f"{a}–{b}" for a, b in pairs[:_MAX_PAIRS_SHOWN])
         more = f" and {len(pairs) - _MAX_PAIRS_SHOWN} more" if len(pairs) > _MAX_PAIRS_SHOWN else ""
+        geometry = _geometry_words(robot, [n for pair in pairs[:_MAX_PAIRS_SHOWN] for n in pair])
         warnings.append(LoadWarning(
-            f"{what} is in self-collision ({shown}{more}){tail}: nothing can be planned from "
-            "there; if these links cannot touch, the SRDF's collision matrix is incomplete: "
+            f"{what} is in self-collision ({shown}{more}; {geometry}){tail}: nothing can be "
+            "planned from there; if these links cannot touch, the SRDF's collision matrix is "
+            "incomplete: "
             "run `run-task collision-matrix ROBOT --write SRDF`", source))
 
     check = _SelfCheck(robot)
@@ -122,6 +125,15 @@ def self_collision_warnings(robot: RobotModel, start: np.ndarray | None = None,
             if pairs:
                 report(f"named pose {name!r} of group {group!r}", pairs)
     return warnings
+
+
+def _geometry_words(robot: RobotModel, links: list[str]) -> str:
+    """``exact meshes``, ``primitive shapes`` or both: what these links were checked as."""
+    frames = robot.model.frames
+    meshes = {frames[g.parentFrame].name for g in robot.collision_model.geometryObjects
+              if isinstance(g.geometry, coal.BVHModelBase)}
+    kinds = {"exact meshes" if link in meshes else "primitive shapes" for link in links}
+    return " and ".join(sorted(kinds))
 
 
 def _moved_links(robot: RobotModel, group: str) -> set[str]:

@@ -141,7 +141,7 @@ def test_default_state_in_self_collision_is_a_warning_suggesting_collision_matri
     m = load_robot(copy)
     [warning] = [w for w in m.warnings if "self-collision" in w]
     assert "the default state (every joint at 0, clipped to its limits) is in self-collision " \
-           "(base_link–gripper_base_1)" in warning
+           "(base_link–gripper_base_1; primitive shapes)" in warning
     assert "run `run-task collision-matrix ROBOT --write SRDF`" in warning
     with pytest.raises(RobotDescriptionError, match="self-collision"):
         load_robot(copy, strict=True)
