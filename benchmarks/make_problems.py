@@ -28,6 +28,7 @@ Usage::
 
     python benchmarks/make_problems.py [--count 100] [--seed 0] [--out benchmarks/problems]
                                        [--classes table_pick,cage] [--check]
+                                       [--plan N [--pose]]   # then plan N per class
 """
 
 from __future__ import annotations
@@ -364,6 +365,33 @@ def check_problem(model: RobotModel, folder: Path, stem: str) -> None:
                                f"({scene.collisions(q)[:2]})")
 
 
+def plan_problems(model: RobotModel, folder: Path, count: int, pose: bool = False
+                  ) -> dict[str, Any]:
+    """Plan the first ``count`` problems of a class folder (seed 0, the request's own
+    planner and time cap), through :mod:`taskrunner.moveit`; success and times."""
+    from taskrunner.moveit import load_motion_plan_request, load_planning_scene, plan_request_file
+
+    base = Scene(model)
+    times, lengths, failures = [], [], []
+    for i in range(count):
+        stem = f"{i + 1:04d}"
+        scene = base.copy()
+        load_planning_scene(folder / f"{stem}_scene.yaml", model).apply(scene)
+        kind = "pose_request" if pose else "request"
+        request = load_motion_plan_request(folder / f"{stem}_{kind}.yaml", model)
+        report = plan_request_file(scene, request, seed=0)
+        if report.success:
+            times.append(report.total_time)
+            lengths.append(report.path_length)
+        else:
+            failures.append(f"{stem}: {report.error_kind}")
+    return {"planned": count, "solved": len(times),
+            "median_total_s": round(float(np.median(times)), 4) if times else None,
+            "p90_total_s": round(float(np.percentile(times, 90)), 4) if times else None,
+            "median_length_rad": round(float(np.median(lengths)), 3) if lengths else None,
+            "failures": failures}
+
+
 def generate(out: Path, count: int, seed: int = 0, classes: Sequence[str] = CLASSES,
              check: bool = False) -> dict[str, Any]:
     """Write ``count`` problems per class under ``out/<class>/``; returns a summary."""
@@ -405,14 +433,27 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help=f"comma-separated classes ({','.join(CLASSES)})")
     parser.add_argument("--check", action="store_true",
                         help="read every problem back and check its states again")
+    parser.add_argument("--plan", type=int, default=0, metavar="N",
+                        help="then plan the first N problems of each class (joint goals) "
+                             "and report success and times")
+    parser.add_argument("--pose", action="store_true", help="with --plan: the pose-goal requests")
     args = parser.parse_args(argv)
     started = time.perf_counter()
     summary = generate(args.out, args.count, args.seed, args.classes.split(","), args.check)
     summary["seconds"] = round(time.perf_counter() - started, 2)
+    if args.plan:
+        robot = load_robot(DATA_ROOT / "robots" / "panda")
+        for name in summary["classes"]:
+            summary["classes"][name]["plan"] = plan_problems(
+                robot, args.out / name, min(args.plan, args.count), args.pose)
     print(json.dumps(summary, indent=2))
-    print(f"\n{'class':<18} {'problems':>8} {'seconds':>8}")
+    print(f"\n{'class':<18} {'problems':>8} {'seconds':>8} {'solved':>8} {'median s':>9} {'p90 s':>7}")
     for name, row in summary["classes"].items():
-        print(f"{name:<18} {row['problems']:>8} {row['seconds']:>8.2f}")
+        plan = row.get("plan", {})
+        solved = f"{plan['solved']}/{plan['planned']}" if plan else "-"
+        median = f"{plan['median_total_s']}" if plan else "-"
+        p90 = f"{plan['p90_total_s']}" if plan else "-"
+        print(f"{name:<18} {row['problems']:>8} {row['seconds']:>8.2f} {solved:>8} {median:>9} {p90:>7}")
     return 0
 
 
