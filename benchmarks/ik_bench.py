@@ -13,8 +13,15 @@ failure. Before timing, each solver builds its seed table (a one-time ~10 ms set
 TRAC-IK's solver construction is not timed) and makes 20 warm-up calls on other targets
 (a separate draw).
 
+The solver's 5 ms are its thread's CPU time, capped at 20 ms of wall time
+(:mod:`taskrunner.kinematics.deadline`); TRAC-IK's are wall time. On an idle machine the
+two agree; on a loaded one the wall times here include waiting for a CPU, and
+``_over_timeout`` counts the calls that took longer than 5 ms of wall time (solved or
+not), ``_cpu_ms_mean`` the calls' own CPU time.
+
 This machine's speed drifts by 2-3x over minutes (a shared host), so the result also
-carries ``calibration_us``, the time of a fixed small workload measured just before.
+carries ``calibration_us``, the time of a fixed small workload measured just before,
+and the load average.
 
 * Panda, group ``arm`` (7 joints, ``panda_hand_tcp``), full pose;
 * UR5, group ``manipulator`` (6 joints, ``tool0``), full pose;

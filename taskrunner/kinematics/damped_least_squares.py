@@ -21,6 +21,11 @@ the Panda than clipping alone). Continuous joints are unbounded.
 
 An attempt ends as soon as it stops making progress (``‖e‖²`` not below 0.8 × its best
 for 3 iterations): restarting elsewhere is cheaper than crawling out of a local minimum.
+It also ends when the call's time budget (:class:`~taskrunner.kinematics.deadline.Deadline`)
+is used up, unless it is converging close to the target then (it progressed in this
+iteration and ``‖e‖² ≤ 1e-2``, where convergence is quadratic): such an attempt may run
+up to 5 more iterations (~0.1 ms) rather than be thrown away a few iterations from a
+solution.
 
 Every numpy or pinocchio call costs about a microsecond from Python, far more than the
 arithmetic on these small matrices, so the loops below are written for few calls.
@@ -35,6 +40,7 @@ import numpy as np
 import pinocchio as pin
 from scipy.linalg import lapack
 
+from taskrunner.kinematics.deadline import Deadline
 from taskrunner.kinematics.solved_joints import SolvedJoints
 
 __all__ = ["DampedLeastSquares"]
@@ -46,6 +52,7 @@ MAX_STEP = 1.5  # rad (or m): norm cap of one step (1.0: 5 % more iterations, 2.
 JLOG_MIN = 1e-2  # ‖e‖² above which Jlog6 is applied
 PROGRESS = 0.8  # an iteration progresses when it brings ‖e‖² below 0.8 × the best so far
 STALL = 3  # iterations without progress before an attempt is abandoned
+GRACE = 5  # iterations an attempt converging near the target may run past the deadline
 _REDAMP = 1e-3  # added to λ when J Jᵀ + λ I is not numerically positive definite
 
 _posv = lapack.dposv
@@ -83,7 +90,7 @@ class DampedLeastSquares:
         self._diagonal6 = self._A6.reshape(-1)[::7]  # views of the diagonals
         self._diagonal3 = self._A3.reshape(-1)[::4]
 
-    def descend_pose(self, q: np.ndarray, qa: np.ndarray, target: pin.SE3, deadline: float,
+    def descend_pose(self, q: np.ndarray, qa: np.ndarray, target: pin.SE3, deadline: Deadline,
                      iterations: int, tol2: float, rtol2: float) -> tuple[bool, int, float]:
         """Move ``qa`` (the solved joints' values; a view into ``q`` when the joints are
         ``direct``) towards a full pose.
@@ -92,7 +99,7 @@ class DampedLeastSquares:
             q: the state vector (the other joints' values).
             qa: the solved joints' values, updated in place.
             target: world pose of the frame to reach.
-            deadline: ``time.perf_counter()`` value at which to give up.
+            deadline: the call's time budget.
             iterations: iterations allowed.
             tol2, rtol2: squared position (m²) and rotation (rad²) tolerances.
 
@@ -105,7 +112,7 @@ class DampedLeastSquares:
         qp = q if direct else joints.sync(q, qa)
         near = 4.0 * max(tol2, rtol2)
         best = lowest = math.inf
-        stalled = 0
+        stalled = late = 0
         perf_counter = time.perf_counter
         for it in range(1, iterations + 1):
             _compute_joint_jacobians(model, data, qp)
@@ -124,8 +131,10 @@ class DampedLeastSquares:
                 stalled += 1
                 if stalled >= STALL:
                     return False, it, lowest
-            if perf_counter() > deadline:
-                return False, it, lowest
+            if perf_counter() > deadline.wall and deadline.passed():
+                if stalled or e2 > JLOG_MIN or late >= GRACE:
+                    return False, it, lowest
+                late += 1
             if mimic:
                 J = self._jacobian(_LOCAL)
             else:
@@ -138,14 +147,15 @@ class DampedLeastSquares:
         return False, iterations, lowest
 
     def descend_position(self, q: np.ndarray, qa: np.ndarray, target: np.ndarray,
-                         deadline: float, iterations: int, tol2: float) -> tuple[bool, int, float]:
+                         deadline: Deadline, iterations: int, tol2: float
+                         ) -> tuple[bool, int, float]:
         """Like :meth:`descend_pose` for a world position (m) of the frame's origin."""
         model, data, frame_id = self._model, self._data, self._frame_id
         joints = self._joints
         direct, columns, mimic = joints.direct, joints.columns, bool(joints.mimic_columns)
         qp = q if direct else joints.sync(q, qa)
         best = lowest = math.inf
-        stalled = 0
+        stalled = late = 0
         perf_counter = time.perf_counter
         for it in range(1, iterations + 1):
             _compute_joint_jacobians(model, data, qp)
@@ -161,8 +171,10 @@ class DampedLeastSquares:
                 stalled += 1
                 if stalled >= STALL:
                     return False, it, lowest
-            if perf_counter() > deadline:
-                return False, it, lowest
+            if perf_counter() > deadline.wall and deadline.passed():
+                if stalled or e2 > JLOG_MIN or late >= GRACE:
+                    return False, it, lowest
+                late += 1
             if mimic:
                 J = self._jacobian(_LOCAL_WORLD_ALIGNED)[:3]
             else:

@@ -7,7 +7,9 @@ attempts of damped least squares (:mod:`taskrunner.kinematics.damped_least_squar
 the first from the seed state, the next from the stored configurations whose frame pose
 is nearest the target (:class:`~taskrunner.kinematics.seed_table.SeedTable`), then from
 random configurations within the limits (seeded ``np.random.default_rng``), until a
-solution is found, the attempts are used up or the timeout passes.
+solution is found, the attempts are used up or the timeout passes (the timeout is the
+searching thread's CPU time, capped at 4 × timeout of wall time: see
+:mod:`taskrunner.kinematics.deadline`).
 
 Only the group's joints that move the aimed frame change; every other joint keeps its
 value from the seed state, and mimic joints follow their source joints. A solution is
@@ -32,6 +34,7 @@ import pinocchio as pin
 
 from taskrunner.errors import IkFailedError, InputError
 from taskrunner.kinematics.damped_least_squares import DampedLeastSquares
+from taskrunner.kinematics.deadline import Deadline
 from taskrunner.kinematics.ik_types import IkOptions, IkSolution
 from taskrunner.kinematics.seed_table import SeedTable
 from taskrunner.kinematics.solved_joints import SolvedJoints
@@ -170,7 +173,7 @@ class IkSolver:
         start = time.perf_counter()
         timeout = options.timeout if options.timeout is not None else self.settings.timeout
         attempts = options.attempts if options.attempts is not None else self.settings.attempts
-        deadline = start + timeout
+        deadline = Deadline(timeout)
         joints, descent = self._joints, self._descent
         q_seed = self.seed_state(seed_q)
         position_only, se3, position = self._target(target, q_seed, options.position_only)
@@ -186,9 +189,10 @@ class IkSolver:
                 if not solutions and nearest is None:
                     if self._table is None and joints.only_movers:
                         # Built once per solver; not counted against the call's timeout.
-                        built = time.perf_counter()
+                        built, built_cpu = time.perf_counter(), time.thread_time()
                         self.seed_table()
-                        deadline += time.perf_counter() - built
+                        deadline.exclude(time.perf_counter() - built,
+                                         time.thread_time() - built_cpu)
                     nearest = self._nearest_seeds(se3, position, position_only)
                 if not solutions and nearest is not None and attempt - 2 < len(nearest):
                     qa[:] = nearest[attempt - 2]
@@ -226,7 +230,7 @@ class IkSolver:
                     ))
                     if len(solutions) >= wanted:
                         break
-            if time.perf_counter() > deadline:
+            if time.perf_counter() > deadline.wall and deadline.passed():
                 break
         if not solutions:
             raise self._failure(se3, position, position_only, math.sqrt(best), attempt,

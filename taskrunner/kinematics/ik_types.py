@@ -37,7 +37,11 @@ class IkOptions:
         max_iterations: Levenberg-Marquardt iterations per attempt (an attempt that stops
             making progress is abandoned earlier).
         timeout: seconds for the whole call (``kinematics_solver_timeout``; 5 ms when the
-            group has no entry).
+            group has no entry), counted in the searching thread's CPU time so that a
+            call is not cut short while its process waits for a CPU; a call never runs
+            longer than 4 × timeout of wall time. No attempt starts after it; an attempt
+            converging close to the target when it passes may finish (at most 5 more
+            iterations, ~0.1 ms).
         attempts: starts allowed: the seed state, then up to 6 stored configurations
             whose frame pose is nearest the target, then random configurations
             (``kinematics_solver_attempts``; 10 when the group has no entry).
