@@ -212,6 +212,17 @@ def test_planner_paths_with_and_without_spheres_verify(shelf_scene):
         assert (planner._spheres is not None) == fast_check
 
 
+@pytest.mark.parametrize("planner", ["RRT", "KPIECE1", "PRM", "BITstar"])
+def test_other_planners_search_with_the_edge_validator(shelf_scene, planner):
+    goal = JointGoal({"panda_joint1": 0.6, "panda_joint2": 0.3, "panda_joint4": -1.9})
+    motion_planner = MotionPlanner(shelf_scene, fast_check=True)
+    result = motion_planner.plan(PlanRequest("arm", goal, options=PlannerOptions(
+        planner=planner, seed=2, planning_time=3.0)))
+    states = np.array([result.start] * len(result.path.waypoints))
+    states[:, shelf_scene.robot.indices(result.path.names)] = result.path.waypoints
+    assert motion_planner.verify_states(states, 5e-4).valid
+
+
 # ---------------------------------------------------------------------- cache
 def test_sphere_models_are_cached_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
