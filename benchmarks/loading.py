@@ -74,8 +74,11 @@ def _run(code: str, source: str, cache: str | None) -> subprocess.CompletedProce
     env.pop("TASKRUNNER_COLLISION", None)
     if cache is not None:
         env["XDG_CACHE_HOME"] = cache
-    return subprocess.run([sys.executable, "-c", code, source], capture_output=True, text=True,
-                          env=env, cwd=ROOT, check=True)
+    done = subprocess.run([sys.executable, "-c", code, source], capture_output=True, text=True,
+                          env=env, cwd=ROOT, check=False)
+    if done.returncode != 0:
+        raise SystemExit(f"loading {source} failed:\n{done.stderr[-2000:]}")
+    return done
 
 
 def measure(source: str, runs: int) -> dict[str, float]:
