@@ -2,7 +2,8 @@
 
 Read (fields at the top level, or under one key ``request`` / ``motion_plan_request``):
 
-- ``group_name`` (names mapped as :mod:`taskrunner.moveit.names` says);
+- ``group_name`` (names mapped as :mod:`taskrunner.moveit.names` says; a name the model
+  lacks maps, with a warning, to the one group whose joints are the joint goal's);
 - ``start_state`` (a RobotState: joint values, attached objects; joints left out keep
   the scene's values);
 - ``goal_constraints[]``: each Constraints is one goal, any of them will do. Joint
@@ -370,15 +371,13 @@ def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *,
         if not written:
             raise msg.error("group_name", "must name the planning group")
         found = _try(msg, "group_name", names.group, written)
-        if found is None:
-            raise msg.error("group_name", f"names an unknown group {written!r}; known: "
-                                          f"{', '.join(repr(g) for g in model.groups)} "
-                                          "(--group chooses one)")
-        group_name = found
+        group_name = found or ""
     start = read_robot_state(msg.msg("start_state", ROBOT_STATE_FIELDS), names)
     goals = [_constraints(c, names) for c in msg.msgs("goal_constraints", CONSTRAINTS_FIELDS)]
     if not goals:
         raise msg.error("goal_constraints", "must give at least one goal")
+    if not group_name:
+        group_name = _group_of_joints(msg, model, goals)
     for key in ("path_constraints",):
         constraints = msg.msg(key, CONSTRAINTS_FIELDS)
         if constraints is not None and any(constraints.seq(k) for k in CONSTRAINTS_FIELDS[1:]):
@@ -413,6 +412,24 @@ def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *,
         Path(path), group_name, start.values, start.attached, options,
         _scaling(msg, "max_velocity_scaling_factor"), _scaling(msg, "max_acceleration_scaling_factor"),
         tuple(g[0] for g in goals), tuple(g[1] for g in goals), reader.warnings, names)
+
+
+def _group_of_joints(msg: Msg, model: RobotModel,
+                     goals: list[tuple[tuple[_JointCheck, ...] | None, _PoseTarget | None]]) -> str:
+    """The group for a ``group_name`` the model does not have (a MoveIt config's own
+    name, ``panda_arm`` for our ``arm``): the one group whose joints are exactly those of
+    the joint goals, with a warning; else an error."""
+    written = msg.string("group_name")
+    joint_sets = {frozenset(c.joint for c in checks) for checks, _ in goals if checks is not None}
+    matches = [g.name for g in model.groups.values()
+               if len(joint_sets) == 1 and set(g.joint_names) == next(iter(joint_sets))]
+    if len(matches) != 1 or len(joint_sets) != 1 or any(c is None for c, _ in goals):
+        raise msg.error("group_name", f"names an unknown group {written!r}; known: "
+                                      f"{', '.join(repr(g) for g in model.groups)} "
+                                      "(--group chooses one)")
+    msg.warn("group_name", f"names {written!r}, not a group of the model; planning for group "
+                           f"{matches[0]!r}, whose joints are exactly the goal's")
+    return matches[0]
 
 
 def _planner(msg: Msg, model: RobotModel, group: str) -> str:

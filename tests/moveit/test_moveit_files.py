@@ -241,3 +241,15 @@ def test_robowflex_form_of_motionbenchmaker_files_is_read(panda) -> None:
     assert request.options.planning_time == 10 and request.velocity_scaling == 0.8
     report = plan_request_file(scene, request, seed=0)
     assert report.success, report.message
+
+
+def test_a_moveit_group_name_maps_to_the_group_with_the_goals_joints(panda, tmp_path: Path) -> None:
+    text = (FIXTURES / "joint_goal_request.yaml").read_text().replace("group_name: arm",
+                                                                      "group_name: panda_arm")
+    path = tmp_path / "r.yaml"
+    path.write_text(text)
+    request = load_motion_plan_request(path, panda.model, strict=False)
+    assert request.group == "arm"
+    assert ["'group_name'" in w.message and "'arm'" in w.message for w in request.warnings] == [True]
+    with pytest.raises(InputError, match="group_name"):
+        load_motion_plan_request(path, panda.model, strict=True)
