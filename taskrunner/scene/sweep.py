@@ -230,9 +230,10 @@ class PathVerifier:
         return out
 
     def lower_bounds(self, q: np.ndarray) -> np.ndarray:
-        """Per pair, the cheap lower bound on its distance (m) at state ``q`` that the
-        verifier uses for far pairs (bounding spheres; a box's exact distance to the other
-        body's bounding sphere); ``-inf`` without compiled kinematics."""
+        """Per pair, the cheap bound on its distance (m) at state ``q`` that the verifier
+        uses for far pairs (bounding spheres; a box's exact distance to the other body's
+        bounding sphere): where positive, the pair is at least that far apart. ``-inf``
+        without compiled kinematics."""
         kin = self._kinematics
         out = np.full(len(self._names), -np.inf)
         if not kin.supported:
@@ -353,8 +354,7 @@ class _Kinematics:
             self.geometry_joint[g] = int(geometry_object.parentJoint)
             self.geometry_rotation[g] = geometry_object.placement.rotation
             self.geometry_translation[g] = geometry_object.placement.translation
-            self.geometry_centre[g] = np.asarray(geometry.aabb_center, dtype=float)
-            self.geometry_radius[g] = float(geometry.aabb_radius)
+            self.geometry_centre[g], self.geometry_radius[g] = _enclosing_sphere(geometry)
             if isinstance(geometry, coal.Box):
                 self.geometry_box[g] = 1
                 self.box_half[g] = np.asarray(geometry.halfSide, dtype=float)
@@ -395,6 +395,30 @@ class _Kinematics:
                                  for j in self.state_joint])
             out[(out > 0) & revolute[None, :]] += 2
         return out
+
+
+def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, float]:
+    """A sphere containing ``geometry`` (its frame): for a convex hull or a mesh, one
+    around its vertices (Badoiu-Clarkson centre, radius to the farthest vertex), which
+    contains their convex hull; otherwise the sphere around its bounding box."""
+    centre = np.asarray(geometry.aabb_center, dtype=float).copy()
+    radius = float(geometry.aabb_radius)
+    points = None
+    if isinstance(geometry, coal.Convex):
+        points = np.asarray(geometry.points(), dtype=float)
+    elif isinstance(geometry, coal.BVHModelBase) and geometry.num_vertices > 0:
+        points = np.asarray(geometry.vertices(), dtype=float)
+    if points is None or points.ndim != 2 or len(points) == 0 or not np.isfinite(points).all():
+        return centre, radius
+    candidate = centre.copy()
+    for i in range(100):
+        farthest = points[np.argmax(np.einsum("ij,ij->i", points - candidate, points - candidate))]
+        candidate += (farthest - candidate) / (i + 2)
+    reach = float(np.sqrt(np.max(np.einsum("ij,ij->i", points - candidate, points - candidate))))
+    reach = reach * (1.0 + 1e-12) + 1e-12          # rounding: never inside a vertex
+    if reach < radius:
+        return candidate, reach
+    return centre, radius
 
 
 # ---------------------------------------------------------------------- kernels
