@@ -1,50 +1,58 @@
 """Exact collision checking of joint-space paths by conservative advancement.
 
-A path is a polyline in the state space (rad or m). Between two states, every point of
-every collision geometry moves by at most ``sum_j r_j |dq_j|``, where ``r_j`` is the
-*lever arm* of joint ``j`` for that geometry (an upper bound on the distance from the
-joint's axis to any point of the geometry, computed once from the geometry's bounding
-sphere and the kinematic chain at its longest reach) and a prismatic joint moves it by
-``|dq_j|``. For a pair of bodies only the joints that move one and not the other count.
-Summed along the path this gives each pair a non-decreasing *motion bound* ``M(s)`` (m)
-of the path position ``s``: between positions ``s`` and ``t`` no point of one body moves
-by more than ``M(t) - M(s)`` relative to the other.
+A path is a polyline in the state space (rad or m). Over a stretch of it, every point of
+a collision geometry moves by at most ``sum_j r_j |dq_j|``, where ``r_j`` is the *lever
+arm* of joint ``j`` for that geometry (a bound on the distance from the joint's axis to
+any point of the geometry) and a prismatic joint moves it by ``|dq_j|``; for a pair of
+bodies only the joints that move one and not the other count (the others move both
+rigidly together). :func:`lever_arms` gives full-reach lever arms, valid anywhere
+(computed once from the chain and the geometry's bounding sphere). Where the robot's
+joints are revolute, continuous or prismatic, the verifier takes them at the state where
+a pair was measured instead (the distance from the axis to the body's bounding sphere
+centre, plus its radius; compiled forward kinematics), grown over the step by what the
+joints between that axis and the body contribute (they are what moves the body relative
+to the axis), and never above the full-reach value. This gives each measured position
+``s`` of a pair a bound ``B(s, t)`` (m) on how far any point of one body moves relative
+to the other until a later position ``t``; it is a path length, so it splits at any
+``u`` in between into parts that bound the motion before and after ``u``.
 
 :class:`PathVerifier` walks a path pair by pair (Schwarzer, Saha & Latombe, "Adaptive
 dynamic collision checking for single and multiple articulated robots in complex
-environments", IEEE T-RO 2005): it measures a pair's distance ``d`` with coal (the exact
-geometry of the scene's checker) at chosen positions only. Two measurements ``(s, d_s)``
-and ``(t, d_t)`` of a pair, ``s < t``, *cover* the stretch between them when
+environments", IEEE T-RO 2005), measuring a lower bound ``d`` on a pair's distance at
+chosen positions only. Two measurements ``(s, d_s)`` and ``(t, d_t)``, ``s < t``, *cover*
+the stretch between them when
 
-    ``M(t) - M(s) <= max(d_s + d_t, margin)``  and  ``d_s, d_t > 0``.
+    ``B(s, t) <= max(d_s + d_t, margin)``  and  ``d_s, d_t > 0``.
 
 Proof sketch. At a position ``u`` between, every point of one body has moved by at most
-``a = M(u) - M(s)`` relative to the other since ``s`` and by at most ``b = M(t) - M(u)``
-until ``t`` (``a + b = M(t) - M(s)``). Moving a set by at most ``a`` changes its distance
-to another set by at most ``a``, so the pair's distance at ``u`` is at least
-``max(d_s - a, d_t - b)``. If ``a + b <= d_s + d_t`` one of the two terms is ``>= 0``:
-they do not overlap at ``u``. Otherwise ``a + b <= margin``; a point of one body inside
-the other at ``u`` is within ``a`` of where it was at ``s`` (outside, at least ``d_s``
-away) and within ``b`` of where it is at ``t``, so it is at most
-``min(a - d_s, b - d_t) < margin / 2`` deep. A pair whose measurements (the first at
-the path's start, the last at its end or with ``M(end) - M(s) <= d_s``, so that its
-distance cannot reach 0 before the end) cover the path pairwise is therefore free,
-except for penetrations shallower than ``margin / 2`` where it came within ``margin``.
+``a`` relative to the other since ``s`` and by at most ``b`` until ``t``, with
+``a + b <= B(s, t)``. Moving a set by at most ``a`` changes its distance to another set
+by at most ``a``, so the pair's distance at ``u`` is at least ``max(d_s - a, d_t - b)``.
+If ``a + b <= d_s + d_t`` one of the two terms is ``>= 0``: they do not overlap at
+``u``. Otherwise ``a + b <= margin``; a point of one body inside the other at ``u`` is
+within ``a`` of where it was at ``s`` (outside, at least ``d_s`` away) and within ``b``
+of where it is at ``t``, so it is at most ``min(a - d_s, b - d_t) < margin / 2`` deep. A
+pair whose measurements (the first at the path's start, the last with
+``B(s, end) <= d_s``, so that its distance cannot reach 0 before the end) cover the path
+pairwise is therefore free, except for penetrations shallower than ``margin / 2`` where
+it came within ``margin``.
 
 The walk is adaptive per pair: after a measurement ``(s, d)`` that extends the covered
-stretch, the next one is optimistic, where the motion bound has grown by ``(1 + GAIN) d``
-(at least ``margin``), since a pair's distance rarely falls as fast as its bound allows;
-if that one does not cover the gap with the last, measurements at ``d`` steps fill it from
-the left (each reaches the previous one's bound, at least ``margin``: the walk always
-advances). Far pairs are measured a few times per path, close ones often; pairs due at
-nearby positions share one forward kinematics. The scheduling runs compiled (numba,
-``cache=True``); the distances are coal's, through pinocchio.
+stretch, the next one is optimistic, where the bound reaches ``(1 + GAIN) d`` (at least
+``margin``), since a pair's distance rarely falls as fast as its bound allows; if that
+one does not cover the gap with the last, measurements at ``d`` steps fill it from the
+left (each is covered whatever it measures: the walk always advances). Pairs due at
+nearby positions share one forward kinematics. A measurement is a lower bound on the
+distance: far pairs take a cheap one, computed in compiled code (bounding spheres; a
+box's exact distance to the other's bounding sphere); only below :data:`CHEAP_FROM` does
+the verifier ask coal for the exact distance of the scene checker's geometry. The walk
+runs compiled (numba, ``cache=True``: compiled once per machine).
 
 Guarantee (for the polyline, with the scene's geometry, allowances applied): if
 :meth:`PathVerifier.verify` accepts a path, every measured pair was more than 1 µm apart
-(coal's GJK tolerance is subtracted from every distance), and between measurements no pair
-can penetrate deeper than ``margin / 2`` (m); wherever the two measurements around a
-position summed more than the motion between them, the pair cannot touch there at all.
+(coal's GJK tolerance is subtracted from every exact distance), and between measurements
+no pair can penetrate deeper than ``margin / 2`` (m); wherever the two measurements
+around a position summed more than the motion between them, the pair cannot touch there.
 """
 
 from __future__ import annotations
