@@ -16,10 +16,11 @@ for :class:`~taskrunner.planning.MotionPlanner`::
 
 from __future__ import annotations
 
+from taskrunner.moveit.messages import ObjectEdit
 from taskrunner.moveit.names import NameMap
 from taskrunner.moveit.report import PlanReport, plan_files, plan_request_file
 from taskrunner.moveit.request_file import MotionPlanRequestFile, load_motion_plan_request, planner_name
-from taskrunner.moveit.scene_file import ObjectEdit, PlanningSceneFile, apply_scene_file, load_planning_scene
+from taskrunner.moveit.scene_file import PlanningSceneFile, apply_scene_file, load_planning_scene
 
 __all__ = [
     "MotionPlanRequestFile",

@@ -31,7 +31,7 @@ from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.yamlfile import LineList, line_of
 
 __all__ = ["CONE_SIDES", "PRIMITIVE_TYPES", "mesh_folder", "read_mesh", "read_primitive",
-           "triangle_mesh_file"]
+           "ros2_byte", "triangle_mesh_file"]
 
 PRIMITIVE_TYPES = {1: "BOX", 2: "SPHERE", 3: "CYLINDER", 4: "CONE", 5: "PRISM"}
 _DIMENSIONS = {1: ("x", "y", "z"), 2: ("radius",), 3: ("height", "radius"), 4: ("height", "radius")}
@@ -89,13 +89,13 @@ def _primitive_type(raw: object) -> int | None:
         by_name = {name: number for number, name in PRIMITIVE_TYPES.items()}
         if raw.upper() in by_name:
             return by_name[raw.upper()]
-        raw = _ros2_byte(raw)
+        raw = ros2_byte(raw)
     if isinstance(raw, int) and not isinstance(raw, bool) and raw in PRIMITIVE_TYPES:
         return raw
     return None
 
 
-def _ros2_byte(text: str) -> int | None:
+def ros2_byte(text: str) -> int | None:
     """``b'\\x01'`` (how ``ros2 topic echo`` prints a byte field) as 1."""
     if len(text) >= 4 and text[:2] in ("b'", 'b"') and text[-1] == text[1]:
         body = text[2:-1]

@@ -43,15 +43,16 @@ import pinocchio as pin
 from taskrunner.errors import InputError
 from taskrunner.moveit.fields import MessageReader, Msg
 from taskrunner.moveit.geometry import read_primitive
-from taskrunner.moveit.names import NameMap
-from taskrunner.moveit.scene_file import (
+from taskrunner.moveit.messages import (
     ROBOT_STATE_FIELDS,
     ObjectEdit,
-    _mapped,
-    _try,
+    mapped_name,
     read_robot_state,
+    try_name,
     unwrap,
 )
+from taskrunner.moveit.names import AmbiguousName, NameMap
+from taskrunner.moveit.scene_file import PlanningSceneFile, apply_object
 from taskrunner.planning.request import (
     PLANNERS,
     Goal,
@@ -140,8 +141,6 @@ class MotionPlanRequestFile:
     def apply_start(self, scene: Scene) -> None:
         """Put the start state's attached objects into ``scene`` (use a copy of the
         planning scene: MoveIt applies them for this request only)."""
-        from taskrunner.moveit.scene_file import PlanningSceneFile, apply_object
-
         carrier = PlanningSceneFile(self.path, "", "", True, {}, self.start_attached, (), (), {},
                                     [], self.names, MessageReader(self.path, False))
         for edit in self.start_attached:
@@ -233,8 +232,6 @@ class MotionPlanRequestFile:
 
 
 def _try_link(names: NameMap, frame: str, path: Path | None, target: _PoseTarget) -> str | None:
-    from taskrunner.moveit.names import AmbiguousName
-
     try:
         return names.link(frame)
     except AmbiguousName as exc:
@@ -284,7 +281,7 @@ def _constraints(msg: Msg, names: NameMap) -> tuple[tuple[_JointCheck, ...] | No
     if joints:
         checks = []
         for joint in joints:
-            name = _mapped(joint, "joint_name", names.joint, joint.string("joint_name"), "joint",
+            name = mapped_name(joint, "joint_name", names.joint, joint.string("joint_name"), "joint",
                            list(names.model.joint_names))
             above, below = joint.number("tolerance_above"), joint.number("tolerance_below")
             for key, value in (("tolerance_above", above), ("tolerance_below", below)):
@@ -301,14 +298,14 @@ def _constraints(msg: Msg, names: NameMap) -> tuple[tuple[_JointCheck, ...] | No
         raise msg.error(None, "has several position or orientation constraints: one pose goal "
                               "per Constraints is supported")
     position = positions[0]
-    link = _mapped(position, "link_name", names.link, position.string("link_name"), "link",
+    link = mapped_name(position, "link_name", names.link, position.string("link_name"), "link",
                    list(names.model.link_names))
     offset = position.vector3("target_point_offset")
     centre, radius = _region(position)
     orientation, tolerance = None, (math.inf, math.inf, math.inf)
     if orientations:
         ori = orientations[0]
-        other = _mapped(ori, "link_name", names.link, ori.string("link_name"), "link",
+        other = mapped_name(ori, "link_name", names.link, ori.string("link_name"), "link",
                         list(names.model.link_names))
         if other != link:
             raise ori.error("link_name", f"must be the position constraint's link {link!r} "
@@ -370,7 +367,7 @@ def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *,
         written = msg.string("group_name")
         if not written:
             raise msg.error("group_name", "must name the planning group")
-        found = _try(msg, "group_name", names.group, written)
+        found = try_name(msg, "group_name", names.group, written)
         group_name = found or ""
     start = read_robot_state(msg.msg("start_state", ROBOT_STATE_FIELDS), names)
     goals = [_constraints(c, names) for c in msg.msgs("goal_constraints", CONSTRAINTS_FIELDS)]
