@@ -34,7 +34,7 @@ from __future__ import annotations
 import math
 import os
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -167,7 +167,7 @@ class MotionPlanRequestFile:
                 goals.append(PoseGoal(Pose.from_se3(world), target.link, position_only=position_only,
                                       tolerance=tolerance))
         return PlanRequest(self.group, tuple(goals) if len(goals) > 1 else goals[0], start,
-                           PlannerOptions(**{**self.options.__dict__, "seed": seed}),
+                           replace(self.options, seed=seed),
                            TimingOptions(self.velocity_scaling, self.acceleration_scaling)
                            if timing else None)
 
