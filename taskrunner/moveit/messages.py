@@ -40,7 +40,7 @@ class ObjectEdit:
         id: the object's id.
         operation: ``ADD``, ``REMOVE``, ``APPEND`` or ``MOVE``.
         frame: ``header.frame_id`` as written ("" is the world).
-        parts: each shape and its pose in ``frame`` (ROS 2's object pose included).
+        parts: each shape and its pose in ``frame`` (the object's own pose included: ROS 2, Noetic).
         attach_to: the link carrying it (an attached object), mapped to the model.
         touch_links: links it may touch besides ``attach_to``, mapped.
         where: the field path in the file, for messages; ``line`` its line.

@@ -4,7 +4,7 @@ Read (ROS 1 and ROS 2 dumps; the message's fields at the top level or under one 
 ``planning_scene`` / ``scene``):
 
 - ``world.collision_objects``: ``id``, ``header.frame_id``, ``primitives`` +
-  ``primitive_poses``, ``meshes`` + ``mesh_poses``, ROS 2's object ``pose`` (the part
+  ``primitive_poses``, ``meshes`` + ``mesh_poses``, the object ``pose`` (ROS 2, Noetic; the part
   poses are then relative to it), ``operation`` ADD (0) / REMOVE (1) / APPEND (2) /
   MOVE (3). An object of several shapes becomes scene objects ``id``, ``id/1``, ``id/2``
   …; REMOVE, MOVE and ACM entries naming ``id`` apply to all of them.
