@@ -169,13 +169,18 @@ class TaskContext:
                                 f"{grasp['link']!r} at {grasp['time']:.3f} s (grasp_mode weld)")
                 self.events.emit("physics", message, node=finished[0], location=finished[1],
                                  **report)
+            # While a motion runs, moves under 0.1 mm are skipped; when it has ended (the
+            # physics paused) objects take their exact poses, so what is planned next does
+            # not depend on when the tree last looked.
             for name, pose in self.backend.object_poses().items():
                 if name in self.scene and not self.scene.object(name).attached \
-                        and _moved(self.scene.object(name).pose, pose):
+                        and _moved(self.scene.object(name).pose, pose, exact=finished is not None):
                     self.scene.move_object(name, pose)
 
 
-def _moved(a: Pose, b: Pose) -> bool:
-    """More than 0.1 mm or about 0.01° apart (below that, no scene edit)."""
+def _moved(a: Pose, b: Pose, exact: bool = False) -> bool:
+    """More than 0.1 mm or about 0.01° apart (below that, no scene edit); ``exact``: at all."""
+    if exact:
+        return tuple(a.xyz) != tuple(b.xyz) or tuple(a.quat) != tuple(b.quat)
     return (float(np.linalg.norm(np.subtract(a.xyz, b.xyz))) > 1e-4
             or abs(abs(float(np.dot(a.quat, b.quat))) - 1.0) > 1e-8)
