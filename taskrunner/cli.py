@@ -180,7 +180,7 @@ def _demo_below_surface(scene: Scene, solver: IkSolver, target: np.ndarray,
     from taskrunner.types import Pose
 
     probe = "__demo_probe__"
-    scene.add_object(probe, Sphere(0.001), Pose(xyz=tuple(float(v) for v in target)))
+    scene.add_object(probe, Sphere(0.001), Pose(xyz=(float(target[0]), float(target[1]), float(target[2]))))
     try:
         support = scene.support(probe)
     finally:
