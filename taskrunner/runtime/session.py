@@ -173,6 +173,8 @@ def _log_line(event: RunEvent) -> str | None:
         return f"{event.time:8.2f}s  {mark} {event.node}{timing}{tail}"
     if event.kind in ("run_started", "run_finished", "message"):
         return f"{event.time:8.2f}s  {event.message}"
+    if event.kind == "physics" and event.data.get("grasps"):  # grasp_mode weld made/released
+        return f"{event.time:8.2f}s    physics: {event.message}"
     return None
 
 
