@@ -67,8 +67,8 @@ _H_NJ, _H_NG, _H_NS, _H_NP, _H_NM, _H_NQ, _H_NIDX = range(7)
 (_I_PARENT, _I_JTYPE, _I_JSTATE, _I_GJOINT, _I_GKIND, _I_GSTART, _I_GEND, _I_PA, _I_PB,
  _I_MT, _I_MS, _I_IDX, _I_GCSTART, _I_GCEND, _I_CFIRST, _I_CLAST) = range(7, 23)
 (_F_AXIS, _F_PR, _F_PP, _F_SC, _F_SR, _F_BC, _F_BR, _F_GR, _F_GP, _F_GD, _F_LEV, _F_MM,
- _F_MO, _F_GLO, _F_GHI) = range(23, 38)
-_HEADER = 38
+ _F_MO, _F_GLO, _F_GHI, _F_GLEV) = range(23, 39)
+_HEADER = 39
 _CLUSTER = 4  # spheres per cluster: a geometry's spheres are tested cluster by cluster
 
 
@@ -343,6 +343,7 @@ def _pack(model: SphereModel, pairs: list[tuple[int, int]], pair_levers: np.ndar
         np.array([m[3] for m in model.mimic], dtype=float),
         np.array([_box_of(g)[0] for g in geometries], dtype=float).reshape(-1).copy(),
         np.array([_box_of(g)[1] for g in geometries], dtype=float).reshape(-1).copy(),
+        np.asarray(model.levers, dtype=float).reshape(-1).copy(),
     ]
     header = np.zeros(_HEADER, dtype=np.int64)
     header[_H_NJ] = len(joints["parent"])
@@ -686,11 +687,26 @@ def _edge(ints, floats, work, pending, rates, base, a, b, eps, max_checks):  # t
     _fill(ints, floats, state, base, a)
     for k in range(nq):
         delta[k] = abs(delta[k] - state[k])
+    # Lever arms at the segment's start (the distance from each axis to each geometry's
+    # bounding sphere) grown by what the joints below can move it over the segment: much
+    # tighter than the lever arms at full reach when the arm is folded.
+    _fk(ints, floats, state, rot, pos)
+    _place(ints, floats, rot, pos, centres, bounds)
+    contribution = _segment_levers(ints, floats, rot, pos, bounds, delta)
+    ng = ints[_H_NG]
+    glevers = floats[ints[_F_GLEV]:ints[_F_GLEV] + ng * nq].reshape((ng, nq))
     for p in range(npairs):
         rate = 0.0
+        full = 0.0
+        ga = pa[p]
+        gb = pb[p]
         for k in range(nq):
-            rate += levers[p, k] * delta[k]
-        rates[p] = rate
+            full += levers[p, k] * delta[k]
+            if glevers[gb, k] == 0.0:
+                rate += contribution[ga, k]
+            if glevers[ga, k] == 0.0:
+                rate += contribution[gb, k]
+        rates[p] = min(rate, full)
         pending[p] = p
     n_values = len(a)
     values = np.empty(n_values)
@@ -760,6 +776,49 @@ def _scan(ints, floats, work, base, a, b, s, steps, out):  # type: ignore[no-unt
             out[found] = t
             found += 1
     return found
+
+
+@_jit
+def _segment_levers(ints, floats, rot, pos, bounds, delta):  # type: ignore[no-untyped-def]
+    """Per geometry and state column: how far that joint's motion ``delta`` can move the
+    geometry over the segment, from the frames at its start (``rot``, ``pos``, bounding
+    sphere centres ``bounds``): (distance from the axis to the bounding sphere's centre +
+    its radius + what the joints between the axis and the geometry can move it) × the
+    joint's motion; a prismatic joint moves it by its motion."""
+    nj = ints[_H_NJ]
+    ng = ints[_H_NG]
+    nq = ints[_H_NQ]
+    parent = ints[ints[_I_PARENT]:ints[_I_PARENT] + nj]
+    jtype = ints[ints[_I_JTYPE]:ints[_I_JTYPE] + nj]
+    jstate = ints[ints[_I_JSTATE]:ints[_I_JSTATE] + nj]
+    gjoint = ints[ints[_I_GJOINT]:ints[_I_GJOINT] + ng]
+    axis = floats[ints[_F_AXIS]:ints[_F_AXIS] + 3 * nj].reshape((nj, 3))
+    bradius = floats[ints[_F_BR]:ints[_F_BR] + ng]
+    glevers = floats[ints[_F_GLEV]:ints[_F_GLEV] + ng * nq].reshape((ng, nq))
+    out = np.zeros((ng, nq))
+    for g in range(ng):
+        below = 0.0  # what the joints already walked (below the current one) move it
+        j = gjoint[g]
+        while j > 0:
+            k = jstate[j]
+            if jtype[j] == _PRISMATIC:
+                out[g, k] = delta[k]
+            else:
+                # The axis in the world: through pos[j], along rot[j] @ axis[j].
+                ux = rot[j, 0, 0] * axis[j, 0] + rot[j, 0, 1] * axis[j, 1] + rot[j, 0, 2] * axis[j, 2]
+                uy = rot[j, 1, 0] * axis[j, 0] + rot[j, 1, 1] * axis[j, 1] + rot[j, 1, 2] * axis[j, 2]
+                uz = rot[j, 2, 0] * axis[j, 0] + rot[j, 2, 1] * axis[j, 1] + rot[j, 2, 2] * axis[j, 2]
+                dx = bounds[g, 0] - pos[j, 0]
+                dy = bounds[g, 1] - pos[j, 1]
+                dz = bounds[g, 2] - pos[j, 2]
+                along = dx * ux + dy * uy + dz * uz
+                off = dx * dx + dy * dy + dz * dz - along * along
+                distance = np.sqrt(max(off, 0.0))
+                # Both bounds hold: the one at full reach and the one from here.
+                out[g, k] = min(distance + bradius[g] + below, glevers[g, k]) * delta[k]
+            below += glevers[g, k] * delta[k]
+            j = parent[j]
+    return out
 
 
 @_jit
