@@ -223,6 +223,31 @@ def test_other_planners_search_with_the_edge_validator(shelf_scene, planner):
     assert motion_planner.verify_states(states, 5e-4).valid
 
 
+def test_a_model_the_compiled_kinematics_cannot_handle_plans_exactly(shelf_scene, monkeypatch):
+    def unsupported(*args, **kwargs):  # type: ignore[no-untyped-def]
+        raise fastcheck.UnsupportedModelError("joint 'base' (JointModelFreeFlyer)")
+
+    monkeypatch.setattr(fastcheck, "SphereModel", unsupported)
+    planner = MotionPlanner(shelf_scene, fast_check=True)
+    goal = JointGoal({"panda_joint1": 0.6, "panda_joint2": 0.3, "panda_joint4": -1.9})
+    planner.plan(PlanRequest("arm", goal, options=PlannerOptions(seed=3)))
+    assert planner.fast_check is False and planner._spheres is None
+
+
+def test_a_free_flyer_is_reported_unsupported(panda_model):
+    model = pin.Model()
+    model.addJoint(0, pin.JointModelFreeFlyer(), pin.SE3.Identity(), "base")
+
+    class Fake:
+        pass
+
+    robot = Fake()
+    robot.model = model  # type: ignore[attr-defined]
+    robot.joints = ()  # type: ignore[attr-defined]
+    with pytest.raises(fastcheck.UnsupportedModelError, match="base"):
+        fastcheck._joint_table(robot)  # type: ignore[arg-type]
+
+
 # ---------------------------------------------------------------------- cache
 def test_sphere_models_are_cached_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
