@@ -240,3 +240,25 @@ def test_cli_info_lists_the_link_geometry_and_collision_overrides_it(tmp_path: P
             os.environ.pop("TASKRUNNER_COLLISION", None)
         else:
             os.environ["TASKRUNNER_COLLISION"] = saved
+
+
+def test_run_task_check_names_the_geometry_of_a_target_in_collision(repo_root: Path):
+    from taskrunner.tree.check import check_task
+
+    path = repo_root / "tests" / "tree" / "fixtures" / "candle_blocked.yaml"
+    (problem,) = check_task(path).problems
+    assert problem.message.endswith("target in collision (gripper_base_1–lamp, "
+                                    "lamp–wrist_link_1; primitive shapes)")
+
+
+def test_collision_matrix_checks_the_geometry_it_is_told(tmp_path: Path, capsys):
+    from taskrunner.scene.acm import main as collision_matrix
+
+    folder = make_u_robot(tmp_path / "u")
+    # The plunger reaches into the U's notch: as meshes they never touch, as a hull they do.
+    assert collision_matrix([str(folder), "--samples", "200", "--collision", "exact"]) == 0
+    exact = capsys.readouterr().out
+    assert collision_matrix([str(folder), "--samples", "200", "--collision", "convex"]) == 0
+    convex = capsys.readouterr().out
+    pair = '<disable_collisions link1="base_link" link2="plunger" reason="Never"/>'
+    assert pair in exact and pair not in convex
