@@ -156,7 +156,7 @@ def test_a_two_waypoint_path_is_a_straight_line(panda_model):
 
 
 def test_a_corner_at_a_position_limit_stays_within_the_limit(servo_arm_model, monkeypatch):
-    # Revolute 2 sits at 0 (upper limit 0.0005) through the corner: a cubic spline would
+    # Revolute 2 sits at 0 (its upper limit) through the corner: a cubic spline would
     # overshoot it by ~0.004 rad, so the monotone PCHIP curve is used instead.
     kit = timing._toppra_kit()
     made, pchip = [], kit.Pchip

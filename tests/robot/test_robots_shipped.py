@@ -69,7 +69,7 @@ def test_servo_arm_limits_come_from_joint_limits_yaml(servo_arm_model):
     r1 = m.joint("Revolute 1")
     assert r1.max_velocity == pytest.approx(3.0)  # MG996R: half its no-load speed
     assert r1.max_acceleration == pytest.approx(6.0)  # the URDF has no acceleration limits
-    assert (r1.lower, r1.upper) == pytest.approx((-0.0005, 3.14))
+    assert (r1.lower, r1.upper) == pytest.approx((0.0, 3.14))  # the servo's 0 and 180 deg
     assert m.joint("Revolute 6").max_velocity == pytest.approx(4.0)
     assert m.joint("Revolute 6").max_acceleration == pytest.approx(8.0)
     instance = m.instances[0]
@@ -85,7 +85,7 @@ def test_servo_arm_joint_limits_yaml_overrides_the_urdf(tmp_path, robots_dir):
     limits = copy / "config" / "joint_limits.yaml"
     text = limits.read_text()
     text = text.replace("max_velocity: 3.0\n", "max_velocity: 0.15\n", 1)
-    text = text.replace("min_position: -0.0005\n    max_position: 3.14", "min_position: 0.5\n    max_position: 2.5")
+    text = text.replace("min_position: 0.0\n    max_position: 3.14", "min_position: 0.5\n    max_position: 2.5")
     limits.write_text(text)
     r1 = load_robot(copy).joint("Revolute 1")
     assert r1.max_velocity == pytest.approx(0.15)
