@@ -47,7 +47,8 @@ __all__ = ["IkSolver", "IkTarget", "is_reachable", "solve_ik"]
 IkTarget: TypeAlias = pin.SE3 | Pose | np.ndarray
 """A world pose (SE3, 4x4 matrix, or :class:`Pose`), or a world position (3,) in m."""
 
-NEAREST_SEEDS = 6  # restarts from the seed table before random ones
+NEAREST_SEEDS = 25  # restarts from the seed table before random ones (6: 10-15 % more
+# iterations on the hardest 1 % of Panda and UR5 targets; beyond 25 no better)
 TABLE_SIZE = 2000  # configurations in the seed table (~10 ms to build)
 TABLE_SEED = 20_111_986  # any fixed value; not 0, which callers use for their own draws
 

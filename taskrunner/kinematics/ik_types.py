@@ -42,7 +42,7 @@ class IkOptions:
             longer than 4 × timeout of wall time. No attempt starts after it; an attempt
             converging close to the target when it passes may finish (at most 5 more
             iterations, ~0.1 ms).
-        attempts: starts allowed: the seed state, then up to 6 stored configurations
+        attempts: starts allowed: the seed state, then up to 25 stored configurations
             whose frame pose is nearest the target, then random configurations
             (``kinematics_solver_attempts``; 10 when the group has no entry).
         seed: seed of the ``np.random.default_rng`` that draws the random restarts (the
