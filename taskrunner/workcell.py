@@ -34,6 +34,7 @@ from taskrunner.backends.base import Backend, ExecutionHandle
 from taskrunner.builder import Task
 from taskrunner.errors import InputError
 from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner, relative_pose
+from taskrunner.planning.cartesian_limits import time_cartesian_path
 from taskrunner.planning.planner import MotionPlanner
 from taskrunner.planning.request import (
     Goal,
@@ -449,7 +450,8 @@ class Workcell:
             assert waypoints is not None
             targets = [_waypoint(w, here) for w in _waypoint_list(waypoints)]
         result = self._cartesian.compute(group, targets, link, options, q)
-        trajectory = parameterize_path(self.model, result.path, timing)
+        # Timed by the joint limits, and by pilz_cartesian_limits.yaml's when the robot has it.
+        trajectory = time_cartesian_path(self.model, result.path, frame_link, timing)
         return Plan(group, result.path, trajectory, self._full(result.start),
                     self._full(result.end), result.fraction, result.message, result.elapsed)
 

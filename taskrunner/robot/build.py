@@ -121,7 +121,7 @@ def build_model(
             p.name, p.prefix, pin.SE3(p.base), p.description.source, p.description.hardware_path,
             *_scaling(p.description), p.description.layout,
             tuple(p.description.files.items()), tuple(p.description.notes),
-            _collision_choice(p.description),
+            _collision_choice(p.description), p.description.cartesian_limits,
         )
         for p in placements
     )

@@ -180,8 +180,8 @@ def _add_optional_files(description: RobotDescription, ompl: Path | None,
         if description.cartesian_limits is not None:
             description.files["pilz_cartesian_limits"] = cartesian
             description.notes.append(
-                f"Cartesian limits: {description.cartesian_limits.describe()} (read; straight "
-                "moves are timed by the joint limits only)")
+                f"Cartesian limits: {description.cartesian_limits.describe()} (straight moves "
+                "of the tool are slowed to them)")
     if ompl is not None:
         description.ompl = _optional(read_ompl_planning_yaml, ompl, "ompl_planning.yaml",
                                      warnings)

@@ -23,7 +23,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import UnknownNameError
-from taskrunner.robot.moveit_yaml import KinematicsSettings, OmplGroupSettings
+from taskrunner.robot.moveit_yaml import CartesianLimits, KinematicsSettings, OmplGroupSettings
 from taskrunner.types import JointState
 
 __all__ = ["EndEffector", "Group", "JointInfo", "Mimic", "RobotInstance", "RobotModel"]
@@ -138,6 +138,8 @@ class RobotInstance:
     notes: tuple[str, ...] = ()
     collision: str = "auto"
     """Link geometry to check: exact meshes, convex hulls, or auto (hulls where tight)."""
+    cartesian_limits: CartesianLimits | None = None
+    """Its ``pilz_cartesian_limits.yaml``: bounds of straight-line tool motions."""
 
     def describe_files(self) -> list[str]:
         """Which files the robot was loaded from and why, for ``run-task info``."""

@@ -334,7 +334,7 @@ _CARTESIAN_KEYS = ("max_trans_vel", "max_trans_acc", "max_trans_dec", "max_rot_v
 @dataclass(frozen=True)
 class CartesianLimits:
     """``pilz_cartesian_limits.yaml``: limits of a straight-line (Cartesian) motion of the
-    tool. Read, checked and reported; the Cartesian timing does not apply them yet.
+    tool, applied by :func:`taskrunner.planning.cartesian_limits.time_cartesian_path`.
 
     Attributes:
         max_trans_vel: translational speed (m/s).

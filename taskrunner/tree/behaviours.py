@@ -26,6 +26,7 @@ from taskrunner.planning.cartesian import (
     CartesianPlanner,
     CartesianResult,
 )
+from taskrunner.planning.cartesian_limits import time_cartesian_path
 from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptions, PlanRequest
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
@@ -263,7 +264,14 @@ class MoveStraight(_Executes):
                                      f"{100 * result.fraction:.0f} % ({result.message})")
             return
         try:
-            self.outcome = self.execute_path(result.path, time.perf_counter() - started)
+            # Timed by the joint limits, and by pilz_cartesian_limits.yaml's if the robot has it.
+            model = self.ctx.scene.robot
+            link = self.link if self.link and model.has_link(self.link) else None
+            link = link or model.group(self.group).tip_link
+            trajectory = (time_cartesian_path(model, result.path, link, self.timing)
+                          if link is not None else None)
+            self.outcome = self.execute_path(result.path, time.perf_counter() - started,
+                                             trajectory)
         except TaskrunnerError as exc:
             self.outcome = self.fail(str(exc))
 

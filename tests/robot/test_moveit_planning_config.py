@@ -7,6 +7,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from taskrunner.errors import YamlError
@@ -90,7 +91,7 @@ PILZ = """cartesian_limits:
 """
 
 
-def test_cartesian_limits_are_read_and_reported_as_not_applied(tmp_path: Path):
+def test_cartesian_limits_are_read_and_reported(tmp_path: Path):
     config = _copy(tmp_path)
     (config / "config" / "pilz_cartesian_limits.yaml").write_text(PILZ)
     cell = load_cell_or_robot(config)
@@ -98,7 +99,8 @@ def test_cartesian_limits_are_read_and_reported_as_not_applied(tmp_path: Path):
     lines = inst.describe_files()
     assert f"pilz_cartesian_limits: {config / 'config' / 'pilz_cartesian_limits.yaml'}" in lines
     assert ("note: Cartesian limits: translation 1 m/s, 2.25 m/s² up, 5 m/s² down; rotation "
-            "1.57 rad/s (read; straight moves are timed by the joint limits only)") in lines
+            "1.57 rad/s (straight moves of the tool are slowed to them)") in lines
+    assert inst.cartesian_limits is not None and inst.cartesian_limits.max_trans_vel == 1.0
     assert cell.model.warnings == [w for w in cell.model.warnings if "pilz" not in w]
 
 
@@ -136,3 +138,43 @@ def test_a_broken_cartesian_limits_file_is_a_warning_when_loading(tmp_path: Path
     model = load_robot(config)
     assert (f"{pilz}:2: 'max_trans_vel' must be > 0 (got -1.0); pilz_cartesian_limits.yaml "
             "not used") in model.warnings
+
+
+def _panda_with_limits(tmp_path: Path, robots_dir: Path, limits: str | None) -> Path:
+    """The shipped Panda's manifest, its files by absolute path, with a pilz file or not."""
+    panda = robots_dir / "panda"
+    manifest = (panda / "robot.yaml").read_text()
+    for key in ("srdf", "kinematics", "joint_limits"):
+        manifest = manifest.replace(f"{key}: config/", f"{key}: {panda / 'config'}/")
+    if limits is not None:
+        (tmp_path / "pilz_cartesian_limits.yaml").write_text(limits)
+        manifest += "pilz_cartesian_limits: pilz_cartesian_limits.yaml\n"
+    (tmp_path / "robot.yaml").write_text(manifest)
+    return tmp_path
+
+
+def test_a_straight_move_is_slowed_to_the_cartesian_limits(tmp_path: Path, robots_dir: Path,
+                                                           example_robot_data):
+    from taskrunner.planning.cartesian_limits import measure_cartesian_motion
+    from taskrunner.workcell import load_workcell
+
+    def straight_move(folder: Path):  # type: ignore[no-untyped-def]
+        cell = load_workcell(folder)
+        cell.scene.set_state(cell.model.named_state("arm", "ready"))
+        plan = cell.plan_cartesian("arm", by=(0.1, 0.0, -0.1), frame="world")
+        assert plan.complete
+        tip = cell.model.group("arm").tip_link
+        return plan, measure_cartesian_motion(cell.model, plan.trajectory, tip)
+
+    (tmp_path / "free").mkdir()
+    (tmp_path / "slow").mkdir()
+    free, free_motion = straight_move(_panda_with_limits(tmp_path / "free", robots_dir, None))
+    slow, slow_motion = straight_move(_panda_with_limits(tmp_path / "slow", robots_dir, PILZ.replace(
+        "max_trans_vel: 1.0", "max_trans_vel: 0.05").replace("max_trans_acc: 2.25",
+                                                             "max_trans_acc: 0.2")))
+    assert free_motion.speed > 0.2  # the joint limits alone move the tool faster
+    assert slow_motion.speed <= 0.05 * 1.02 and slow_motion.acceleration <= 0.2 * 1.02
+    assert slow_motion.speed > 0.04  # slowed to the limit, not far below it
+    assert slow.duration > 4 * free.duration
+    np.testing.assert_allclose(slow.trajectory.positions[-1], free.trajectory.positions[-1],
+                               atol=1e-9)  # the same line, only slower
