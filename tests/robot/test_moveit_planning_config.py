@@ -178,3 +178,28 @@ def test_a_straight_move_is_slowed_to_the_cartesian_limits(tmp_path: Path, robot
     assert slow.duration > 4 * free.duration
     np.testing.assert_allclose(slow.trajectory.positions[-1], free.trajectory.positions[-1],
                                atol=1e-9)  # the same line, only slower
+
+
+def test_a_straight_move_of_a_task_is_slowed_to_the_cartesian_limits(tmp_path: Path,
+                                                                      robots_dir: Path,
+                                                                      example_robot_data):
+    from taskrunner.workcell import run_task
+
+    durations = {}
+    for name, limits in (("free", None), ("slow", PILZ.replace("max_trans_vel: 1.0",
+                                                                "max_trans_vel: 0.05"))):
+        folder = tmp_path / name
+        (folder / "robots" / "panda").mkdir(parents=True)
+        _panda_with_limits(folder / "robots" / "panda", robots_dir, limits)
+        (folder / "cells").mkdir()
+        (folder / "cells" / "cell.yaml").write_text(
+            "name: cell\nrobots:\n  - {name: panda, robot: robots/panda}\nstart: {arm: ready}\n")
+        task = folder / "task.yaml"
+        task.write_text("task: down\ncell: cells/cell.yaml\nsteps:\n"
+                        "  - move: {group: arm, by: {xyz: [0, 0, -0.1], frame: world}}\n")
+        result = run_task(task)
+        assert result.status == "succeeded", result.error
+        [planned] = [e for e in result.events if e.kind == "planned"]
+        durations[name] = planned.data["duration"]
+    # 10 cm at 0.05 m/s takes 2 s at least (the joint limits alone: well under a second).
+    assert durations["free"] < 1.0 < 2.0 <= durations["slow"] < 6.0
