@@ -23,7 +23,7 @@ listed for information). Verdicts of the two verifiers are compared too.
 
 ``--planning`` times whole :meth:`MotionPlanner.plan` calls instead (RRTConnect, the
 problems' queries, seeded, one attempt each): every query is planned with the current
-verifier and with the baseline's (patched into the scene), alternating which goes first;
+verifier and with the baseline's (set as the scene's verifier), alternating which goes first;
 per problem the median wall time of ``plan`` and the median verification time
 (``PlanResult.verify_time``) of each. The search is the same for both (same seed), so
 the difference is the verification's.
@@ -259,26 +259,27 @@ def print_table(report: dict) -> None:
 
 def run_planning(args: argparse.Namespace) -> dict:
     """Whole ``plan`` calls, current verifier against the baseline's, interleaved."""
-    import taskrunner.scene.scene as scene_module
-
     problems = args.problems.split(",") if args.problems else list(DEFAULT_PROBLEMS)
     baseline = load_baseline(args.baseline)
     if baseline is None:
         raise SystemExit(f"cannot read taskrunner/scene/sweep.py at {args.baseline!r}")
-    current = scene_module.PathVerifier
+    current = PathVerifier
     table = []
     for problem in planning_scenes.build_problems(5 if args.quick else 20, args.seed, problems):
         planner = MotionPlanner(problem.scene)
-        # Load the compiled kernels (once per process, from numba's cache) before timing.
-        problem.scene.path_verifier().verify(np.vstack([problem.queries[0].start] * 2))
+        scene = problem.scene
+        # One verifier of each per scene, as the scene keeps one between edits.
+        verifiers = {"new": current(scene.robot, scene.checker, MARGIN),
+                     "old": baseline.PathVerifier(scene.robot, scene.checker, MARGIN)}
+        for verifier in verifiers.values():  # load the compiled kernels before timing
+            verifier.verify(np.vstack([problem.queries[0].start, problem.queries[0].goal_state]))
         runs: dict[str, list[tuple[float, float, bool]]] = {"new": [], "old": []}
         for i, query in enumerate(problem.queries):
-            order = [("new", current), ("old", baseline.PathVerifier)]
+            order = ["new", "old"]
             if i % 2:
                 order.reverse()
-            for name, verifier_class in order:
-                scene_module.PathVerifier = verifier_class  # type: ignore[misc]
-                problem.scene._verifier = None
+            for name in order:
+                scene._verifier = (scene.checker, verifiers[name])
                 options = PlannerOptions(planning_time=problem.planning_time, seed=args.seed + i)
                 request = PlanRequest(problem.group, query.goal, start=query.start,
                                       options=options)
@@ -288,8 +289,7 @@ def run_planning(args: argparse.Namespace) -> dict:
                     runs[name].append((time.perf_counter() - t0, result.verify_time, True))
                 except PlanningError:
                     runs[name].append((time.perf_counter() - t0, 0.0, False))
-        scene_module.PathVerifier = current  # type: ignore[misc]
-        problem.scene._verifier = None
+        scene._verifier = None
         entry: dict[str, Any] = {"problem": problem.name, "queries": len(problem.queries)}
         for name, rs in runs.items():
             entry[f"{name}_solved"] = sum(ok for *_, ok in rs)

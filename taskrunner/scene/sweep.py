@@ -409,7 +409,7 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
     """A sphere containing ``geometry`` (its frame): for a convex hull or a mesh, one
     around its vertices (Badoiu-Clarkson centre, radius to the farthest vertex), which
     contains their convex hull; otherwise the sphere around its bounding box."""
-    centre = np.asarray(geometry.aabb_center, dtype=float).copy()
+    centre = np.array(geometry.aabb_center, dtype=float)
     radius = float(geometry.aabb_radius)
     points = None
     if isinstance(geometry, coal.Convex):
@@ -418,11 +418,8 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
         points = np.asarray(geometry.vertices(), dtype=float)
     if points is None or points.ndim != 2 or len(points) == 0 or not np.isfinite(points).all():
         return centre, radius
-    candidate = centre.copy()
-    for i in range(100):
-        farthest = points[np.argmax(np.einsum("ij,ij->i", points - candidate, points - candidate))]
-        candidate += (farthest - candidate) / (i + 2)
-    reach = float(np.sqrt(np.max(np.einsum("ij,ij->i", points - candidate, points - candidate))))
+    candidate = np.ascontiguousarray(centre)
+    reach = _farthest_point_centre(np.ascontiguousarray(points), candidate, 100)
     reach = reach * (1.0 + 1e-12) + 1e-12          # rounding: never inside a vertex
     if reach < radius:
         return candidate, reach
@@ -500,6 +497,25 @@ def _forward(q, arrays, frames):  # type: ignore[no-untyped-def]
             for b in range(3):
                 total += geo_rotations[g, a, b] * geometry_centre[g, b]
             centres[g, a] = total
+
+
+@_jit
+def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyped-def]
+    """Badoiu-Clarkson: move ``centre`` (in place) towards the farthest point, with
+    shrinking steps; returns the distance from the final centre to the farthest point."""
+    for i in range(iterations + 1):
+        best, farthest = -1.0, 0
+        for p in range(points.shape[0]):
+            d = 0.0
+            for a in range(3):
+                d += (points[p, a] - centre[a]) ** 2
+            if d > best:
+                best, farthest = d, p
+        if i == iterations:
+            return math.sqrt(best)
+        for a in range(3):
+            centre[a] += (points[farthest, a] - centre[a]) / (i + 2)
+    return 0.0
 
 
 @_jit
