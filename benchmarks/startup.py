@@ -9,6 +9,9 @@ and measures, on this side's wall clock from just before the spawn:
   its arrival time on the pipe plus the record's time from that ``planned`` event to
   the ``motion`` event (microseconds) gives it;
 * ``checked``: arrival of the ``checked N steps`` line (the end of the check);
+* ``main_cpu``: the ``run-task`` process's own CPU time (user + system, from
+  ``/proc``) when its first motion was planned: the part of the start that machine
+  load does not inflate (its planning worker's CPU time is not in it);
 * ``wall``: process exit (includes the motion itself: the mock backend jumps to the end
   of each trajectory, so little);
 * the exit code: 0, or 3/4 for a run that failed after it moved (still a start-up
@@ -64,8 +67,11 @@ def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = 
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                text=True, env=env, bufsize=1, cwd=runs_dir)
     assert process.stdout is not None and process.stderr is not None
+    cpu_at: list[float] = []  # the run-task process's own CPU time at each planned line
     for line in process.stdout:
         lines.append((time.perf_counter() - started, line.rstrip("\n")))
+        if _PLANNED.match(line):
+            cpu_at.append(_cpu_seconds(process.pid))
     stderr = process.stderr.read()
     code = process.wait(timeout)
     wall = time.perf_counter() - started
@@ -89,10 +95,22 @@ def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = 
         before = max(j for j in range(k) if events[j]["kind"] == "planned")
         line_time = planned_lines[planned.index(events[before])]
         first_motion = line_time + event["time"] - events[before]["time"]
+        main_cpu = cpu_at[planned.index(events[before])]
         break
     if first_motion is None:
         raise RuntimeError(f"run-task {task} ended {code} with no motion in its record:\n{shown}")
-    return {"first_motion": first_motion, "checked": checked, "wall": wall, "exit_code": code}
+    return {"first_motion": first_motion, "checked": checked, "wall": wall, "exit_code": code,
+            "main_cpu": main_cpu}
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User + system CPU time of a process so far (s; Linux), NaN when unknown."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+            fields = stat.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return float("nan")
 
 
 def _stats(values: list[float]) -> dict[str, float]:
@@ -119,7 +137,7 @@ def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = Fa
             result["cold"] = run_once(task, seed, runs_dir, cold_env)
         run_once(task, seed, runs_dir, env)  # fills the caches; not measured
         samples = [run_once(task, seed + k, runs_dir, env) for k in range(runs)]
-    for key in ("first_motion", "checked", "wall"):
+    for key in ("first_motion", "checked", "wall", "main_cpu"):
         values = [s[key] for s in samples if s[key] is not None]
         if values:
             result[key] = _stats(values)
@@ -133,7 +151,8 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
     """``(what, figure)`` rows of a :func:`run` result."""
     out = []
     for key, what in (("first_motion", "start to first motion"), ("checked", "start to check done"),
-                      ("wall", "start to exit (wall)")):
+                      ("wall", "start to exit (wall)"),
+                      ("main_cpu", "run-task's own CPU time to first motion")):
         if key in result:
             s = result[key]
             out.append((f"run-task {result['task']}, {what}, {result['runs']} warm runs",
