@@ -354,8 +354,10 @@ class _Kinematics:
         self.geometry_translation = np.zeros((count, 3))
         self.geometry_centre = np.zeros((count, 3))      # bounding sphere, geometry frame
         self.geometry_radius = np.zeros(count)
+        # Each geometry's bounding box in its own frame (a box geometry: itself).
         self.geometry_box = np.zeros(count, dtype=np.int64)
         self.box_half = np.zeros((count, 3))
+        self.box_centre = np.zeros((count, 3))
         for g, geometry_object in enumerate(geometry_model.geometryObjects):
             geometry = geometry_object.geometry
             geometry.computeLocalAABB()
@@ -363,14 +365,17 @@ class _Kinematics:
             self.geometry_rotation[g] = geometry_object.placement.rotation
             self.geometry_translation[g] = geometry_object.placement.translation
             self.geometry_centre[g], self.geometry_radius[g] = _enclosing_sphere(geometry)
-            if isinstance(geometry, coal.Box):
+            low = np.asarray(geometry.aabb_local.min_, dtype=float)
+            high = np.asarray(geometry.aabb_local.max_, dtype=float)
+            if np.isfinite(low).all() and np.isfinite(high).all():
                 self.geometry_box[g] = 1
-                self.box_half[g] = np.asarray(geometry.halfSide, dtype=float)
+                self.box_half[g] = 0.5 * (high - low)
+                self.box_centre[g] = 0.5 * (high + low)
         self.arrays = (self.parent, self.joint_kind, self.state_index, self.placement_rotation,
                        self.placement_translation, self.axis, self.state_joint,
                        self.geometry_joint, self.geometry_rotation, self.geometry_translation,
                        self.geometry_centre, self.geometry_radius, self.geometry_box,
-                       self.box_half)
+                       self.box_half, self.box_centre)
 
     def buffers(self) -> tuple[np.ndarray, ...]:
         """Work arrays: joint rotations and origins, geometry rotations, origins and
@@ -435,7 +440,8 @@ def _forward(q, arrays, frames):  # type: ignore[no-untyped-def]
     """World frames of the joints and the geometries, and the geometry bounding sphere
     centres, at state ``q`` (into ``frames``)."""
     (parent, joint_kind, state_index, placement_rotation, placement_translation, axis, _,
-     geometry_joint, geometry_rotation, geometry_translation, geometry_centre, _, _, _) = arrays
+     geometry_joint, geometry_rotation, geometry_translation, geometry_centre, _, _, _,
+     _) = arrays
     rotations, origins, geo_rotations, geo_origins, centres = frames
     for a in range(3):
         for b in range(3):
@@ -550,12 +556,12 @@ def _levers_at(k, owner, pair_levers, arrays, frames, out):  # type: ignore[no-u
 
 @_jit
 def _sphere_to_box(centre, radius, box, arrays, frames):  # type: ignore[no-untyped-def]
-    """Distance from a sphere to box geometry ``box`` (negative: may overlap)."""
-    half = arrays[13]
+    """Distance from a sphere to geometry ``box``'s bounding box (negative: may overlap)."""
+    half, box_centre = arrays[13], arrays[14]
     geo_rotations, geo_origins = frames[2], frames[3]
     outside = 0.0
     for b in range(3):
-        local = 0.0
+        local = -box_centre[box, b]
         for a in range(3):
             local += geo_rotations[box, a, b] * (centre[a] - geo_origins[box, a])
         excess = abs(local) - half[box, b]
@@ -565,21 +571,61 @@ def _sphere_to_box(centre, radius, box, arrays, frames):  # type: ignore[no-unty
 
 
 @_jit
+def _box_gap(a, b, arrays, frames):  # type: ignore[no-untyped-def]
+    """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
+    boxes on their six face normals: a lower bound on their distance where positive."""
+    half, box_centre = arrays[13], arrays[14]
+    geo_rotations, geo_origins = frames[2], frames[3]
+    ca = np.empty(3)
+    cb = np.empty(3)
+    for i in range(3):
+        ca[i] = geo_origins[a, i]
+        cb[i] = geo_origins[b, i]
+        for j in range(3):
+            ca[i] += geo_rotations[a, i, j] * box_centre[a, j]
+            cb[i] += geo_rotations[b, i, j] * box_centre[b, j]
+    best = -np.inf
+    for side in range(2):
+        owner = a if side == 0 else b
+        for axis in range(3):
+            # Unit normal: column ``axis`` of the owner's rotation.
+            gap = 0.0
+            for i in range(3):
+                gap += (ca[i] - cb[i]) * geo_rotations[owner, i, axis]
+            gap = abs(gap)
+            for j in range(3):
+                dot_a = 0.0
+                dot_b = 0.0
+                for i in range(3):
+                    dot_a += geo_rotations[a, i, j] * geo_rotations[owner, i, axis]
+                    dot_b += geo_rotations[b, i, j] * geo_rotations[owner, i, axis]
+                gap -= half[a, j] * abs(dot_a) + half[b, j] * abs(dot_b)
+            if gap > best:
+                best = gap
+    return best
+
+
+@_jit
 def _lower_bound(a, b, arrays, frames):  # type: ignore[no-untyped-def]
-    """A lower bound on the distance of geometries ``a`` and ``b``: their bounding
-    spheres' distance, or a box's exact distance to the other's bounding sphere."""
-    radius, is_box = arrays[11], arrays[12]
+    """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
+    best of their bounding spheres' distance, each sphere's distance to the other's
+    bounding box and the boxes' separation along their face normals."""
+    radius, has_box = arrays[11], arrays[12]
     centres = frames[4]
     gap = 0.0
     for i in range(3):
         gap += (centres[a, i] - centres[b, i]) ** 2
     best = math.sqrt(gap) - radius[a] - radius[b]
-    if is_box[b] != 0:
+    if has_box[b] != 0:
         value = _sphere_to_box(centres[a], radius[a], b, arrays, frames)
         if value > best:
             best = value
-    if is_box[a] != 0:
+    if has_box[a] != 0:
         value = _sphere_to_box(centres[b], radius[b], a, arrays, frames)
+        if value > best:
+            best = value
+    if has_box[a] != 0 and has_box[b] != 0:
+        value = _box_gap(a, b, arrays, frames)
         if value > best:
             best = value
     return best
