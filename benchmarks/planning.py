@@ -2,6 +2,8 @@
 
     python benchmarks/planning.py [--quick] [--json] [--seed N] [--planners A,B]
                                   [--problems P,Q] [--queries N] [--profile]
+    python benchmarks/planning.py --compare [--per-class N] ...  # planning_compare.py:
+        # the MoveIt problem sets of make_problems.py, ours against roboplan's RRT-Connect
 
 The scenes and their seeded queries are in ``benchmarks/planning_scenes.py``: a Panda
 picking over a table, under a table, in a shelf, in an open box and out of a cage; the
@@ -398,6 +400,11 @@ def _split(text: str | None) -> list[str] | None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if "--compare" in argv:  # the MoveIt problem sets, side by side with roboplan
+        import planning_compare
+
+        return planning_compare.main([a for a in argv if a != "--compare"])
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="5 queries, RRTConnect only")
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
