@@ -43,8 +43,8 @@ stretch, the next one is optimistic, where the bound reaches ``(1 + GAIN) d`` (a
 one does not cover the gap with the last, measurements at ``d`` steps fill it from the
 left (each is covered whatever it measures: the walk always advances). Pairs due at
 nearby positions share one forward kinematics. A measurement is a lower bound on the
-distance: far pairs take a cheap one, computed in compiled code (bounding spheres; a
-box's exact distance to the other's bounding sphere); only below :data:`CHEAP_FROM` does
+distance: far pairs take a cheap one, computed in compiled code (bounding spheres,
+bounding boxes: see :func:`_lower_bound`); only below :data:`CHEAP_FROM` does
 the verifier ask coal for the exact distance of the scene checker's geometry. The walk
 runs compiled (numba, ``cache=True``: compiled once per machine).
 
@@ -239,9 +239,8 @@ class PathVerifier:
 
     def lower_bounds(self, q: np.ndarray) -> np.ndarray:
         """Per pair, the cheap bound on its distance (m) at state ``q`` that the verifier
-        uses for far pairs (bounding spheres; a box's exact distance to the other body's
-        bounding sphere): where positive, the pair is at least that far apart. ``-inf``
-        without compiled kinematics."""
+        uses for far pairs (bounding spheres and boxes): where positive, the pair is at
+        least that far apart. ``-inf`` without compiled kinematics."""
         kin = self._kinematics
         out = np.full(len(self._names), -np.inf)
         if not kin.supported:
