@@ -85,12 +85,16 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
                              "auto (hulls where tight; default: each robot's own choice)")
 
 
+# The variables of taskrunner.robot.notes.STRICT_ENV, taskrunner.robot.packages.PACKAGE_PATH_ENV
+# and taskrunner.scene.linkgeometry.COLLISION_ENV, named here: importing taskrunner.robot
+# takes 0.3 s, and run-task starts its planning worker (which inherits them) before that.
+STRICT_ENV, PACKAGE_PATH_ENV, COLLISION_ENV = (
+    "TASKRUNNER_STRICT", "TASKRUNNER_PACKAGE_PATH", "TASKRUNNER_COLLISION")
+
+
 def _apply_robot_options(args: argparse.Namespace) -> None:
     """Hand ``--package-path`` and ``--strict`` to every robot loader, in this process and
     in the worker processes it starts, through the environment."""
-    from taskrunner.robot.notes import STRICT_ENV
-    from taskrunner.robot.packages import PACKAGE_PATH_ENV
-
     folders = [Path(p).expanduser().resolve() for p in getattr(args, "package_path", [])]
     missing = [str(f) for f in folders if not f.is_dir()]
     if missing:
@@ -102,7 +106,7 @@ def _apply_robot_options(args: argparse.Namespace) -> None:
     if getattr(args, "strict", False):
         os.environ[STRICT_ENV] = "1"
     if getattr(args, "collision", None):
-        os.environ["TASKRUNNER_COLLISION"] = args.collision
+        os.environ[COLLISION_ENV] = args.collision
 
 
 def cmd_info(args: argparse.Namespace) -> int:
