@@ -234,16 +234,14 @@ def test_explicit_core_tags_convert():
 
 
 def test_an_alias_bomb_is_refused_before_it_is_expanded():
-    from time import perf_counter
-
-    names = "abcdefghijkl"  # 12 levels of 10: 10^12 nodes if expanded
+    # 12 levels of 10: 10^12 nodes if expanded, which would never finish; the refusal
+    # comes while reading line 5 (10^4 nodes counted), long before the last anchor.
+    names = "abcdefghijkl"
     text = "a: &a [" + ",".join(["lol"] * 10) + "]\n" + "".join(
         f"{n}: &{n} [" + ",".join([f"*{p}"] * 10) + "]\n" for p, n in zip(names, names[1:]))
     assert len(text) < 500
-    start = perf_counter()
     with pytest.raises(YamlError) as info:
         load_yaml_text(text, "bomb.yaml")
-    assert perf_counter() - start < 0.5
     assert str(info.value) == ("bomb.yaml:5: aliases expand to more than 100000 nodes "
                                "(at '*d'; an alias bomb?)")
 
