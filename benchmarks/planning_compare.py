@@ -513,15 +513,17 @@ def _load() -> str:
 def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem_seed: int = 0,
         problems: Path | None = None, cap: float = 5.0, fast_check: bool | None = None,
         roboplan: bool = True, roboplan_shortcut: bool = False,
-        roboplan_max_nodes: int = ROBOPLAN_MAX_NODES, progress: bool = False) -> dict[str, Any]:
+        roboplan_max_nodes: int = ROBOPLAN_MAX_NODES, progress: bool = False,
+        problem_dir: Path | None = None) -> dict[str, Any]:
     """Plan ``per_class`` problems of each class with both planners; see the docstring.
-    ``roboplan=False`` runs our side only (no ratios)."""
+    ``roboplan=False`` runs our side only (no ratios). Without ``problems``, the problems
+    are generated into ``problem_dir`` (default ``benchmarks/problems``)."""
     for name in classes:
         if name not in CLASSES:
             raise SystemExit(f"error: unknown class {name!r}; known: {', '.join(CLASSES)}")
     folder = problems
     if folder is None:
-        folder = BENCH / "problems"
+        folder = problem_dir or BENCH / "problems"
         make_problems.generate(folder, per_class, problem_seed, classes)
     urdf, package_root = panda_urdf()
     model = load_robot(DATA_ROOT / "robots" / "panda")
