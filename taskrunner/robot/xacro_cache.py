@@ -19,7 +19,8 @@ hashed again, the variables and packages looked up again): an edit to any includ
 file, a changed variable or a package found elsewhere expands again. Python
 expressions inside xacro (``${...}``) see none of the outside world but these.
 
-The cache is skipped when ``TASKRUNNER_XACRO_CACHE=0``; a cache folder that cannot be
+At most ``MAX_FILES`` expansions stay on disk. The cache is skipped when
+``TASKRUNNER_XACRO_CACHE=0``; a cache folder that cannot be
 written is not an error (the expansion is simply not kept on disk).
 """
 
@@ -40,6 +41,9 @@ from taskrunner.textfile import file_problem
 __all__ = ["XacroInputs", "cache_enabled", "lookup", "store"]
 
 _FORMAT = 1
+MAX_FILES = 200
+"""Expansions kept on disk; the least recently written go first (one per xacro file and
+argument set, 10-100 kB each)."""
 _MEMORY: dict[str, tuple[str, dict[str, Any]]] = {}
 _LOCK = threading.Lock()
 
@@ -148,6 +152,24 @@ def store(path: Path, mappings: dict[str, str] | None, text: str, inputs: XacroI
         try:
             os.unlink(handle.name)
         except (OSError, UnboundLocalError):
+            pass
+        return
+    _prune(folder)
+
+
+def _prune(folder: Path) -> None:
+    """Keep the folder to ``MAX_FILES`` entries: drop the least recently written."""
+    try:
+        entries = [(entry.stat().st_mtime_ns, entry) for entry in folder.glob("*.json")]
+    except OSError:
+        return
+    if len(entries) <= MAX_FILES:
+        return
+    entries.sort()
+    for _, entry in entries[:len(entries) - MAX_FILES]:
+        try:
+            entry.unlink()
+        except OSError:
             pass
 
 

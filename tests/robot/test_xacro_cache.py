@@ -130,3 +130,16 @@ def test_an_include_by_glob_pattern_is_not_cached(robot, monkeypatch, tmp_path):
     expand_xacro(main, packages)
     expand_xacro(main, packages)
     assert len(seen) == 2
+
+
+def test_the_disk_cache_keeps_the_latest_expansions_only(robot, monkeypatch):
+    main, packages = robot
+    monkeypatch.setattr(xacro_cache, "MAX_FILES", 3)
+    for k in range(5):
+        expand_xacro(main, packages, {"variant": str(k)})
+    folder = main.parents[1] / "cache" / "taskrunner" / "xacro"
+    assert len(list(folder.glob("*.json"))) == 3
+    xacro_cache.clear_memory()
+    seen = _expansions(monkeypatch)
+    expand_xacro(main, packages, {"variant": "4"})  # among the latest: from the disk
+    assert seen == []
