@@ -258,6 +258,12 @@ class PathVerifier:
         """
         t0 = time.perf_counter()
         states = np.ascontiguousarray(np.atleast_2d(np.asarray(states, dtype=float)))
+        if states.ndim != 2 or states.shape[1] != self.robot.nq or len(states) == 0:
+            raise ValueError(f"states must be an (n, {self.robot.nq}) array of full state "
+                             f"vectors (got shape {states.shape})")
+        if not np.isfinite(states).all():
+            row = int(np.flatnonzero(~np.isfinite(states).all(axis=1))[0])
+            raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
         n_pairs = len(self._names)
         if n_pairs == 0:
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
@@ -681,8 +687,10 @@ def _bound(cumulative, pair_levers, below, order, k, c0, lever_row, position,  #
 @_jit
 def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row,  # type: ignore[no-untyped-def]
                   step, c1, share):
-    """The furthest path position (from ``start`` on, up to a 2**-_BISECTIONS part of a
-    segment) where pair ``k``'s motion bound from ``start`` is at most ``step``."""
+    """A path position after ``start`` where pair ``k``'s motion bound from ``start`` is
+    at most ``step`` (> 0), and close to the furthest one: the last node where it is, then
+    within that node's segment to ``_CLOSE`` of ``step``, or as far as ``_BISECTIONS``
+    evaluations get."""
     last = cumulative.shape[0] - 1
     if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(last),
               c1, share) <= step:
@@ -703,8 +711,7 @@ def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row
         hi = float(hi_node)
     else:
         hi = float(lo_node)
-    # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi). The bound is
-    # convex along a segment (lever arms only grow), so the steps come from below.
+    # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi).
     f_lo = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, lo, c1, share)
     f_hi = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, hi, c1, share)
     for _ in range(_BISECTIONS):
@@ -721,6 +728,17 @@ def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row
             lo, f_lo = mid, f_mid
         else:
             hi, f_hi = mid, f_mid
+    if lo <= start:
+        # Never stay put (the walk must advance): halve towards the start; the bound is
+        # continuous and 0 there, so this ends.
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mid <= start:
+                break
+            if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, mid,
+                      c1, share) <= step:
+                return mid
+            hi = mid
     return lo
 
 

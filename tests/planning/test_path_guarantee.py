@@ -302,3 +302,15 @@ def test_cheap_lower_bounds_never_exceed_the_distance(panda_model):
         assert np.all(bounds[used] <= exact[used] + 1e-9)
         useful += int(np.sum(bounds[used] > 0.5 * exact[used]))
     assert useful > 0
+
+
+def test_verifier_names_a_bad_state(panda_model):
+    scene = Scene(panda_model)
+    verifier = PathVerifier(scene.robot, scene.checker)
+    states = np.vstack([scene.state, scene.state, scene.state])
+    states[1, 2] = np.nan
+    with pytest.raises(ValueError, match="state 1 "):
+        verifier.verify(states)
+    with pytest.raises(ValueError, match=r"\(n, 9\)"):
+        verifier.verify(states[:, :4])
+    assert verifier.verify(scene.state[None, :]).valid   # a single state: checked there
