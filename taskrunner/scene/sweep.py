@@ -686,34 +686,33 @@ def _bound(cumulative, pair_levers, below, order, k, c0, lever_row, position,  #
 
 @_jit
 def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row,  # type: ignore[no-untyped-def]
-                  step, c1, share):
+                  step, c1, share, to_end):
     """A path position after ``start`` where pair ``k``'s motion bound from ``start`` is
     at most ``step`` (> 0), and close to the furthest one: the last node where it is, then
     within that node's segment to ``_CLOSE`` of ``step``, or as far as ``_BISECTIONS``
-    evaluations get."""
+    evaluations get. ``to_end``: the bound from ``start`` to the path's end."""
     last = cumulative.shape[0] - 1
-    if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(last),
-              c1, share) <= step:
+    if to_end <= step:
         return float(last)
     lo_node = int(start) + 1      # first node after start
-    lo = start
-    if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(lo_node),
-              c1, share) <= step:
-        hi_node = last            # bound(lo_node) <= step < bound(hi_node)
+    lo, f_lo = start, 0.0         # no motion yet
+    f_node = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(lo_node),
+                    c1, share)
+    if f_node <= step:
+        hi_node, f_hi = last, to_end   # bound(lo_node) <= step < bound(hi_node)
         while hi_node - lo_node > 1:
             mid = (lo_node + hi_node) // 2
-            if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(mid),
-                      c1, share) <= step:
-                lo_node = mid
+            f_mid = _bound(cumulative, pair_levers, below, order, k, c0, lever_row,
+                           float(mid), c1, share)
+            if f_mid <= step:
+                lo_node, f_node = mid, f_mid
             else:
-                hi_node = mid
-        lo = float(lo_node)
+                hi_node, f_hi = mid, f_mid
+        lo, f_lo = float(lo_node), f_node
         hi = float(hi_node)
     else:
-        hi = float(lo_node)
+        hi, f_hi = float(lo_node), f_node
     # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi).
-    f_lo = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, lo, c1, share)
-    f_hi = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, hi, c1, share)
     for _ in range(_BISECTIONS):
         if f_lo >= (1.0 - _CLOSE) * step or f_hi <= f_lo:
             break
@@ -817,17 +816,17 @@ def _measure(walked, k, d, s, here, scratch, settings):  # type: ignore[no-untyp
             start = walk[k, _PL]
             _cumulative_at(cumulative, start, c0)
     d_left = walk[k, _DL]
+    to_end = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last, c1, share)
     if walk[k, _HAS_R] != 0.0:
         # Fill the gap from the left: this step is covered whatever the distance there.
         step = max(d_left, margin)
     else:
-        if _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last,
-                  c1, share) <= d_left:
+        if to_end <= d_left:
             walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
             return
         step = max(d_left * (1.0 + gain), margin)
     due = _position_for(cumulative, pair_levers, below, order, k, start, c0,
-                        lever_left[k], step, c1, share)
+                        lever_left[k], step, c1, share, to_end)
     walk[k, _DUE] = due
     walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
 
