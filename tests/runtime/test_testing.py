@@ -79,15 +79,23 @@ def test_a_missed_expectation_fails_with_its_line_in_the_table_and_junit(tmp_pat
 
 DYING = '''
 import os
+import time
 from pathlib import Path
 from taskrunner.runtime.testing import CaseResult
 
 def work(case):
-    marker = Path(case.path).with_suffix(".died")
-    if case.scenario == "always" or not marker.exists():
-        marker.write_text("x") if not marker.exists() else None
-        os._exit(9)
-    return CaseResult(case, "passed", "succeeded", 0.0)
+    here = Path(case.path)
+    if case.scenario == "once":
+        # dies on its first run, which is in the shared pool: the other case waits for it
+        if not here.with_suffix(".died").exists():
+            here.with_suffix(".died").write_text("x")
+            os._exit(9)
+        return CaseResult(case, "passed", "succeeded", 0.0)
+    first = here.with_name("a.died")
+    deadline = time.monotonic() + 30
+    while not first.exists() and time.monotonic() < deadline:
+        time.sleep(0.01)
+    os._exit(9)
 '''
 
 
