@@ -25,6 +25,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
@@ -51,8 +52,10 @@ from taskrunner.planning.request import (
 from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
-from taskrunner.scene.sweep import PathVerification
 from taskrunner.types import JointPath, JointTrajectory
+
+if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
+    from taskrunner.scene.sweep import PathVerification
 
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 

@@ -27,6 +27,8 @@ from multiprocessing.connection import Connection
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from taskrunner.errors import PlanningError, TaskrunnerError
 from taskrunner.planning.request import PlanRequest, PlanResult
 from taskrunner.scene import Scene
@@ -38,6 +40,16 @@ _NO_CANCEL = -1
 
 class WorkerDiedError(PlanningError):
     """The planning worker process ended while a request was in flight."""
+
+
+def _warm_verifier(scene: Scene) -> None:
+    """Verify a short motion from the start state, so that the path verifier's compiled
+    kernels are loaded (compiled, the first time on a machine: then cached on disk)
+    before the first request rather than during it."""
+    robot = scene.robot
+    q = scene.state
+    nudged = np.clip(q + 1e-3, robot.lower, robot.upper)
+    scene.path_verifier().verify(np.stack([q, nudged]))
 
 
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
@@ -62,6 +74,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
         planner = MotionPlanner(scene)
         scene.checker  # noqa: B018 - build the collision geometry before the first request
         import_toppra()  # every plan is timed: import it while the caller still loads
+        _warm_verifier(scene)  # and verified: load its compiled kernels now too
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:
         conn.send(("failed", exc, 0.0))

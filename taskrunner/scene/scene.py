@@ -21,6 +21,7 @@ import builtins
 import copy
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import coal
 import numpy as np
@@ -39,9 +40,11 @@ from taskrunner.scene.linkgeometry import (
 )
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.scene.support import Support, gap_below
-from taskrunner.scene.sweep import PathVerifier
 from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
+
+if TYPE_CHECKING:  # the verifier's module loads numba: imported on first use
+    from taskrunner.scene.sweep import PathVerifier
 
 __all__ = ["Scene", "SceneOptions"]
 
@@ -434,6 +437,8 @@ class Scene:
         """The exact path verifier (conservative advancement, see
         :mod:`taskrunner.scene.sweep`) for the scene as it is now; ``margin`` in m.
         Kept until the next edit of objects or allowances."""
+        from taskrunner.scene.sweep import PathVerifier  # numba: only where paths are verified
+
         checker = self.checker
         cached = self._verifier
         if cached is None or cached[0] is not checker or cached[1].margin != margin:
