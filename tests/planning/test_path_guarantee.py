@@ -197,7 +197,10 @@ def test_a_plate_clipped_between_any_coarse_states_is_found(panda_model):
         assert _collides_somewhere(scene, states)
         result = PathVerifier(scene.robot, scene.checker).verify(states)
         assert not result.valid and result.pair is not None and "plate/0" in result.pair
-        assert result.state is not None and scene.in_collision(result.state)
+        # The state named is in contact: its signed distance is at most GJK's tolerance
+        # (a boolean collide can call a 2 µm overlap free: seen with hulls built in
+        # another order, once other tests had loaded the Panda).
+        assert result.state is not None and scene.min_distance(result.state).distance < 1e-5
         weakened = PathVerifier(scene.robot, scene.checker)
         weakened._pair_levers = weakened._pair_levers * 0.6   # a deliberately unsound bound
         fooled += weakened.verify(states).valid
