@@ -31,6 +31,7 @@ import numpy as np
 
 from taskrunner.errors import PlanningError, TaskrunnerError
 from taskrunner.planning.request import PlanRequest, PlanResult
+from taskrunner.processes import start_ignoring_sigint
 from taskrunner.scene import Scene
 
 __all__ = ["PlanHandle", "PlanningWorker", "WorkerDiedError"]
@@ -196,17 +197,7 @@ class PlanningWorker:
         self._process = self._ctx.Process(
             target=_serve, args=(self.source, child, self._cancel, self.nice),
             name="taskrunner-planner", daemon=False)
-        # An ignored signal stays ignored across exec (and Python then installs no
-        # KeyboardInterrupt handler): a Ctrl-C while the child imports cannot end it with a
-        # traceback. Only the main thread may set handlers; a SIGINT in the few ms of
-        # start() is lost for the parent too.
-        main = threading.current_thread() is threading.main_thread()
-        previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
-        try:
-            self._process.start()
-        finally:
-            if main:
-                signal.signal(signal.SIGINT, previous)
+        start_ignoring_sigint(self._process)
         child.close()
 
     def _await_ready(self, timeout: float) -> None:

@@ -17,12 +17,12 @@ from __future__ import annotations
 
 import atexit
 import multiprocessing as mp
-import signal
-import threading
 import weakref
 from multiprocessing.connection import Connection
 from pathlib import Path
 from typing import Any
+
+from taskrunner.processes import start_ignoring_sigint
 
 __all__ = ["EarlyWorker", "start_worker_early", "task_cell"]
 
@@ -71,15 +71,7 @@ class EarlyWorker:
         self.conn, child = context.Pipe()
         self.process = context.Process(target=_serve, args=(str(source), child, self.cancel),
                                        name="taskrunner-planner", daemon=False)
-        # As PlanningWorker does: the child starts with SIGINT ignored, so a Ctrl-C while
-        # it imports cannot end it with a traceback; its parent decides what Ctrl-C means.
-        main = threading.current_thread() is threading.main_thread()
-        previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
-        try:
-            self.process.start()
-        finally:
-            if main:
-                signal.signal(signal.SIGINT, previous)
+        start_ignoring_sigint(self.process)  # as PlanningWorker starts its own
         child.close()
         self._taken = False
         _OPEN.add(self)
