@@ -22,9 +22,10 @@ articulated robots in complex environments", IEEE T-RO 2005 (exact path checking
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -209,6 +210,17 @@ class MotionPlanner:
                                   time.perf_counter() - t_start, 0)
         planning_time = simplify_time = verify_time = 0.0
         checks = queries = 0
+        if options.direct:
+            direct = self._direct(group, start, candidates, options)
+            checks += direct.checks
+            verify_time += direct.verify_time
+            queries += direct.queries
+            if direct.goal is not None:
+                goal_index, q_goal = direct.goal
+                path = JointPath(group.joint_names, np.vstack([start[idx], q_goal[idx]]))
+                return PlanResult(path, start, q_goal, goal_index, options.planner, 0.0, 0.0,
+                                  time.perf_counter() - t_start, checks, direct=True,
+                                  verify_queries=queries, verify_time=verify_time)
         failure: PathVerification | None = None
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
@@ -317,6 +329,28 @@ class MotionPlanner:
         raise TypeError(f"unsupported goal type {type(goal).__name__}")
 
     # ------------------------------------------------------------------ search
+    def _direct(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
+                options: PlannerOptions) -> _Direct:
+        """The first goal (nearest first) whose straight line from ``start`` passes the
+        search's edge check and then the exact verification."""
+        idx = group.joint_indices
+        out = _Direct()
+        is_valid, count = self._validity(group, start)
+        ordered = sorted(goals, key=lambda g: float(np.max(np.abs(g[1][idx] - start[idx]))))
+        for index, q_goal in ordered:
+            free = _segment_valid(is_valid, start[idx], q_goal[idx],
+                                  options.longest_valid_segment)
+            if not free:
+                continue
+            verification = self.verify_states(np.vstack([start, q_goal]), options.verify_margin)
+            out.verify_time += verification.seconds
+            out.queries += verification.distance_queries
+            if verification.valid:
+                out.goal = (index, q_goal)
+                break
+        out.checks = count[0]
+        return out
+
     def _fast_checker(self, group: Group):  # type: ignore[no-untyped-def]
         """The sphere-model checker of ``group`` for the scene as it is, or None (fast
         checks off, or a robot the compiled kinematics does not handle)."""
@@ -348,10 +382,7 @@ class MotionPlanner:
         exact, count = self._validity(group, start)
         fast = self._fast_checker(group)
         if fast is None:
-            def exact_edge(a: np.ndarray, b: np.ndarray) -> bool:
-                return _segment_valid(exact, a, b, resolution)
-
-            return exact, exact_edge, count
+            return exact, self._edge_validity(group, start, resolution, count), count
         base = start.copy()
         # walks tried, walks that cleared their edge, states scanned, states whose spheres
         # touched (where spheres touch most states, the exact check alone is cheaper)
@@ -412,6 +443,52 @@ class MotionPlanner:
 
         return is_valid, count
 
+    def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
+                       count: list[int]) -> Callable[[np.ndarray, np.ndarray], bool]:
+        """An edge check over the group's values: the edge's end, then the states every
+        ``resolution`` (max over joints) in between, middle first (a blocked edge is
+        usually blocked there); the edge's first state is taken as checked. One Python
+        call per edge: the states are interpolated together."""
+        model = self.scene.robot
+        in_collision = self.scene.checker.in_collision
+        idx = group.joint_indices
+        base = start.copy()
+        mimic = any(j.mimic is not None for j in model.joints)
+        orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+
+        q_end = start.copy()
+        to_pin = model.to_pin
+
+        def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
+            count[0] += 1
+            q_end[idx] = b
+            if mimic:
+                model.apply_mimic(q_end)
+            if in_collision(to_pin(q_end)):
+                return False
+            delta = b - a
+            steps = math.ceil(float(np.max(np.abs(delta))) / resolution)
+            if steps < 2:
+                return True
+            cached = orders.get(steps)
+            if cached is None:
+                inner = np.arange(1, steps)
+                order = inner[np.argsort(np.abs(inner - steps / 2.0), kind="stable")]
+                states = np.empty((steps - 1, len(base)))
+                states[:] = base
+                cached = orders[steps] = (order[:, None] / steps, states)
+            fractions, states = cached
+            states[:, idx] = a + fractions * delta
+            if mimic:
+                model.apply_mimic(states)
+            for q in to_pin(states):
+                count[0] += 1
+                if in_collision(q):
+                    return False
+            return True
+
+        return edge_valid
+
     def _search(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
                 options: PlannerOptions, should_stop: Callable[[], bool] | None
                 ) -> tuple[np.ndarray, float, int]:
@@ -425,7 +502,6 @@ class MotionPlanner:
             goals = [min(goals, key=lambda g: float(np.linalg.norm(g[1][idx] - start[idx])))]
         n = len(idx)
         is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment)
-        fast = self._fast_checker(group) is not None
         lower = model.lower[idx].copy()
         upper = model.upper[idx].copy()
         # Continuous joints: one turn around wherever the start and goals are.
@@ -454,18 +530,17 @@ class MotionPlanner:
 
         setup.setStateValidityChecker(ompl_valid)
         si = setup.getSpaceInformation()
-        if fast:
-            a_values = np.empty(n)
-            b_values = np.empty(n)
+        a_values = np.empty(n)
+        b_values = np.empty(n)
 
-            def ompl_edge(s1, s2) -> bool:  # type: ignore[no-untyped-def]
-                for k in rng:
-                    a_values[k] = s1[k]
-                    b_values[k] = s2[k]
-                return bool(edge_valid(a_values, b_values))
+        def ompl_edge(s1, s2) -> bool:  # type: ignore[no-untyped-def]
+            for k in rng:
+                a_values[k] = s1[k]
+                b_values[k] = s2[k]
+            return bool(edge_valid(a_values, b_values))
 
-            validator = _edge_validator(ob)(si, ompl_edge)
-            si.setMotionValidator(validator)
+        validator = _edge_validator(ob)(si, ompl_edge)
+        si.setMotionValidator(validator)
         start_state = space.allocState()
         for k in rng:
             start_state[k] = float(start[idx[k]])
@@ -542,6 +617,17 @@ class MotionPlanner:
             if verification.valid:
                 return candidate, verifications
         return None, verifications
+
+
+@dataclass
+class _Direct:
+    """What :meth:`MotionPlanner._direct` found: the goal reached in a straight line
+    (None: every line was blocked), the checks made and the verification's cost."""
+
+    goal: tuple[int, np.ndarray] | None = None
+    checks: int = 0
+    queries: int = 0
+    verify_time: float = 0.0
 
 
 def pose_goal_states(solver: IkSolver, group: Group, goal: PoseGoal, target: pin.SE3,

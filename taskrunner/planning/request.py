@@ -106,6 +106,11 @@ class PlannerOptions:
             to improve the path; by default every planner stops at its first solution.
         simplify: shortcut and smooth the path before returning it.
         goal_samples: IK solutions sampled as goal states for a pose goal.
+        direct: first try the straight joint-space line from the start to each goal
+            state (nearest first), checked as the search checks an edge and then
+            verified exactly; the search runs only when every such line is blocked. A
+            free straight line is also the shortest path, so optimizing planners lose
+            nothing by it.
     """
 
     planner: str = ""
@@ -118,6 +123,7 @@ class PlannerOptions:
     refine: bool = False
     simplify: bool = True
     goal_samples: int = 6
+    direct: bool = True
 
     def __post_init__(self) -> None:
         if self.planner and self.planner not in PLANNERS:
@@ -172,6 +178,8 @@ class PlanResult:
         simplify_time: seconds spent shortcutting the path.
         total_time: wall time of the whole request (goal sampling, checks included).
         checks: collision checks made while searching.
+        direct: the straight line from the start to the goal was free (no search ran:
+            see :attr:`PlannerOptions.direct`).
         verify_queries: pair distances computed to verify the path (and trajectory).
         verify_time: seconds spent verifying them (part of ``total_time``; with timing,
             the trajectory's verification comes on top of it).
@@ -190,6 +198,7 @@ class PlanResult:
     simplify_time: float
     total_time: float
     checks: int
+    direct: bool = False
     verify_queries: int = 0
     verify_time: float = 0.0
     trajectory: JointTrajectory | None = None

@@ -270,9 +270,10 @@ class RobotModel:
         return self.apply_mimic(out)
 
     def apply_mimic(self, q: np.ndarray) -> np.ndarray:
-        """Set every mimic joint from its source joint, in place; returns ``q``."""
+        """Set every mimic joint from its source joint, in place; returns ``q`` (one state
+        vector, or one per row)."""
         for index, source, multiplier, offset in self._mimic:
-            q[index] = multiplier * q[source] + offset
+            q[..., index] = multiplier * q[..., source] + offset
         return q
 
     def within_limits(self, q: np.ndarray, tolerance: float = 1e-9) -> bool:
@@ -302,15 +303,16 @@ class RobotModel:
         return self.apply_mimic(q)
 
     def to_pin(self, q: np.ndarray) -> np.ndarray:
-        """Pinocchio configuration of state vector ``q``."""
+        """Pinocchio configuration of state vector ``q`` (or one per row of ``q``)."""
         if self._identity_q:
             return np.asarray(q, dtype=float)
-        out = np.zeros(self.model.nq)
-        out[self._simple_q] = q[self._simple_idx]
+        q = np.asarray(q, dtype=float)
+        out = np.zeros(q.shape[:-1] + (self.model.nq,))
+        out[..., self._simple_q] = q[..., self._simple_idx]
         if len(self._cont_q):
-            angles = q[self._cont_idx]
-            out[self._cont_q] = np.cos(angles)
-            out[self._cont_q + 1] = np.sin(angles)
+            angles = q[..., self._cont_idx]
+            out[..., self._cont_q] = np.cos(angles)
+            out[..., self._cont_q + 1] = np.sin(angles)
         return out
 
     def from_pin(self, q_pin: np.ndarray) -> np.ndarray:

@@ -205,7 +205,7 @@ def test_planner_paths_with_and_without_spheres_verify(shelf_scene):
     goal = JointGoal({"panda_joint1": 0.6, "panda_joint2": 0.3, "panda_joint4": -1.9})
     for fast_check in (True, False):
         planner = MotionPlanner(shelf_scene, fast_check=fast_check)
-        result = planner.plan(PlanRequest("arm", goal, options=PlannerOptions(seed=3)))
+        result = planner.plan(PlanRequest("arm", goal, options=PlannerOptions(seed=3, direct=False)))
         states = np.array([result.start] * len(result.path.waypoints))
         states[:, shelf_scene.robot.indices(result.path.names)] = result.path.waypoints
         assert planner.verify_states(states, 5e-4).valid
@@ -217,7 +217,7 @@ def test_other_planners_search_with_the_edge_validator(shelf_scene, planner):
     goal = JointGoal({"panda_joint1": 0.6, "panda_joint2": 0.3, "panda_joint4": -1.9})
     motion_planner = MotionPlanner(shelf_scene, fast_check=True)
     result = motion_planner.plan(PlanRequest("arm", goal, options=PlannerOptions(
-        planner=planner, seed=2, planning_time=3.0)))
+        planner=planner, seed=2, planning_time=3.0, direct=False)))
     states = np.array([result.start] * len(result.path.waypoints))
     states[:, shelf_scene.robot.indices(result.path.names)] = result.path.waypoints
     assert motion_planner.verify_states(states, 5e-4).valid
@@ -230,7 +230,7 @@ def test_a_model_the_compiled_kinematics_cannot_handle_plans_exactly(shelf_scene
     monkeypatch.setattr(fastcheck, "SphereModel", unsupported)
     planner = MotionPlanner(shelf_scene, fast_check=True)
     goal = JointGoal({"panda_joint1": 0.6, "panda_joint2": 0.3, "panda_joint4": -1.9})
-    planner.plan(PlanRequest("arm", goal, options=PlannerOptions(seed=3)))
+    planner.plan(PlanRequest("arm", goal, options=PlannerOptions(seed=3, direct=False)))
     assert planner.fast_check is False and planner._spheres is None
 
 

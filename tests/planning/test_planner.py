@@ -116,12 +116,12 @@ def test_no_path_within_the_planning_time_is_a_timeout(shelf_scene):
                        match=r"no path for group 'arm' found by RRTConnect in 2 attempt\(s\)"):
         MotionPlanner(shelf_scene).plan(PlanRequest(
             "arm", PoseGoal(UNDER_SHELF),
-            options=PlannerOptions(planning_time=1e-4, attempts=2)))
+            options=PlannerOptions(planning_time=1e-4, attempts=2, direct=False)))
 
 
 @pytest.mark.parametrize("planner", PLANNERS)
 def test_every_planner_by_name_solves_a_shelf_query(shelf_scene, planner):
-    options = PlannerOptions(planner=planner, planning_time=5.0)
+    options = PlannerOptions(planner=planner, planning_time=5.0, direct=False)
     result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(REACH_LEFT),
                                                          options=options))
     assert result.planner == planner
@@ -179,7 +179,7 @@ def test_cancelling_stops_an_in_flight_plan(shelf_scene):
 
     with pytest.raises(PlanningCancelledError, match="planning for group 'arm' was cancelled"):
         MotionPlanner(shelf_scene).plan(
-            PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(planning_time=30.0)),
+            PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(planning_time=30.0, direct=False)),
             should_stop=should_stop)
     assert len(polls) >= 3
 
@@ -196,8 +196,67 @@ def test_pose_goal_in_the_tool_frame_is_taken_at_the_start_state(shelf_scene):
 @pytest.mark.parametrize("planner", ["PRM", "PRMstar"])
 def test_prm_with_several_goals_plans_to_one_instead_of_deadlocking(shelf_scene, planner):
     other = {**REACH_LEFT, "panda_joint1": -1.2}
-    options = PlannerOptions(planner=planner, planning_time=2.0)
+    options = PlannerOptions(planner=planner, planning_time=2.0, direct=False)
     result = MotionPlanner(shelf_scene).plan(
         PlanRequest("arm", (JointGoal(REACH_LEFT), JointGoal(other)), options=options))
     assert result.goal_index in (0, 1)
     assert_path_is_free(shelf_scene, result, resolution=0.01)
+
+
+def test_a_free_straight_line_is_returned_without_a_search(shelf_scene):
+    # In front of the shelf, a small joint move: nothing in the way.
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.3}
+    result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(goal)))
+    assert result.direct and result.planning_time == 0.0
+    assert len(result.path.waypoints) == 2
+    assert result.checks > 0 and result.verify_time > 0.0
+    assert_path_is_free(shelf_scene, result)
+
+
+def test_a_blocked_straight_line_falls_back_to_the_search(shelf_scene):
+    # A box straddling the straight line's middle: the line is blocked, a detour is not.
+    model = shelf_scene.robot
+    idx = model.group("arm").joint_indices
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 1.2}
+    middle = shelf_scene.state.copy()
+    middle[idx[0]] += 0.6
+    hand = frame_pose(model, middle, "panda_hand_tcp")
+    scene = shelf_scene.copy()
+    scene.add_object("post", Sphere(0.04), Pose(tuple(hand.translation)))
+    result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal)))
+    assert not result.direct and result.planning_time > 0.0
+    assert len(result.path.waypoints) > 2
+    assert_path_is_free(scene, result)
+    # Without the direct attempt the same request searches from the start.
+    searched = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal),
+                                                     options=PlannerOptions(direct=False)))
+    assert not searched.direct
+    assert_path_is_free(scene, searched)
+
+
+def test_the_direct_line_is_verified_exactly_not_only_sampled(shelf_scene):
+    # Sampled every 0.8 rad, the straight line steps over a 2 mm plate across the hand's
+    # way; the exact verification finds it, and the search plans around it.
+    model = shelf_scene.robot
+    idx = model.group("arm").joint_indices
+    turn = 1.6
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + turn}
+    options = PlannerOptions(longest_valid_segment=turn / 2)
+
+    def along(t: float) -> np.ndarray:
+        q = shelf_scene.state.copy()
+        q[idx[0]] += t * turn
+        return q
+
+    here, ahead = (frame_pose(model, along(t), "panda_hand").translation for t in (0.25, 0.26))
+    normal = (ahead - here) / np.linalg.norm(ahead - here)
+    up = np.array([0.0, 0.0, 1.0]) - normal[2] * normal
+    up /= np.linalg.norm(up)
+    rotation = np.column_stack([normal, np.cross(up, normal), up])
+    scene = shelf_scene.copy()
+    scene.add_object("plate", Box((0.002, 0.1, 0.1)), Pose.from_se3(pin.SE3(rotation, here)))
+    assert scene.in_collision(along(0.25))
+    assert not any(scene.in_collision(along(t)) for t in (0.0, 0.5, 1.0))  # the samples miss it
+    result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal), options=options))
+    assert not result.direct
+    assert_path_is_free(scene, result)

@@ -79,7 +79,7 @@ def test_scene_edits_reach_the_worker(worker, scene):
 
 def test_submit_returns_at_once_and_the_caller_keeps_running(worker, scene):
     request = PlanRequest("arm", GOAL, options=PlannerOptions(
-        planner="RRTstar", refine=True, planning_time=0.6))
+        planner="RRTstar", refine=True, planning_time=0.6, direct=False))
     started = time.perf_counter()
     handle = worker.submit(scene, request)
     assert time.perf_counter() - started < 0.2
@@ -94,7 +94,7 @@ def test_submit_returns_at_once_and_the_caller_keeps_running(worker, scene):
 
 def test_cancel_stops_an_in_flight_plan_quickly(worker, scene):
     request = PlanRequest("arm", GOAL, options=PlannerOptions(
-        planner="RRTstar", refine=True, planning_time=30.0))
+        planner="RRTstar", refine=True, planning_time=30.0, direct=False))
     handle = worker.submit(scene, request)
     time.sleep(0.2)
     cancelled_at = time.perf_counter()
@@ -114,7 +114,7 @@ def test_errors_come_back_with_their_class_and_message(worker, scene):
 def test_a_killed_worker_is_reported_and_restarted(robots_dir, scene, example_robot_data):
     with PlanningWorker(robots_dir / "panda") as worker:
         handle = worker.submit(scene, PlanRequest("arm", GOAL, options=PlannerOptions(
-            planner="RRTstar", refine=True, planning_time=30.0)))
+            planner="RRTstar", refine=True, planning_time=30.0, direct=False)))
         time.sleep(0.2)
         os.kill(worker._process.pid, signal.SIGKILL)
         with pytest.raises(WorkerDiedError, match="died"):
