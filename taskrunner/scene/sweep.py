@@ -60,6 +60,7 @@ from __future__ import annotations
 import math
 import os
 import time
+import weakref
 from dataclasses import dataclass
 
 import coal
@@ -104,30 +105,10 @@ def lever_arms(robot: RobotModel, geometry_model: pin.GeometryModel) -> np.ndarr
         between, then the geometry's bounding sphere); for a prismatic joint 1 (m/m);
         0 where the joint does not move the geometry (world objects, other branches).
     """
-    model = robot.model
+    tree = _tree(robot)
     levers = np.zeros((len(geometry_model.geometryObjects), robot.nq))
-    state_index: dict[int, int] = {}
-    prismatic = set()
-    prismatic_travel = np.zeros(model.njoints)
-    for joint in robot.joints:
-        jid = int(model.getJointId(joint.name))
-        state_index[jid] = joint.index
-        if joint.type == "prismatic":
-            prismatic.add(jid)
-            prismatic_travel[jid] = max(abs(joint.lower), abs(joint.upper))
     for g, geometry_object in enumerate(geometry_model.geometryObjects):
-        geometry = geometry_object.geometry
-        geometry.computeLocalAABB()
-        centre = geometry_object.placement.act(np.asarray(geometry.aabb_center, dtype=float))
-        reach = float(np.linalg.norm(centre)) + float(geometry.aabb_radius)
-        jid = int(geometry_object.parentJoint)
-        while jid > 0:
-            if jid in state_index:
-                levers[g, state_index[jid]] = 1.0 if jid in prismatic else reach
-            # Reach from the parent joint's origin: this joint's offset and travel added.
-            reach += float(np.linalg.norm(model.jointPlacements[jid].translation))
-            reach += prismatic_travel[jid]
-            jid = int(model.parents[jid])
+        levers[g] = tree.levers(geometry_object)
     return levers
 
 
@@ -166,6 +147,10 @@ class PathVerifier:
         margin: m; where two measurements of a pair do not cover the motion between them
             by distance, they must be less than this apart in motion bound (both free);
             twice the deepest penetration the verification can miss there.
+
+    What depends on the robot alone (its joint tree, the lever arms and bounding volumes
+    of its links' geometry) is kept per robot model and reused by the verifiers of later
+    scene revisions; only the world and attached objects and the pairs are built anew.
     """
 
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
@@ -175,33 +160,54 @@ class PathVerifier:
         self.robot = robot
         self.margin = margin
         self._geometry = checker.geometry_model
-        self._geometry_data = self._geometry.createData()
-        for request in self._geometry_data.distanceRequests:
-            request.enable_signed_distance = True
-        self._data = robot.model.createData()
-        levers = lever_arms(robot, self._geometry)
-        moves = levers > 0
-        pairs = [(p.first, p.second) for p in self._geometry.collisionPairs]
-        self._names = [(self._geometry.geometryObjects[i].name,
-                        self._geometry.geometryObjects[j].name) for i, j in pairs]
-        first = np.array([i for i, _ in pairs], dtype=np.int64)
-        second = np.array([j for _, j in pairs], dtype=np.int64)
+        self._geometry_data: pin.GeometryData | None = None     # made on the first coal query
+        self._data: pin.Data | None = None
+        tree = _tree(robot)
+        self._tree = tree
+        records = [tree.record(obj) for obj in self._geometry.geometryObjects]
         nq = robot.nq
+        count = len(records)
+        self._geometry_names = [r.name for r in records]
+        levers = np.array([r.levers for r in records]).reshape(count, nq)
+        self._geo_i = np.array([r.ints for r in records], dtype=np.int64).reshape(count, 2)
+        self._geo_f = np.array([r.floats for r in records]).reshape(count, _GF_COLUMNS)
+        self._levers = levers
+        pairs = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
+                         dtype=np.int64).reshape(-1, 2)
+        first, second = pairs[:, 0].copy(), pairs[:, 1].copy()
+        n_pairs = len(first)
+        moves = levers > 0
         # Joints moving both bodies of a pair move them rigidly together: they do not count.
-        self._pair_levers = np.ascontiguousarray(
-            levers[first] * ~moves[second] + levers[second] * ~moves[first]) if pairs \
-            else np.zeros((0, nq))
+        only_first = moves[first] & ~moves[second]
+        only_second = moves[second] & ~moves[first]
+        self._pair_levers = np.ascontiguousarray(levers[first] * only_first
+                                                 + levers[second] * only_second)
         # Whose lever arm counts for each pair and joint: the body that joint moves.
-        self._owner = np.full((len(pairs), nq), -1, dtype=np.int64)
-        if pairs:
-            self._owner[moves[first] & ~moves[second]] = np.broadcast_to(
-                first[:, None], (len(pairs), nq))[moves[first] & ~moves[second]]
-            self._owner[moves[second] & ~moves[first]] = np.broadcast_to(
-                second[:, None], (len(pairs), nq))[moves[second] & ~moves[first]]
+        owner = np.where(only_first, first[:, None], np.where(only_second, second[:, None], -1))
+        self._owner = owner.astype(np.int64)
         self._first, self._second = first, second
-        self._kinematics = _Kinematics(robot, self._geometry, levers)
-        self._below = self._kinematics.below(self._owner, first)
-        self._order = self._kinematics.deepest_first()
+        # Per pair, the joints that count (deepest in the tree first) and their codes: 1 or
+        # 2 if the joint moves the pair's first or second body only, 3 or 4 likewise for a
+        # revolute joint whose lever arm is taken per state. The joints of the same body
+        # deeper in the tree lie between such a joint and the body: they move the body
+        # relative to its axis, so its lever arm grows by at most what they contribute.
+        code = np.where(owner < 0, 0, np.where(only_first, 1, 2))
+        if tree.supported:
+            code = code + 2 * ((code > 0) & tree.revolute[None, :])
+        ordered = code[:, tree.order]
+        counts = (ordered > 0).sum(axis=1)
+        rank = np.argsort(ordered == 0, axis=1, kind="stable")     # counted joints first
+        joints = np.take_along_axis(np.broadcast_to(tree.order, (n_pairs, nq)), rank, axis=1)
+        self._pair_i = np.zeros((n_pairs, _PI_JOINTS + 4 * nq), dtype=np.int64)
+        self._pair_i[:, _PI_FIRST] = first
+        self._pair_i[:, _PI_SECOND] = second
+        self._pair_i[:, _PI_COUNT] = counts
+        self._pair_i[:, _PI_JOINTS:_PI_JOINTS + nq] = joints
+        self._pair_i[:, _PI_JOINTS + nq:_PI_JOINTS + 2 * nq] = np.take_along_axis(code, joints, 1)
+        self._pair_i[:, _PI_JOINTS + 2 * nq:_PI_JOINTS + 3 * nq] = np.take_along_axis(
+            self._owner, joints, 1)
+        self._pair_i[:, _PI_JOINTS + 3 * nq:] = tree.state_joint[joints]
+        self._kinematics = _Kinematics(tree, self._geo_i, self._geo_f)
 
     @property
     def pair_levers(self) -> np.ndarray:
@@ -213,41 +219,37 @@ class PathVerifier:
     def configuration_dependent(self) -> bool:
         """True when lever arms are taken at each measured state (every joint of the
         robot is revolute, continuous or prismatic); else the full-reach bounds serve."""
-        return self._kinematics.supported
+        return self._tree.supported
+
+    def _pair_name(self, k: int) -> tuple[str, str]:
+        return (self._geometry_names[int(self._first[k])],
+                self._geometry_names[int(self._second[k])])
 
     def segment_bounds(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Per pair, the bound (m) the verifier uses on how far any point of one body
         moves relative to the other along the straight segment from state ``a`` to ``b``
         (lever arms taken at ``a``)."""
         states = np.ascontiguousarray(np.vstack([a, b]).astype(float))
-        cumulative = np.zeros_like(states)
-        cumulative[1] = np.abs(states[1] - states[0])
-        n_pairs = len(self._names)
-        nq = self.robot.nq
-        lever_rows = np.zeros((n_pairs, nq))
+        path = np.zeros((2,) + states.shape)
+        path[0] = states
+        path[1, 1] = np.abs(states[1] - states[0])
+        out = np.zeros(len(self._first))
         kin = self._kinematics
         frames = kin.frames(states[0])
-        out = np.zeros(n_pairs)
-        for k in range(n_pairs):
-            if kin.supported:
-                _levers_at(k, self._owner, self._pair_levers, kin.arrays, frames, lever_rows[k])
-            else:
-                lever_rows[k] = self._pair_levers[k]
-            out[k] = _bound(cumulative, self._pair_levers, self._below, self._order, k,
-                            cumulative[0], lever_rows[k], 1.0, np.zeros(nq), np.zeros(nq))
+        _segment_bounds(path, kin.tree_i, self._geo_f, self._pair_i, self._pair_levers, frames,
+                        kin.tree_i.shape[0], self._tree.supported, out)
         return out
 
     def lower_bounds(self, q: np.ndarray) -> np.ndarray:
         """Per pair, the cheap bound on its distance (m) at state ``q`` that the verifier
         uses for far pairs (bounding spheres and boxes): where positive, the pair is at
         least that far apart. ``-inf`` without compiled kinematics."""
-        kin = self._kinematics
-        out = np.full(len(self._names), -np.inf)
-        if not kin.supported:
+        out = np.full(len(self._first), -np.inf)
+        if not self._tree.supported:
             return out
+        kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
-        for k in range(len(out)):
-            out[k] = _lower_bound(self._first[k], self._second[k], kin.arrays, frames)
+        _lower_bounds(self._pair_i, self._geo_i, self._geo_f, frames, kin.tree_i.shape[0], out)
         return out
 
     def verify(self, states: np.ndarray) -> PathVerification:
@@ -257,162 +259,267 @@ class PathVerifier:
             A :class:`PathVerification`; ``valid`` False names a contact found.
         """
         t0 = time.perf_counter()
-        states = np.ascontiguousarray(np.atleast_2d(np.asarray(states, dtype=float)))
-        if states.ndim != 2 or states.shape[1] != self.robot.nq or len(states) == 0:
-            raise ValueError(f"states must be an (n, {self.robot.nq}) array of full state "
+        states = np.asarray(states, dtype=float)
+        if states.ndim == 1:
+            states = states[None, :]
+        nq = self.robot.nq
+        if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
+            raise ValueError(f"states must be an (n, {nq}) array of full state "
                              f"vectors (got shape {states.shape})")
-        if not np.isfinite(states).all():
-            row = int(np.flatnonzero(~np.isfinite(states).all(axis=1))[0])
-            raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
-        n_pairs = len(self._names)
+        n_pairs = len(self._first)
+        path = np.empty((2,) + states.shape)
+        path[0] = states
+        cumulative = path[1]                                    # per joint, sum of |dq|
+        cumulative[0] = 0.0
+        if len(states) > 1:
+            np.cumsum(np.abs(np.diff(states, axis=0)), axis=0, out=cumulative[1:])
+            if not math.isfinite(cumulative[-1].sum()):
+                bad = ~np.isfinite(states).all(axis=1)
+                row = int(np.flatnonzero(bad)[0]) if bad.any() else len(states) - 1
+                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
+        elif not np.isfinite(states).all():
+            raise ValueError(f"state 0 of the path to verify is not finite: {states[0]}")
         if n_pairs == 0:
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
-        cumulative = np.zeros_like(states)                      # per joint, sum of |dq|
-        np.cumsum(np.abs(np.diff(states, axis=0)), axis=0, out=cumulative[1:])
-        nq = states.shape[1]
-        walk = np.zeros((n_pairs, _COLUMNS))
-        lever_left = np.zeros((n_pairs, nq))
-        lever_right = np.zeros((n_pairs, nq))
-        selected = np.zeros(n_pairs, dtype=np.int64)
-        distances = np.zeros(n_pairs)
-        q = np.zeros(nq)
         kin = self._kinematics
-        frames = kin.buffers()
-        walked = (cumulative, self._pair_levers, self._below, self._order, self._owner,
-                  self._first, self._second, walk, lever_left, lever_right)
-        # margin, slack, gain, early, cheap-from; counts: compiled states, cheap bounds
+        walk = np.zeros((n_pairs, _COLUMNS + 2 * nq))
+        selected = np.empty(n_pairs, dtype=np.int64)
+        distances = np.empty(n_pairs)
+        q = np.empty(nq)
         settings = np.array([self.margin, _DISTANCE_SLACK, GAIN, _EARLY,
-                             CHEAP_FROM if kin.supported else np.inf, 0.0, 0.0])
+                             CHEAP_FROM if self._tree.supported else np.inf, 0.0, 0.0, 0.0, 0.0,
+                             1.0 if self._tree.supported else 0.0, -1.0])
+        frames = kin.buffer()
+        walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._pair_i,
+                  self._pair_levers, path, frames, walk, selected, distances, q, settings)
         queries = evaluated = 0
-        model, data = self.robot.model, self._data
-        geometry, geometry_data = self._geometry, self._geometry_data
-        to_pin = self.robot.to_pin
-        compute = pin.computeDistance
         while True:
-            count, s = _advance(walked, kin.arrays, frames, selected, states, q, kin.supported,
-                                settings)
-            if count == 0:
+            count = _walk(*walked)
+            if count <= 0:
                 break
-            pin.updateGeometryPlacements(model, data, geometry, geometry_data, to_pin(q))
+            if self._geometry_data is None:
+                self._make_data()
+            model, data = self.robot.model, self._data
+            geometry, geometry_data = self._geometry, self._geometry_data
+            pin.updateGeometryPlacements(model, data, geometry, geometry_data,
+                                         self.robot.to_pin(q))
             evaluated += 1
+            compute = pin.computeDistance
             for i in range(count):
                 distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
             queries += count
-            bad = _update(walked, kin.arrays, frames, selected, distances, count, s,
-                          kin.supported, settings)
-            if bad >= 0:
-                return PathVerification(False, queries, max(evaluated, int(settings[5])),
-                                        time.perf_counter() - t0, float(s),
-                                        self._names[int(selected[bad])], q.copy(),
-                                        int(settings[6]))
-        return PathVerification(True, queries, max(evaluated, int(settings[5])),
-                                time.perf_counter() - t0, bounds=int(settings[6]))
+        states_count = max(evaluated, int(settings[_S_STATES]))
+        if count < 0:
+            bad = int(selected[int(settings[_S_BAD])])
+            return PathVerification(False, queries, states_count, time.perf_counter() - t0,
+                                    float(settings[_S_AT]), self._pair_name(bad), q.copy(),
+                                    int(settings[_S_BOUNDS]))
+        return PathVerification(True, queries, states_count, time.perf_counter() - t0,
+                                bounds=int(settings[_S_BOUNDS]))
+
+    def _make_data(self) -> None:
+        self._data = self.robot.model.createData()
+        geometry_data = self._geometry.createData()
+        for request in geometry_data.distanceRequests:
+            request.enable_signed_distance = True
+        self._geometry_data = geometry_data
 
 
-class _Kinematics:
-    """The robot's joint tree and the bounding spheres of the collision geometry, as
-    arrays for the compiled kernels (forward kinematics of revolute, continuous and
-    prismatic joints; anything else leaves ``supported`` False)."""
+# Columns of the packed arrays the kernels read (one row per joint, geometry or pair).
+_TI_PARENT, _TI_KIND, _TI_STATE = range(3)                    # tree_i (n_joints, 3)
+_TF_ROT, _TF_TRANS, _TF_AXIS = 0, 9, 12                       # tree_f (n_joints, 15)
+_GI_JOINT, _GI_BOX = range(2)                                 # geo_i (n_geometries, 2)
+_GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX = 0, 9, 12, 15, 16, 19
+_GF_COLUMNS = 22                                              # geo_f (n_geometries, 22)
+# pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
+# such joint (deepest first): its state index, code, the geometry it moves, its joint id.
+_PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
+# frames (n_joints + n_geometries, 18): a joint's world rotation, origin and axis; a
+# geometry's world rotation, origin, bounding sphere centre and bounding box centre.
+_FR_ROT, _FR_ORIGIN, _FR_AXIS, _FR_CENTRE, _FR_BOX = 0, 9, 12, 12, 15
+_FR_COLUMNS = 18
+# settings: margin, slack, gain, early, cheap-from; compiled states, cheap bounds; exact
+# distances pending (count, position); per-state lever arms; the contact (index).
+_S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD = 5, 6, 7, 8, 9, 10
 
-    def __init__(self, robot: RobotModel, geometry_model: pin.GeometryModel,
-                 levers: np.ndarray) -> None:
+
+@dataclass(frozen=True)
+class _Record:
+    """One geometry object's rows of the packed arrays, and its lever arms."""
+
+    name: str
+    levers: np.ndarray
+    ints: tuple[int, int]
+    floats: np.ndarray
+
+
+class _Tree:
+    """The robot's joint tree for the compiled kernels (forward kinematics of revolute,
+    continuous and prismatic joints; anything else leaves ``supported`` False), and the
+    records of its links' geometry objects, kept across scene revisions."""
+
+    def __init__(self, robot: RobotModel) -> None:
         model = robot.model
         n = model.njoints
-        self.parent = np.array([int(p) for p in model.parents], dtype=np.int64)
-        self.joint_kind = np.zeros(n, dtype=np.int64)
-        self.state_index = np.full(n, -1, dtype=np.int64)
-        self.placement_rotation = np.zeros((n, 3, 3))
-        self.placement_translation = np.zeros((n, 3))
-        self.axis = np.zeros((n, 3))
+        self.model = model
+        self.nq = robot.nq
+        self.links = frozenset(robot.link_names)
+        parent = np.array([int(p) for p in model.parents], dtype=np.int64)
+        kind = np.zeros(n, dtype=np.int64)
+        state_index = np.full(n, -1, dtype=np.int64)
+        self.tree_f = np.zeros((n, 15))
         self.state_joint = np.full(robot.nq, -1, dtype=np.int64)
-        self.depth = np.zeros(n, dtype=np.int64)
+        depth = np.zeros(n, dtype=np.int64)
+        self.prismatic_travel = np.zeros(n)
+        prismatic = set()
         for joint in robot.joints:
             jid = int(model.getJointId(joint.name))
-            self.state_index[jid] = joint.index
+            state_index[jid] = joint.index
             self.state_joint[joint.index] = jid
+            if joint.type == "prismatic":
+                prismatic.add(jid)
+                self.prismatic_travel[jid] = max(abs(joint.lower), abs(joint.upper))
+        self.prismatic = frozenset(prismatic)
         data = model.createData()
         pin.forwardKinematics(model, data, pin.neutral(model))
         supported = True
         for jid in range(1, n):
             placement = model.jointPlacements[jid]
-            self.placement_rotation[jid] = placement.rotation
-            self.placement_translation[jid] = placement.translation
-            self.depth[jid] = self.depth[self.parent[jid]] + 1
+            self.tree_f[jid, _TF_ROT:_TF_ROT + 9] = np.asarray(placement.rotation).reshape(9)
+            self.tree_f[jid, _TF_TRANS:_TF_TRANS + 3] = placement.translation
+            depth[jid] = depth[parent[jid]] + 1
             subspace = np.asarray(data.joints[jid].S, dtype=float)
             if subspace.size != 6 or "Mimic" in model.joints[jid].shortname() \
-                    or self.state_index[jid] < 0:
+                    or state_index[jid] < 0:
                 supported = False
                 continue
             linear, angular = subspace.reshape(6)[:3], subspace.reshape(6)[3:]
             if np.linalg.norm(angular) > 0.5 and np.linalg.norm(linear) < 1e-12:
-                self.joint_kind[jid] = _REVOLUTE
-                self.axis[jid] = angular / np.linalg.norm(angular)
+                kind[jid] = _REVOLUTE
+                self.tree_f[jid, _TF_AXIS:_TF_AXIS + 3] = angular / np.linalg.norm(angular)
             elif np.linalg.norm(linear) > 0.5 and np.linalg.norm(angular) < 1e-12:
-                self.joint_kind[jid] = _PRISMATIC
-                self.axis[jid] = linear / np.linalg.norm(linear)
+                kind[jid] = _PRISMATIC
+                self.tree_f[jid, _TF_AXIS:_TF_AXIS + 3] = linear / np.linalg.norm(linear)
             else:
                 supported = False
         self.supported = supported
-        count = len(geometry_model.geometryObjects)
-        self.geometry_joint = np.zeros(count, dtype=np.int64)
-        self.geometry_rotation = np.zeros((count, 3, 3))
-        self.geometry_translation = np.zeros((count, 3))
-        self.geometry_centre = np.zeros((count, 3))      # bounding sphere, geometry frame
-        self.geometry_radius = np.zeros(count)
-        # Each geometry's bounding box in its own frame (a box geometry: itself).
-        self.geometry_box = np.zeros(count, dtype=np.int64)
-        self.box_half = np.zeros((count, 3))
-        self.box_centre = np.zeros((count, 3))
-        for g, geometry_object in enumerate(geometry_model.geometryObjects):
+        self.tree_i = np.ascontiguousarray(np.column_stack([parent, kind, state_index]))
+        self.joint_translation = [float(np.linalg.norm(model.jointPlacements[j].translation))
+                                  for j in range(n)]
+        self.parent = [int(p) for p in parent]
+        state_depth = np.array([depth[j] if j >= 0 else 0 for j in self.state_joint])
+        self.order = np.argsort(-state_depth, kind="stable").astype(np.int64)
+        self.revolute = np.array([j >= 0 and kind[j] == _REVOLUTE for j in self.state_joint])
+        self._records: dict[tuple[int, int, bytes], tuple[object, _Record]] = {}
+
+    def levers(self, geometry_object: pin.GeometryObject) -> np.ndarray:
+        """:func:`lever_arms` of one geometry object."""
+        row = np.zeros(self.nq)
+        geometry = geometry_object.geometry
+        geometry.computeLocalAABB()
+        centre = geometry_object.placement.act(np.asarray(geometry.aabb_center, dtype=float))
+        reach = float(np.linalg.norm(centre)) + float(geometry.aabb_radius)
+        jid = int(geometry_object.parentJoint)
+        state_joint = self.state_joint
+        while jid > 0:
+            index = self.tree_i[jid, _TI_STATE]
+            if index >= 0 and state_joint[index] == jid:
+                row[index] = 1.0 if jid in self.prismatic else reach
+            # Reach from the parent joint's origin: this joint's offset and travel added.
+            reach += self.joint_translation[jid]
+            reach += self.prismatic_travel[jid]
+            jid = self.parent[jid]
+        return row
+
+    def record(self, geometry_object: pin.GeometryObject) -> _Record:
+        """The packed rows of a geometry object; a robot link's are kept (its geometry is
+        the robot's, never edited: same object, joint and placement give the same rows)."""
+        name = geometry_object.name
+        link = name.rpartition("/")[0] in self.links and geometry_object.parentJoint > 0
+        if link:
             geometry = geometry_object.geometry
-            geometry.computeLocalAABB()
-            self.geometry_joint[g] = int(geometry_object.parentJoint)
-            self.geometry_rotation[g] = geometry_object.placement.rotation
-            self.geometry_translation[g] = geometry_object.placement.translation
-            self.geometry_centre[g], self.geometry_radius[g] = _enclosing_sphere(geometry)
-            low = np.asarray(geometry.aabb_local.min_, dtype=float)
-            high = np.asarray(geometry.aabb_local.max_, dtype=float)
-            if np.isfinite(low).all() and np.isfinite(high).all():
-                self.geometry_box[g] = 1
-                self.box_half[g] = 0.5 * (high - low)
-                self.box_centre[g] = 0.5 * (high + low)
-        self.arrays = (self.parent, self.joint_kind, self.state_index, self.placement_rotation,
-                       self.placement_translation, self.axis, self.state_joint,
-                       self.geometry_joint, self.geometry_rotation, self.geometry_translation,
-                       self.geometry_centre, self.geometry_radius, self.geometry_box,
-                       self.box_half, self.box_centre)
+            key = (id(geometry), int(geometry_object.parentJoint),
+                   np.asarray(geometry_object.placement.homogeneous).tobytes())
+            kept = self._records.get(key)
+            if kept is not None:
+                record = kept[1]
+                return record if record.name == name else _Record(name, record.levers,
+                                                                  record.ints, record.floats)
+        record = self._build_record(geometry_object)
+        if link:
+            if len(self._records) > 4096:
+                self._records.clear()
+            self._records[key] = (geometry, record)   # the geometry kept: its id stays its own
+        return record
 
-    def buffers(self) -> tuple[np.ndarray, ...]:
-        """Work arrays: joint rotations and origins, geometry rotations, origins and
-        bounding sphere centres (world)."""
-        n, count = len(self.parent), len(self.geometry_joint)
-        return (np.zeros((n, 3, 3)), np.zeros((n, 3)), np.zeros((count, 3, 3)),
-                np.zeros((count, 3)), np.zeros((count, 3)))
+    def _build_record(self, geometry_object: pin.GeometryObject) -> _Record:
+        geometry = geometry_object.geometry
+        levers = self.levers(geometry_object)          # computes the local AABB
+        floats = np.zeros(_GF_COLUMNS)
+        floats[_GF_ROT:_GF_ROT + 9] = np.asarray(geometry_object.placement.rotation).reshape(9)
+        floats[_GF_TRANS:_GF_TRANS + 3] = geometry_object.placement.translation
+        centre, radius = _enclosing_sphere(geometry)
+        floats[_GF_CENTRE:_GF_CENTRE + 3] = centre
+        floats[_GF_RADIUS] = radius
+        # The geometry's bounding box in its own frame (a box geometry: itself).
+        low = np.asarray(geometry.aabb_local.min_, dtype=float)
+        high = np.asarray(geometry.aabb_local.max_, dtype=float)
+        has_box = bool(np.isfinite(low).all() and np.isfinite(high).all())
+        if has_box:
+            floats[_GF_HALF:_GF_HALF + 3] = 0.5 * (high - low)
+            floats[_GF_BOX:_GF_BOX + 3] = 0.5 * (high + low)
+        return _Record(geometry_object.name, levers,
+                       (int(geometry_object.parentJoint), int(has_box)), floats)
 
-    def frames(self, q: np.ndarray) -> tuple[np.ndarray, ...]:
-        """The frames of :meth:`buffers` at state ``q``."""
-        frames = self.buffers()
-        _forward(np.ascontiguousarray(q, dtype=float), self.arrays, frames)
+
+# Per robot model (by identity; the model is not hashable): a weak reference and its tree.
+_TREES: dict[int, tuple[weakref.ref, _Tree]] = {}
+
+
+def _tree(robot: RobotModel) -> _Tree:
+    """The robot's :class:`_Tree`, built once per robot model."""
+    kept = _TREES.get(id(robot))
+    if kept is not None and kept[0]() is robot and kept[1].model is robot.model \
+            and kept[1].nq == robot.nq:
+        return kept[1]
+    tree = _Tree(robot)
+    key = id(robot)
+
+    def forget(reference: weakref.ref) -> None:
+        if key in _TREES and _TREES[key][0] is reference:
+            del _TREES[key]
+
+    _TREES[key] = (weakref.ref(robot, forget), tree)
+    return tree
+
+
+class _Kinematics:
+    """Forward kinematics of one verifier's geometry (compiled)."""
+
+    def __init__(self, tree: _Tree, geo_i: np.ndarray, geo_f: np.ndarray) -> None:
+        self.tree_i, self.tree_f = tree.tree_i, tree.tree_f
+        self.geo_i, self.geo_f = geo_i, geo_f
+        self.supported = tree.supported
+
+    def buffer(self) -> np.ndarray:
+        """Work array of the kernels' frames (see ``_FR_*``)."""
+        return np.zeros((self.tree_i.shape[0] + self.geo_i.shape[0], _FR_COLUMNS))
+
+    def frames(self, q: np.ndarray) -> np.ndarray:
+        """The frames at state ``q`` (see :meth:`poses`)."""
+        frames = self.buffer()
+        _forward(np.ascontiguousarray(q, dtype=float), self.tree_i, self.tree_f, self.geo_i,
+                 self.geo_f, frames)
         return frames
 
-    def deepest_first(self) -> np.ndarray:
-        """State joint indices, deepest in the joint tree first."""
-        depth = np.array([self.depth[j] if j >= 0 else 0 for j in self.state_joint])
-        return np.argsort(-depth, kind="stable").astype(np.int64)
-
-    def below(self, owner: np.ndarray, first: np.ndarray) -> np.ndarray:
-        """``(n_pairs, nq)``, per pair and joint: 0 if the joint does not count for the
-        pair; 1 or 2 if it moves the pair's first or second body only; 3 or 4 likewise
-        for a revolute joint whose lever arm is taken per state. The joints of the same
-        body deeper in the tree lie between such a joint and the body: they move the body
-        relative to its axis, so its lever arm grows by at most what they contribute."""
-        n_pairs, nq = owner.shape
-        out = np.where(owner < 0, 0, np.where(owner == first[:, None], 1, 2)).astype(np.int64)
-        if self.supported:
-            revolute = np.array([j >= 0 and self.joint_kind[j] == _REVOLUTE
-                                 for j in self.state_joint])
-            out[(out > 0) & revolute[None, :]] += 2
-        return out
+    def poses(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """World rotations and origins of the joints, then of the geometries, at ``q``."""
+        frames = self.frames(q)
+        n = self.tree_i.shape[0]
+        return (frames[:n, _FR_ROT:_FR_ROT + 9].reshape(n, 3, 3),
+                frames[:n, _FR_ORIGIN:_FR_ORIGIN + 3],
+                frames[n:, _FR_ROT:_FR_ROT + 9].reshape(-1, 3, 3),
+                frames[n:, _FR_ORIGIN:_FR_ORIGIN + 3])
 
 
 def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, float]:
@@ -437,77 +544,80 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 
 
 # ---------------------------------------------------------------------- kernels
+# The entry points (called from Python) and the larger helpers are compiled functions of
+# their own; the small hot helpers are inlined into their callers (no call overhead).
 _jit = numba.njit(cache=True, nogil=True, error_model="numpy")
+_inline = numba.njit(cache=True, nogil=True, error_model="numpy", inline="always")
 
 
 @_jit
-def _forward(q, arrays, frames):  # type: ignore[no-untyped-def]
-    """World frames of the joints and the geometries, and the geometry bounding sphere
-    centres, at state ``q`` (into ``frames``)."""
-    (parent, joint_kind, state_index, placement_rotation, placement_translation, axis, _,
-     geometry_joint, geometry_rotation, geometry_translation, geometry_centre, _, _, _,
-     _) = arrays
-    rotations, origins, geo_rotations, geo_origins, centres = frames
+def _forward(q, tree_i, tree_f, geo_i, geo_f, frames):  # type: ignore[no-untyped-def]
+    """World frames of the joints and the geometries at state ``q`` (into ``frames``,
+    columns ``_FR_*``: geometry ``g`` is row ``n_joints + g``)."""
+    nj = tree_i.shape[0]
     for a in range(3):
         for b in range(3):
-            rotations[0, a, b] = 1.0 if a == b else 0.0
-        origins[0, a] = 0.0
-    local = np.zeros((3, 3))
-    row = np.zeros(3)
-    for jid in range(1, parent.shape[0]):
-        p = parent[jid]
+            frames[0, 3 * a + b] = 1.0 if a == b else 0.0
+        frames[0, _FR_ORIGIN + a] = 0.0
+        frames[0, _FR_AXIS + a] = 0.0
+    for jid in range(1, nj):
+        p = tree_i[jid, _TI_PARENT]
         # Parent frame times the joint's placement.
         for a in range(3):
-            origins[jid, a] = origins[p, a]
+            origin = frames[p, _FR_ORIGIN + a]
             for b in range(3):
-                origins[jid, a] += rotations[p, a, b] * placement_translation[jid, b]
+                origin += frames[p, 3 * a + b] * tree_f[jid, _TF_TRANS + b]
                 total = 0.0
                 for c in range(3):
-                    total += rotations[p, a, c] * placement_rotation[jid, c, b]
-                rotations[jid, a, b] = total
-        value = q[state_index[jid]] if state_index[jid] >= 0 else 0.0
-        if joint_kind[jid] == _PRISMATIC:
+                    total += frames[p, 3 * a + c] * tree_f[jid, _TF_ROT + 3 * c + b]
+                frames[jid, 3 * a + b] = total
+            frames[jid, _FR_ORIGIN + a] = origin
+        index = tree_i[jid, _TI_STATE]
+        value = q[index] if index >= 0 else 0.0
+        kind = tree_i[jid, _TI_KIND]
+        x, y, z = tree_f[jid, _TF_AXIS], tree_f[jid, _TF_AXIS + 1], tree_f[jid, _TF_AXIS + 2]
+        if kind == _PRISMATIC:
             for a in range(3):
                 for b in range(3):
-                    origins[jid, a] += rotations[jid, a, b] * axis[jid, b] * value
-        elif joint_kind[jid] == _REVOLUTE:
+                    frames[jid, _FR_ORIGIN + a] += (frames[jid, 3 * a + b]
+                                                    * tree_f[jid, _TF_AXIS + b] * value)
+        elif kind == _REVOLUTE:
             # Rodrigues: the joint's rotation about its (local) axis.
-            x, y, z = axis[jid, 0], axis[jid, 1], axis[jid, 2]
             c, s = math.cos(value), math.sin(value)
             t = 1.0 - c
-            local[0, 0] = c + x * x * t
-            local[0, 1] = x * y * t - z * s
-            local[0, 2] = x * z * t + y * s
-            local[1, 0] = y * x * t + z * s
-            local[1, 1] = c + y * y * t
-            local[1, 2] = y * z * t - x * s
-            local[2, 0] = z * x * t - y * s
-            local[2, 1] = z * y * t + x * s
-            local[2, 2] = c + z * z * t
+            l00, l01, l02 = c + x * x * t, x * y * t - z * s, x * z * t + y * s
+            l10, l11, l12 = y * x * t + z * s, c + y * y * t, y * z * t - x * s
+            l20, l21, l22 = z * x * t - y * s, z * y * t + x * s, c + z * z * t
             for a in range(3):
-                for b in range(3):
-                    total = 0.0
-                    for cc in range(3):
-                        total += rotations[jid, a, cc] * local[cc, b]
-                    row[b] = total
-                for b in range(3):
-                    rotations[jid, a, b] = row[b]
-    for g in range(geometry_joint.shape[0]):
-        jid = geometry_joint[g]
-        for a in range(3):
-            total = origins[jid, a]
+                r0, r1, r2 = frames[jid, 3 * a], frames[jid, 3 * a + 1], frames[jid, 3 * a + 2]
+                frames[jid, 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
+                frames[jid, 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
+                frames[jid, 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
+        for a in range(3):                               # the axis in the world
+            total = 0.0
             for b in range(3):
-                total += rotations[jid, a, b] * geometry_translation[g, b]
+                total += frames[jid, 3 * a + b] * tree_f[jid, _TF_AXIS + b]
+            frames[jid, _FR_AXIS + a] = total
+    for g in range(geo_i.shape[0]):
+        jid = geo_i[g, _GI_JOINT]
+        row = nj + g
+        for a in range(3):
+            total = frames[jid, _FR_ORIGIN + a]
+            for b in range(3):
+                total += frames[jid, 3 * a + b] * geo_f[g, _GF_TRANS + b]
                 value = 0.0
                 for c in range(3):
-                    value += rotations[jid, a, c] * geometry_rotation[g, c, b]
-                geo_rotations[g, a, b] = value
-            geo_origins[g, a] = total
+                    value += frames[jid, 3 * a + c] * geo_f[g, _GF_ROT + 3 * c + b]
+                frames[row, 3 * a + b] = value
+            frames[row, _FR_ORIGIN + a] = total
         for a in range(3):
-            total = geo_origins[g, a]
+            centre = frames[row, _FR_ORIGIN + a]
+            box = frames[row, _FR_ORIGIN + a]
             for b in range(3):
-                total += geo_rotations[g, a, b] * geometry_centre[g, b]
-            centres[g, a] = total
+                centre += frames[row, 3 * a + b] * geo_f[g, _GF_CENTRE + b]
+                box += frames[row, 3 * a + b] * geo_f[g, _GF_BOX + b]
+            frames[row, _FR_CENTRE + a] = centre
+            frames[row, _FR_BOX + a] = box
 
 
 @_jit
@@ -529,114 +639,103 @@ def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyp
     return 0.0
 
 
-@_jit
-def _levers_at(k, owner, pair_levers, arrays, frames, out):  # type: ignore[no-untyped-def]
-    """Pair ``k``'s lever arms at the state of ``frames``: for a revolute joint, the
-    distance from its axis to the moved body's bounding sphere centre plus the radius
-    (never more than the full-reach bound); otherwise the full-reach bound."""
-    joint_kind, axis, state_joint, geometry_radius = arrays[1], arrays[5], arrays[6], arrays[11]
-    rotations, origins, centres = frames[0], frames[1], frames[4]
-    for j in range(pair_levers.shape[1]):
-        full = pair_levers[k, j]
-        out[j] = full
-        g = owner[k, j]
-        jid = state_joint[j]
-        if full == 0.0 or g < 0 or jid < 0 or joint_kind[jid] != _REVOLUTE:
-            continue
-        along = 0.0
-        length2 = 0.0
-        for a in range(3):
-            world_axis = 0.0
-            for b in range(3):
-                world_axis += rotations[jid, a, b] * axis[jid, b]
-            v = centres[g, a] - origins[jid, a]
-            along += v * world_axis
-            length2 += v * v
-        off_axis = length2 - along * along
-        lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometry_radius[g]
-        if lever < full:
-            out[j] = lever
-    return out
-
-
-@_jit
-def _sphere_to_box(centre, radius, box, arrays, frames):  # type: ignore[no-untyped-def]
-    """Distance from a sphere to geometry ``box``'s bounding box (negative: may overlap)."""
-    half, box_centre = arrays[13], arrays[14]
-    geo_rotations, geo_origins = frames[2], frames[3]
+@_inline
+def _sphere_to_box(frames, row, radius, box, geo_f, nj):  # type: ignore[no-untyped-def]
+    """Distance from the bounding sphere of frames row ``row`` (radius ``radius``) to
+    geometry ``box``'s bounding box (negative: may overlap)."""
+    other = nj + box
     outside = 0.0
     for b in range(3):
-        local = -box_centre[box, b]
+        local = -geo_f[box, _GF_BOX + b]
         for a in range(3):
-            local += geo_rotations[box, a, b] * (centre[a] - geo_origins[box, a])
-        excess = abs(local) - half[box, b]
+            local += frames[other, 3 * a + b] * (frames[row, _FR_CENTRE + a]
+                                                 - frames[other, _FR_ORIGIN + a])
+        excess = abs(local) - geo_f[box, _GF_HALF + b]
         if excess > 0.0:
             outside += excess * excess
     return math.sqrt(outside) - radius
 
 
-@_jit
-def _box_gap(a, b, arrays, frames):  # type: ignore[no-untyped-def]
+@_inline
+def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
     boxes on their six face normals: a lower bound on their distance where positive."""
-    half, box_centre = arrays[13], arrays[14]
-    geo_rotations, geo_origins = frames[2], frames[3]
-    ca = np.empty(3)
-    cb = np.empty(3)
-    for i in range(3):
-        ca[i] = geo_origins[a, i]
-        cb[i] = geo_origins[b, i]
-        for j in range(3):
-            ca[i] += geo_rotations[a, i, j] * box_centre[a, j]
-            cb[i] += geo_rotations[b, i, j] * box_centre[b, j]
+    ra, rb = nj + a, nj + b
     best = -np.inf
     for side in range(2):
-        owner = a if side == 0 else b
+        owner = ra if side == 0 else rb
         for axis in range(3):
             # Unit normal: column ``axis`` of the owner's rotation.
             gap = 0.0
             for i in range(3):
-                gap += (ca[i] - cb[i]) * geo_rotations[owner, i, axis]
+                gap += (frames[ra, _FR_BOX + i] - frames[rb, _FR_BOX + i]) \
+                    * frames[owner, 3 * i + axis]
             gap = abs(gap)
             for j in range(3):
                 dot_a = 0.0
                 dot_b = 0.0
                 for i in range(3):
-                    dot_a += geo_rotations[a, i, j] * geo_rotations[owner, i, axis]
-                    dot_b += geo_rotations[b, i, j] * geo_rotations[owner, i, axis]
-                gap -= half[a, j] * abs(dot_a) + half[b, j] * abs(dot_b)
+                    dot_a += frames[ra, 3 * i + j] * frames[owner, 3 * i + axis]
+                    dot_b += frames[rb, 3 * i + j] * frames[owner, 3 * i + axis]
+                gap -= geo_f[a, _GF_HALF + j] * abs(dot_a) + geo_f[b, _GF_HALF + j] * abs(dot_b)
             if gap > best:
                 best = gap
     return best
 
 
-@_jit
-def _lower_bound(a, b, arrays, frames):  # type: ignore[no-untyped-def]
+@_inline
+def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
     bounding box and the boxes' separation along their face normals."""
-    radius, has_box = arrays[11], arrays[12]
-    centres = frames[4]
+    ra, rb = nj + a, nj + b
     gap = 0.0
     for i in range(3):
-        gap += (centres[a, i] - centres[b, i]) ** 2
-    best = math.sqrt(gap) - radius[a] - radius[b]
-    if has_box[b] != 0:
-        value = _sphere_to_box(centres[a], radius[a], b, arrays, frames)
+        gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
+    best = math.sqrt(gap) - geo_f[a, _GF_RADIUS] - geo_f[b, _GF_RADIUS]
+    if geo_i[b, _GI_BOX] != 0:
+        value = _sphere_to_box(frames, ra, geo_f[a, _GF_RADIUS], b, geo_f, nj)
         if value > best:
             best = value
-    if has_box[a] != 0:
-        value = _sphere_to_box(centres[b], radius[b], a, arrays, frames)
+    if geo_i[a, _GI_BOX] != 0:
+        value = _sphere_to_box(frames, rb, geo_f[b, _GF_RADIUS], a, geo_f, nj)
         if value > best:
             best = value
-    if has_box[a] != 0 and has_box[b] != 0:
-        value = _box_gap(a, b, arrays, frames)
+    if geo_i[a, _GI_BOX] != 0 and geo_i[b, _GI_BOX] != 0:
+        value = _box_gap(a, b, geo_f, frames, nj)
         if value > best:
             best = value
     return best
 
 
-@_jit
+@_inline
+def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
+    """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
+    for the joints that count): for a revolute joint, the distance from its axis to the
+    moved body's bounding sphere centre plus the radius (never more than the full-reach
+    bound); otherwise the full-reach bound."""
+    nq = pair_levers.shape[1]
+    for i in range(pair_i[k, _PI_COUNT]):
+        j = pair_i[k, _PI_JOINTS + i]
+        full = pair_levers[k, j]
+        value = full
+        if per_state and pair_i[k, _PI_JOINTS + nq + i] >= 3 and full != 0.0:
+            g = pair_i[k, _PI_JOINTS + 2 * nq + i]
+            jid = pair_i[k, _PI_JOINTS + 3 * nq + i]
+            along = 0.0
+            length2 = 0.0
+            for a in range(3):
+                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, _FR_ORIGIN + a]
+                along += v * frames[jid, _FR_AXIS + a]
+                length2 += v * v
+            off_axis = length2 - along * along
+            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geo_f[g, _GF_RADIUS]
+            if lever < full:
+                value = lever
+        walk[k, column + j] = value
+
+
+@_inline
 def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
     n = cumulative.shape[0]
     if n == 1:
@@ -651,59 +750,68 @@ def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
         out[j] = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
 
 
-@_jit
-def _bound(cumulative, pair_levers, below, order, k, c0, lever_row, position,  # type: ignore[no-untyped-def]
-           c1, share):
+@_inline
+def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # type: ignore[no-untyped-def]
     """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
-    is ``c0`` to ``position``, with the lever arms ``lever_row`` taken at the former
-    (``c1``, ``share``: work arrays).
+    is ``c0`` to ``position``, with the lever arms ``walk[k, column + j]`` taken at the
+    former.
 
     A revolute joint's lever arm grows by at most how far the joints below it (same
-    body, deeper in the tree: see :meth:`_Kinematics.below`) move the body relative to
-    its axis, which is their own contribution: deepest joints first."""
-    nq = cumulative.shape[1]
-    _cumulative_at(cumulative, position, c1)
-    share[0] = 0.0                      # what each body's deeper joints contributed
-    share[1] = 0.0
+    body, deeper in the tree) move the body relative to its axis, which is their own
+    contribution: the joints are taken deepest first."""
+    nq = pair_levers.shape[1]
+    n = cumulative.shape[0]
+    seg = int(position)
+    if seg > n - 2:
+        seg = n - 2
+    frac = position - seg
+    share_first = 0.0                   # what each body's deeper joints contributed
+    share_second = 0.0
     total = 0.0
-    for index in range(nq):
-        j = order[index]
-        code = below[k, j]
-        moved = c1[j] - c0[j]
-        if code == 0 or moved <= 0.0:
+    for i in range(pair_i[k, _PI_COUNT]):
+        j = pair_i[k, _PI_JOINTS + i]
+        code = pair_i[k, _PI_JOINTS + nq + i]
+        if n == 1:
+            c1 = 0.0
+        else:
+            c1 = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
+        moved = c1 - c0[j]
+        if moved <= 0.0:
             continue
-        body = (code - 1) % 2
-        lever = lever_row[j]
+        first = code % 2 == 1
+        lever = walk[k, column + j]
         if code >= 3:
-            lever += share[body]
+            lever += share_first if first else share_second
             if lever > pair_levers[k, j]:
                 lever = pair_levers[k, j]
         contribution = lever * moved
-        share[body] += contribution
+        if first:
+            share_first += contribution
+        else:
+            share_second += contribution
         total += contribution
     return total
 
 
 @_jit
-def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row,  # type: ignore[no-untyped-def]
-                  step, c1, share, to_end):
-    """A path position after ``start`` where pair ``k``'s motion bound from ``start`` is
-    at most ``step`` (> 0), and close to the furthest one: the last node where it is, then
-    within that node's segment to ``_CLOSE`` of ``step``, or as far as ``_BISECTIONS``
-    evaluations get. ``to_end``: the bound from ``start`` to the path's end."""
+def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end):  # type: ignore[no-untyped-def]
+    """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
+    arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
+    one: the last node where it is, then within that node's segment to ``_CLOSE`` of
+    ``step``, or as far as ``_BISECTIONS`` evaluations get. ``to_end``: the bound from
+    ``start`` to the path's end."""
     last = cumulative.shape[0] - 1
     if to_end <= step:
         return float(last)
+    left = _COLUMNS
     lo_node = int(start) + 1      # first node after start
     lo, f_lo = start, 0.0         # no motion yet
-    f_node = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, float(lo_node),
-                    c1, share)
+    f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
     if f_node <= step:
         hi_node, f_hi = last, to_end   # bound(lo_node) <= step < bound(hi_node)
         while hi_node - lo_node > 1:
             mid = (lo_node + hi_node) // 2
-            f_mid = _bound(cumulative, pair_levers, below, order, k, c0, lever_row,
-                           float(mid), c1, share)
+            f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(mid))
             if f_mid <= step:
                 lo_node, f_node = mid, f_mid
             else:
@@ -722,7 +830,7 @@ def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row
             mid = lo + _CLOSE * width
         if mid > hi - _CLOSE * width:
             mid = hi - _CLOSE * width
-        f_mid = _bound(cumulative, pair_levers, below, order, k, c0, lever_row, mid, c1, share)
+        f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid)
         if f_mid <= step:
             lo, f_lo = mid, f_mid
         else:
@@ -734,14 +842,13 @@ def _position_for(cumulative, pair_levers, below, order, k, start, c0, lever_row
             mid = 0.5 * (lo + hi)
             if mid <= start:
                 break
-            if _bound(cumulative, pair_levers, below, order, k, c0, lever_row, mid,
-                      c1, share) <= step:
+            if _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid) <= step:
                 return mid
             hi = mid
     return lo
 
 
-@_jit
+@_inline
 def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
     """The next position to evaluate (the earliest due pair's), the pairs measured there
     (written to ``selected``: due there, or due soon and past their early position) and
@@ -776,47 +883,46 @@ def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
 
 
 @_jit
-def _measure(walked, k, d, s, here, scratch, settings):  # type: ignore[no-untyped-def]
-    """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (lever
-    arms ``here`` there) and schedule the pair's next measurement."""
-    cumulative, pair_levers, below, order, _, _, _, walk, lever_left, lever_right = walked
+def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, c0,  # type: ignore[no-untyped-def]
+             settings):
+    """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
+    of ``frames``) and schedule the pair's next measurement."""
     margin, gain, early = settings[0], settings[2], settings[3]
-    c0, c1, share = scratch[0], scratch[1], scratch[2]
+    per_state = settings[_S_PER_STATE] != 0.0
     nq = cumulative.shape[1]
+    left, right = _COLUMNS, _COLUMNS + nq
     last = float(cumulative.shape[0] - 1)
     if walk[k, _HAS_L] == 0.0:
         extends = True
     else:
         _cumulative_at(cumulative, walk[k, _PL], c0)
-        moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], s, c1, share)
+        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, s)
         extends = moved <= max(walk[k, _DL] + d, margin)
     if extends:                      # covered from the left: extends the stretch
         walk[k, _HAS_L] = 1.0
         walk[k, _PL] = s
         walk[k, _DL] = d
-        for j in range(nq):
-            lever_left[k, j] = here[j]
+        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, left)
     else:                            # a gap: this one waits on the right
         walk[k, _HAS_R] = 1.0
         walk[k, _PR] = s
         walk[k, _DR] = d
-        for j in range(nq):
-            lever_right[k, j] = here[j]
+        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, right)
     start = walk[k, _PL]
     _cumulative_at(cumulative, start, c0)
     if walk[k, _HAS_R] != 0.0:
-        moved = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k],
-                       walk[k, _PR], c1, share)
+        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, walk[k, _PR])
         if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
             walk[k, _HAS_R] = 0.0
             walk[k, _PL] = walk[k, _PR]
             walk[k, _DL] = walk[k, _DR]
-            for j in range(nq):
-                lever_left[k, j] = lever_right[k, j]
+            for i in range(pair_i[k, _PI_COUNT]):
+                j = pair_i[k, _PI_JOINTS + i]
+                walk[k, left + j] = walk[k, right + j]
             start = walk[k, _PL]
             _cumulative_at(cumulative, start, c0)
     d_left = walk[k, _DL]
-    to_end = _bound(cumulative, pair_levers, below, order, k, c0, lever_left[k], last, c1, share)
+    to_end = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, last)
     if walk[k, _HAS_R] != 0.0:
         # Fill the gap from the left: this step is covered whatever the distance there.
         step = max(d_left, margin)
@@ -825,68 +931,82 @@ def _measure(walked, k, d, s, here, scratch, settings):  # type: ignore[no-untyp
             walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
             return
         step = max(d_left * (1.0 + gain), margin)
-    due = _position_for(cumulative, pair_levers, below, order, k, start, c0,
-                        lever_left[k], step, c1, share, to_end)
+    due = _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end)
     walk[k, _DUE] = due
     walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
 
 
 @_jit
-def _levers_here(walked, k, arrays, frames, per_state, here):  # type: ignore[no-untyped-def]
-    pair_levers, owner = walked[1], walked[4]
-    if per_state:
-        _levers_at(k, owner, pair_levers, arrays, frames, here)
-    else:
-        for j in range(pair_levers.shape[1]):
-            here[j] = pair_levers[k, j]
-
-
-@_jit
-def _advance(walked, arrays, frames, selected, states, q, per_state, settings):  # type: ignore[no-untyped-def]
-    """Walk on to the next position where some pair needs an exact distance: returns
-    their count (in ``selected``) and the position (state in ``q``, its frames in
-    ``frames``); 0 when every pair is done. Pairs whose cheap lower bound is at least
-    ``settings[4]`` take it as their measurement."""
-    first, second = walked[5], walked[6]
-    nq = q.shape[0]
-    here = np.empty(nq)
-    scratch = np.empty((3, nq))
+def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, path, frames, walk,  # type: ignore[no-untyped-def]
+          selected, distances, q, settings):
+    """Walk the path (``path``: states, cumulative joint motion) until some pairs need an
+    exact distance: returns their count (in ``selected``; the position in
+    ``settings[_S_AT]``, its state in ``q``, its frames in ``frames``). The caller writes
+    their distances to ``distances`` and calls again, which takes them first. Returns 0
+    when every pair is done, -1 for a contact (``settings[_S_BAD]``: its index into
+    ``selected``). Pairs whose cheap lower bound is at least ``settings[4]`` take it as
+    their measurement."""
+    states, cumulative = path[0], path[1]
+    nj = tree_i.shape[0]
+    c0 = np.empty(states.shape[1])
+    per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
+    pending = int(settings[_S_PENDING])
+    if pending > 0:
+        settings[_S_PENDING] = 0.0
+        s = settings[_S_AT]
+        slack = settings[1]
+        for i in range(pending):
+            k = selected[i]
+            d = distances[i] - slack
+            if not d > 0.0:  # also NaN
+                settings[_S_BAD] = i
+                return -1
+            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, c0,
+                     settings)
     while True:
-        count, s = _pick(walked[7], selected, states, q)
-        if count == 0 or not per_state:
-            return count, s
-        _forward(q, arrays, frames)
-        settings[5] += 1.0
+        count, s = _pick(walk, selected, states, q)
+        if count == 0:
+            return 0
+        settings[_S_AT] = s
+        if not per_state:
+            settings[_S_PENDING] = count
+            return count
+        _forward(q, tree_i, tree_f, geo_i, geo_f, frames)
+        settings[_S_STATES] += 1.0
         exact = 0
         for i in range(count):
             k = selected[i]
-            bound = _lower_bound(first[k], second[k], arrays, frames)
+            bound = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+                                 frames, nj)
             if bound >= cheap_from:
-                settings[6] += 1.0
-                _levers_here(walked, k, arrays, frames, per_state, here)
-                _measure(walked, k, bound, s, here, scratch, settings)
+                settings[_S_BOUNDS] += 1.0
+                _measure(k, bound, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk,
+                         c0, settings)
             else:
                 selected[exact] = k
                 exact += 1
         if exact > 0:
-            return exact, s
+            settings[_S_PENDING] = exact
+            return exact
 
 
 @_jit
-def _update(walked, arrays, frames, selected, distances, count, s, per_state,  # type: ignore[no-untyped-def]
-            settings):
-    """Take the exact distances measured at position ``s`` (frames of its state in
-    ``frames``). Returns the index (into ``selected``) of a pair in contact, or -1."""
-    nq = walked[0].shape[1]
-    here = np.empty(nq)
-    scratch = np.empty((3, nq))
-    slack = settings[1]
-    for i in range(count):
-        k = selected[i]
-        d = distances[i] - slack
-        if not d > 0.0:  # also NaN
-            return i
-        _levers_here(walked, k, arrays, frames, per_state, here)
-        _measure(walked, k, d, s, here, scratch, settings)
-    return -1
+def _segment_bounds(path, tree_i, geo_f, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
+    """Per pair, the motion bound from ``path``'s first state to its second, lever arms
+    taken at the first (its frames in ``frames``)."""
+    cumulative = path[1]
+    nq = cumulative.shape[1]
+    walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
+    c0 = np.zeros(nq)
+    for k in range(pair_i.shape[0]):
+        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, _COLUMNS)
+        out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, _COLUMNS, 1.0)
+
+
+@_jit
+def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-untyped-def]
+    """Per pair, :func:`_lower_bound` at the state of ``frames``."""
+    for k in range(pair_i.shape[0]):
+        out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+                              frames, nj)

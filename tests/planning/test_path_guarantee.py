@@ -218,7 +218,7 @@ def test_compiled_kinematics_match_pinocchio(panda_model, ur5_model):
         rng = np.random.default_rng(11)
         for _ in range(20):
             q = robot.random_state(rng)
-            rotations, origins, geo_rotations, geo_origins, _ = verifier._kinematics.frames(q)
+            rotations, origins, geo_rotations, geo_origins = verifier._kinematics.poses(q)
             pin.updateGeometryPlacements(robot.model, data, geometry, geometry_data,
                                          robot.to_pin(q))
             for jid in range(1, robot.model.njoints):
