@@ -42,6 +42,7 @@ from taskrunner.errors import (
 )
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.planning.request import (
+    DEFAULT_RANGE,
     JointGoal,
     NamedGoal,
     PlannerOptions,
@@ -331,13 +332,13 @@ class MotionPlanner:
     # ------------------------------------------------------------------ search
     def _direct(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
                 options: PlannerOptions) -> _Direct:
-        """The first goal (nearest first) whose straight line from ``start`` passes the
-        search's edge check and then the exact verification."""
+        """The first goal state (in the request's order: callers list the goals they
+        prefer first) whose straight line from ``start`` passes the search's edge check
+        and then the exact verification."""
         idx = group.joint_indices
         out = _Direct()
         is_valid, count = self._validity(group, start)
-        ordered = sorted(goals, key=lambda g: float(np.max(np.abs(g[1][idx] - start[idx]))))
-        for index, q_goal in ordered:
+        for index, q_goal in goals:
             free = _segment_valid(is_valid, start[idx], q_goal[idx],
                                   options.longest_valid_segment)
             if not free:
@@ -575,6 +576,8 @@ class MotionPlanner:
         for attempt in range(options.attempts):
             _seed_ompl(ou, options.seed + attempt)
             planner = getattr(og, str(options.planner))(si)
+            if hasattr(planner, "setRange"):
+                planner.setRange(_range(group, options))
             setup.setPlanner(planner)
             setup.setup()
             ptc = ob.timedPlannerTerminationCondition(options.planning_time)
@@ -739,6 +742,16 @@ def _edge_validator(ob) -> type:  # type: ignore[no-untyped-def]
 
         _VALIDATOR.append(EdgeValidator)
     return _VALIDATOR[0]
+
+
+def _range(group: Group, options: PlannerOptions) -> float:
+    """The tree growth step for ``options.planner`` (see :attr:`PlannerOptions.range`)."""
+    if options.range > 0.0:
+        return float(options.range)
+    settings = group.planner
+    if settings is not None and settings.range > 0.0 and settings.planner == options.planner:
+        return settings.range
+    return DEFAULT_RANGE
 
 
 def _pair(verification: PathVerification) -> str:

@@ -80,6 +80,11 @@ def group_planner(group: Group) -> str:
     return (group.planner.planner if group.planner is not None else None) or DEFAULT_PLANNER
 
 
+DEFAULT_RANGE = 1.0
+"""rad: the tree growth step of RRT-style planners unless a request or the group's
+``ompl_planning.yaml`` gives one (see :attr:`PlannerOptions.range`)."""
+
+
 @dataclass(frozen=True)
 class PlannerOptions:
     """How to plan.
@@ -107,10 +112,16 @@ class PlannerOptions:
         simplify: shortcut and smooth the path before returning it.
         goal_samples: IK solutions sampled as goal states for a pose goal.
         direct: first try the straight joint-space line from the start to each goal
-            state (nearest first), checked as the search checks an edge and then
+            state (in the request's order), checked as the search checks an edge and then
             verified exactly; the search runs only when every such line is blocked. A
             free straight line is also the shortest path, so optimizing planners lose
             nothing by it.
+        range: rad; the longest edge RRT-style planners grow a tree by at once. 0 (the
+            default): the ``range`` of the group's default planner configuration in
+            ``ompl_planning.yaml`` when it gives one above 0, else :data:`DEFAULT_RANGE`
+            (OMPL's own default, a fifth of the state space's extent, is 2.6 rad for
+            the Panda and several times slower where the way out is narrow: see
+            ``benchmarks/RESULTS.md``).
     """
 
     planner: str = ""
@@ -124,6 +135,7 @@ class PlannerOptions:
     simplify: bool = True
     goal_samples: int = 6
     direct: bool = True
+    range: float = 0.0
 
     def __post_init__(self) -> None:
         if self.planner and self.planner not in PLANNERS:
@@ -133,6 +145,9 @@ class PlannerOptions:
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise ValueError(f"'{name}' must be a positive number (got {value!r})")
+        if not (isinstance(self.range, (int, float)) and math.isfinite(self.range)
+                and self.range >= 0):
+            raise ValueError(f"'range' must be a number >= 0 (got {self.range!r})")
         for name in ("attempts", "goal_samples"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:

@@ -8,6 +8,7 @@ and range here; joint and group names are checked against the model when it is b
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -252,6 +253,14 @@ class OmplGroupSettings:
     line: int | None
 
     @property
+    def range(self) -> float:
+        """The default configuration's ``range`` (rad, the longest edge a tree grows at
+        once); 0 where it gives none (MoveIt's ``range: 0.0``: the planner's default)."""
+        value = self.planner_settings.get("range", 0.0)
+        return float(value) if isinstance(value, (int, float)) and not isinstance(value, bool) \
+            and math.isfinite(value) and value > 0 else 0.0
+
+    @property
     def planner(self) -> str | None:
         """The default planner's name among :data:`OMPL_PLANNERS` (``geometric::PRM`` →
         ``PRM``), or None when the file gives none or one these bindings lack."""
@@ -307,6 +316,7 @@ def read_ompl_planning_yaml(path: str | Path) -> OmplConfig:
             if isinstance(config, dict):
                 planner_type = str(config.get("type", "")) or None
                 planner_settings = {str(k): v for k, v in config.items() if k != "type"}
+                _number(path, config, "range", low=0.0)  # used by the planner: checked here
             else:
                 warnings.append((f"group {group!r}: planner configuration {default!r} is "
                                  "not defined under 'planner_configs'",

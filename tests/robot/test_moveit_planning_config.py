@@ -203,3 +203,58 @@ def test_a_straight_move_of_a_task_is_slowed_to_the_cartesian_limits(tmp_path: P
         durations[name] = planned.data["duration"]
     # 10 cm at 0.05 m/s takes 2 s at least (the joint limits alone: well under a second).
     assert durations["free"] < 1.0 < 2.0 <= durations["slow"] < 6.0
+
+
+def test_the_default_configurations_range_is_the_tree_step_and_zero_means_ours(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    from ompl import geometric as og
+
+    from taskrunner.planning import planner as planner_module
+    from taskrunner.planning.request import DEFAULT_RANGE
+
+    steps: list[float] = []
+    original = og.RRTConnect.setRange
+
+    def recorded(self, value):  # type: ignore[no-untyped-def]
+        steps.append(value)
+        return original(self, value)
+
+    monkeypatch.setattr(og.RRTConnect, "setRange", recorded)
+    plain = load_robot(CONFIG)  # range: 0.0, MoveIt's "the planner's default"
+    assert plain.group("arm").planner is not None and plain.group("arm").planner.range == 0.0
+    config = _copy(tmp_path)
+    ompl = config / "config" / "ompl_planning.yaml"
+    ompl.write_text(ompl.read_text().replace(
+        "type: geometric::RRTConnect\n    range: 0.0", "type: geometric::RRTConnect\n    range: 0.35"))
+    tuned = load_robot(config)
+    assert tuned.group("arm").planner is not None and tuned.group("arm").planner.range == 0.35
+    for model, expected in ((plain, DEFAULT_RANGE), (tuned, 0.35)):
+        planner = MotionPlanner(scene_from_cell(load_cell_or_robot(
+            CONFIG if model is plain else config)))
+        planner.plan(PlanRequest("arm", NamedGoal("ready"), options=PlannerOptions(direct=False)))
+        assert steps[-1] == pytest.approx(expected)
+        # A range in the request wins over the file's.
+        planner.plan(PlanRequest("arm", NamedGoal("ready"),
+                                 options=PlannerOptions(direct=False, range=0.2)))
+        assert steps[-1] == pytest.approx(0.2)
+    assert planner_module.DEFAULT_RANGE == DEFAULT_RANGE
+
+
+@pytest.mark.parametrize("value", ["fast", "-1.0", "[1]"])
+def test_a_bad_range_in_ompl_planning_yaml_names_its_line(tmp_path: Path, value: str):
+    config = _copy(tmp_path)
+    ompl = config / "config" / "ompl_planning.yaml"
+    text = ompl.read_text().replace("type: geometric::RRTConnect\n    range: 0.0",
+                                    f"type: geometric::RRTConnect\n    range: {value}")
+    ompl.write_text(text)
+    line = text.splitlines().index(f"    range: {value}") + 1
+    # Like any bad ompl_planning.yaml: named with its line, and not used.
+    model = load_robot(config)
+    assert any(w.startswith(f"{ompl}:{line}: 'range' must be") and "not used" in w
+               for w in model.warnings), model.warnings
+    assert model.group("arm").planner is None
+
+
+def test_a_negative_range_in_a_request_is_refused():
+    with pytest.raises(ValueError, match="'range' must be a number >= 0"):
+        PlannerOptions(range=-0.5)
