@@ -8,6 +8,16 @@ link meshes as BVHs or as convex hulls, and pairwise narrow phase or a broadphas
 A BVH is a surface: a finger box that sinks wholly inside another link's mesh touches no
 triangle and goes unseen, which the hulls catch; ``disagreements`` counts such states.
 
+Both runs also compare the checker with the previous implementation (``FullRebuildChecker``:
+every edit rebuilt the robot's geometry, pairs and both geometry data; a state check went
+through pinocchio's overloaded ``computeCollisions``), interleaved in one run so that the
+machine's load hits both alike: the rebuild after a seeded random scene edit (add, move,
+remove, attach, detach, allow) in ms, and the state check in µs, with their verdicts
+compared. ``breakdown`` splits a state check into its stages, timed cumulatively with raw
+pinocchio calls: forward kinematics, geometry placements, the manager's update (poses and
+AABBs), the broadphase pass with every pair switched off (AABB tests and callbacks only),
+and the whole check (the rest is the narrow phase, GJK on pairs whose AABBs overlap).
+
 Run alone::
 
     python benchmarks/collision_bench.py [--quick] [--json] [--seed S]
@@ -35,10 +45,12 @@ import pinocchio as pin
 
 from taskrunner.robot import RobotModel, load_robot
 from taskrunner.scene import Scene, SceneOptions
-from taskrunner.shapes import Box
+from taskrunner.scene.collision import Body
+from taskrunner.scene.geometry import object_geometry
+from taskrunner.shapes import Box, Cylinder, Sphere
 from taskrunner.types import Pose
 
-__all__ = ["TABLE_AND_SHELF", "build_cell", "rows", "run"]
+__all__ = ["TABLE_AND_SHELF", "FullRebuildChecker", "build_cell", "random_edit", "rows", "run"]
 
 # The table the Panda stands on (base bolted to it: link0–table allowed) and a shelf with
 # a middle board in front of it: (name, full size in m, centre in the world frame in m).
@@ -70,10 +82,201 @@ def build_cell(robot: RobotModel, options: SceneOptions | None = None) -> Scene:
     return scene
 
 
+class FullRebuildChecker:
+    """The previous checker, kept as the reference of the comparison: it copies every
+    body's geometry objects and adds its pairs one by one on each build, makes the report
+    data up front, and checks a state through pinocchio's overloaded ``computeCollisions``."""
+
+    def __init__(self, model: pin.Model, bodies: Sequence[Body], allowed) -> None:  # type: ignore[no-untyped-def]
+        self._model = model
+        self._geometry = pin.GeometryModel()
+        owners: list[Body] = []
+        for body in bodies:
+            for index, geometry in enumerate(body.geometries):
+                copy = pin.GeometryObject(geometry)
+                copy.name = f"{body.name}/{index}"
+                self._geometry.addGeometryObject(copy)
+                owners.append(body)
+        for i in range(len(owners)):
+            for j in range(i + 1, len(owners)):
+                a, b = owners[i], owners[j]
+                if a.name == b.name or (a.static and b.static):
+                    continue
+                if frozenset((a.name, b.name)) in allowed:
+                    continue
+                self._geometry.addCollisionPair(pin.CollisionPair(i, j))
+        self.pairs = [(p.first, p.second) for p in self._geometry.collisionPairs]
+        self._data = model.createData()
+        self._geometry_data = self._geometry.createData()
+        self._manager = pin.BroadPhaseManager_NaiveCollisionManager(
+            model, self._geometry, self._geometry_data)
+        self._report_data = model.createData()
+        self._report_geometry_data = self._geometry.createData()
+        for request in self._report_geometry_data.collisionRequests:
+            request.enable_contact = True
+            request.num_max_contacts = 1
+
+    def in_collision(self, q_pin: np.ndarray) -> bool:
+        return bool(pin.computeCollisions(self._model, self._data, self._manager, q_pin, True))
+
+
+def _scene_bodies(scene: Scene) -> list[Body]:
+    """The scene's objects as collision bodies, as the scene builds them."""
+    return [Body(o.name, (object_geometry(scene.robot, o, scene._entries[o.name].geometry),),
+                 static=not o.attached) for o in scene.objects]
+
+
+def random_edit(scene: Scene, rng: np.random.Generator, serial: int) -> str:
+    """One seeded random edit of ``scene``: add, move or remove a small object, attach or
+    detach one, or allow a pair; returns its kind."""
+    robot = scene.robot
+    links = [b.name for b in scene._link_bodies]
+    movable = [n for n in scene.object_names if n.startswith("thing")]
+    kind = str(rng.choice(["add", "add", "move", "remove", "attach", "detach", "allow"]))
+    if kind in ("move", "remove", "attach", "detach", "allow") and not movable:
+        kind = "add"
+    if kind == "add":
+        shape = [Box(tuple(rng.uniform(0.02, 0.15, 3))), Sphere(float(rng.uniform(0.02, 0.08))),
+                 Cylinder(float(rng.uniform(0.02, 0.06)), float(rng.uniform(0.05, 0.3)))][serial % 3]
+        xyz = (float(rng.uniform(-0.2, 0.8)), float(rng.uniform(-0.6, 0.6)), float(rng.uniform(0.0, 0.9)))
+        scene.add_object(f"thing{serial}", shape, Pose(xyz))
+        return kind
+    name = str(rng.choice(movable))
+    attached = scene.object(name).attached
+    if kind == "move":
+        xyz = (float(rng.uniform(-0.2, 0.8)), float(rng.uniform(-0.6, 0.6)), float(rng.uniform(0.0, 0.9)))
+        scene.move_object(name, Pose(xyz))
+    elif kind == "remove":
+        scene.remove_object(name)
+    elif kind == "attach" and not attached:
+        scene.set_state(robot.random_state(rng))
+        link = str(rng.choice(links[-3:]))
+        scene.attach_object(name, link, touch_links=[str(rng.choice(links))])
+    elif kind in ("attach", "detach") and attached:
+        scene.detach_object(name)
+        kind = "detach"
+    else:
+        scene.allow_collision(name, str(rng.choice(links + list(scene.object_names))))
+        kind = "allow"
+    return kind
+
+
+def compare(robot: RobotModel, states: Sequence[np.ndarray], edits: int, rounds: int,
+            seed: int) -> dict:
+    """Previous against current checker, interleaved: rebuild after each of ``edits``
+    random edits (ms; each build timed ``rounds`` times, alternating) and the state check
+    over ``states`` (µs; alternating blocks of states, ``rounds`` passes)."""
+    rng = np.random.default_rng(seed)
+    scene = build_cell(robot)
+    link_bodies = list(scene._link_bodies)
+    clock = time.perf_counter_ns
+    before_ms: list[float] = []
+    after_ms: list[float] = []
+    kinds: dict[str, int] = {}
+    for serial in range(edits):
+        kind = random_edit(scene, rng, serial)
+        kinds[kind] = kinds.get(kind, 0) + 1
+        for _ in range(rounds):
+            bodies, allowed = _scene_bodies(scene), scene.allowed_collisions()
+            start = clock()
+            FullRebuildChecker(robot.model, link_bodies + bodies, allowed)
+            before_ms.append((clock() - start) / 1e6)
+            bodies, allowed = _scene_bodies(scene), scene.allowed_collisions()
+            start = clock()
+            scene._robot_geometry.checker(bodies, allowed)
+            after_ms.append((clock() - start) / 1e6)
+    cell = build_cell(robot)
+    before = FullRebuildChecker(robot.model, link_bodies + _scene_bodies(cell),
+                                cell.allowed_collisions())
+    after = cell.checker
+    q_pin = [robot.to_pin(q) for q in states]
+    block = 100
+    before_us: list[np.ndarray] = []
+    after_us: list[np.ndarray] = []
+    disagreements = 0
+    for rep in range(rounds):
+        for start_index in range(0, len(q_pin), block):
+            chunk = q_pin[start_index:start_index + block]
+            first, second = (before, after) if (rep + start_index // block) % 2 else (after, before)
+            results = {}
+            for checker in (first, second):
+                times, verdicts = _time_calls(checker.in_collision, chunk, 1, warm=False)
+                results[id(checker)] = verdicts
+                (before_us if checker is before else after_us).append(times)
+            disagreements += int(np.sum(results[id(before)] != results[id(after)]))
+    b_us, a_us = np.concatenate(before_us), np.concatenate(after_us)
+    return {
+        "edits": edits,
+        "edit_kinds": kinds,
+        "rebuild_ms_before": float(np.median(before_ms)),
+        "rebuild_ms_after": float(np.median(after_ms)),
+        "state_us_before": float(np.median(b_us)),
+        "state_us_after": float(np.median(a_us)),
+        "state_us_p95_before": float(np.percentile(b_us, 95)),
+        "state_us_p95_after": float(np.percentile(a_us, 95)),
+        "verdict_disagreements": disagreements,
+        "pairs_after_edits": scene.checker.pair_count,
+    }
+
+
+def breakdown(robot: RobotModel, scene: Scene, states: Sequence[np.ndarray],
+              repeats: int) -> dict[str, float]:
+    """Median µs of the state check's stages, cumulative, with raw pinocchio calls on the
+    scene's geometry (own data, so the scene's checker is left alone)."""
+    model, geometry = robot.model, scene.checker.geometry_model
+    data, geometry_data = model.createData(), geometry.createData()
+    manager = pin.BroadPhaseManager_NaiveCollisionManager(model, geometry, geometry_data)
+    callback = pin.CollisionCallBackDefault(manager.getGeometryModel(),
+                                            manager.getGeometryData(), True)
+    idle_data = geometry.createData()
+    idle_data.deactivateAllCollisionPairs()
+    idle_manager = pin.BroadPhaseManager_NaiveCollisionManager(model, geometry, idle_data)
+    idle_callback = pin.CollisionCallBackDefault(idle_manager.getGeometryModel(),
+                                                 idle_manager.getGeometryData(), True)
+    place = pin.updateGeometryPlacements
+
+    def idle(q: np.ndarray) -> bool:
+        place(model, data, geometry, idle_data, q)
+        idle_manager.update(False)
+        idle_manager.collide(idle_callback)
+        return bool(idle_callback.collision)
+
+    def placed(q: np.ndarray) -> bool:
+        place(model, data, geometry, geometry_data, q)
+        return False
+
+    def updated(q: np.ndarray) -> bool:
+        place(model, data, geometry, geometry_data, q)
+        manager.update(False)
+        return False
+
+    def whole(q: np.ndarray) -> bool:
+        place(model, data, geometry, geometry_data, q)
+        manager.update(False)
+        manager.collide(callback)
+        return bool(callback.collision)
+
+    stages = {
+        "call_overhead": lambda q: False,
+        "forward_kinematics": lambda q: pin.forwardKinematics(model, data, q) is None and False,
+        "placements": placed,
+        "manager_update": updated,
+        "broadphase_no_pairs": idle,
+        "whole_check": whole,
+    }
+    q_pin = [robot.to_pin(q) for q in states]
+    medians = {name: [] for name in stages}  # type: dict[str, list[float]]
+    for _ in range(repeats):  # interleaved passes
+        for name, check in stages.items():
+            times, _ = _time_calls(check, q_pin, 1)
+            medians[name].append(float(np.median(times)))
+    return {name: float(np.median(values)) for name, values in medians.items()}
+
+
 def _time_calls(check: Callable[[np.ndarray], bool], states: Sequence[np.ndarray],
-                repeats: int) -> tuple[np.ndarray, np.ndarray]:
+                repeats: int, warm: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """Per-call times (µs) and verdicts of ``check`` over ``states``, ``repeats`` times."""
-    for q in states[:100]:  # warm caches and branch predictors
+    for q in states[:100] if warm else ():  # warm caches and branch predictors
         check(q)
     times = np.empty(len(states) * repeats)
     verdicts = np.empty(len(states), dtype=bool)
@@ -134,7 +337,10 @@ def run(quick: bool, seed: int = 0) -> dict:
         collision), ``panda_collision_free_us_median`` / ``…_colliding_us_median``,
         ``states``, ``pairs`` (geometry pairs checked) and, in the full run,
         ``variants``: ``{label: {us_median, us_p95, collision_fraction, disagreements}}``
-        (disagreements: states whose verdict differs from the scene's).
+        (disagreements: states whose verdict differs from the scene's); ``compare``:
+        previous against current checker (``rebuild_ms_before/after``,
+        ``state_us_before/after``, ``verdict_disagreements``, see :func:`compare`) and
+        ``breakdown``: ``{stage: µs}`` cumulative (see :func:`breakdown`).
     """
     robot = load_robot(DATA_ROOT / "robots" / "panda")
     scene = build_cell(robot)
@@ -156,6 +362,8 @@ def run(quick: bool, seed: int = 0) -> dict:
         "quick": quick,
         "seed": seed,
     }
+    result["compare"] = compare(robot, states, 20 if quick else 60, 2 if quick else 3, seed)
+    result["breakdown"] = breakdown(robot, scene, states, 2 if quick else 5)
     if not quick:
         scenes = {True: scene, False: build_cell(robot, SceneOptions(convex_robot_meshes=False))}
         q_pin = [robot.to_pin(q) for q in states]
@@ -182,6 +390,20 @@ def rows(result: dict) -> list[tuple[str, str]]:
          f"{100 * result['panda_collision_fraction']:.0f} % of {result['states']} "
          f"({result['pairs']} geometry pairs)"),
     ]
+    if "compare" in result:
+        c = result["compare"]
+        out += [
+            (f"Rebuild after a scene edit ({c['edits']} random edits), median",
+             f"{1e3 * c['rebuild_ms_before']:.0f} -> {1e3 * c['rebuild_ms_after']:.0f} µs"),
+            ("State check, previous -> current (interleaved), median",
+             f"{c['state_us_before']:.2f} -> {c['state_us_after']:.2f} µs"),
+            ("  p95", f"{c['state_us_p95_before']:.2f} -> {c['state_us_p95_after']:.2f} µs"),
+            ("  verdicts differing (all passes)",
+             f"{c['verdict_disagreements']} ({100 * c['verdict_disagreements'] / result['states']:.0f} %"
+             f" of {result['states']} states)"),
+        ]
+    for stage, us in result.get("breakdown", {}).items():
+        out.append((f"  stage (cumulative): {stage}", f"{us:.2f} µs"))
     for label, figures in result.get("variants", {}).items():
         differ = figures.get("disagreements", 0)
         flag = f", {differ} verdicts differ" if differ else ""

@@ -30,7 +30,7 @@ import pinocchio as pin
 from taskrunner.errors import SceneError, UnknownNameError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.allowed import AllowedCollisions
-from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact
+from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact, RobotGeometry
 from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
 from taskrunner.scene.linkgeometry import (
     COLLISION_CHOICES,
@@ -110,6 +110,8 @@ class Scene:
         self.options = options or SceneOptions()
         self._link_bodies = link_bodies(robot, self.options.robot_collision,
                                         self.options.hull_tolerance)
+        # The robot's part of every checker, shared by copies: an edit adds only objects.
+        self._robot_geometry = RobotGeometry(robot.model, self._link_bodies)
         self._link_set = frozenset(robot.link_names)
         self._meshes = MeshCache()
         self._entries: dict[str, _Entry] = {}
@@ -458,11 +460,11 @@ class Scene:
         self._revision += 1
 
     def _build(self) -> CollisionChecker:
-        bodies = list(self._link_bodies)
+        bodies = []
         for entry in self._entries.values():
             geometry = object_geometry(self.robot, entry.object, entry.geometry)
             bodies.append(Body(entry.object.name, (geometry,), static=not entry.object.attached))
-        self._checker = CollisionChecker(self.robot.model, bodies, self.allowed_collisions())
+        self._checker = self._robot_geometry.checker(bodies, self.allowed_collisions())
         return self._checker
 
     def _as_state(self, q: np.ndarray | list[float]) -> np.ndarray:
