@@ -35,6 +35,8 @@ from __future__ import annotations
 
 import itertools
 import math
+import threading
+import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -106,6 +108,33 @@ def wrist_roll(model: RobotModel, group: str, link: str, q: np.ndarray) -> tuple
     return joint.index, math.copysign(1.0, omega[2])
 
 
+_SOLVERS: dict[int, tuple[weakref.ref, dict[tuple[str, str, int], IkSolver]]] = {}
+_SOLVERS_LOCK = threading.Lock()
+
+
+def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
+    """The IK solver of ``link`` for ``group``, kept per model and thread: its seed table
+    (built by the first search that restarts, ~5-10 ms) serves every later choice. A
+    solver's answers do not depend on its earlier calls (its random draws restart from
+    the call's seed), and it is not thread-safe, hence one per thread."""
+    with _SOLVERS_LOCK:
+        entry = _SOLVERS.get(id(model))
+        if entry is None or entry[0]() is not model:
+            entry = _SOLVERS[id(model)] = (weakref.ref(model), {})
+            weakref.finalize(model, _forget, id(model), entry[0])
+        key = (group, link, threading.get_ident())
+        solver = entry[1].get(key)
+        if solver is None:
+            solver = entry[1][key] = IkSolver(model, group, frame=link)
+        return solver
+
+
+def _forget(key: int, ref: weakref.ref) -> None:
+    with _SOLVERS_LOCK:
+        if key in _SOLVERS and _SOLVERS[key][0] is ref:
+            del _SOLVERS[key]
+
+
 class _Frames:
     """Forward kinematics of one frame (a private pin.Data)."""
 
@@ -135,7 +164,7 @@ def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[p
     if model.group(group).position_only_ik:
         return approximate_goals(model, group, link, contact, start, seed, point, lift,
                                  grasping, keep)
-    solver = IkSolver(model, group, frame=link)
+    solver = _solver(model, group, link)
     options = IkOptions(position_only=False, num_solutions=FULL_POSE_SOLUTIONS, seed=seed,
                         timeout=_IK_TIMEOUT, attempts=20 * FULL_POSE_SOLUTIONS)
     pre = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
@@ -234,7 +263,7 @@ def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
             grasping: bool) -> list[np.ndarray]:
     """States a lift away from the approximations of ``wanted``, orientation unchanged,
     joined to them by a straight line the arm can follow holding that orientation."""
-    solver = IkSolver(model, group, frame=link)
+    solver = _solver(model, group, link)
     fk = _Frames(model, link)
     out: list[np.ndarray] = []
     for item in approximate(model, group, link, wanted, start, seed, point, grasping):
@@ -263,7 +292,7 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
         IkFailedError: no wanted position is within reach.
     """
     offset = np.zeros(3) if point is None else np.asarray(point, dtype=float)
-    solver = IkSolver(model, group, frame=link)
+    solver = _solver(model, group, link)
     fk = _Frames(model, link)
     roll = wrist_roll(model, group, link, np.asarray(start, dtype=float))
 
@@ -289,14 +318,15 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
             failure = exc
             continue
         for i in members:
-            aimed = [q for q in (_aimed(fk, roll, error, s.q, wanted[i], goal, offset,
+            aimed = [q for q in (_aimed(fk, roll, grasping, s.q, wanted[i], goal, offset,
                                         solver, local) for s in solutions) if q is not None]
-            out += [Approximation(q, i, error(q, wanted[i])) for q in aimed]
-            if not aimed:
+            found = [Approximation(q, i, error(q, wanted[i])) for q in aimed]
+            out += found
+            if not found:
                 continue
             # Where the wanted pose is reachable exactly, a local full-pose solve from the
             # nearest approximation finds it.
-            best = min(aimed, key=lambda q: error(q, wanted[i]))
+            best = min(found, key=lambda a: a.angle).q
             try:
                 q = np.array(solver.solve(wanted[i], seed_q=best, options=exact).q)
             except IkFailedError:
@@ -317,47 +347,75 @@ def _offset(fk: _Frames, q: np.ndarray, offset: np.ndarray) -> np.ndarray:
     return fk(q).rotation @ offset if offset.any() else np.zeros(3)
 
 
-def _aimed(fk: _Frames, roll: tuple[int, float] | None, error: Callable[..., float],
-           q: np.ndarray, pose: pin.SE3, goal: np.ndarray, offset: np.ndarray,
-           solver: IkSolver, local: IkOptions) -> np.ndarray | None:
-    """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``."""
+def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.ndarray,
+           pose: pin.SE3, goal: np.ndarray, offset: np.ndarray, solver: IkSolver,
+           local: IkOptions) -> np.ndarray | None:
+    """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``.
+
+    The rounds stop at their fixed point: once the point is within the IK tolerance of
+    ``goal`` after a roll, a re-aim would leave the state as it is, and so would the next
+    roll (it depends on the other joints only)."""
     q = np.array(q, dtype=float)
     for _ in range(FIXED_POINT_ROUNDS):
         if roll is not None:
-            q = _rolled(fk, roll, error, q, pose, solver.model)
+            q = _rolled(fk, roll, q, pose, solver.model, grasping)
         if not offset.any():
             return q
+        frame = fk(q)
+        target = goal - frame.rotation @ offset
+        miss = target - frame.translation
+        if float(miss @ miss) <= local.tolerance**2:
+            return q
         try:
-            q = np.array(solver.solve(goal - _offset(fk, q, offset), seed_q=q, options=local).q)
+            q = np.array(solver.solve(target, seed_q=q, options=local).q)
         except IkFailedError:
             return None
     miss = np.linalg.norm(fk(q).translation + _offset(fk, q, offset) - goal)
     return q if miss < 1e-4 else None
 
 
-def _rolled(fk: _Frames, roll: tuple[int, float], error: Callable[..., float],
-            q: np.ndarray, pose: pin.SE3, model: RobotModel) -> np.ndarray:
+def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
+            model: RobotModel, grasping: bool) -> np.ndarray:
     """``q`` with the wrist roll turned so the frame's y axis is nearest ``pose``'s (of the
-    two closing senses, the one within the joint's limits and nearer the whole pose)."""
+    two closing senses, the one within the joint's limits and nearer the whole pose).
+
+    The roll turns the frame about its own z axis without moving it (see
+    :func:`wrist_roll`), so each candidate's orientation is the present one turned about z:
+    no forward kinematics per candidate. Turns a whole revolution apart give one
+    orientation; of those the first within the limits (the shortest turn) is kept.
+    """
     index, sense = roll
     now = fk(q).rotation
     z, y = now[:, 2], now[:, 1]
-    want = pose.rotation[:, 1] - (pose.rotation[:, 1] @ z) * z
-    if np.linalg.norm(want) < 1e-6:
+    wanted = pose.rotation[:, 1]
+    want = wanted - (wanted @ z) * z
+    if want @ want < 1e-12:
         return q
-    turn = math.atan2(float(np.cross(y, want) @ z), float(y @ want))
+    cross = (y[1] * want[2] - y[2] * want[1], y[2] * want[0] - y[0] * want[2],
+             y[0] * want[1] - y[1] * want[0])
+    turn = math.atan2(cross[0] * z[0] + cross[1] * z[1] + cross[2] * z[2], float(y @ want))
     lower, upper = model.lower[index], model.upper[index]
     best, best_error = q, math.inf
+    errors: dict[int, float] = {}
     for extra in (0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi):
         value = q[index] + sense * (turn + extra)
         if not lower - 1e-9 <= value <= upper + 1e-9:
             continue
-        candidate = q.copy()
-        candidate[index] = min(max(value, lower), upper)
-        found = error(candidate, pose)
+        flipped = int(round(extra / math.pi)) % 2  # same orientation as extra = 0 or pi
+        found = errors.get(flipped)
+        if found is None:
+            found = errors[flipped] = orientation_error(
+                pin.SE3(now @ _about_z(turn + math.pi * flipped), np.zeros(3)), pose, grasping)
         if found < best_error:
-            best, best_error = candidate, found
+            best = q.copy()
+            best[index] = min(max(value, lower), upper)
+            best_error = found
     return best
+
+
+def _about_z(angle: float) -> np.ndarray:
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def orientation_error(reached: pin.SE3, wanted: pin.SE3, grasping: bool = False) -> float:
