@@ -337,11 +337,10 @@ class MotionPlanner:
         and then the exact verification."""
         idx = group.joint_indices
         out = _Direct()
-        is_valid, count = self._validity(group, start)
+        count = [0]
+        edge_valid = self._edge_validity(group, start, options.longest_valid_segment, count)
         for index, q_goal in goals:
-            free = _segment_valid(is_valid, start[idx], q_goal[idx],
-                                  options.longest_valid_segment)
-            if not free:
+            if not edge_valid(start[idx], q_goal[idx]):
                 continue
             verification = self.verify_states(np.vstack([start, q_goal]), options.verify_margin)
             out.verify_time += verification.seconds
@@ -431,7 +430,7 @@ class MotionPlanner:
         checker = self.scene.checker
         q = start.copy()
         idx = group.joint_indices
-        mimic = any(j.mimic is not None for j in model.joints)
+        mimic = model.mimic_follows(idx)
         to_pin = model.to_pin
         count = [0]
 
@@ -454,7 +453,7 @@ class MotionPlanner:
         in_collision = self.scene.checker.in_collision
         idx = group.joint_indices
         base = start.copy()
-        mimic = any(j.mimic is not None for j in model.joints)
+        mimic = model.mimic_follows(idx)
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
 
         q_end = start.copy()

@@ -269,6 +269,20 @@ class RobotModel:
             out[self.joint(name).index] = float(value)
         return self.apply_mimic(out)
 
+    def mimic_follows(self, indices: Sequence[int] | np.ndarray) -> bool:
+        """True if some mimic joint follows one of the state indices ``indices``,
+        directly or through other mimic joints (moving them needs :meth:`apply_mimic`)."""
+        moved = {int(i) for i in indices}
+        followed = False
+        changed = True
+        while changed:
+            changed = False
+            for index, source, _, _ in self._mimic:
+                if source in moved and index not in moved:
+                    moved.add(index)
+                    followed = changed = True
+        return followed
+
     def apply_mimic(self, q: np.ndarray) -> np.ndarray:
         """Set every mimic joint from its source joint, in place; returns ``q`` (one state
         vector, or one per row)."""

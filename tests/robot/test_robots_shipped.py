@@ -173,6 +173,13 @@ def test_panda_mimic_finger_follows_its_source(panda_model):
     left, right = tool_position(m, q, "panda_leftfinger"), tool_position(m, q, "panda_rightfinger")
     hand = tool_position(m, q, "panda_hand")
     assert np.linalg.norm(left - hand) == pytest.approx(np.linalg.norm(right - hand))
+    # Which joint sets move a mimic joint; rows of states at once.
+    assert m.mimic_follows(m.group("hand").joint_indices)
+    assert not m.mimic_follows(m.group("arm").joint_indices)
+    rows = np.repeat(q[None, :], 3, axis=0)
+    rows[:, m.joint("panda_finger_joint1").index] = [0.0, 0.02, 0.04]
+    assert m.apply_mimic(rows)[:, finger2.index] == pytest.approx([0.0, 0.02, 0.04])
+    assert m.to_pin(rows) == pytest.approx(np.array([m.to_pin(r) for r in rows]))
 
 
 def test_panda_random_states_respect_limits_and_mimic(panda_model):
