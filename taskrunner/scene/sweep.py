@@ -544,8 +544,8 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 
 
 # ---------------------------------------------------------------------- kernels
-# The entry points (called from Python) and the larger helpers are compiled functions of
-# their own; the small hot helpers are inlined into their callers (no call overhead).
+# The entry points (called from Python) are compiled functions of their own; the helpers
+# are inlined into their callers (numba IR inlining: no call or reference-count overhead).
 _jit = numba.njit(cache=True, nogil=True, error_model="numpy")
 _inline = numba.njit(cache=True, nogil=True, error_model="numpy", inline="always")
 
@@ -793,7 +793,7 @@ def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # t
     return total
 
 
-@_jit
+@_inline
 def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end):  # type: ignore[no-untyped-def]
     """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
     arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
@@ -882,7 +882,7 @@ def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
     return count, s
 
 
-@_jit
+@_inline
 def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, c0,  # type: ignore[no-untyped-def]
              settings):
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
