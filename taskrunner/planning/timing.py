@@ -22,6 +22,7 @@ from __future__ import annotations
 import functools
 import logging
 import math
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import SimpleNamespace
@@ -373,6 +374,31 @@ def _check_limits(names: tuple[str, ...], times: np.ndarray, values: np.ndarray,
         f"{abs(values[k, j]):.4g} {unit} > {limits[j]:.4g} {unit} (scaled limit)"))
 
 
+class _InteriorPoints:
+    """The path's first and second derivatives at every interior check point of every
+    stage, evaluated in one call per path and grid and handed out per fraction (toppra
+    asks each interior constraint in turn, with the same path and grid objects).
+    Per thread: the constraints are shared by every caller."""
+
+    def __init__(self, fractions: list[float]) -> None:
+        self._fractions = list(fractions)
+        self._local = threading.local()
+
+    def derivatives(self, path: Any, gridpoints: np.ndarray, fraction: float
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        memo = getattr(self._local, "memo", None)
+        if memo is None or memo[0] is not path or memo[1] is not gridpoints:
+            step = np.append(np.diff(gridpoints), 0.0)
+            s = np.concatenate([np.minimum(gridpoints + step * f, gridpoints[-1])
+                                for f in self._fractions])
+            n = len(gridpoints)
+            d1, d2 = path(s, 1), path(s, 2)
+            memo = (path, gridpoints, {f: (d1[k * n:(k + 1) * n], d2[k * n:(k + 1) * n])
+                                       for k, f in enumerate(self._fractions)})
+            self._local.memo = memo
+        return memo[2][fraction]
+
+
 @functools.cache
 def _toppra_kit() -> SimpleNamespace:
     """Import toppra on first use (0.1-0.2 s without matplotlib, see
@@ -384,6 +410,13 @@ def _toppra_kit() -> SimpleNamespace:
     import toppra
     import toppra.algorithm
     import toppra.constraint as tc
+    import toppra.solverwrapper
+
+    # toppra asks the file system which optional solvers are installed at every
+    # algorithm's construction (~0.15 ms): the answer does not change within a process.
+    if not hasattr(toppra.solverwrapper.available_solvers, "cache_info"):
+        toppra.solverwrapper.available_solvers = functools.cache(
+            toppra.solverwrapper.available_solvers)
     from scipy.interpolate import PchipInterpolator
     from toppra.constraint.linear_constraint import LinearConstraint
     from toppra.interpolator import AbstractGeometricPath
@@ -412,10 +445,12 @@ def _toppra_kit() -> SimpleNamespace:
         loaded 2-core machine costs 10-50 ms (measured).
         """
 
-        def __init__(self, vmax: np.ndarray, amax: np.ndarray, fraction: float) -> None:
+        def __init__(self, vmax: np.ndarray, amax: np.ndarray, fraction: float,
+                     shared: _InteriorPoints) -> None:
             super().__init__()
             n = len(vmax)
             self.dof, self.identical, self._fraction = n, True, fraction
+            self._shared = shared
             self._v2 = np.asarray(vmax) ** 2
             eye, zero = np.eye(n), np.zeros((n, 1))  # rows: +accel, -accel, velocity
             self._f = np.block([[eye, zero], [-eye, zero], [zero.T, np.ones((1, 1))]])
@@ -424,8 +459,7 @@ def _toppra_kit() -> SimpleNamespace:
         def compute_constraint_params(self, path: Any, gridpoints: np.ndarray,
                                       *args: Any, **kwargs: Any) -> tuple[Any, ...]:
             tau = np.append(np.diff(gridpoints), 0.0)[:, None] * self._fraction
-            s = np.minimum(gridpoints + tau[:, 0], gridpoints[-1])
-            d1, d2 = path(s, 1), path(s, 2)
+            d1, d2 = self._shared.derivatives(path, gridpoints, self._fraction)
             x_max = np.min(self._v2 / np.maximum(d1**2, 1e-12), axis=1, keepdims=True)
             a = np.concatenate([d1 + 2 * tau * d2, 2 * tau], axis=1)
             b = np.concatenate([d2, np.ones_like(tau)], axis=1)
@@ -439,9 +473,10 @@ def _toppra_kit() -> SimpleNamespace:
         collocation = tc.DiscretizationType.Collocation  # at s_i; the stage's inside is ours
         # The last check is just before s_i+1, where a C1 curve's q'' has its left limit.
         fractions = [*(np.arange(1, _CHECKS_PER_STAGE) / _CHECKS_PER_STAGE), 1.0 - 1e-9]
+        shared = _InteriorPoints(fractions)
         return [tc.JointVelocityConstraint(np.stack([-v, v], axis=1)),
                 tc.JointAccelerationConstraint(np.stack([-a, a], axis=1), collocation),
-                *(StageInteriorLimits(v, a, f) for f in fractions)]
+                *(StageInteriorLimits(v, a, f, shared) for f in fractions)]
 
     return SimpleNamespace(toppra=toppra, Pchip=Pchip, constraints=constraints)
 
