@@ -22,10 +22,16 @@ nothing built before) and Python's bytecode cache redirected to an empty folder
 (``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart. The warm runs
 follow, after one unmeasured run that fills the caches.
 
+Warm runs keep their bytecode in a folder of their own (``PYTHONPYCACHEPREFIX`` in the
+benchmark's temporary folder, ``PYTHONDONTWRITEBYTECODE`` unset): an environment that
+sets ``PYTHONDONTWRITEBYTECODE`` would otherwise have every warm run compile taskrunner's
+~90 modules from source again (0.2-0.3 s, which an installed package never pays).
+``--no-bytecode-cache`` keeps the environment's setting instead.
+
 Usage::
 
     python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold]
-                                 [--json] [--pythonpath DIR]
+                                 [--json] [--pythonpath DIR] [--no-bytecode-cache]
 
 ``--pythonpath DIR`` runs the taskrunner found in DIR instead (``git archive`` of an
 older commit, for a before/after in the same run). Prints a table, and with ``--json``
@@ -120,17 +126,21 @@ def _stats(values: list[float]) -> dict[str, float]:
 
 
 def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = False,
-        pythonpath: str | None = None) -> dict[str, Any]:
+        pythonpath: str | None = None, bytecode_cache: bool = True) -> dict[str, Any]:
     """Measure ``runs`` warm starts (and one cold one with ``cold``); see the module doc."""
     env = dict(os.environ)
     env.pop("PYTHONPROFILEIMPORTTIME", None)
     if pythonpath:
         env["PYTHONPATH"] = os.pathsep.join(filter(None, [pythonpath, env.get("PYTHONPATH")]))
     result: dict[str, Any] = {"task": task, "runs": runs, "seed": seed,
+                              "bytecode_cache": bytecode_cache,
                               "load_before": os.getloadavg()[0]}
     with tempfile.TemporaryDirectory(prefix="startup-bench-") as tmp:
         root = Path(tmp)
         runs_dir = root / "runs"
+        if bytecode_cache:
+            env.pop("PYTHONDONTWRITEBYTECODE", None)
+            env["PYTHONPYCACHEPREFIX"] = str(root / "pycache")
         if cold:
             cold_env = dict(env, XDG_CACHE_HOME=str(root / "cold-cache"),
                             PYTHONPYCACHEPREFIX=str(root / "cold-pycache"))
@@ -165,6 +175,8 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
     if result.get("failed_runs"):
         out.append(("runs that failed after their first motion (exit 3 or 4)",
                     str(result["failed_runs"])))
+    out.append(("warm runs' bytecode", "cached (own folder)" if result.get("bytecode_cache")
+                else "as the environment says (PYTHONDONTWRITEBYTECODE: compiled every run)"))
     out.append(("load average (1 min) before / after",
                 f"{result['load_before']:.2f} / {result['load_after']:.2f}"))
     return out
@@ -179,8 +191,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
     parser.add_argument("--pythonpath", default=None,
                         help="run the taskrunner in this folder (a checkout of another commit)")
+    parser.add_argument("--no-bytecode-cache", action="store_true",
+                        help="warm runs keep the environment's PYTHONDONTWRITEBYTECODE and "
+                             "PYTHONPYCACHEPREFIX (see the module doc)")
     args = parser.parse_args(argv)
-    result = run(args.task, args.runs, args.seed, args.cold, args.pythonpath)
+    result = run(args.task, args.runs, args.seed, args.cold, args.pythonpath,
+                 not args.no_bytecode_cache)
     table = rows(result)
     width = max(len(what) for what, _ in table)
     for what, figure in table:

@@ -53,8 +53,13 @@ def _warm_verifier(scene: Scene) -> None:
     scene.path_verifier().verify(np.stack([q, nudged]))
 
 
-def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
+def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
+           timing: bool = True) -> None:
     """The worker process: load the model, then answer requests until told to stop.
+
+    ``timing``: import toppra before reporting ready (requests will ask for timed paths);
+    False for a caller that times its paths itself (a request that asks still gets its
+    path timed: toppra is then imported at that request).
 
     Ctrl-C in a terminal reaches the whole process group: the worker ignores it and is
     stopped by its parent, which decides what a Ctrl-C means (cancel the run, close the
@@ -74,7 +79,8 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0) -> None:
         scene = Scene(cell.model)
         planner = MotionPlanner(scene)
         scene.checker  # noqa: B018 - build the collision geometry before the first request
-        import_toppra()  # every plan is timed: import it while the caller still loads
+        if timing:
+            import_toppra()  # every plan is timed: import it while the caller still loads
         _warm_verifier(scene)  # and verified: load its compiled kernels now too
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:

@@ -10,13 +10,26 @@ taskrunner module that takes time to import), and the run adopts it
 process is stopped and the run starts its own. Whatever happens, nothing is planned
 before the task is loaded and checked: the early process only loads the cell.
 
+When this process runs a single thread (``run-task`` at its start), it first imports
+what both processes need (numpy, pinocchio, coal, scipy; taskrunner's robot, scene,
+kinematics and planning modules) and then forks: the child starts with all that, where a
+spawned one would start an interpreter, import it all again and have multiprocessing
+start its resource tracker (a third interpreter). Both processes needed those imports
+before either could go on, so the first motion comes no later, and the two processes
+burn ~0.45 s less CPU before it (what counts on two cores shared with other work;
+``benchmarks/RESULTS.md``). With other threads running (a test, an embedding program)
+the process is spawned, as :class:`~taskrunner.planning.worker.PlanningWorker` spawns
+its own, and nothing is imported beforehand.
+
 This module imports only the standard library and PyYAML: it is imported first.
 """
 
 from __future__ import annotations
 
 import atexit
+import importlib
 import multiprocessing as mp
+import threading
 import weakref
 from multiprocessing.connection import Connection
 from pathlib import Path
@@ -50,27 +63,59 @@ def task_cell(task: Path) -> Path | None:
     return cell if cell.is_file() else None
 
 
-def _serve(source: str, conn: Connection, cancel: Any) -> None:
-    """The early process: the planning worker's own loop (imported here, in the child)."""
+def _serve(source: str, conn: Connection, cancel: Any, timing: bool,
+           parent_end: Connection | None = None) -> None:
+    """The early process: the planning worker's own loop (imported here, in the child).
+    ``parent_end``: the parent's end of the pipe, which a forked child holds too: closed,
+    so that the child sees the pipe close when the parent dies."""
+    if parent_end is not None:
+        parent_end.close()
     from taskrunner.planning.worker import _serve as serve_requests
 
-    serve_requests(source, conn, cancel)
+    serve_requests(source, conn, cancel, 0, timing)
+
+
+def _import_shared() -> None:
+    """Import what the worker imports to load its cell and plan, and this process to
+    check and run the task (numpy, pinocchio, coal, scipy; taskrunner's robot, scene,
+    kinematics and planning modules: 0.4-0.5 s of CPU): before a fork, so that two
+    processes do not both pay for them."""
+    for name in ("taskrunner.planning.planner", "taskrunner.robot.cell"):
+        importlib.import_module(name)
+
+
+def _start_method() -> str:
+    """``fork`` in a process with one thread where fork exists, else ``spawn``."""
+    if "fork" in mp.get_all_start_methods() and threading.active_count() == 1:
+        return "fork"
+    return "spawn"
 
 
 class EarlyWorker:
     """A planning worker process started on a cell before the run needs it.
 
+    Args:
+        source: the cell file it loads (resolved).
+        timing: the worker imports toppra before it reports ready (False: the run
+            times its paths in its own process, as ``run-task`` does).
+
     Attributes:
         source: the cell file it loads (resolved).
+        start_method: ``fork`` or ``spawn`` (see the module docstring).
     """
 
-    def __init__(self, source: Path) -> None:
+    def __init__(self, source: Path, timing: bool = True) -> None:
         self.source = source
-        context = mp.get_context("spawn")
+        self.start_method = _start_method()
+        context = mp.get_context("fork") if self.start_method == "fork" else mp.get_context("spawn")
+        if self.start_method == "fork":
+            _import_shared()
         self.cancel = context.Value("q", _NO_CANCEL, lock=False)
         self.conn, child = context.Pipe()
-        self.process = context.Process(target=_serve, args=(str(source), child, self.cancel),
-                                       name="taskrunner-planner", daemon=False)
+        parent_end = self.conn if self.start_method == "fork" else None
+        self.process = context.Process(
+            target=_serve, args=(str(source), child, self.cancel, timing, parent_end),
+            name="taskrunner-planner", daemon=False)
         start_ignoring_sigint(self.process)  # as PlanningWorker starts its own
         child.close()
         self._taken = False
@@ -100,16 +145,18 @@ class EarlyWorker:
         self.conn.close()
 
 
-def start_worker_early(task: Path) -> EarlyWorker | None:
+def start_worker_early(task: Path, timing: bool = False) -> EarlyWorker | None:
     """An :class:`EarlyWorker` on the task's cell, or None when the task file does not
     name one plainly (see :func:`task_cell`) or a folder policy is active (a contained
-    server checks every path before it is read)."""
+    server checks every path before it is read). ``timing``: as :class:`EarlyWorker`'s;
+    False by default: ``run-task`` times its motions in its own process
+    (``RunOptions.planner_times``)."""
     from taskrunner.folders import active_policy
 
     if active_policy() is not None:
         return None
     cell = task_cell(task)
-    return EarlyWorker(cell) if cell is not None else None
+    return EarlyWorker(cell, timing) if cell is not None else None
 
 
 _OPEN: weakref.WeakSet[EarlyWorker] = weakref.WeakSet()

@@ -14,6 +14,10 @@ roll-pitch-yaw (fixed axes X, then Y, then Z).
 
 from __future__ import annotations
 
+import ast
+import functools
+import inspect
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal, Self
@@ -94,6 +98,57 @@ def _freeze(value: Any) -> Any:
     return value
 
 
+@functools.cache
+def _attribute_docstrings(cls: type) -> dict[str, str]:
+    """``name: type`` lines of ``cls``'s own body followed by a string: name → the string
+    (cleaned as a docstring)."""
+    try:
+        source = textwrap.dedent(inspect.getsource(cls))
+    except (OSError, TypeError):
+        return {}
+    tree = ast.parse(source).body[0]
+    if not isinstance(tree, ast.ClassDef):
+        return {}
+    docs: dict[str, str] = {}
+    for before, stmt in zip(tree.body, tree.body[1:]):
+        if (isinstance(before, ast.AnnAssign) and isinstance(before.target, ast.Name)
+                and isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Constant)
+                and isinstance(stmt.value.value, str)):
+            docs[before.target.id] = inspect.cleandoc(stmt.value.value)
+    return docs
+
+
+def describe_fields(schema: dict[str, Any], cls: type[BaseModel]) -> None:
+    """The JSON Schema of a node model gets each field's description from the docstring
+    under the field (what pydantic's ``use_attribute_docstrings`` gives), when the field
+    has none of its own. Done here, when a schema is made, because pydantic's own way
+    reads and parses each model's source while the model class is built: 0.15 s of
+    ``run-task``'s start for ~40 models that a run never turns into a schema."""
+    properties = schema.get("properties", {})
+    for name, info in cls.model_fields.items():
+        owner = next((c for c in cls.__mro__ if name in c.__dict__.get("__annotations__", {})),
+                     None)
+        doc = _attribute_docstrings(owner).get(name) if owner is not None else None
+        if info.description is not None or doc is None:
+            continue
+        choices = [c for c in getattr(info.validation_alias, "choices", ()) if isinstance(c, str)]
+        keys = [info.validation_alias if isinstance(info.validation_alias, str) else None,
+                *choices[:1], info.alias, name]
+        key = next((k for k in keys if k is not None and k in properties), None)
+        if key is None or "description" in properties[key]:
+            continue
+        # Before the title, where pydantic puts it (a field named "default" keeps the
+        # order of its keys in the printed schema).
+        prop = properties[key]
+        items = list(prop.items())
+        prop.clear()
+        for k, v in items:
+            if k == "title":
+                prop["description"] = doc
+            prop[k] = v
+        prop.setdefault("description", doc)
+
+
 class Node(BaseModel):
     """Base of every task model: frozen, no unknown keys, knows its :class:`Location`.
 
@@ -103,8 +158,10 @@ class Node(BaseModel):
     """
 
     # allow_inf_nan=False: every number of a task file is finite (inf, nan, 1e400 refused).
-    model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True,
-                              allow_inf_nan=False)
+    # json_schema_extra: field descriptions from attribute docstrings (a subclass that sets
+    # its own json_schema_extra calls describe_fields first).
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False,
+                              json_schema_extra=describe_fields)
 
     _loc: Location | None = PrivateAttr(default=None)
 

@@ -23,6 +23,7 @@ from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import (
     AliasChoices,
+    BaseModel,
     ConfigDict,
     Discriminator,
     Field,
@@ -34,7 +35,15 @@ from pydantic import (
 )
 
 from taskrunner.tasks.expect import Expectation, OutcomeTolerance
-from taskrunner.tasks.nodes import Node, ObjectSpec, PoseSpec, TargetPose, Transform, Vec2
+from taskrunner.tasks.nodes import (
+    Node,
+    ObjectSpec,
+    PoseSpec,
+    TargetPose,
+    Transform,
+    Vec2,
+    describe_fields,
+)
 from taskrunner.validation import MAX_METRES
 
 __all__ = [
@@ -339,7 +348,8 @@ class AddObjectStep(StepNode):
     object: ObjectSpec
 
 
-def _name_or_object_schema(schema: dict[str, Any]) -> None:
+def _name_or_object_schema(schema: dict[str, Any], cls: type[BaseModel]) -> None:
+    describe_fields(schema, cls)
     schema["properties"]["name"] = dict(schema["properties"]["object"])
     schema.pop("required", None)
     schema["oneOf"] = [{"required": ["name"]}, {"required": ["object"]}]
