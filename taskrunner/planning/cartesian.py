@@ -39,7 +39,6 @@ from taskrunner.errors import (
     StartInCollisionError,
 )
 from taskrunner.kinematics import IkOptions, IkSolver
-from taskrunner.planning.planner import interpolate_path
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
 from taskrunner.types import JointPath, Pose
@@ -201,6 +200,7 @@ class CartesianPlanner:
         solver = self._solver(group.name, link)
         q = self._start_state(start)
         checker = self.scene.checker if options.avoid_collisions else None
+        in_collision = checker.in_collision if checker is not None else None
         if checker is not None and checker.in_collision(model.to_pin(q)):
             contacts = self.scene.collisions(q)
             raise StartInCollisionError(
@@ -244,14 +244,18 @@ class CartesianPlanner:
                                f"the path (max_joint_step {options.max_joint_step:g})")
                     break
             if checker is not None:
-                dense = interpolate_path(np.vstack((q, q_next)), options.collision_resolution)
-                hit = next((i for i in range(1, len(dense))
-                            if checker.in_collision(to_pin(dense[i]))), None)
-                checks += len(dense) - 1 if hit is None else hit
+                # The states every collision_resolution between q and q_next (q excluded),
+                # as interpolate_path makes them.
+                delta = q_next - q
+                count = max(1, int(np.ceil(np.max(np.abs(delta)) / options.collision_resolution)))
+                dense = q + np.linspace(0.0, 1.0, count + 1)[1:, None] * delta
+                hit = next((i + 1 for i in range(count)
+                            if in_collision(to_pin(dense[i]))), None)
+                checks += count if hit is None else hit
                 if hit is not None:
-                    at = fractions[-1] + hit / (len(dense) - 1) * (point.fraction - fractions[-1])
+                    at = fractions[-1] + hit / count * (point.fraction - fractions[-1])
                     stop = "collision"
-                    message = (f"collision between {_describe(self.scene.collisions(dense[hit]))}"
+                    message = (f"collision between {_describe(self.scene.collisions(dense[hit - 1]))}"
                                f" at {_percent(at)} of the path")
                     break
             q = q_next

@@ -23,7 +23,6 @@ from taskrunner.backends.base import ExecutionHandle
 from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.cartesian import (
     CartesianOptions,
-    CartesianPlanner,
     CartesianResult,
 )
 from taskrunner.planning.cartesian_limits import time_cartesian_path
@@ -238,7 +237,7 @@ class MoveStraight(_Executes):
         Raises:
             TaskrunnerError: the path cannot be started (see :class:`CartesianPlanner`).
         """
-        planner = CartesianPlanner(ctx.scene)
+        planner = ctx.cartesian_planner()
         waypoints = list(self.waypoints(ctx))
         result = planner.compute(self.group, waypoints, link=self.link, options=self.options)
         if result.stop_reason == "ik" and self.fallback is not None:

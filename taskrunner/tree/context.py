@@ -9,6 +9,7 @@ names, from the cell's :class:`~taskrunner.robot.tools.Tool` of the arm).
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -17,6 +18,7 @@ import pinocchio as pin
 
 from taskrunner.backends.base import Backend, ObjectTracking
 from taskrunner.errors import UnknownNameError
+from taskrunner.planning.cartesian import CartesianPlanner
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -141,11 +143,21 @@ class TaskContext:
     materials: dict[str, Any] = field(default_factory=dict)
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
+    _cartesian: dict[int, tuple[Scene, CartesianPlanner]] = field(default_factory=dict)
 
     def arm(self, name: str) -> Arm:
         if name not in self._arms:
             self._arms[name] = resolve_arm(self.cell, name)
         return self._arms[name]
+
+    def cartesian_planner(self) -> CartesianPlanner:
+        """A Cartesian planner of the run's scene for this thread, kept between straight
+        moves (its IK solvers and kinematics data are built once)."""
+        key = threading.get_ident()
+        entry = self._cartesian.get(key)
+        if entry is None or entry[0] is not self.scene:
+            entry = self._cartesian[key] = (self.scene, CartesianPlanner(self.scene))
+        return entry[1]
 
     def next_seed(self) -> int:
         """A fresh, reproducible seed for the next planner call."""
