@@ -59,6 +59,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 import time
 import weakref
 from dataclasses import dataclass
@@ -208,6 +209,13 @@ class PathVerifier:
             self._owner, joints, 1)
         self._pair_i[:, _PI_JOINTS + 3 * nq:] = tree.state_joint[joints]
         self._kinematics = _Kinematics(tree, self._geo_i, self._geo_f)
+        self._settings = np.zeros(_S_COUNT)
+        self._settings[:5] = (margin, _DISTANCE_SLACK, GAIN, _EARLY,
+                              CHEAP_FROM if tree.supported else np.inf)
+        self._settings[_S_PER_STATE] = 1.0 if tree.supported else 0.0
+        self._settings[_S_BAD] = -1.0
+        self._busy = threading.Lock()
+        self._buffers = self._new_buffers()
 
     @property
     def pair_levers(self) -> np.ndarray:
@@ -230,13 +238,12 @@ class PathVerifier:
         moves relative to the other along the straight segment from state ``a`` to ``b``
         (lever arms taken at ``a``)."""
         states = np.ascontiguousarray(np.vstack([a, b]).astype(float))
-        path = np.zeros((2,) + states.shape)
-        path[0] = states
-        path[1, 1] = np.abs(states[1] - states[0])
+        cumulative = np.zeros_like(states)
+        cumulative[1] = np.abs(states[1] - states[0])
         out = np.zeros(len(self._first))
         kin = self._kinematics
         frames = kin.frames(states[0])
-        _segment_bounds(path, kin.tree_i, self._geo_f, self._pair_i, self._pair_levers, frames,
+        _segment_bounds(cumulative, self._geo_f, self._pair_i, self._pair_levers, frames,
                         kin.tree_i.shape[0], self._tree.supported, out)
         return out
 
@@ -267,55 +274,59 @@ class PathVerifier:
             raise ValueError(f"states must be an (n, {nq}) array of full state "
                              f"vectors (got shape {states.shape})")
         n_pairs = len(self._first)
-        path = np.empty((2,) + states.shape)
-        path[0] = states
-        cumulative = path[1]                                    # per joint, sum of |dq|
-        cumulative[0] = 0.0
-        if len(states) > 1:
-            np.cumsum(np.abs(np.diff(states, axis=0)), axis=0, out=cumulative[1:])
-            if not math.isfinite(cumulative[-1].sum()):
-                bad = ~np.isfinite(states).all(axis=1)
-                row = int(np.flatnonzero(bad)[0]) if bad.any() else len(states) - 1
-                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
-        elif not np.isfinite(states).all():
-            raise ValueError(f"state 0 of the path to verify is not finite: {states[0]}")
         if n_pairs == 0:
+            if not np.isfinite(states).all():
+                row = int(np.flatnonzero(~np.isfinite(states).all(axis=1))[0])
+                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
-        kin = self._kinematics
-        walk = np.zeros((n_pairs, _COLUMNS + 2 * nq))
-        selected = np.empty(n_pairs, dtype=np.int64)
-        distances = np.empty(n_pairs)
-        q = np.empty(nq)
-        settings = np.array([self.margin, _DISTANCE_SLACK, GAIN, _EARLY,
-                             CHEAP_FROM if self._tree.supported else np.inf, 0.0, 0.0, 0.0, 0.0,
-                             1.0 if self._tree.supported else 0.0, -1.0])
-        frames = kin.buffer()
-        walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._pair_i,
-                  self._pair_levers, path, frames, walk, selected, distances, q, settings)
-        queries = evaluated = 0
-        while True:
-            count = _walk(*walked)
-            if count <= 0:
-                break
-            if self._geometry_data is None:
-                self._make_data()
-            model, data = self.robot.model, self._data
-            geometry, geometry_data = self._geometry, self._geometry_data
-            pin.updateGeometryPlacements(model, data, geometry, geometry_data,
-                                         self.robot.to_pin(q))
-            evaluated += 1
-            compute = pin.computeDistance
-            for i in range(count):
-                distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
-            queries += count
-        states_count = max(evaluated, int(settings[_S_STATES]))
-        if count < 0:
-            bad = int(selected[int(settings[_S_BAD])])
-            return PathVerification(False, queries, states_count, time.perf_counter() - t0,
-                                    float(settings[_S_AT]), self._pair_name(bad), q.copy(),
-                                    int(settings[_S_BOUNDS]))
-        return PathVerification(True, queries, states_count, time.perf_counter() - t0,
-                                bounds=int(settings[_S_BOUNDS]))
+        states = np.ascontiguousarray(states)
+        cumulative = np.empty_like(states)                    # per joint, sum of |dq|
+        own = self._busy.acquire(blocking=False)              # else: a concurrent call
+        try:
+            walk, selected, distances, q, frames, settings = \
+                self._buffers if own else self._new_buffers()
+            settings[:] = self._settings
+            kin = self._kinematics
+            walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._pair_i,
+                      self._pair_levers, states, cumulative, frames, walk, selected,
+                      distances, q, settings)
+            queries = evaluated = 0
+            while True:
+                count = _walk(*walked)
+                if count <= 0:
+                    break
+                if self._geometry_data is None:
+                    self._make_data()
+                model, data = self.robot.model, self._data
+                geometry, geometry_data = self._geometry, self._geometry_data
+                pin.updateGeometryPlacements(model, data, geometry, geometry_data,
+                                             self.robot.to_pin(q))
+                evaluated += 1
+                compute = pin.computeDistance
+                for i in range(count):
+                    distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
+                queries += count
+            if count == _NOT_FINITE:
+                row = int(settings[_S_BAD])
+                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
+            states_count = max(evaluated, int(settings[_S_STATES]))
+            if count < 0:
+                bad = int(selected[int(settings[_S_BAD])])
+                return PathVerification(False, queries, states_count, time.perf_counter() - t0,
+                                        float(settings[_S_AT]), self._pair_name(bad), q.copy(),
+                                        int(settings[_S_BOUNDS]))
+            return PathVerification(True, queries, states_count, time.perf_counter() - t0,
+                                    bounds=int(settings[_S_BOUNDS]))
+        finally:
+            if own:
+                self._busy.release()
+
+    def _new_buffers(self) -> tuple[np.ndarray, ...]:
+        """Work arrays of :func:`_walk`: walk state, selected pairs, their distances, the
+        state, its frames, the settings."""
+        n_pairs, nq = len(self._first), self.robot.nq
+        return (np.zeros((n_pairs, _COLUMNS + 2 * nq)), np.zeros(n_pairs, dtype=np.int64),
+                np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(), np.zeros(_S_COUNT))
 
     def _make_data(self) -> None:
         self._data = self.robot.model.createData()
@@ -339,8 +350,11 @@ _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
 _FR_ROT, _FR_ORIGIN, _FR_AXIS, _FR_CENTRE, _FR_BOX = 0, 9, 12, 12, 15
 _FR_COLUMNS = 18
 # settings: margin, slack, gain, early, cheap-from; compiled states, cheap bounds; exact
-# distances pending (count, position); per-state lever arms; the contact (index).
-_S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD = 5, 6, 7, 8, 9, 10
+# distances pending (count, position); per-state lever arms; the contact (index into the
+# selected pairs) or the first state that is not finite; the walk started.
+_S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD, _S_STARTED = 5, 6, 7, 8, 9, 10, 11
+_S_COUNT = 12
+_NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
 
 
 @dataclass(frozen=True)
@@ -806,7 +820,10 @@ def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_
     left = _COLUMNS
     lo_node = int(start) + 1      # first node after start
     lo, f_lo = start, 0.0         # no motion yet
-    f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
+    if lo_node == last:           # the bound there is ``to_end``
+        f_node = to_end
+    else:
+        f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
     if f_node <= step:
         hi_node, f_hi = last, to_end   # bound(lo_node) <= step < bound(hi_node)
         while hi_node - lo_node > 1:
@@ -909,8 +926,11 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
         walk[k, _DR] = d
         _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, right)
     start = walk[k, _PL]
-    _cumulative_at(cumulative, start, c0)
-    if walk[k, _HAS_R] != 0.0:
+    # After a gap, the test below is the one that just failed (same start, lever arms
+    # and position): skipped.
+    if extends:
+        _cumulative_at(cumulative, start, c0)
+    if extends and walk[k, _HAS_R] != 0.0:
         moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, walk[k, _PR])
         if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
             walk[k, _HAS_R] = 0.0
@@ -937,18 +957,35 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
 
 
 @_jit
-def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, path, frames, walk,  # type: ignore[no-untyped-def]
-          selected, distances, q, settings):
-    """Walk the path (``path``: states, cumulative joint motion) until some pairs need an
-    exact distance: returns their count (in ``selected``; the position in
-    ``settings[_S_AT]``, its state in ``q``, its frames in ``frames``). The caller writes
-    their distances to ``distances`` and calls again, which takes them first. Returns 0
-    when every pair is done, -1 for a contact (``settings[_S_BAD]``: its index into
-    ``selected``). Pairs whose cheap lower bound is at least ``settings[4]`` take it as
-    their measurement."""
-    states, cumulative = path[0], path[1]
+def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative, frames,  # type: ignore[no-untyped-def]
+          walk, selected, distances, q, settings):
+    """Walk the path through ``states`` until some pairs need an exact distance: returns
+    their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
+    its frames in ``frames``). The caller writes their distances to ``distances`` and
+    calls again, which takes them first. Returns 0 when every pair is done, -1 for a
+    contact (``settings[_S_BAD]``: its index into ``selected``), ``_NOT_FINITE`` for a
+    state that is not finite (its row in ``settings[_S_BAD]``). The first call fills
+    ``cumulative`` (per joint, the sum of ``|dq|`` up to each state) and resets ``walk``.
+    Pairs whose cheap lower bound is at least ``settings[4]`` take it as their
+    measurement."""
     nj = tree_i.shape[0]
-    c0 = np.empty(states.shape[1])
+    n, nq = states.shape
+    if settings[_S_STARTED] == 0.0:
+        settings[_S_STARTED] = 1.0
+        for i in range(n):
+            for j in range(nq):
+                if not math.isfinite(states[i, j]):
+                    settings[_S_BAD] = i
+                    return _NOT_FINITE
+        for j in range(nq):
+            cumulative[0, j] = 0.0
+        for i in range(1, n):
+            for j in range(nq):
+                cumulative[i, j] = cumulative[i - 1, j] + abs(states[i, j] - states[i - 1, j])
+        for k in range(walk.shape[0]):
+            for column in range(_COLUMNS):
+                walk[k, column] = 0.0
+    c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
     pending = int(settings[_S_PENDING])
@@ -992,10 +1029,9 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, path, frames, walk,
 
 
 @_jit
-def _segment_bounds(path, tree_i, geo_f, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
-    """Per pair, the motion bound from ``path``'s first state to its second, lever arms
-    taken at the first (its frames in ``frames``)."""
-    cumulative = path[1]
+def _segment_bounds(cumulative, geo_f, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
+    """Per pair, the motion bound from the first state to the second (``cumulative``:
+    their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
     nq = cumulative.shape[1]
     walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
     c0 = np.zeros(nq)
