@@ -41,3 +41,15 @@ def test_rows_give_one_labelled_figure_each(bench: ModuleType, quick_result: dic
 @pytest.mark.slow
 def test_panda_state_check_meets_the_25_us_median_target(quick_result: dict) -> None:
     assert quick_result["panda_collision_us_median"] <= 25.0
+
+
+def test_quick_run_compares_the_previous_checker_and_splits_the_check(quick_result: dict) -> None:
+    compare = quick_result["compare"]
+    assert compare["verdict_disagreements"] == 0
+    assert compare["edits"] == sum(compare["edit_kinds"].values()) == 20
+    for key in ("rebuild_ms_before", "rebuild_ms_after", "rebuild_ms_after_pairs_cached",
+                "state_us_before", "state_us_after"):
+        assert compare[key] > 0
+    stages = list(quick_result["breakdown"])
+    assert stages[0] == "call_overhead" and stages[-1] == "whole_check"
+    assert all(us > 0 for us in quick_result["breakdown"].values())
