@@ -397,6 +397,7 @@ def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
     lower, upper = model.lower[index], model.upper[index]
     best, best_error = q, math.inf
     errors: dict[int, float] = {}
+    relative = pose.rotation.T @ now  # the wanted orientation to the present one
     for extra in (0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi):
         value = q[index] + sense * (turn + extra)
         if not lower - 1e-9 <= value <= upper + 1e-9:
@@ -404,8 +405,8 @@ def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
         flipped = int(round(extra / math.pi)) % 2  # same orientation as extra = 0 or pi
         found = errors.get(flipped)
         if found is None:
-            found = errors[flipped] = orientation_error(
-                pin.SE3(now @ _about_z(turn + math.pi * flipped), np.zeros(3)), pose, grasping)
+            found = errors[flipped] = _rotation_error(
+                relative @ _about_z(turn + math.pi * flipped), grasping)
         if found < best_error:
             best = q.copy()
             best[index] = min(max(value, lower), upper)
@@ -422,7 +423,12 @@ def orientation_error(reached: pin.SE3, wanted: pin.SE3, grasping: bool = False)
     """How far ``reached``'s orientation is from ``wanted``'s (rad): the angle of the
     rotation between them; for a grasp, its turn about the wanted closing axis (y) counts
     for ``FREE_TURN_WEIGHT`` only."""
-    turn = pin.log3(wanted.rotation.T @ reached.rotation)
+    return _rotation_error(wanted.rotation.T @ reached.rotation, grasping)
+
+
+def _rotation_error(relative: np.ndarray, grasping: bool) -> float:
+    """:func:`orientation_error` of the rotation ``wanted⁻¹ reached``."""
+    turn = pin.log3(relative)
     if not grasping:
         return float(np.linalg.norm(turn))
     return float(math.hypot(turn[0], turn[2]) + FREE_TURN_WEIGHT * abs(turn[1]))
