@@ -118,26 +118,23 @@ class RobotGeometry:
         self._static = tuple(body.static for body in self.bodies for _ in body.geometries)
         # Pair masks by (the other bodies' names, kinds and sizes; the allowances): moving
         # an object, or coming back to an earlier attachment, finds its pairs here.
-        self._masks: dict[tuple[object, ...], tuple[np.ndarray, list[tuple[int, int]]]] = {}
+        self._masks: dict[tuple[object, ...], tuple[np.ndarray, tuple[tuple[int, int], ...]]] = {}
 
     def _pairs(self, bodies: Sequence[Body], allowed: Collection[frozenset[str]],
                body_of: Sequence[str], static: Sequence[bool]
-               ) -> tuple[np.ndarray, list[tuple[int, int]]]:
-        """The pair mask and pair list of the robot with ``bodies`` (cached)."""
+               ) -> tuple[np.ndarray, tuple[tuple[int, int], ...]]:
+        """The pair mask and pairs of the robot with ``bodies`` (cached, read-only)."""
         key = (tuple((b.name, b.static, len(b.geometries)) for b in bodies), frozenset(allowed))
         found = self._masks.get(key)
         if found is None:
             mask = _pair_mask(body_of, static, allowed)
             first, second = np.nonzero(mask)  # row-major: the order of the model's pairs
-            found = (mask, list(zip(first.tolist(), second.tolist())))
+            mask.setflags(write=False)
+            found = (mask, tuple(zip(first.tolist(), second.tolist())))
             if len(self._masks) >= _MASK_CACHE_SIZE:
-                del self._masks[next(iter(self._masks))]  # the oldest
+                self._masks.clear()  # one call: safe with copies of the scene in other threads
             self._masks[key] = found
         return found
-
-    @property
-    def geometry_count(self) -> int:
-        return len(self._body_of)
 
     def checker(self, bodies: Sequence[Body], allowed: Collection[frozenset[str]]) -> CollisionChecker:
         """A checker of the robot against ``bodies`` (world and attached objects, after
