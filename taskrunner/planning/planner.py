@@ -458,16 +458,20 @@ class MotionPlanner:
 
         q_end = start.copy()
         to_pin = model.to_pin
+        # The group's columns: a slice where they are contiguous (cheaper than a gather).
+        columns: slice | np.ndarray = idx
+        if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
+            columns = slice(int(idx[0]), int(idx[0]) + len(idx))
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
             count[0] += 1
-            q_end[idx] = b
+            q_end[columns] = b
             if mimic:
                 model.apply_mimic(q_end)
             if in_collision(to_pin(q_end)):
                 return False
             delta = b - a
-            steps = math.ceil(float(np.max(np.abs(delta))) / resolution)
+            steps = math.ceil(float(np.abs(delta).max()) / resolution)
             if steps < 2:
                 return True
             cached = orders.get(steps)
@@ -478,7 +482,12 @@ class MotionPlanner:
                 states[:] = base
                 cached = orders[steps] = (order[:, None] / steps, states)
             fractions, states = cached
-            states[:, idx] = a + fractions * delta
+            if isinstance(columns, slice):
+                block = states[:, columns]
+                np.multiply(fractions, delta, out=block)
+                block += a
+            else:
+                states[:, columns] = a + fractions * delta
             if mimic:
                 model.apply_mimic(states)
             for q in to_pin(states):
