@@ -28,7 +28,6 @@ from pathlib import Path
 
 import coal
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from taskrunner.errors import SceneError
 from taskrunner.resources import user_cache_dir
@@ -60,6 +59,8 @@ def convex_hull(mesh: coal.BVHModelBase) -> coal.Convex:
     Raises:
         SceneError: the mesh is flat or degenerate (no 3-D hull).
     """
+    from scipy.spatial import ConvexHull, QhullError  # here: 40-80 ms to import, often unused
+
     vertices = np.array(mesh.vertices(), dtype=float)
     try:
         hull = ConvexHull(vertices)
@@ -85,6 +86,8 @@ def measure_hull_excess(mesh: coal.BVHModelBase, samples: int = _SAMPLES) -> flo
     Returns:
         The excess in m; ``inf`` for a mesh with no 3-D hull (flat or degenerate).
     """
+    from scipy.spatial import ConvexHull, QhullError
+
     vertices = np.array(mesh.vertices(), dtype=float)
     try:
         hull = ConvexHull(vertices)
