@@ -316,7 +316,8 @@ def read_ompl_planning_yaml(path: str | Path) -> OmplConfig:
             if isinstance(config, dict):
                 planner_type = str(config.get("type", "")) or None
                 planner_settings = {str(k): v for k, v in config.items() if k != "type"}
-                _number(path, config, "range", low=0.0)  # used by the planner: checked here
+                if isinstance(config, LineDict):  # the planner uses it: checked here
+                    _number(path, config, "range", low=0.0)
             else:
                 warnings.append((f"group {group!r}: planner configuration {default!r} is "
                                  "not defined under 'planner_configs'",
