@@ -252,8 +252,8 @@ class MotionPlanner:
         goal_index = min(candidates, key=lambda c: float(np.max(np.abs(c[1][idx] - end[idx]))))[0]
         return PlanResult(JointPath(group.joint_names, waypoints), start, end, goal_index,
                           options.planner, planning_time, simplify_time - verify_time,
-                          time.perf_counter() - t_start, checks, verify_queries=queries,
-                          verify_time=verify_time)
+                          time.perf_counter() - t_start, checks, searches=refinement + 1,
+                          verify_queries=queries, verify_time=verify_time)
 
     # ------------------------------------------------------------------ states
     def _start_state(self, request: PlanRequest, group: Group) -> np.ndarray:

@@ -195,6 +195,8 @@ class PlanResult:
         checks: collision checks made while searching.
         direct: the straight line from the start to the goal was free (no search ran:
             see :attr:`PlannerOptions.direct`).
+        searches: searches run; more than one where the exact verification turned a
+            path down (it is searched again with half the planning segment).
         verify_queries: pair distances computed to verify the path (and trajectory).
         verify_time: seconds spent verifying them (part of ``total_time``; with timing,
             the trajectory's verification comes on top of it).
@@ -214,6 +216,7 @@ class PlanResult:
     total_time: float
     checks: int
     direct: bool = False
+    searches: int = 0
     verify_queries: int = 0
     verify_time: float = 0.0
     trajectory: JointTrajectory | None = None

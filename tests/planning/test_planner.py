@@ -207,7 +207,7 @@ def test_a_free_straight_line_is_returned_without_a_search(shelf_scene):
     # In front of the shelf, a small joint move: nothing in the way.
     goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.3}
     result = MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(goal)))
-    assert result.direct and result.planning_time == 0.0
+    assert result.direct and result.planning_time == 0.0 and result.searches == 0
     assert len(result.path.waypoints) == 2
     assert result.checks > 0 and result.verify_time > 0.0
     assert_path_is_free(shelf_scene, result)
@@ -224,7 +224,7 @@ def test_a_blocked_straight_line_falls_back_to_the_search(shelf_scene):
     scene = shelf_scene.copy()
     scene.add_object("post", Sphere(0.04), Pose(tuple(hand.translation)))
     result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal)))
-    assert not result.direct and result.planning_time > 0.0
+    assert not result.direct and result.planning_time > 0.0 and result.searches >= 1
     assert len(result.path.waypoints) > 2
     assert_path_is_free(scene, result)
     # Without the direct attempt the same request searches from the start.
@@ -258,5 +258,30 @@ def test_the_direct_line_is_verified_exactly_not_only_sampled(shelf_scene):
     assert scene.in_collision(along(0.25))
     assert not any(scene.in_collision(along(t)) for t in (0.0, 0.5, 1.0))  # the samples miss it
     result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal), options=options))
-    assert not result.direct
+    assert not result.direct and result.searches >= 1
+    assert_path_is_free(scene, result)
+
+
+def test_a_path_the_verification_turns_down_is_searched_again_finer(shelf_scene):
+    # Checked every 0.4 rad, the search's first path steps through a 2 mm plate across
+    # the hand's way; the verification turns it down and a finer search goes around.
+    model = shelf_scene.robot
+    idx = model.group("arm").joint_indices
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 1.6}
+
+    def along(t: float) -> np.ndarray:
+        q = shelf_scene.state.copy()
+        q[idx[0]] += t * 1.6
+        return q
+
+    here, ahead = (frame_pose(model, along(t), "panda_hand").translation for t in (0.5, 0.51))
+    normal = (ahead - here) / np.linalg.norm(ahead - here)
+    up = np.array([0.0, 0.0, 1.0]) - normal[2] * normal
+    up /= np.linalg.norm(up)
+    rotation = np.column_stack([normal, np.cross(up, normal), up])
+    scene = shelf_scene.copy()
+    scene.add_object("plate", Box((0.002, 0.12, 0.12)), Pose.from_se3(pin.SE3(rotation, here)))
+    result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal), options=PlannerOptions(
+        longest_valid_segment=0.4, direct=False, seed=0)))
+    assert result.searches >= 2
     assert_path_is_free(scene, result)
