@@ -115,3 +115,65 @@ def test_run_task_starts_its_worker_before_importing_the_robot_loaders():
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           timeout=120)
     assert done.stdout.strip() == "imported before: []", done.stdout + done.stderr
+
+
+def test_with_other_threads_running_the_early_worker_is_spawned():
+    """fork only from a process with one thread (a forked child gets no copy of the other
+    threads, and whatever locks they held stay held there)."""
+    import threading
+
+    release = threading.Event()
+    other = threading.Thread(target=release.wait, daemon=True)
+    other.start()
+    try:
+        early = EarlyWorker(resolve_cell("servo_arm_table").resolve())
+        try:
+            assert early.start_method == "spawn"
+        finally:
+            early.close()
+    finally:
+        release.set()
+        other.join()
+    assert not early.process.is_alive()
+
+
+@pytest.mark.slow
+def test_a_forked_early_worker_ends_when_its_parent_dies(tmp_path):
+    """The forked child closes its copy of the parent's end of the pipe: when run-task is
+    killed outright, the worker sees the pipe close and ends instead of waiting forever."""
+    import os
+    import subprocess
+    import sys
+    import time
+
+    code = (
+        "import os, sys\n"
+        "from taskrunner.resources import resolve_cell\n"
+        "from taskrunner.runtime.prestart import EarlyWorker\n"
+        "early = EarlyWorker(resolve_cell('servo_arm_table').resolve())\n"
+        "ready = early.conn.poll(120) and early.conn.recv()[0]\n"
+        "print(early.start_method, early.process.pid, ready, flush=True)\n"
+        "os._exit(0)\n"  # no atexit, no close(): as if killed
+    )
+    # The worker inherits stdout: read the one line, not to the end.
+    parent = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+    assert parent.stdout is not None
+    with parent.stdout:
+        line = parent.stdout.readline()
+    assert parent.wait(timeout=180) == 0
+    method, pid, ready = line.split()
+    assert (method, ready) == ("fork", "ready"), line
+
+    def alive(pid: int) -> bool:
+        try:
+            with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+                return stat.read().rsplit(")", 1)[1].split()[0] != "Z"
+        except FileNotFoundError:
+            return False
+
+    deadline = time.monotonic() + 30
+    while alive(int(pid)) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    if alive(int(pid)):
+        os.kill(int(pid), 9)
+        pytest.fail("the orphaned worker kept waiting on its pipe")
