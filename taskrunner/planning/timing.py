@@ -375,25 +375,36 @@ def _check_limits(names: tuple[str, ...], times: np.ndarray, values: np.ndarray,
 
 
 class _InteriorPoints:
-    """The path's first and second derivatives at every interior check point of every
-    stage, evaluated in one call per path and grid and handed out per fraction (toppra
-    asks each interior constraint in turn, with the same path and grid objects).
-    Per thread: the constraints are shared by every caller."""
+    """The coefficients of every interior limit check (see ``StageInteriorLimits`` in
+    :func:`_toppra_kit`), computed for all checked fractions of every stage at once per
+    path and grid and handed out per fraction (toppra asks each interior constraint in
+    turn, with the same path and grid objects). Per thread: the constraints are shared by
+    every caller."""
 
-    def __init__(self, fractions: list[float]) -> None:
+    def __init__(self, fractions: list[float], vmax: np.ndarray) -> None:
         self._fractions = list(fractions)
+        self._v2 = np.asarray(vmax) ** 2
         self._local = threading.local()
 
-    def derivatives(self, path: Any, gridpoints: np.ndarray, fraction: float
-                    ) -> tuple[np.ndarray, np.ndarray]:
+    def params(self, path: Any, gridpoints: np.ndarray, fraction: float
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(a, b, c)`` of the check at ``fraction`` of each stage: there
+        ``x = x_i + 2 tau u_i``, so the joint accelerations ``(q' + 2 tau q'') u_i + q'' x_i``
+        and the velocity bound ``x_i + 2 tau u_i <= min_j v_j² / q'_j²`` are linear in the
+        stage's (u, x)."""
         memo = getattr(self._local, "memo", None)
         if memo is None or memo[0] is not path or memo[1] is not gridpoints:
-            step = np.append(np.diff(gridpoints), 0.0)
-            s = np.concatenate([np.minimum(gridpoints + step * f, gridpoints[-1])
-                                for f in self._fractions])
-            n = len(gridpoints)
+            step = np.append(np.diff(gridpoints), 0.0)[:, None]
+            tau = np.concatenate([step * f for f in self._fractions])
+            s = np.minimum(np.tile(gridpoints, len(self._fractions)) + tau[:, 0], gridpoints[-1])
             d1, d2 = path(s, 1), path(s, 2)
-            memo = (path, gridpoints, {f: (d1[k * n:(k + 1) * n], d2[k * n:(k + 1) * n])
+            x_max = np.min(self._v2 / np.maximum(d1**2, 1e-12), axis=1, keepdims=True)
+            a = np.concatenate([d1 + 2 * tau * d2, 2 * tau], axis=1)
+            b = np.concatenate([d2, np.ones_like(tau)], axis=1)
+            c = np.concatenate([np.zeros_like(d1), -x_max], axis=1)
+            n = len(gridpoints)
+            memo = (path, gridpoints, {f: (a[k * n:(k + 1) * n], b[k * n:(k + 1) * n],
+                                           c[k * n:(k + 1) * n])
                                        for k, f in enumerate(self._fractions)})
             self._local.memo = memo
         return memo[2][fraction]
@@ -451,19 +462,13 @@ def _toppra_kit() -> SimpleNamespace:
             n = len(vmax)
             self.dof, self.identical, self._fraction = n, True, fraction
             self._shared = shared
-            self._v2 = np.asarray(vmax) ** 2
             eye, zero = np.eye(n), np.zeros((n, 1))  # rows: +accel, -accel, velocity
             self._f = np.block([[eye, zero], [-eye, zero], [zero.T, np.ones((1, 1))]])
             self._g = np.concatenate([amax, amax, [0.0]])
 
         def compute_constraint_params(self, path: Any, gridpoints: np.ndarray,
                                       *args: Any, **kwargs: Any) -> tuple[Any, ...]:
-            tau = np.append(np.diff(gridpoints), 0.0)[:, None] * self._fraction
-            d1, d2 = self._shared.derivatives(path, gridpoints, self._fraction)
-            x_max = np.min(self._v2 / np.maximum(d1**2, 1e-12), axis=1, keepdims=True)
-            a = np.concatenate([d1 + 2 * tau * d2, 2 * tau], axis=1)
-            b = np.concatenate([d2, np.ones_like(tau)], axis=1)
-            c = np.concatenate([np.zeros_like(d1), -x_max], axis=1)
+            a, b, c = self._shared.params(path, gridpoints, self._fraction)
             return a, b, c, self._f, self._g, None, None
 
     @functools.lru_cache(maxsize=32)
@@ -473,7 +478,7 @@ def _toppra_kit() -> SimpleNamespace:
         collocation = tc.DiscretizationType.Collocation  # at s_i; the stage's inside is ours
         # The last check is just before s_i+1, where a C1 curve's q'' has its left limit.
         fractions = [*(np.arange(1, _CHECKS_PER_STAGE) / _CHECKS_PER_STAGE), 1.0 - 1e-9]
-        shared = _InteriorPoints(fractions)
+        shared = _InteriorPoints(fractions, v)
         return [tc.JointVelocityConstraint(np.stack([-v, v], axis=1)),
                 tc.JointAccelerationConstraint(np.stack([-a, a], axis=1), collocation),
                 *(StageInteriorLimits(v, a, f, shared) for f in fractions)]
