@@ -223,12 +223,23 @@ class MotionPlanner:
                                   time.perf_counter() - t_start, checks, direct=True,
                                   verify_queries=queries, verify_time=verify_time)
         failure: PathVerification | None = None
+        # The searches of a request (its attempts, and the finer searches after a path
+        # is turned down) share one budget: planning_time per attempt.
+        deadline = time.perf_counter() + options.planning_time * options.attempts
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
             # exact verification then finds: search again with a finer segment.
             tried = replace(options, longest_valid_segment=options.longest_valid_segment
                             / 2**refinement, seed=options.seed + 1000 * refinement)
-            found, seconds, count = self._search(group, start, candidates, tried, should_stop)
+            if refinement and time.perf_counter() >= deadline:
+                assert failure is not None
+                raise PlanningTimeoutError(
+                    f"every path found for group {group.name!r} collided when verified "
+                    f"exactly ({_pair(failure)}), and the request's "
+                    f"{options.planning_time * options.attempts:g} s of search ran out "
+                    f"before a finer search (segment {tried.longest_valid_segment:g} rad)")
+            found, seconds, count = self._search(group, start, candidates, tried, should_stop,
+                                                 deadline)
             planning_time += seconds
             checks += count
             t_simplify = time.perf_counter()
@@ -499,8 +510,8 @@ class MotionPlanner:
         return edge_valid
 
     def _search(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
-                options: PlannerOptions, should_stop: Callable[[], bool] | None
-                ) -> tuple[np.ndarray, float, int]:
+                options: PlannerOptions, should_stop: Callable[[], bool] | None,
+                deadline: float) -> tuple[np.ndarray, float, int]:
         ob, og, ou = _ompl()
         model = self.scene.robot
         idx = group.joint_indices
@@ -582,13 +593,16 @@ class MotionPlanner:
             return cancelled[0]
 
         for attempt in range(options.attempts):
+            budget = min(options.planning_time, deadline - time.perf_counter())
+            if budget <= 0.0:
+                break
             _seed_ompl(ou, options.seed + attempt)
             planner = getattr(og, str(options.planner))(si)
             if hasattr(planner, "setRange"):
                 planner.setRange(_range(group, options))
             setup.setPlanner(planner)
             setup.setup()
-            ptc = ob.timedPlannerTerminationCondition(options.planning_time)
+            ptc = ob.timedPlannerTerminationCondition(budget)
             if not (options.refine and options.planner in _OPTIMIZING):
                 ptc = ob.plannerOrTerminationCondition(
                     ptc, ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()))

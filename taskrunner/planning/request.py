@@ -95,7 +95,9 @@ class PlannerOptions:
             (``default_planner_config``), else RRTConnect (see :func:`group_planner`).
         planning_time: seconds per attempt, a cap and not a target: every planner but
             the optimizing ones with ``refine`` returns at its first solution. 5 s by
-            default (MoveIt's default), long enough for the hard benchmark classes.
+            default (MoveIt's default), long enough for the hard benchmark classes. The
+            searches of one request share ``planning_time * attempts`` of search: a finer
+            search after the exact verification turned a path down gets what is left.
         attempts: independent attempts (each with ``planning_time``) before giving up.
         seed: seeds OMPL's sampling and the IK goal sampling: the same seed, scene and
             request give the same path.

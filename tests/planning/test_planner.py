@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -285,3 +287,25 @@ def test_a_path_the_verification_turns_down_is_searched_again_finer(shelf_scene)
         longest_valid_segment=0.4, direct=False, seed=0)))
     assert result.searches >= 2
     assert_path_is_free(scene, result)
+
+
+def test_finer_searches_share_the_requests_search_time(shelf_scene, monkeypatch):
+    # Every path found is turned down: the finer searches run only while the request's
+    # search time lasts, and the error says so.
+    from taskrunner.planning import planner as planner_module
+    from taskrunner.scene.sweep import PathVerification
+
+    calls = []
+
+    def refuse(self, states, margin):  # type: ignore[no-untyped-def]
+        calls.append(1)
+        time.sleep(0.15)  # past the request's 0.1 s
+        return PathVerification(False, 0, 1, 0.15, 0.5, ("panda_hand/0", "shelf/0"),
+                                states[0], 0)
+
+    monkeypatch.setattr(planner_module.MotionPlanner, "verify_states", refuse)
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.4}
+    with pytest.raises(PlanningTimeoutError, match=r"search ran out before a finer search"):
+        MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(goal), options=PlannerOptions(
+            planning_time=0.1, direct=False)))
+    assert len(calls) <= 2  # the first search's path (shortcut and raw), no finer search
