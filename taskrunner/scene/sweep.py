@@ -176,38 +176,11 @@ class PathVerifier:
         pairs = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
                          dtype=np.int64).reshape(-1, 2)
         first, second = pairs[:, 0].copy(), pairs[:, 1].copy()
-        n_pairs = len(first)
-        moves = levers > 0
-        # Joints moving both bodies of a pair move them rigidly together: they do not count.
-        only_first = moves[first] & ~moves[second]
-        only_second = moves[second] & ~moves[first]
-        self._pair_levers = np.ascontiguousarray(levers[first] * only_first
-                                                 + levers[second] * only_second)
-        # Whose lever arm counts for each pair and joint: the body that joint moves.
-        owner = np.where(only_first, first[:, None], np.where(only_second, second[:, None], -1))
-        self._owner = owner.astype(np.int64)
         self._first, self._second = first, second
-        # Per pair, the joints that count (deepest in the tree first) and their codes: 1 or
-        # 2 if the joint moves the pair's first or second body only, 3 or 4 likewise for a
-        # revolute joint whose lever arm is taken per state. The joints of the same body
-        # deeper in the tree lie between such a joint and the body: they move the body
-        # relative to its axis, so its lever arm grows by at most what they contribute.
-        code = np.where(owner < 0, 0, np.where(only_first, 1, 2))
-        if tree.supported:
-            code = code + 2 * ((code > 0) & tree.revolute[None, :])
-        ordered = code[:, tree.order]
-        counts = (ordered > 0).sum(axis=1)
-        rank = np.argsort(ordered == 0, axis=1, kind="stable")     # counted joints first
-        joints = np.take_along_axis(np.broadcast_to(tree.order, (n_pairs, nq)), rank, axis=1)
-        self._pair_i = np.zeros((n_pairs, _PI_JOINTS + 4 * nq), dtype=np.int64)
-        self._pair_i[:, _PI_FIRST] = first
-        self._pair_i[:, _PI_SECOND] = second
-        self._pair_i[:, _PI_COUNT] = counts
-        self._pair_i[:, _PI_JOINTS:_PI_JOINTS + nq] = joints
-        self._pair_i[:, _PI_JOINTS + nq:_PI_JOINTS + 2 * nq] = np.take_along_axis(code, joints, 1)
-        self._pair_i[:, _PI_JOINTS + 2 * nq:_PI_JOINTS + 3 * nq] = np.take_along_axis(
-            self._owner, joints, 1)
-        self._pair_i[:, _PI_JOINTS + 3 * nq:] = tree.state_joint[joints]
+        self._pair_levers = np.zeros((len(first), nq))
+        self._pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
+        _pair_rows(first, second, levers, tree.order, tree.revolute, tree.state_joint,
+                   tree.supported, self._pair_levers, self._pair_i)
         self._kinematics = _Kinematics(tree, self._geo_i, self._geo_f)
         self._settings = np.zeros(_S_COUNT)
         self._settings[:5] = (margin, _DISTANCE_SLACK, GAIN, _EARLY,
@@ -423,8 +396,10 @@ class _Tree:
         self.parent = [int(p) for p in parent]
         state_depth = np.array([depth[j] if j >= 0 else 0 for j in self.state_joint])
         self.order = np.argsort(-state_depth, kind="stable").astype(np.int64)
-        self.revolute = np.array([j >= 0 and kind[j] == _REVOLUTE for j in self.state_joint])
-        self._records: dict[tuple[int, int, bytes], tuple[object, _Record]] = {}
+        self.revolute = np.array([j >= 0 and kind[j] == _REVOLUTE for j in self.state_joint],
+                                 dtype=np.int64)
+        self._records: dict[tuple[int, int, bytes, tuple[float, ...]],
+                            tuple[object, _Record]] = {}
 
     def levers(self, geometry_object: pin.GeometryObject) -> np.ndarray:
         """:func:`lever_arms` of one geometry object."""
@@ -446,24 +421,30 @@ class _Tree:
         return row
 
     def record(self, geometry_object: pin.GeometryObject) -> _Record:
-        """The packed rows of a geometry object; a robot link's are kept (its geometry is
-        the robot's, never edited: same object, joint and placement give the same rows)."""
+        """The packed rows of a geometry object. Kept for a robot link's geometry (the
+        robot's own, never edited: the same object, joint and placement give the same
+        rows) and for a primitive shape (box, sphere, cylinder, capsule, cone: keyed by its
+        dimensions too), so that a scene edit only builds the rows of what it changed."""
         name = geometry_object.name
-        link = name.rpartition("/")[0] in self.links and geometry_object.parentJoint > 0
-        if link:
-            geometry = geometry_object.geometry
-            key = (id(geometry), int(geometry_object.parentJoint),
-                   np.asarray(geometry_object.placement.homogeneous).tobytes())
-            kept = self._records.get(key)
-            if kept is not None:
-                record = kept[1]
-                return record if record.name == name else _Record(name, record.levers,
-                                                                  record.ints, record.floats)
+        geometry = geometry_object.geometry
+        joint = int(geometry_object.parentJoint)
+        if joint > 0 and name.rpartition("/")[0] in self.links:
+            shape: tuple[float, ...] | None = ()
+        else:
+            shape = _shape_key(geometry)
+        if shape is None:
+            return self._build_record(geometry_object)
+        key = (id(geometry), joint, np.asarray(geometry_object.placement.homogeneous).tobytes(),
+               shape)
+        kept = self._records.get(key)
+        if kept is not None:
+            record = kept[1]
+            return record if record.name == name else _Record(name, record.levers,
+                                                              record.ints, record.floats)
         record = self._build_record(geometry_object)
-        if link:
-            if len(self._records) > 4096:
-                self._records.clear()
-            self._records[key] = (geometry, record)   # the geometry kept: its id stays its own
+        if len(self._records) > 4096:
+            self._records.clear()
+        self._records[key] = (geometry, record)   # the geometry kept: its id stays its own
         return record
 
     def _build_record(self, geometry_object: pin.GeometryObject) -> _Record:
@@ -484,6 +465,18 @@ class _Tree:
             floats[_GF_BOX:_GF_BOX + 3] = 0.5 * (high + low)
         return _Record(geometry_object.name, levers,
                        (int(geometry_object.parentJoint), int(has_box)), floats)
+
+
+def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:
+    """A primitive shape's dimensions (None for anything else)."""
+    kind = type(geometry)
+    if kind is coal.Box:
+        return tuple(float(v) for v in geometry.halfSide)
+    if kind is coal.Sphere:
+        return (float(geometry.radius),)
+    if kind is coal.Cylinder or kind is coal.Capsule or kind is coal.Cone:
+        return (float(geometry.radius), float(geometry.halfLength))
+    return None
 
 
 # Per robot model (by identity; the model is not hashable): a weak reference and its tree.
@@ -1046,3 +1039,40 @@ def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-unt
     for k in range(pair_i.shape[0]):
         out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
                               frames, nj)
+
+
+@_jit
+def _pair_rows(first, second, levers, order, revolute, state_joint, supported,  # type: ignore[no-untyped-def]
+               pair_levers, pair_i):
+    """Per pair, its lever arms (``pair_levers``) and its row of ``pair_i``.
+
+    Joints moving both bodies of a pair move them rigidly together: they do not count;
+    a joint that moves one body only counts with that body's lever arm. The joints that
+    count are listed deepest in the tree first, with their codes: 1 or 2 if the joint
+    moves the pair's first or second body only, 3 or 4 likewise for a revolute joint
+    whose lever arm is taken per state (``supported``). The joints of the same body
+    deeper in the tree lie between such a joint and the body: they move the body relative
+    to its axis, so its lever arm grows by at most what they contribute."""
+    nq = levers.shape[1]
+    for k in range(first.shape[0]):
+        a, b = first[k], second[k]
+        pair_i[k, _PI_FIRST] = a
+        pair_i[k, _PI_SECOND] = b
+        count = 0
+        for index in range(nq):
+            j = order[index]
+            moves_a = levers[a, j] > 0.0
+            moves_b = levers[b, j] > 0.0
+            if moves_a == moves_b:
+                continue
+            owner = a if moves_a else b
+            pair_levers[k, j] = levers[owner, j]
+            code = 1 if moves_a else 2
+            if supported and revolute[j] != 0:
+                code += 2
+            pair_i[k, _PI_JOINTS + count] = j
+            pair_i[k, _PI_JOINTS + nq + count] = code
+            pair_i[k, _PI_JOINTS + 2 * nq + count] = owner
+            pair_i[k, _PI_JOINTS + 3 * nq + count] = state_joint[j]
+            count += 1
+        pair_i[k, _PI_COUNT] = count

@@ -125,3 +125,18 @@ def test_a_single_state_and_a_standing_path_are_checked_there(panda_model):
         inside = scene.robot.random_state(rng, "arm")
     result = verifier.verify(np.vstack([inside, inside]))
     assert not result.valid and result.fraction == 0.0
+
+
+def test_a_primitive_edited_in_place_gets_new_rows(panda_model):
+    scene = _cluttered(panda_model)
+    geometry_model = scene.checker.geometry_model
+    index = next(i for i, obj in enumerate(geometry_model.geometryObjects)
+                 if obj.name == "crate/0")
+    before = PathVerifier(scene.robot, scene.checker)
+    box = geometry_model.geometryObjects[index].geometry
+    box.halfSide = np.asarray(box.halfSide) * 2.0
+    after = PathVerifier(scene.robot, scene.checker)
+    row = after._geo_f[index]
+    assert not np.array_equal(before._geo_f[index], row)
+    sweep._TREES.clear()
+    assert np.array_equal(PathVerifier(scene.robot, scene.checker)._geo_f[index], row)
