@@ -299,13 +299,13 @@ def test_finer_searches_share_the_requests_search_time(shelf_scene, monkeypatch)
 
     def refuse(self, states, margin):  # type: ignore[no-untyped-def]
         calls.append(1)
-        time.sleep(0.15)  # past the request's 0.1 s
-        return PathVerification(False, 0, 1, 0.15, 0.5, ("panda_hand/0", "shelf/0"),
+        time.sleep(0.6)  # past the request's 0.5 s
+        return PathVerification(False, 0, 1, 0.6, 0.5, ("panda_hand/0", "shelf/0"),
                                 states[0], 0)
 
     monkeypatch.setattr(planner_module.MotionPlanner, "verify_states", refuse)
-    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.4}
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.3}  # a free straight line
     with pytest.raises(PlanningTimeoutError, match=r"search ran out before a finer search"):
         MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(goal), options=PlannerOptions(
-            planning_time=0.1, direct=False)))
+            planning_time=0.5, direct=False)))
     assert len(calls) <= 2  # the first search's path (shortcut and raw), no finer search
