@@ -37,7 +37,7 @@ import itertools
 import math
 import threading
 import weakref
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -169,22 +169,46 @@ def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[p
                         timeout=_IK_TIMEOUT, attempts=20 * FULL_POSE_SOLUTIONS)
     pre = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
            for i, p in enumerate(contact)]
-    found: list[list[np.ndarray]] = []
+    found: list[Iterator[np.ndarray]] = []
     for away, there in zip(pre, contact):
         try:
             solutions = solver.solve_all(away, seed_q=start, options=options)
         except IkFailedError:
             continue
-        found.append([np.array(s.q) for s in solutions
-                      if _follows(solver, np.array(s.q), away, there) is not None])
+        found.append(_followers(solver, [np.array(s.q) for s in solutions], away, there))
     # Every contact pose's states in turn, so that one pose blocked by an obstacle (its
     # states in collision, which the planner drops) leaves the others to choose from.
-    states = [q for turn in itertools.zip_longest(*found) for q in turn if q is not None]
-    if not states:
+    # The lines are followed as the goals are taken: those after the last goal kept are
+    # never needed.
+    states = _in_turn(found)
+    first = next(states, None)
+    if first is None:
         # No line can be followed: plan to the pre-poses anyway; the straight move will
         # say why it stops.
         return tuple(PoseGoal(Pose.from_se3(p), link=link, position_only=False) for p in pre)
-    return _joint_goals(model, group, states, 2 * keep)
+    return _joint_goals(model, group, itertools.chain([first], states), 2 * keep)
+
+
+def _followers(solver: IkSolver, states: list[np.ndarray], away: pin.SE3, there: pin.SE3
+               ) -> Iterator[np.ndarray]:
+    """The states (at ``away``) from which the line to ``there`` can be followed, in order."""
+    for q in states:
+        if _follows(solver, q, away, there) is not None:
+            yield q
+
+
+def _in_turn(iterators: list[Iterator[np.ndarray]]) -> Iterator[np.ndarray]:
+    """The first item of each iterator in order, then the second of each, and so on
+    (an iterator that runs out is left out of later turns)."""
+    active = list(iterators)
+    while active:
+        still = []
+        for items in active:
+            item = next(items, None)
+            if item is not None:
+                yield item
+                still.append(items)
+        active = still
 
 
 def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
@@ -211,7 +235,7 @@ def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
     return q
 
 
-def _joint_goals(model: RobotModel, group: str, states: Sequence[np.ndarray], keep: int
+def _joint_goals(model: RobotModel, group: str, states: Iterable[np.ndarray], keep: int
                  ) -> tuple[JointGoal, ...]:
     """Up to ``keep`` distinct states as joint goals of ``group``, in order."""
     idx = model.group(group).joint_indices
