@@ -225,6 +225,7 @@ class MotionPlanner:
         failure: PathVerification | None = None
         # The searches of a request (its attempts, and the finer searches after a path
         # is turned down) share one budget: planning_time per attempt.
+        _ompl()  # imported before the clock starts (the first import takes a while)
         deadline = time.perf_counter() + options.planning_time * options.attempts
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
