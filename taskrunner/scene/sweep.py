@@ -89,9 +89,11 @@ GAIN = 1.0  # optimistic step: (1 + GAIN) times the last distance (see the modul
 _BISECTIONS = 12  # at most this many evaluations to place a step inside a segment
 _CLOSE = 0.02  # a step placed within this fraction short of its bound is close enough
 
-# Columns of the per-pair walk state (a float array, one row per pair).
-_HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _DUE, _EARLY_AT, _DONE = range(9)
-_COLUMNS = 9
+# Columns of the per-pair walk state (a float array, one row per pair; its lever arms on
+# the left and on the right follow). When each pair is due next, and from where it may be
+# measured early, are rows 0 and 1 of the schedule (inf: done).
+_HAS_L, _PL, _DL, _HAS_R, _PR, _DR = range(6)
+_COLUMNS = 6
 _REVOLUTE, _PRISMATIC = 1, 2
 CHEAP_FROM = 0.01  # m: a pair whose cheap lower bound is at least this takes it, not coal's
 
@@ -256,13 +258,13 @@ class PathVerifier:
         cumulative = np.empty_like(states)                    # per joint, sum of |dq|
         own = self._busy.acquire(blocking=False)              # else: a concurrent call
         try:
-            walk, selected, distances, q, frames, settings = \
+            walk, schedule, selected, distances, q, frames, settings = \
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             kin = self._kinematics
             walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._pair_i,
-                      self._pair_levers, states, cumulative, frames, walk, selected,
-                      distances, q, settings)
+                      self._pair_levers, states, cumulative, frames, walk, schedule,
+                      selected, distances, q, settings)
             queries = evaluated = 0
             while True:
                 count = _walk(*walked)
@@ -295,10 +297,11 @@ class PathVerifier:
                 self._busy.release()
 
     def _new_buffers(self) -> tuple[np.ndarray, ...]:
-        """Work arrays of :func:`_walk`: walk state, selected pairs, their distances, the
-        state, its frames, the settings."""
+        """Work arrays of :func:`_walk`: walk state, schedule, selected pairs, their
+        distances, the state, its frames, the settings."""
         n_pairs, nq = len(self._first), self.robot.nq
-        return (np.zeros((n_pairs, _COLUMNS + 2 * nq)), np.zeros(n_pairs, dtype=np.int64),
+        return (np.zeros((n_pairs, _COLUMNS + 2 * nq)), np.zeros((2, n_pairs)),
+                np.zeros(n_pairs, dtype=np.int64),
                 np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(), np.zeros(_S_COUNT))
 
     def _make_data(self) -> None:
@@ -859,24 +862,22 @@ def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_
 
 
 @_inline
-def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
+def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
     """The next position to evaluate (the earliest due pair's), the pairs measured there
     (written to ``selected``: due there, or due soon and past their early position) and
     the state there (written to ``q``). Count 0: done."""
     n_pairs = walk.shape[0]
+    due, early_at = schedule[0], schedule[1]
     s = np.inf
     for k in range(n_pairs):
-        if walk[k, _DONE] == 0.0 and walk[k, _DUE] < s:
-            s = walk[k, _DUE]
+        if due[k] < s:
+            s = due[k]
     if s == np.inf:
         return 0, 0.0
     count = 0
     for k in range(n_pairs):
-        if walk[k, _DONE] != 0.0:
-            continue
         # Measuring early (after the last measurement) is always sound.
-        if walk[k, _DUE] <= s or (walk[k, _EARLY_AT] <= s and walk[k, _PL] < s
-                                  and walk[k, _HAS_L] != 0.0):
+        if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
             selected[count] = k
             count += 1
     n = states.shape[0]
@@ -893,7 +894,7 @@ def _pick(walk, selected, states, q):  # type: ignore[no-untyped-def]
 
 
 @_inline
-def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, c0,  # type: ignore[no-untyped-def]
+def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
              settings):
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
     of ``frames``) and schedule the pair's next measurement."""
@@ -941,17 +942,18 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
         step = max(d_left, margin)
     else:
         if to_end <= d_left:
-            walk[k, _DONE] = 1.0     # its distance cannot reach 0 before the end
+            schedule[0, k] = np.inf  # done: its distance cannot reach 0 before the end
+            schedule[1, k] = np.inf
             return
         step = max(d_left * (1.0 + gain), margin)
     due = _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end)
-    walk[k, _DUE] = due
-    walk[k, _EARLY_AT] = start + (1.0 - early) * (due - start)
+    schedule[0, k] = due
+    schedule[1, k] = start + (1.0 - early) * (due - start)
 
 
 @_jit
 def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative, frames,  # type: ignore[no-untyped-def]
-          walk, selected, distances, q, settings):
+          walk, schedule, selected, distances, q, settings):
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -978,6 +980,8 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
         for k in range(walk.shape[0]):
             for column in range(_COLUMNS):
                 walk[k, column] = 0.0
+            schedule[0, k] = 0.0                   # every pair is measured at the start
+            schedule[1, k] = 0.0
     c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
@@ -992,10 +996,10 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
             if not d > 0.0:  # also NaN
                 settings[_S_BAD] = i
                 return -1
-            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, c0,
-                     settings)
+            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule,
+                     c0, settings)
     while True:
-        count, s = _pick(walk, selected, states, q)
+        count, s = _pick(walk, schedule, selected, states, q)
         if count == 0:
             return 0
         settings[_S_AT] = s
@@ -1012,7 +1016,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
             if bound >= cheap_from:
                 settings[_S_BOUNDS] += 1.0
                 _measure(k, bound, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk,
-                         c0, settings)
+                         schedule, c0, settings)
             else:
                 selected[exact] = k
                 exact += 1
