@@ -46,7 +46,11 @@ nearby positions share one forward kinematics. A measurement is a lower bound on
 distance: far pairs take a cheap one, computed in compiled code (bounding spheres,
 bounding boxes: see :func:`_lower_bound`); only below :data:`CHEAP_FROM` does
 the verifier ask coal for the exact distance of the scene checker's geometry. The walk
-runs compiled (numba, ``cache=True``: compiled once per machine).
+runs compiled (numba, ``cache=True``: compiled once per machine), in one call until some
+pairs need coal's distance and again after each such round (:func:`_walk`). The robot's
+joint tree and the rows of its links' geometry (lever arms, bounding volumes) are kept per
+robot model, with those of primitive scene shapes, so that the verifier of a new scene
+revision builds only what changed.
 
 Guarantee (for the polyline, with the scene's geometry, allowances applied): if
 :meth:`PathVerifier.verify` accepts a path, every measured pair was more than 1 µm apart
