@@ -200,7 +200,6 @@ class CartesianPlanner:
         solver = self._solver(group.name, link)
         q = self._start_state(start)
         checker = self.scene.checker if options.avoid_collisions else None
-        in_collision = checker.in_collision if checker is not None else None
         if checker is not None and checker.in_collision(model.to_pin(q)):
             contacts = self.scene.collisions(q)
             raise StartInCollisionError(
@@ -250,7 +249,7 @@ class CartesianPlanner:
                 count = max(1, int(np.ceil(np.max(np.abs(delta)) / options.collision_resolution)))
                 dense = q + np.linspace(0.0, 1.0, count + 1)[1:, None] * delta
                 hit = next((i + 1 for i in range(count)
-                            if in_collision(to_pin(dense[i]))), None)
+                            if checker.in_collision(to_pin(dense[i]))), None)
                 checks += count if hit is None else hit
                 if hit is not None:
                     at = fractions[-1] + hit / count * (point.fraction - fractions[-1])
