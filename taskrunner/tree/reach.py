@@ -108,31 +108,27 @@ def wrist_roll(model: RobotModel, group: str, link: str, q: np.ndarray) -> tuple
     return joint.index, math.copysign(1.0, omega[2])
 
 
-_SOLVERS: dict[int, tuple[weakref.ref, dict[tuple[str, str, int], IkSolver]]] = {}
-_SOLVERS_LOCK = threading.Lock()
+_SOLVERS = threading.local()  # .models: {id(model): (weakref to it, {(group, link): solver})}
 
 
 def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
     """The IK solver of ``link`` for ``group``, kept per model and thread: its seed table
     (built by the first search that restarts, ~5-10 ms) serves every later choice. A
     solver's answers do not depend on its earlier calls (its random draws restart from
-    the call's seed), and it is not thread-safe, hence one per thread."""
-    with _SOLVERS_LOCK:
-        entry = _SOLVERS.get(id(model))
-        if entry is None or entry[0]() is not model:
-            entry = _SOLVERS[id(model)] = (weakref.ref(model), {})
-            weakref.finalize(model, _forget, id(model), entry[0])
-        key = (group, link, threading.get_ident())
-        solver = entry[1].get(key)
-        if solver is None:
-            solver = entry[1][key] = IkSolver(model, group, frame=link)
-        return solver
-
-
-def _forget(key: int, ref: weakref.ref) -> None:
-    with _SOLVERS_LOCK:
-        if key in _SOLVERS and _SOLVERS[key][0] is ref:
-            del _SOLVERS[key]
+    the call's seed), and it is not thread-safe, hence one per thread (dropped with it)."""
+    models: dict[int, tuple[weakref.ref, dict[tuple[str, str], IkSolver]]] | None = getattr(
+        _SOLVERS, "models", None)
+    if models is None:
+        models = _SOLVERS.models = {}
+    entry = models.get(id(model))
+    if entry is None or entry[0]() is not model:
+        for key in [k for k, (ref, _) in models.items() if ref() is None]:
+            del models[key]  # models gone
+        entry = models[id(model)] = (weakref.ref(model), {})
+    solver = entry[1].get((group, link))
+    if solver is None:
+        solver = entry[1][(group, link)] = IkSolver(model, group, frame=link)
+    return solver
 
 
 class _Frames:
