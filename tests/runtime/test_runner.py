@@ -195,6 +195,20 @@ def test_a_failed_timing_fails_the_run_cleanly_and_the_cell_stays_usable(tmp_pat
         return real(*args, **kwargs)
 
     monkeypatch.setattr(kit.toppra.algorithm, "TOPPRA", refusing_once)
+    # The path to Candle is a straight line, which is timed in closed form: a midpoint on
+    # it makes toppra time it.
+    from taskrunner.tree import behaviours
+    from taskrunner.types import JointPath
+
+    real_parameterize = behaviours.parameterize_path
+
+    def through_the_middle(model, path, options):  # type: ignore[no-untyped-def]
+        w = np.asarray(path.waypoints)
+        if len(w) == 2:
+            path = JointPath(path.names, np.vstack([w[0], 0.5 * (w[0] + w[1]), w[1]]))
+        return real_parameterize(model, path, options)
+
+    monkeypatch.setattr(behaviours, "parameterize_path", through_the_middle)
     with PlanningWorker(spec.cell) as worker:
         failed = Runner(spec, cell, backend, worker, RunOptions(runs_dir=tmp_path / "runs")).run()
         assert (failed.status, failed.exit_code) == ("failed", EXIT_CODES["planning"])
