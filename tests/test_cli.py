@@ -130,14 +130,12 @@ def test_the_straight_move_fallback_note_does_not_read_like_an_error(monkeypatch
                     SimpleNamespace(stop_reason=None, message="")])
 
     class Planner:
-        def __init__(self, scene):
-            pass
-
         def compute(self, group, waypoints, link=None, options=None):
             return next(results)
 
-    monkeypatch.setattr(behaviours, "CartesianPlanner", Planner)
-    ctx = SimpleNamespace(events=EventLog(), scene=None, timing=None)
+    planner = Planner()
+    ctx = SimpleNamespace(events=EventLog(), scene=None, timing=None,
+                          cartesian_planner=lambda: planner)
     leaf = behaviours.MoveStraight("retreat", "task.yaml:9", ctx, "arm", lambda c: [],
                                    fallback=CartesianOptions(position_only=True))
     leaf.compute(ctx)
