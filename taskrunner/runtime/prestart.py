@@ -10,13 +10,13 @@ taskrunner module that takes time to import), and the run adopts it
 process is stopped and the run starts its own. Whatever happens, nothing is planned
 before the task is loaded and checked: the early process only loads the cell.
 
-When this process runs a single thread (``run-task`` at its start), it first imports
+On Linux, when this process runs a single thread (``run-task`` at its start), it imports
 what both processes need (numpy, pinocchio, coal, scipy; taskrunner's robot, scene,
 kinematics and planning modules) and then forks: the child starts with all that, where a
 spawned one would start an interpreter, import it all again and have multiprocessing
 start its resource tracker (a third interpreter). Both processes needed those imports
 before either could go on, so the first motion comes no later, and the two processes
-burn ~0.45 s less CPU before it (what counts on two cores shared with other work;
+burn 0.5-0.7 s less CPU before it (what counts on two cores shared with other work;
 ``benchmarks/RESULTS.md``). With other threads running (a test, an embedding program)
 the process is spawned, as :class:`~taskrunner.planning.worker.PlanningWorker` spawns
 its own, and nothing is imported beforehand.
@@ -30,6 +30,7 @@ import atexit
 import gc
 import importlib
 import multiprocessing as mp
+import sys
 import threading
 import weakref
 from multiprocessing.connection import Connection
@@ -99,8 +100,9 @@ def _import_shared() -> None:
 
 
 def _start_method() -> str:
-    """``fork`` in a process with one thread where fork exists, else ``spawn``."""
-    if "fork" in mp.get_all_start_methods() and threading.active_count() == 1:
+    """``fork`` on Linux in a process with one thread, else ``spawn`` (macOS's system
+    libraries are not safe to use in a forked child: Python spawns there by default)."""
+    if sys.platform.startswith("linux") and threading.active_count() == 1:
         return "fork"
     return "spawn"
 
