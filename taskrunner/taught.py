@@ -14,7 +14,6 @@ from __future__ import annotations
 import contextvars
 import json
 import logging
-import sqlite3
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -83,6 +82,8 @@ def read_taught_poses(db_path: Path, cells_dir: Path) -> TaughtPoses:
     work in ``with read_taught_poses(...).active():``. No database: none."""
     if not Path(db_path).is_file():
         return TaughtPoses()
+    import sqlite3  # here: 10-15 ms of run-task's start when there is no database
+
     db = sqlite3.connect(f"file:{Path(db_path).resolve()}?mode=ro", uri=True)
     try:
         rows = db.execute("SELECT cell, grp, name, joints FROM taught_poses "
