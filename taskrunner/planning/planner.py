@@ -75,6 +75,8 @@ _WALK_SUCCESS = 0.25
 _SCAN_TRIAL = 200
 _SCAN_TOUCHING = 0.5
 _SINGLE_GOAL = {"PRM", "PRMstar"}
+# Tree planners that stop at their first path: these restart (PlannerOptions.restart).
+_RESTARTING = {"RRTConnect", "RRT", "KPIECE1", "BKPIECE1", "LBKPIECE1"}
 _OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
 
 
@@ -593,34 +595,52 @@ class MotionPlanner:
                 cancelled[0] = True
             return cancelled[0]
 
+        restarts = options.restart > 0 and options.planner in _RESTARTING
         for attempt in range(options.attempts):
-            budget = min(options.planning_time, deadline - time.perf_counter())
-            if budget <= 0.0:
-                break
-            _seed_ompl(ou, options.seed + attempt)
-            planner = getattr(og, str(options.planner))(si)
-            if hasattr(planner, "setRange"):
-                planner.setRange(_range(group, options))
-            setup.setPlanner(planner)
-            setup.setup()
-            ptc = ob.timedPlannerTerminationCondition(budget)
-            if not (options.refine and options.planner in _OPTIMIZING):
-                ptc = ob.plannerOrTerminationCondition(
-                    ptc, ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()))
-            if should_stop is not None:
-                ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(stop))
-            t0 = time.perf_counter()
-            status = setup.solve(ptc)
-            planning_time += time.perf_counter() - t0
-            if cancelled[0]:
-                raise PlanningCancelledError(f"planning for group {group.name!r} was cancelled")
-            if setup.haveExactSolutionPath() and "EXACT" in status.asString().upper():
-                path = setup.getSolutionPath()
-                # Copy now: the path's states die with the next solve() or clear() (pitfall 1).
-                states = np.array([[path.getState(i)[k] for k in rng]
-                                   for i in range(path.getStateCount())])
-                return states, planning_time, count[0]
-            setup.clear()
+            attempt_end = min(time.perf_counter() + options.planning_time, deadline)
+            run = 0
+            while True:
+                budget = attempt_end - time.perf_counter()
+                if budget <= 0.0:
+                    break
+                # A tree search that has not connected after its share of state checks
+                # starts again from scratch, with twice the share each time: its run
+                # times are heavy-tailed, and a fresh tree is often faster than a stuck
+                # one. Counted in checks, not seconds, so the same seed gives the same
+                # path whatever the machine's load.
+                allowed = options.restart * 2**run if restarts else 0
+                run_start = count[0]
+                _seed_ompl(ou, options.seed + attempt + 7919 * run)
+                planner = getattr(og, str(options.planner))(si)
+                if hasattr(planner, "setRange"):
+                    planner.setRange(_range(group, options))
+                setup.setPlanner(planner)
+                setup.setup()
+                ptc = ob.timedPlannerTerminationCondition(budget)
+                if not (options.refine and options.planner in _OPTIMIZING):
+                    ptc = ob.plannerOrTerminationCondition(
+                        ptc, ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()))
+                if should_stop is not None:
+                    ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(stop))
+                if allowed:
+                    ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(
+                        lambda begun=run_start, limit=allowed: count[0] - begun >= limit))
+                t0 = time.perf_counter()
+                status = setup.solve(ptc)
+                planning_time += time.perf_counter() - t0
+                if cancelled[0]:
+                    raise PlanningCancelledError(f"planning for group {group.name!r} was cancelled")
+                if setup.haveExactSolutionPath() and "EXACT" in status.asString().upper():
+                    path = setup.getSolutionPath()
+                    # Copy now: the path's states die with the next solve() or clear()
+                    # (pitfall 1).
+                    states = np.array([[path.getState(i)[k] for k in rng]
+                                       for i in range(path.getStateCount())])
+                    return states, planning_time, count[0]
+                setup.clear()
+                if not (allowed and count[0] - run_start >= allowed):
+                    break  # out of time (or never restarting): the next attempt
+                run += 1
         raise PlanningTimeoutError(
             f"no path for group {group.name!r} found by {options.planner} in "
             f"{options.attempts} attempt(s) of {options.planning_time:g} s")

@@ -309,3 +309,38 @@ def test_finer_searches_share_the_requests_search_time(shelf_scene, monkeypatch)
         MotionPlanner(shelf_scene).plan(PlanRequest("arm", JointGoal(goal), options=PlannerOptions(
             planning_time=0.5, direct=False)))
     assert len(calls) <= 2  # the first search's path (shortcut and raw), no finer search
+
+
+def test_restarts_are_counted_in_checks_so_a_seed_gives_the_same_path(shelf_scene, monkeypatch):
+    # Restart after very few checks: the search starts over many times (new seeds, twice
+    # the checks each time) and still finds a free path; the same options give the same
+    # path, whatever the time it took.
+    from ompl import geometric as og
+
+    created = []
+    original = og.RRTConnect.__init__
+
+    def counting(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        created.append(1)
+        original(self, *args, **kwargs)
+
+    monkeypatch.setattr(og.RRTConnect, "__init__", counting)
+    request = PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(
+        direct=False, restart=1, seed=0))
+    first = MotionPlanner(shelf_scene).plan(request)
+    assert len(created) > 1  # it restarted
+    assert_path_is_free(shelf_scene, first)
+    created.clear()
+    again = MotionPlanner(shelf_scene).plan(request)
+    assert np.array_equal(first.path.waypoints, again.path.waypoints)
+    # Never restarting: one planner.
+    created.clear()
+    MotionPlanner(shelf_scene).plan(PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(
+        direct=False, restart=0, seed=0)))
+    assert len(created) == 1
+
+
+@pytest.mark.parametrize("value", [-1, 0.5, True])
+def test_a_bad_restart_count_is_refused(value):
+    with pytest.raises(ValueError, match="'restart' must be an integer >= 0"):
+        PlannerOptions(restart=value)
