@@ -989,42 +989,45 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
     c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
-    pending = int(settings[_S_PENDING])
-    if pending > 0:
-        settings[_S_PENDING] = 0.0
-        s = settings[_S_AT]
-        slack = settings[1]
-        for i in range(pending):
-            k = selected[i]
-            d = distances[i] - slack
-            if not d > 0.0:  # also NaN
-                settings[_S_BAD] = i
-                return -1
-            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule,
-                     c0, settings)
+    slack = settings[1]
+    # First the exact distances the caller measured (if any), then on along the path; one
+    # loop, so that the measurement's code is compiled once.
+    count = int(settings[_S_PENDING])
+    exact_phase = count > 0
+    settings[_S_PENDING] = 0.0
+    s = settings[_S_AT]
     while True:
-        count, s = _pick(walk, schedule, selected, states, q)
-        if count == 0:
-            return 0
-        settings[_S_AT] = s
-        if not per_state:
-            settings[_S_PENDING] = count
-            return count
-        _forward(q, tree_i, tree_f, geo_i, geo_f, frames)
-        settings[_S_STATES] += 1.0
+        if not exact_phase:
+            count, s = _pick(walk, schedule, selected, states, q)
+            if count == 0:
+                return 0
+            settings[_S_AT] = s
+            if not per_state:
+                settings[_S_PENDING] = count
+                return count
+            _forward(q, tree_i, tree_f, geo_i, geo_f, frames)
+            settings[_S_STATES] += 1.0
         exact = 0
         for i in range(count):
             k = selected[i]
-            bound = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
-                                 frames, nj)
-            if bound >= cheap_from:
-                settings[_S_BOUNDS] += 1.0
-                _measure(k, bound, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk,
-                         schedule, c0, settings)
+            if exact_phase:
+                d = distances[i] - slack
+                if not d > 0.0:  # also NaN
+                    settings[_S_BAD] = i
+                    return -1
             else:
-                selected[exact] = k
-                exact += 1
-        if exact > 0:
+                d = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+                                 frames, nj)
+                if d < cheap_from or not d > 0.0:
+                    selected[exact] = k
+                    exact += 1
+                    continue
+                settings[_S_BOUNDS] += 1.0
+            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule,
+                     c0, settings)
+        if exact_phase:
+            exact_phase = False
+        elif exact > 0:
             settings[_S_PENDING] = exact
             return exact
 
