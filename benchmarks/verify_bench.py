@@ -2,6 +2,8 @@
 
     python benchmarks/verify_bench.py [--quick] [--json] [--seed N] [--baseline REV]
                                       [--problems P,Q] [--repeats N]
+    python benchmarks/verify_bench.py --moveit benchmarks/problems [--classes C,D]
+                                      [--per-class N] [--baseline REV] [--fine] [--json]
 
 Collects the paths the planner returns (RRTConnect, seeded) on the thin-plate scenes of
 ``tests/planning/test_path_guarantee.py`` (a 1-3 mm plate across the straight line from the
