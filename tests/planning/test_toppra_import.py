@@ -42,3 +42,35 @@ def test_timing_works_and_matplotlib_imported_first_is_kept() -> None:
         "print(parametrizer.plt is plt)\n"
     )
     assert out == "True"
+
+
+@pytest.mark.slow
+def test_scipy_optimize_is_imported_when_first_used_not_with_toppra() -> None:
+    out = _run(
+        "import sys\n"
+        "import numpy as np\n"
+        "from taskrunner.planning.toppra_import import import_toppra\n"
+        "import_toppra()\n"
+        "print('scipy.optimize' in sys.modules)\n"
+        # scipy.interpolate's one module-level use: a smoothing spline (its minimize_scalar)
+        "from scipy.interpolate import make_smoothing_spline\n"
+        "x = np.linspace(0.0, 1.0, 30)\n"
+        "spline = make_smoothing_spline(x, np.sin(6 * x), lam=1e-3)\n"
+        "import scipy.optimize\n"
+        "print(type(scipy.optimize).__name__, hasattr(scipy.optimize, 'linprog'))\n"
+        "gcv = make_smoothing_spline(x, np.sin(6 * x))\n"  # lam=None: minimize_scalar
+        "print(abs(float(gcv(0.5)) - np.sin(3.0)) < 0.01)\n"
+    )
+    assert out.splitlines() == ["False", "module True", "True"]
+
+
+@pytest.mark.slow
+def test_scipy_optimize_imported_first_is_kept() -> None:
+    out = _run(
+        "import scipy.optimize\n"
+        "from taskrunner.planning.toppra_import import import_toppra\n"
+        "import_toppra()\n"
+        "import scipy.interpolate._bsplines as bsplines\n"
+        "print(bsplines.minimize_scalar is scipy.optimize.minimize_scalar)\n"
+    )
+    assert out == "True"
