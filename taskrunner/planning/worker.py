@@ -43,6 +43,9 @@ class WorkerDiedError(PlanningError):
     """The planning worker process ended while a request was in flight."""
 
 
+_COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its verifier
+
+
 def _warm_verifier(scene: Scene) -> None:
     """Verify a short motion from the start state, so that the path verifier's compiled
     kernels are loaded (compiled, the first time on a machine: then cached on disk)
@@ -81,6 +84,9 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
         scene.checker  # noqa: B018 - build the collision geometry before the first request
         if timing:
             import_toppra()  # every plan is timed: import it while the caller still loads
+        # Loaded; what follows may compile the verifier's kernels (once per machine, 10-15 s
+        # of CPU): the parent then waits longer than for a load.
+        conn.send(("loaded", cell.model.name, time.perf_counter() - started))
         _warm_verifier(scene)  # and verified: load its compiled kernels now too
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:
@@ -209,18 +215,26 @@ class PlanningWorker:
     def _await_ready(self, timeout: float) -> None:
         if self._ready:
             return
-        if not self._conn.poll(timeout):
-            self._process.kill()
-            raise WorkerDiedError(f"planning worker did not load {self.source} in {timeout} s")
-        try:
-            kind, payload, seconds = self._conn.recv()
-        except (EOFError, OSError):
-            self._process.join(timeout=5.0)
-            raise WorkerDiedError(
-                f"planning worker for {self.source} exited while starting (exit code "
-                f"{self._process.exitcode}); a script that starts workers needs the "
-                "`if __name__ == '__main__':` guard (workers are spawned, not forked)"
-            ) from None
+        kind = "loaded"
+        waited = timeout
+        while kind == "loaded":
+            if not self._conn.poll(waited):
+                self._process.kill()
+                doing = "load" if waited == timeout else "warm up (compile) its path verifier"
+                raise WorkerDiedError(
+                    f"planning worker did not {doing} for {self.source} in {waited:g} s")
+            try:
+                kind, payload, seconds = self._conn.recv()
+            except (EOFError, OSError):
+                self._process.join(timeout=5.0)
+                raise WorkerDiedError(
+                    f"planning worker for {self.source} exited while starting (exit code "
+                    f"{self._process.exitcode}); a script that starts workers needs the "
+                    "`if __name__ == '__main__':` guard (workers are spawned, not forked)"
+                ) from None
+            # Loaded: the verifier's kernels may compile now, the first time on a machine
+            # (minutes on a busy one): wait for that as long as it takes, within reason.
+            waited = max(timeout, _COMPILE_TIMEOUT)
         if kind == "failed":
             self._process.join()
             raise payload

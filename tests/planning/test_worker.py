@@ -141,3 +141,54 @@ def test_a_worker_can_run_at_a_lower_cpu_priority(robots_dir, example_robot_data
 def test_a_workers_niceness_must_be_an_integer_from_0_to_19(tmp_path, nice):
     with pytest.raises(ValueError, match="'nice' must be an integer from 0 to 19"):
         PlanningWorker(tmp_path / "never-loaded", nice=nice)
+
+
+class _Process:
+    """Stands in for a worker process that another thread speaks for."""
+
+    exitcode = None
+
+    def is_alive(self) -> bool:
+        return True
+
+    def kill(self) -> None:
+        self.killed = True
+
+    def join(self, timeout: float | None = None) -> None:
+        pass
+
+
+@pytest.mark.parametrize("warm_up", [0.0, 0.6])
+def test_a_loaded_worker_may_take_longer_to_warm_up_than_to_load(warm_up: float):
+    # The start timeout bounds the load; a worker that reported "loaded" is compiling
+    # its verifier's kernels (once per machine) and is waited for.
+    import multiprocessing as mp
+    import threading
+
+    from taskrunner.planning import worker as worker_module
+
+    ours, theirs = mp.Pipe()
+
+    def speak() -> None:
+        theirs.send(("loaded", "panda", 0.1))
+        time.sleep(warm_up)
+        theirs.send(("ready", "panda", 0.1 + warm_up))
+
+    threading.Thread(target=speak, daemon=True).start()
+    worker = worker_module.PlanningWorker.__new__(worker_module.PlanningWorker)
+    worker.source, worker._process, worker._conn, worker._ready = "panda", _Process(), ours, False
+    worker._await_ready(0.3)
+    assert worker._ready and worker.model_name == "panda"
+
+
+def test_a_worker_that_never_loads_is_reported():
+    import multiprocessing as mp
+
+    from taskrunner.planning import worker as worker_module
+
+    ours, _theirs = mp.Pipe()
+    worker = worker_module.PlanningWorker.__new__(worker_module.PlanningWorker)
+    worker.source, worker._process, worker._conn, worker._ready = "panda", _Process(), ours, False
+    with pytest.raises(WorkerDiedError, match=r"did not load for panda in 0.2 s"):
+        worker._await_ready(0.2)
+    assert worker._process.killed
