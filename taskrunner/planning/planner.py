@@ -466,8 +466,8 @@ class MotionPlanner:
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
                        count: list[int]) -> Callable[[np.ndarray, np.ndarray], bool]:
         """An edge check over the group's values: the edge's end, then the states every
-        ``resolution`` (max over joints) in between, middle first (a blocked edge is
-        usually blocked there); the edge's first state is taken as checked. One Python
+        ``resolution`` (max over joints) in between, coarse to fine (see
+        :func:`_bisection_order`); the edge's first state is taken as checked. One Python
         call per edge: the states are interpolated together."""
         model = self.scene.robot
         in_collision = self.scene.checker.in_collision
@@ -496,8 +496,7 @@ class MotionPlanner:
                 return True
             cached = orders.get(steps)
             if cached is None:
-                inner = np.arange(1, steps)
-                order = inner[np.argsort(np.abs(inner - steps / 2.0), kind="stable")]
+                order = _bisection_order(steps)
                 states = np.empty((steps - 1, len(base)))
                 states[:] = base
                 cached = orders[steps] = (order[:, None] / steps, states)
@@ -734,13 +733,30 @@ def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type
     return found
 
 
+def _bisection_order(steps: int) -> np.ndarray:
+    """The inner points 1 .. steps-1 of a segment cut in ``steps``, coarse to fine: the
+    middle, then the middles of the halves, and so on (as OMPL's discrete motion
+    validator orders them). A blocked stretch of the segment is met after a number of
+    checks that depends on its length, not on where it lies."""
+    order: list[int] = []
+    spans = [(0, steps)]
+    while spans:
+        following = []
+        for lo, hi in spans:
+            if hi - lo < 2:
+                continue
+            mid = (lo + hi) // 2
+            order.append(mid)
+            following += [(lo, mid), (mid, hi)]
+        spans = following
+    return np.array(order, dtype=int)
+
+
 def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.ndarray,
                    resolution: float) -> bool:
     steps = max(1, int(np.ceil(np.max(np.abs(b - a)) / resolution)))
-    # Check the middle first: a blocked shortcut is usually blocked there.
-    order = np.argsort(np.abs(np.arange(1, steps) - steps / 2.0))
-    for i in order:
-        if not is_valid(a + (i + 1) / steps * (b - a)):
+    for i in _bisection_order(steps):
+        if not is_valid(a + i / steps * (b - a)):
             return False
     return True
 
