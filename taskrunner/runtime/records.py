@@ -3,10 +3,22 @@
 A record is a JSON file (``<runs_dir>/<run_id>.json``) written when the run starts and
 again when it ends; writes are atomic (temporary file, fsync, rename). While the run
 goes, a :class:`RecordFile` also appends every event to ``<run_id>.events.jsonl`` beside
-it (one JSON object a line, after a header line naming the process that writes it) and
-fsyncs it before the event is passed on, so a run killed at any point (SIGKILL, power
-loss) leaves every event it announced. The journal is removed once the final JSON is on
-disk.
+it (one JSON object a line, after a header line naming the process that writes it). What
+survives what:
+
+* the process killed at any point (SIGKILL, a crash, out of memory): every event it
+  announced. Each event is written to the file (handed to the operating system) before
+  it is passed on, and the operating system keeps what a dead process wrote.
+* the machine losing power or its operating system crashing: every event up to the last
+  motion sent to the backend. The journal is fsync'd when a ``planned`` event is appended
+  (the event just before its trajectory goes to the backend: nothing moves before what
+  led to it is on disk) and when the run ends (``run_finished``; the final record is
+  written atomically and durably after it). Events since the last of those (the
+  ``motion`` event itself, the steps after it until the next motion) may be lost.
+
+Fsyncing at those points rather than after every event keeps a run's start from
+waiting for a dozen disk flushes before its first motion (each one 0.1-10 ms, more on
+a busy disk). The journal is removed once the final JSON is on disk.
 
 :func:`load_record` merges a journal left behind into the record, and reports a record
 still ``running`` whose writing process is gone as ``interrupted`` (the file itself still
@@ -28,7 +40,7 @@ from typing import Any
 
 from taskrunner.runtime.events import RunEvent
 
-__all__ = ["RecordFile", "RunRecord", "journal_path", "load_record", "new_run_id",
+__all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "new_run_id",
            "save_record"]
 
 STATUSES = ("running", "succeeded", "failed", "cancelled", "interrupted")
@@ -78,9 +90,10 @@ class RunRecord:
         return cls(**fields, events=[RunEvent.from_dict(e) for e in data.get("events", [])])
 
 
-def save_record(record: RunRecord, runs_dir: str | Path) -> Path:
+def save_record(record: RunRecord, runs_dir: str | Path, sync_folder: bool = True) -> Path:
     """Write ``record`` to ``runs_dir/<run_id>.json`` atomically and durably (fsync'd
-    before the rename, the folder after); returns the path."""
+    before the rename, the folder after; ``sync_folder`` False: the caller fsyncs the
+    folder later); returns the path."""
     runs_dir = Path(runs_dir)
     runs_dir.mkdir(parents=True, exist_ok=True)
     path = runs_dir / f"{record.run_id}.json"
@@ -94,7 +107,8 @@ def save_record(record: RunRecord, runs_dir: str | Path) -> Path:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-    _fsync_dir(runs_dir)
+    if sync_folder:
+        _fsync_dir(runs_dir)
     return path
 
 
@@ -104,31 +118,47 @@ def journal_path(record_path: str | Path) -> Path:
     return record_path.with_name(record_path.stem + ".events.jsonl")
 
 
+# Appending one of these fsyncs the journal (see the module docstring).
+SYNC_KINDS = frozenset({"planned", "run_finished"})
+
+
 class RecordFile:
-    """A run's record on disk while it runs: the JSON plus an fsync'd event journal.
+    """A run's record on disk while it runs: the JSON plus an event journal.
 
     ``append`` is safe from several threads (events come from the tick thread and the
-    backend's); each event is on disk when it returns.
+    backend's). When it returns, the event is written to the file (a killed process
+    loses none), and fsync'd with all before it when its kind is in :data:`SYNC_KINDS`
+    (see the module docstring for what survives a power loss).
     """
 
     def __init__(self, record: RunRecord, runs_dir: str | Path) -> None:
         self.record = record
-        self.path = save_record(record, runs_dir)
+        # The folder is fsync'd with the journal's first sync: one flush for both entries.
+        self.path = save_record(record, runs_dir, sync_folder=False)
         self.journal = journal_path(self.path)
         self._lock = threading.Lock()
         self._out = open(self.journal, "a", encoding="utf-8")  # held open: one line an event
+        self._folder_synced = False
+        self.syncs = 0  # fsyncs of the journal so far
         header = {"journal": 1, "run_id": record.run_id, "host": socket.gethostname(),
                   "pid": os.getpid(), "process_start": _process_start(os.getpid())}
         self._write(header)
         for event in record.events:
             self._write(event.as_dict())
-        _fsync_dir(self.path.parent)
 
     def append(self, event: RunEvent) -> None:
-        """Append ``event`` to the journal and fsync it."""
+        """Append ``event`` to the journal; fsync it when its kind is in :data:`SYNC_KINDS`."""
         with self._lock:
             if not self._out.closed:
                 self._write(event.as_dict())
+                if event.kind in SYNC_KINDS:
+                    self._sync()
+
+    def sync(self) -> None:
+        """Fsync the journal (and, the first time, its folder) now."""
+        with self._lock:
+            if not self._out.closed:
+                self._sync()
 
     def finish(self) -> Path:
         """Write the final record (atomically), then drop the journal."""
@@ -141,7 +171,13 @@ class RecordFile:
     def _write(self, data: dict[str, Any]) -> None:
         self._out.write(json.dumps(data, default=_jsonable) + "\n")
         self._out.flush()
+
+    def _sync(self) -> None:
         os.fsync(self._out.fileno())
+        self.syncs += 1
+        if not self._folder_synced:
+            _fsync_dir(self.path.parent)  # the record's and the journal's entries
+            self._folder_synced = True
 
 
 def load_record(path: str | Path) -> RunRecord:

@@ -7,9 +7,10 @@ thread, or Ctrl-C / SIGTERM in the CLI): cancelling stops the tree, which cancel
 in flight and stops the motion where it is, and records the run as cancelled with the
 reason and its exit code (130 for a cancel or Ctrl-C, 143 for SIGTERM).
 
-With ``runs_dir`` set, every event is on disk (fsync'd, see
-:class:`~taskrunner.runtime.records.RecordFile`) before the step that announced it goes
-on, so a run killed outright leaves everything it announced.
+With ``runs_dir`` set, every event is written to the run's journal before the step that
+announced it goes on, so a run killed outright leaves everything it announced; the
+journal is fsync'd before each motion is sent and when the run ends, so a power loss
+keeps every event up to the last motion sent (see :mod:`taskrunner.runtime.records`).
 """
 
 from __future__ import annotations
