@@ -95,6 +95,9 @@ class IkSolver:
         self._descent = DampedLeastSquares(self._pin_model, self._data, self._frame_id,
                                            self._joints)
         self._group_indices = np.asarray(self.group.joint_indices, dtype=int)
+        # solve_near skips the re-check where the solved joints are the state vector's
+        # own slice (no followers to move) and none is continuous (no whole turns).
+        self._exact_descent = self._joints.direct and not self._joints.has_continuous
         self._table: SeedTable | None = None
         self._generators: dict[int, tuple[np.random.Generator, Mapping[str, Any]]] = {}
 
@@ -116,6 +119,52 @@ class IkSolver:
             UnknownNameError: a :class:`Pose` in an unknown frame.
         """
         return self._search(target, seed_q, options or self.options, 1)[0]
+
+    def solve_near(self, target: IkTarget, seed_q: np.ndarray | None = None,
+                   options: IkOptions | None = None) -> np.ndarray:
+        """The state vector of one solution found from ``seed_q`` alone: a local solve.
+
+        The same state as ``solve(target, seed_q, options).q`` with ``options.attempts``
+        taken as 1 (the seed state is the only start, whatever the options say), returned
+        as a new writable array, without the :class:`IkSolution` around it: for callers
+        that solve many nearby targets in a row (a line followed point by point). Targets,
+        seeds, options, the checks of a solution and the errors are those of
+        :meth:`solve`.
+
+        Raises:
+            IkFailedError: the attempt from the seed state found no solution within the
+                limits and tolerances.
+            InputError: a malformed target or seed.
+            UnknownNameError: a :class:`Pose` in an unknown frame.
+        """
+        start = time.perf_counter()
+        options = options or self.options
+        timeout = options.timeout if options.timeout is not None else self.settings.timeout
+        deadline = Deadline(timeout)
+        joints = self._joints
+        q = self.seed_state(seed_q)
+        position_only, se3, position = self._target(target, q, options.position_only)
+        tol2 = options.tolerance**2
+        # Without followers or continuous joints, a converged descent's state needs no
+        # re-check: it is within the limits (the descent starts clipped and clips every
+        # step) and its convergence test is the check's own, made on the forward
+        # kinematics of this very state.
+        q_seed = None if self._exact_descent else q.copy()
+        qa = joints.values(q)
+        if position_only:
+            ok, used, residual = self._descent.descend_position(
+                q, qa, position, deadline, options.max_iterations, tol2)
+        else:
+            ok, used, residual = self._descent.descend_pose(
+                q, qa, se3, deadline, options.max_iterations, tol2, options.rotation_tol**2)
+        if ok:
+            if q_seed is None:
+                return q
+            solution = self._checked(q, qa, q_seed, se3, position, position_only, options)
+            if solution is not None:
+                return solution[0]
+        raise self._failure(se3, position, position_only, math.sqrt(residual), 1, used,
+                            time.perf_counter() - start, options)
 
     def solve_all(self, target: IkTarget, seed_q: np.ndarray | None = None,
                   options: IkOptions | None = None) -> list[IkSolution]:

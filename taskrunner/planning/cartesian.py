@@ -222,7 +222,7 @@ class CartesianPlanner:
             target = (point.position if position_only
                       else pin.SE3(point.rotation, point.position))
             try:
-                q_next = np.array(solver.solve(target, q, ik_options).q)
+                q_next = solver.solve_near(target, q, ik_options)
             except IkFailedError as error:
                 stop = "ik"
                 xyz = ", ".join(f"{v:.4f}" for v in point.position)

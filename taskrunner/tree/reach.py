@@ -222,7 +222,7 @@ def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
         held = rotation if rotation is not None else start.rotation @ pin.exp3(s * turn)
         point = start.translation + s * (end.translation - start.translation)
         try:
-            nxt = np.array(solver.solve(pin.SE3(held, point), seed_q=q, options=exact).q)
+            nxt = solver.solve_near(pin.SE3(held, point), seed_q=q, options=exact)
         except IkFailedError:
             return None
         if np.max(np.abs(nxt[idx] - q[idx])) > MAX_JOINT_STEP:
@@ -348,7 +348,7 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
             # nearest approximation finds it.
             best = min(found, key=lambda a: a.angle).q
             try:
-                q = np.array(solver.solve(wanted[i], seed_q=best, options=exact).q)
+                q = solver.solve_near(wanted[i], seed_q=best, options=exact)
             except IkFailedError:
                 continue
             out.append(Approximation(q, i, error(q, wanted[i])))
@@ -387,7 +387,7 @@ def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.nd
         if float(miss @ miss) <= local.tolerance**2:
             return q
         try:
-            q = np.array(solver.solve(target, seed_q=q, options=local).q)
+            q = solver.solve_near(target, seed_q=q, options=local)
         except IkFailedError:
             return None
     miss = np.linalg.norm(fk(q).translation + _offset(fk, q, offset) - goal)
