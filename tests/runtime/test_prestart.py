@@ -151,7 +151,9 @@ def test_a_forked_early_worker_ends_when_its_parent_dies(tmp_path):
         "from taskrunner.resources import resolve_cell\n"
         "from taskrunner.runtime.prestart import EarlyWorker\n"
         "early = EarlyWorker(resolve_cell('servo_arm_table').resolve())\n"
-        "ready = early.conn.poll(120) and early.conn.recv()[0]\n"
+        "ready = 'loaded'\n"
+        "while ready == 'loaded' and early.conn.poll(120):\n"  # loaded, then warmed up
+        "    ready = early.conn.recv()[0]\n"
         "print(early.start_method, early.process.pid, ready, flush=True)\n"
         "os._exit(0)\n"  # no atexit, no close(): as if killed
     )
