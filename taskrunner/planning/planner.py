@@ -22,6 +22,7 @@ articulated robots in complex environments", IEEE T-RO 2005 (exact path checking
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from collections.abc import Callable
@@ -733,6 +734,7 @@ def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type
     return found
 
 
+@functools.lru_cache(maxsize=1024)
 def _bisection_order(steps: int) -> np.ndarray:
     """The inner points 1 .. steps-1 of a segment cut in ``steps``, coarse to fine: the
     middle, then the middles of the halves, and so on (as OMPL's discrete motion
@@ -749,7 +751,9 @@ def _bisection_order(steps: int) -> np.ndarray:
             order.append(mid)
             following += [(lo, mid), (mid, hi)]
         spans = following
-    return np.array(order, dtype=int)
+    out = np.array(order, dtype=int)
+    out.flags.writeable = False  # shared between callers
+    return out
 
 
 def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.ndarray,
