@@ -64,6 +64,8 @@ LINE_TURN = 0.05  # rad of turn between two such points (max_rotation_step)
 MAX_JOINT_STEP = 0.2  # rad a joint may move between two points of a line (max_joint_step)
 FULL_POSE_SOLUTIONS = 6  # IK solutions tried per pre-pose of a full-pose arm
 _IK_TIMEOUT = 1.0  # s; attempts run out long before, so results do not depend on load
+_EXACT = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
+_LOCAL = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
 
 
 @dataclass(frozen=True)
@@ -132,14 +134,16 @@ def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
 
 
 class _Frames:
-    """Forward kinematics of one frame (a private pin.Data)."""
+    """Forward kinematics of one frame (a private pin.Data): the joints' placements and
+    that frame's only (the same arithmetic as every frame's)."""
 
     def __init__(self, model: RobotModel, link: str) -> None:
         self.model, self.data, self.frame = model, model.model.createData(), model.frame_id(link)
+        self._pin_model, self._to_pin = model.model, model.to_pin
 
     def __call__(self, q: np.ndarray) -> pin.SE3:
-        pin.framesForwardKinematics(self.model.model, self.data, self.model.to_pin(q))
-        return pin.SE3(self.data.oMf[self.frame])
+        pin.forwardKinematics(self._pin_model, self.data, self._to_pin(q))
+        return pin.updateFramePlacement(self._pin_model, self.data, self.frame)  # a copy
 
 
 def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[pin.SE3],
@@ -212,20 +216,20 @@ def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
     """The state at ``end`` reached from ``q`` (at ``start``) along the straight line
     between them, solved point by point without jumps (orientation: slerp, or
     ``rotation`` held); None where the line cannot be followed."""
-    exact = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
-    turn = pin.log3(start.rotation.T @ end.rotation)
-    steps = max(1, math.ceil(max(np.linalg.norm(end.translation - start.translation)
-                                 / LINE_STEP, np.linalg.norm(turn) / LINE_TURN)))
-    idx = solver.group.joint_indices
+    origin, first = start.translation, start.rotation
+    delta = end.translation - origin
+    turn = pin.log3(first.T @ end.rotation)
+    steps = max(1, math.ceil(max(np.linalg.norm(delta) / LINE_STEP,
+                                 np.linalg.norm(turn) / LINE_TURN)))
+    idx = np.asarray(solver.group.joint_indices)
     for k in range(1, steps + 1):
         s = k / steps
-        held = rotation if rotation is not None else start.rotation @ pin.exp3(s * turn)
-        point = start.translation + s * (end.translation - start.translation)
+        held = rotation if rotation is not None else first @ pin.exp3(s * turn)
         try:
-            nxt = solver.solve_near(pin.SE3(held, point), seed_q=q, options=exact)
+            nxt = solver.solve_near(pin.SE3(held, origin + s * delta), seed_q=q, options=_EXACT)
         except IkFailedError:
             return None
-        if np.max(np.abs(nxt[idx] - q[idx])) > MAX_JOINT_STEP:
+        if np.abs(nxt[idx] - q[idx]).max() > MAX_JOINT_STEP:
             return None
         q = nxt
     return q
@@ -321,8 +325,7 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
 
     sample = IkOptions(position_only=True, num_solutions=SAMPLES, seed=seed,
                        timeout=_IK_TIMEOUT, attempts=20 * SAMPLES)
-    local = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
-    exact = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
+    local, exact = _LOCAL, _EXACT
     out: list[Approximation] = []
     failure: IkFailedError | None = None
     targets: dict[tuple[float, ...], list[int]] = {}
@@ -376,10 +379,11 @@ def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.nd
     ``goal`` after a roll, a re-aim would leave the state as it is, and so would the next
     roll (it depends on the other joints only)."""
     q = np.array(q, dtype=float)
+    placed = bool(offset.any())  # a point away from the frame's origin
     for _ in range(FIXED_POINT_ROUNDS):
         if roll is not None:
             q = _rolled(fk, roll, q, pose, solver.model, grasping)
-        if not offset.any():
+        if not placed:
             return q
         frame = fk(q)
         target = goal - frame.rotation @ offset
@@ -407,19 +411,22 @@ def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
     index, sense = roll
     now = fk(q).rotation
     z, y = now[:, 2], now[:, 1]
-    wanted = pose.rotation[:, 1]
+    rotation = pose.rotation  # a copy, made once
+    wanted = rotation[:, 1]
     want = wanted - (wanted @ z) * z
     if want @ want < 1e-12:
         return q
-    cross = (y[1] * want[2] - y[2] * want[1], y[2] * want[0] - y[0] * want[2],
-             y[0] * want[1] - y[1] * want[0])
-    turn = math.atan2(cross[0] * z[0] + cross[1] * z[1] + cross[2] * z[2], float(y @ want))
-    lower, upper = model.lower[index], model.upper[index]
+    # Python floats: the same IEEE arithmetic as numpy's scalars, without their overhead.
+    (y0, y1, y2), (w0, w1, w2), (z0, z1, z2) = y.tolist(), want.tolist(), z.tolist()
+    cross = (y1 * w2 - y2 * w1, y2 * w0 - y0 * w2, y0 * w1 - y1 * w0)
+    turn = math.atan2(cross[0] * z0 + cross[1] * z1 + cross[2] * z2, float(y @ want))
+    lower, upper = float(model.lower[index]), float(model.upper[index])
+    at = float(q[index])
     best, best_error = q, math.inf
     errors: dict[int, float] = {}
-    relative = pose.rotation.T @ now  # the wanted orientation to the present one
+    relative = rotation.T @ now  # the wanted orientation to the present one
     for extra in (0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi):
-        value = q[index] + sense * (turn + extra)
+        value = at + sense * (turn + extra)
         if not lower - 1e-9 <= value <= upper + 1e-9:
             continue
         flipped = int(round(extra / math.pi)) % 2  # same orientation as extra = 0 or pi
@@ -450,5 +457,5 @@ def _rotation_error(relative: np.ndarray, grasping: bool) -> float:
     """:func:`orientation_error` of the rotation ``wanted⁻¹ reached``."""
     turn = pin.log3(relative)
     if not grasping:
-        return float(np.linalg.norm(turn))
+        return math.sqrt(turn.dot(turn))  # np.linalg.norm's own arithmetic
     return float(math.hypot(turn[0], turn[2]) + FREE_TURN_WEIGHT * abs(turn[1]))
