@@ -132,7 +132,7 @@ def lighter_scipy_imports() -> bool:
         listing = numpy.__dict__.get("__dir__")
         if isinstance(listed, list) and callable(listing):
             numpy.__all__ = [n for n in listed if n not in _NUMPY_TOOLS]
-            numpy.__dir__ = lambda: [n for n in listing() if n not in _NUMPY_TOOLS]  # type: ignore[attr-defined]
+            numpy.__dir__ = lambda: [n for n in listing() if n not in _NUMPY_TOOLS]  # type: ignore[method-assign]
             try:
                 importlib.import_module("scipy._lib._array_api")
                 done = True
@@ -140,7 +140,7 @@ def lighter_scipy_imports() -> bool:
                 pass
             finally:
                 numpy.__all__ = listed
-                numpy.__dir__ = listing  # type: ignore[attr-defined]
+                numpy.__dir__ = listing  # type: ignore[method-assign]
     lighter_scipy_decorator()
     return done
 
