@@ -52,6 +52,7 @@ if TYPE_CHECKING:
     from taskrunner.kinematics import IkSolver
     from taskrunner.runtime.prestart import EarlyWorker
     from taskrunner.scene import Scene
+    from taskrunner.tree.check import CheckReport
 
 __all__ = ["main"]
 
@@ -335,6 +336,7 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
     from taskrunner.runtime.preflight import check_before_run
     from taskrunner.runtime.session import run_task_file
 
+    report: CheckReport | None = None
     if not args.no_check:
         started = time.perf_counter()
         try:
@@ -350,7 +352,8 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
                          speed=args.speed, seed=args.seed, runs_dir=runs_dir,
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
                          port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
-                         home=args.home, check=False, early=early)
+                         home=args.home, check=False, early=early,
+                         loaded=report)
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:

@@ -46,6 +46,8 @@ if TYPE_CHECKING:
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.planning.worker import PlanningWorker
     from taskrunner.runtime.prestart import EarlyWorker
+    from taskrunner.tasks.spec import TaskSpec
+    from taskrunner.tree.check import CheckReport
 
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
 
@@ -183,7 +185,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   live: bool = False, worker: bool = True, out: TextIO | None = None,
                   port: str | None = None, url: str | None = None,
                   firmware_speedup: float = 1.0, home: bool = False,
-                  check: bool = True, early: EarlyWorker | None = None) -> int:
+                  check: bool = True, early: EarlyWorker | None = None,
+                  loaded: CheckReport | None = None) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
@@ -191,6 +194,10 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     SIGTERM cancel the run (see the module docstring) instead of raising. ``early``: a
     planning worker process started beforehand (:mod:`taskrunner.runtime.prestart`),
     adopted when it loads the task's cell, else stopped; closed at the end either way.
+    ``loaded``: the report of a check of this same file with these same ``parameters``
+    (:func:`check_before_run`, ``check`` False): the run starts from the task and the
+    cell the check loaded instead of loading them again (the same objects a second load
+    gives: the check changes neither).
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -200,10 +207,11 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     out = out or sys.stdout
     live = live and _can_redraw()
     if check:
-        check_before_run(path, parameters, seed=seed)
+        loaded = check_before_run(path, parameters, seed=seed)
+    reused = _from_check(loaded, path)
     stop = _StopSignals(out)
     with stop.installed():
-        spec = load_task(path, parameters or {})
+        spec = reused[0] if reused is not None else load_task(path, parameters or {})
         # toppra takes 0.1-0.2 s to import: do it while the rest loads.
         threading.Thread(target=_import_toppra, daemon=True).start()
         events = EventLog()
@@ -216,7 +224,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         elif early is not None:
             early.close()
         try:
-            cell = load_cell(spec.cell)
+            cell = reused[1] if reused is not None else load_cell(spec.cell)
             if not worker:
                 from taskrunner.planning.service import InProcessPlanner
 
@@ -242,6 +250,16 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
             planner_service.close()
     _summary(record, runner, runs_dir, out)
     return record.exit_code if record.exit_code is not None else EXIT_CODES["planning"]
+
+
+def _from_check(report: CheckReport | None, path: Path) -> tuple[TaskSpec, Cell] | None:
+    """The task and cell a check of ``path`` loaded, when it loaded them from that very
+    path (the check resolves it: a relative path is loaded again, so that messages name
+    the file as given)."""
+    if report is None or report.task is None or report.loaded_cell is None \
+            or report.task.path != Path(path):
+        return None
+    return report.task, report.loaded_cell
 
 
 class _StopSignals:

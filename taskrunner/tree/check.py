@@ -123,12 +123,19 @@ class CheckReport:
         notes: information, not problems: where each place and hand-over will leave its
             object (the orientation the arm achieves, which a position-only arm may not
             make the requested one), in the order the dry run met them.
+        task: the task as loaded for the check (None when it did not load): a run of
+            the same file with the same parameters may start from it instead of loading
+            it again (``run-task`` does). The check never changes it (models are frozen).
+        loaded_cell: the cell as loaded for the check (None when it did not load); the
+            dry run builds its own scene from it and leaves it as it was loaded.
     """
 
     cell: str
     steps: int
     problems: list[Problem] = field(default_factory=list)
     notes: list[Problem] = field(default_factory=list)
+    task: TaskSpec | None = field(default=None, compare=False, repr=False)
+    loaded_cell: Cell | None = field(default=None, compare=False, repr=False)
 
     @property
     def ok(self) -> bool:
@@ -167,7 +174,7 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     ctx = TaskContext(cell, scene, None, None, seed=seed)  # type: ignore[arg-type]
     run.sequence(spec.steps, ctx)
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
-                       list(dict.fromkeys(run.notes)))
+                       list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell)
 
 
 # ----------------------------------------------------------------------------- helpers
