@@ -399,15 +399,31 @@ class MotionPlanner:
             self._groups[group.name] = fast
         return self._groups[group.name]
 
-    def _checks(self, group: Group, start: np.ndarray, resolution: float
+    def _checks(self, group: Group, start: np.ndarray, resolution: float,
+                known: set[bytes] | None = None
                 ) -> tuple[Callable[[np.ndarray], bool],
                            Callable[[np.ndarray, np.ndarray], bool], list[int]]:
         """A state check and an edge check over the group's values (an edge's first
-        state is taken as checked), and a counter of the states they checked."""
+        state is taken as checked), and a counter of the states they checked. ``known``:
+        see :meth:`_edge_validity` (the exact checks only; states found valid by the
+        state check are added)."""
         exact, count = self._validity(group, start)
         fast = self._fast_checker(group)
         if fast is None:
-            return exact, self._edge_validity(group, start, resolution, count), count
+            edge_valid = self._edge_validity(group, start, resolution, count, known)
+            if known is None:
+                return exact, edge_valid, count
+
+            def remembered(values: np.ndarray) -> bool:
+                key = values.tobytes()
+                if key in known:
+                    return True
+                if exact(values):
+                    known.add(key)
+                    return True
+                return False
+
+            return remembered, edge_valid, count
         base = start.copy()
         # walks tried, walks that cleared their edge, states scanned, states whose spheres
         # touched (where spheres touch most states, the exact check alone is cheaper)
@@ -469,11 +485,16 @@ class MotionPlanner:
         return is_valid, count
 
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
-                       count: list[int]) -> Callable[[np.ndarray, np.ndarray], bool]:
+                       count: list[int], known: set[bytes] | None = None
+                       ) -> Callable[[np.ndarray, np.ndarray], bool]:
         """An edge check over the group's values: the edge's end, then the states every
         ``resolution`` (max over joints) in between, coarse to fine (see
         :func:`_bisection_order`); the edge's first state is taken as checked. One Python
-        call per edge: the states are interpolated together."""
+        call per edge: the states are interpolated together.
+
+        ``known``: the group values (``tobytes()``) of states already found valid: an
+        edge's end found there is not checked again (RRT-Connect's goal tree checks
+        edges towards nodes of its own tree). Ends found valid are added."""
         model = self.scene.robot
         in_collision = self.scene.checker.in_collision
         idx = group.joint_indices
@@ -489,12 +510,16 @@ class MotionPlanner:
             columns = slice(int(idx[0]), int(idx[0]) + len(idx))
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
-            count[0] += 1
-            q_end[columns] = b
-            if mimic:
-                model.apply_mimic(q_end)
-            if in_collision(to_pin(q_end)):
-                return False
+            key = b.tobytes() if known is not None else b""
+            if known is None or key not in known:
+                count[0] += 1
+                q_end[columns] = b
+                if mimic:
+                    model.apply_mimic(q_end)
+                if in_collision(to_pin(q_end)):
+                    return False
+                if known is not None:
+                    known.add(key)
             delta = b - a
             steps = math.ceil(float(np.abs(delta).max()) / resolution)
             if steps < 2:
@@ -534,7 +559,12 @@ class MotionPlanner:
             # with several goal states they deadlock. Give it the nearest goal only.
             goals = [min(goals, key=lambda g: float(np.linalg.norm(g[1][idx] - start[idx])))]
         n = len(idx)
-        is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment)
+        # States found valid during this search (start, goals, tree nodes): an edge ending
+        # at one does not check it again.
+        known = {np.ascontiguousarray(q[idx], dtype=float).tobytes()
+                 for q in [start] + [g for _, g in goals]}
+        is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment,
+                                                   known)
         lower = model.lower[idx].copy()
         upper = model.upper[idx].copy()
         # Continuous joints: one turn around wherever the start and goals are.
@@ -660,7 +690,9 @@ class MotionPlanner:
                     ) -> tuple[np.ndarray | None, list[PathVerification]]:
         """Shortcut the path, then verify it exactly; fall back to the raw path if needed.
         None (with the verifications made) when both collide."""
-        _, edge_valid, _ = self._checks(group, start, options.longest_valid_segment)
+        # The search's waypoints are valid states: edges ending at one skip that check.
+        known = {np.ascontiguousarray(w, dtype=float).tobytes() for w in waypoints}
+        _, edge_valid, _ = self._checks(group, start, options.longest_valid_segment, known)
         candidates = []
         if options.simplify and len(waypoints) > 2:
             candidates.append(_shortcut(edge_valid, waypoints, options.seed))

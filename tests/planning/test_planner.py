@@ -372,3 +372,27 @@ def test_a_straight_timed_trajectory_is_not_verified_twice(shelf_scene, monkeypa
                     timing=TimingOptions()))
     assert len(bent.path.waypoints) > 2 and len(calls) >= 2
     assert calls[-1] == len(bent.trajectory.positions)  # the samples were verified
+
+
+def test_an_edge_ending_at_a_state_known_valid_does_not_check_it_again(shelf_scene):
+    planner = MotionPlanner(shelf_scene)
+    group = shelf_scene.robot.group("arm")
+    idx = group.joint_indices
+    a = shelf_scene.state[idx].copy()
+    b = a.copy()
+    b[0] += 0.01  # one step: only the end would be checked
+    count = [0]
+    known: set[bytes] = set()
+    edge = planner._edge_validity(group, shelf_scene.state, 0.05, count, known)
+    assert edge(a, b) and count == [1] and b.tobytes() in known
+    assert edge(a, b) and count == [1]  # known now
+    # Without the set, every call checks it; a colliding end is never remembered.
+    plain = planner._edge_validity(group, shelf_scene.state, 0.05, count)
+    assert plain(a, b) and plain(a, b) and count == [3]
+    scene = shelf_scene.copy()
+    model = scene.robot
+    hand = frame_pose(model, model.state_with(scene.state, dict(zip(group.joint_names, b))),
+                      "panda_hand").translation
+    scene.add_object("post", Sphere(0.03), Pose(tuple(hand)))
+    blocked = MotionPlanner(scene)._edge_validity(group, scene.state, 0.05, count, known := set())
+    assert not blocked(a, b) and not known
