@@ -497,6 +497,7 @@ class MotionPlanner:
         edges towards nodes of its own tree). Ends found valid are added."""
         model = self.scene.robot
         in_collision = self.scene.checker.in_collision
+        first_in_collision = self.scene.checker.first_in_collision
         idx = group.joint_indices
         base = start.copy()
         mimic = model.mimic_follows(idx)
@@ -539,11 +540,9 @@ class MotionPlanner:
                 states[:, columns] = a + fractions * delta
             if mimic:
                 model.apply_mimic(states)
-            for q in to_pin(states):
-                count[0] += 1
-                if in_collision(q):
-                    return False
-            return True
+            hit = first_in_collision(to_pin(states))
+            count[0] += len(states) if hit < 0 else hit + 1
+            return hit < 0
 
         return edge_valid
 

@@ -245,6 +245,20 @@ class CollisionChecker:
         self._collide(callback)
         return bool(callback.collision)
 
+    def first_in_collision(self, q_pins: np.ndarray) -> int:
+        """The index of the first row of ``q_pins`` (pinocchio configurations, one per
+        row) in collision, or -1: :meth:`in_collision` over the rows in one call."""
+        place, update, collide, callback = self._place, self._update, self._collide, self._callback
+        model, data, geometry, geometry_data = (self._model, self._data, self._geometry,
+                                                self._geometry_data)
+        for i, q_pin in enumerate(q_pins):
+            place(model, data, geometry, geometry_data, q_pin)
+            update(False)
+            collide(callback)
+            if callback.collision:
+                return i
+        return -1
+
     def _report_data(self) -> tuple[pin.Data, pin.GeometryData]:
         if self._report is None:
             geometry_data = self._geometry.createData()

@@ -114,6 +114,13 @@ def test_the_fast_check_starts_afresh_on_every_state(cell: Scene, panda_model: R
     verdicts = [checker.in_collision(q) for q in states]  # colliding and free interleaved
     assert any(verdicts) and not all(verdicts)
     assert verdicts == [fresh.in_collision(q) for q in reversed(states)][::-1]
+    # Rows at once: the first colliding row, or -1.
+    rows = np.array(states)
+    for start in range(0, 40):
+        expected = next((i for i, v in enumerate(verdicts[start:]) if v), -1)
+        assert checker.first_in_collision(rows[start:]) == expected
+    free = rows[[not v for v in verdicts]]
+    assert checker.first_in_collision(free) == -1 and checker.first_in_collision(rows[:0]) == -1
 
 
 def test_a_held_checker_is_not_changed_by_later_edits(cell: Scene, panda_model: RobotModel) -> None:
