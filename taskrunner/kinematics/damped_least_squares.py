@@ -38,6 +38,7 @@ import time
 
 import numpy as np
 import pinocchio as pin
+from numpy._core import umath
 from scipy.linalg import lapack
 
 from taskrunner.kinematics.deadline import Deadline
@@ -57,8 +58,7 @@ _REDAMP = 1e-3  # added to λ when J Jᵀ + λ I is not numerically positive def
 
 _posv = lapack.dposv
 _dot = np.dot
-_maximum = np.maximum
-_minimum = np.minimum
+_clip = umath.clip  # type: ignore[attr-defined]  # the ufunc np.clip wraps: one call, NaN kept
 _log6 = pin.log6
 _jlog6 = pin.Jlog6
 _compute_joint_jacobians = pin.computeJointJacobians
@@ -211,8 +211,7 @@ class DampedLeastSquares:
             new *= MAX_STEP / math.sqrt(norm2)
         new += qa
         lower, upper = self._lower, self._upper
-        clipped = _maximum(new, lower)
-        _minimum(clipped, upper, out=clipped)
+        clipped = _clip(new, lower, upper)
         new -= clipped  # the overshoot past the limits: zero for joints within them
         if _dot(new, new) == 0.0:  # cheaper than a mask and .any()
             qa[:] = clipped
@@ -235,6 +234,4 @@ class DampedLeastSquares:
             new *= MAX_STEP / math.sqrt(norm2)
         new += to_limit
         new += qa
-        _maximum(new, lower, out=new)
-        _minimum(new, upper, out=new)
-        qa[:] = new
+        _clip(new, lower, upper, out=qa)
