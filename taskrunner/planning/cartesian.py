@@ -235,7 +235,7 @@ class CartesianPlanner:
                 break
             if options.max_joint_step is not None:
                 moves = np.abs(q_next[idx] - q[idx])
-                k = int(np.argmax(moves))
+                k = int(moves.argmax())
                 if moves[k] > options.max_joint_step:
                     stop = "jump"
                     message = (f"joint {group.joint_names[k]!r} would move {moves[k]:.3f} "
@@ -244,10 +244,14 @@ class CartesianPlanner:
                     break
             if checker is not None:
                 # The states every collision_resolution between q and q_next (q excluded),
-                # as interpolate_path makes them.
+                # as interpolate_path makes them (np.linspace(0, 1, count + 1)[1:]'s values,
+                # without its overhead).
                 delta = q_next - q
-                count = max(1, int(np.ceil(np.max(np.abs(delta)) / options.collision_resolution)))
-                dense = q + np.linspace(0.0, 1.0, count + 1)[1:, None] * delta
+                count = max(1, math.ceil(float(np.abs(delta).max()) / options.collision_resolution))
+                along = np.arange(1.0, count + 1.0)
+                along *= 1.0 / count
+                along[-1] = 1.0
+                dense = q + along[:, None] * delta
                 hit = next((i + 1 for i in range(count)
                             if checker.in_collision(to_pin(dense[i]))), None)
                 checks += count if hit is None else hit
