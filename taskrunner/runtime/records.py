@@ -10,9 +10,10 @@ survives what:
   announced. Each event is written to the file (handed to the operating system) before
   it is passed on, and the operating system keeps what a dead process wrote.
 * the machine losing power or its operating system crashing: every event up to the last
-  motion sent to the backend. The journal is fsync'd when a ``planned`` event is appended
-  (the event just before its trajectory goes to the backend: nothing moves before what
-  led to it is on disk) and when the run ends (``run_finished``; the final record is
+  motion sent to the backend. The journal is fsync'd when a ``planned`` event of a
+  motion is appended (the event just before its trajectory goes to the backend: nothing
+  moves before what led to it is on disk; not for one with duration 0, "already there",
+  which sends nothing) and when the run ends (``run_finished``; the final record is
   written atomically and durably after it). Events since the last of those (the
   ``motion`` event itself, the steps after it until the next motion) may be lost.
 
@@ -118,7 +119,8 @@ def journal_path(record_path: str | Path) -> Path:
     return record_path.with_name(record_path.stem + ".events.jsonl")
 
 
-# Appending one of these fsyncs the journal (see the module docstring).
+# Appending one of these fsyncs the journal (a ``planned`` one with duration 0 does not:
+# nothing is sent; see the module docstring).
 SYNC_KINDS = frozenset({"planned", "run_finished"})
 
 
@@ -128,7 +130,8 @@ class RecordFile:
     ``append`` is safe from several threads (events come from the tick thread and the
     backend's). When it returns, the event is written to the file (a killed process
     loses none), and fsync'd with all before it when its kind is in :data:`SYNC_KINDS`
-    (see the module docstring for what survives a power loss).
+    and it is not a ``planned`` event with duration 0 (see the module docstring for what
+    survives a power loss).
     """
 
     def __init__(self, record: RunRecord, runs_dir: str | Path) -> None:
@@ -147,11 +150,12 @@ class RecordFile:
             self._write(event.as_dict())
 
     def append(self, event: RunEvent) -> None:
-        """Append ``event`` to the journal; fsync it when its kind is in :data:`SYNC_KINDS`."""
+        """Append ``event`` to the journal; fsync it before a motion and at the end."""
         with self._lock:
             if not self._out.closed:
                 self._write(event.as_dict())
-                if event.kind in SYNC_KINDS:
+                if event.kind in SYNC_KINDS and not (event.kind == "planned"
+                                                     and event.data.get("duration") == 0):
                     self._sync()
 
     def sync(self) -> None:

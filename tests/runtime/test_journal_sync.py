@@ -72,12 +72,14 @@ def test_events_are_written_at_once_and_fsynced_at_a_planned_event(tmp_path, mon
         "run_started", "node_started", "message", "planned"]
     assert spy.calls[-1][0] == str(file.path.parent)  # the folder, with the first sync only
     log.emit("motion", node="pick")
+    log.emit("planned", node="open", duration=0.0)  # already there: nothing is sent
+    assert file.syncs == 1
     log.emit("planned", node="place", duration=1.0)
     assert file.syncs == 2 and spy.calls[-1][0] == str(file.journal)
     log.emit("run_finished", status="succeeded")
     assert file.syncs == 3
     assert [e["kind"] for e in spy.journal_syncs(file.journal)[-1][1:]][-3:] == [
-        "motion", "planned", "run_finished"]
+        "planned", "planned", "run_finished"]
     file.finish()
     assert not file.journal.exists()
     assert load_record(file.path).status == "running"  # as the record handed in said
