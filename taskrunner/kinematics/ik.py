@@ -233,6 +233,7 @@ class IkSolver:
         nearest: np.ndarray | None = None
         rng: np.random.Generator | None = None
         solutions: list[IkSolution] = []
+        found: list[np.ndarray] = []  # their solved joints' values
         iterations, attempt, best = 0, 0, math.inf
         for attempt in range(1, attempts + 1):
             if attempt > 1:
@@ -261,10 +262,11 @@ class IkSolver:
             best = min(best, residual)
             if ok:
                 solution = self._checked(q, qa, q_seed, se3, position, position_only, options)
-                if solution is not None and (not solutions or all(
-                    joints.distance(solution[0][joints.indices], other.q[joints.indices])
-                    >= options.min_distance for other in solutions
-                )):
+                values = None if solution is None else solution[0][joints.indices]
+                if solution is not None and values is not None and all(
+                    joints.distance(values, other) >= options.min_distance for other in found
+                ):
+                    found.append(values)
                     q_out, error, position_error, rotation_error = solution
                     q_out.setflags(write=False)
                     solutions.append(IkSolution(
