@@ -410,9 +410,9 @@ class MotionPlanner:
         exact, count = self._validity(group, start)
         fast = self._fast_checker(group)
         if fast is None:
-            edge_valid = self._edge_validity(group, start, resolution, count, known)
+            exact_edge = self._edge_validity(group, start, resolution, count, known)
             if known is None:
-                return exact, edge_valid, count
+                return exact, exact_edge, count
 
             def remembered(values: np.ndarray) -> bool:
                 key = values.tobytes()
@@ -423,7 +423,7 @@ class MotionPlanner:
                     return True
                 return False
 
-            return remembered, edge_valid, count
+            return remembered, exact_edge, count
         base = start.copy()
         # walks tried, walks that cleared their edge, states scanned, states whose spheres
         # touched (where spheres touch most states, the exact check alone is cheaper)
