@@ -17,6 +17,7 @@ import numpy as np
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.model import Group
 from taskrunner.robot.moveit_yaml import OMPL_PLANNERS
+from taskrunner.scene.collision import VERIFY_MARGIN
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = [
@@ -139,7 +140,7 @@ class PlannerOptions:
     seed: int = 0
     longest_valid_segment: float = 0.05
     validation_resolution: float = 0.01
-    verify_margin: float = 5e-4
+    verify_margin: float = VERIFY_MARGIN
     refine: bool = False
     simplify: bool = True
     goal_samples: int = 6

@@ -47,7 +47,11 @@ from typing import NamedTuple
 import numpy as np
 import pinocchio as pin
 
-__all__ = ["Body", "Clearance", "CollisionChecker", "Contact", "RobotGeometry"]
+__all__ = ["VERIFY_MARGIN", "Body", "Clearance", "CollisionChecker", "Contact", "RobotGeometry"]
+
+VERIFY_MARGIN = 2e-6
+"""m: the path verifier's default margin (:class:`taskrunner.scene.sweep.PathVerifier`):
+nothing on a verified path penetrates deeper than half of it, coal's distance tolerance."""
 
 
 @dataclass(frozen=True)

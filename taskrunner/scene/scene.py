@@ -30,7 +30,14 @@ import pinocchio as pin
 from taskrunner.errors import SceneError, UnknownNameError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.allowed import AllowedCollisions
-from taskrunner.scene.collision import Body, Clearance, CollisionChecker, Contact, RobotGeometry
+from taskrunner.scene.collision import (
+    VERIFY_MARGIN,
+    Body,
+    Clearance,
+    CollisionChecker,
+    Contact,
+    RobotGeometry,
+)
 from taskrunner.scene.geometry import MeshCache, link_bodies, object_geometry, shape_geometry
 from taskrunner.scene.linkgeometry import (
     COLLISION_CHOICES,
@@ -435,7 +442,7 @@ class Scene:
         """The collision checker for the scene as it is now (rebuilt after edits)."""
         return self._checker or self._build()
 
-    def path_verifier(self, margin: float = 5e-4) -> PathVerifier:
+    def path_verifier(self, margin: float = VERIFY_MARGIN) -> PathVerifier:
         """The exact path verifier (conservative advancement, see
         :mod:`taskrunner.scene.sweep`) for the scene as it is now; ``margin`` in m.
         Kept until the next edit of objects or allowances."""

@@ -74,7 +74,7 @@ import pinocchio as pin
 
 from taskrunner.resources import user_cache_dir
 from taskrunner.robot import RobotModel
-from taskrunner.scene.collision import CollisionChecker
+from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 
 if not os.environ.get("NUMBA_CACHE_DIR"):
     # Before numba's import: an installed package's own folder may be read-only.
@@ -161,7 +161,7 @@ class PathVerifier:
     """
 
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
-                 margin: float = 5e-4) -> None:
+                 margin: float = VERIFY_MARGIN) -> None:
         if not (math.isfinite(margin) and margin > 0):
             raise ValueError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot

@@ -103,7 +103,10 @@ def test_verifier_rejects_a_straight_line_through_a_thin_plate(panda_model):
     result = verifier.verify(np.vstack([scene.state, goal]))
     assert not result.valid
     assert result.pair is not None and "plate/0" in result.pair
-    assert result.state is not None and scene.in_collision(result.state)
+    # The state named is in contact: overlapping, or within the distance tolerance (the
+    # walk's steps shrink with the clearance as it closes in on the plate).
+    assert result.state is not None
+    assert scene.in_collision(result.state) or scene.min_distance(result.state).distance < 2e-6
 
 
 @pytest.mark.slow
