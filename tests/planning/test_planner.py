@@ -236,27 +236,34 @@ def test_a_blocked_straight_line_falls_back_to_the_search(shelf_scene):
     assert_path_is_free(scene, searched)
 
 
-def test_the_direct_line_is_verified_exactly_not_only_sampled(shelf_scene):
-    # Sampled every 0.8 rad, the straight line steps over a 2 mm plate across the hand's
-    # way; the exact verification finds it, and the search plans around it.
-    model = shelf_scene.robot
-    idx = model.group("arm").joint_indices
-    turn = 1.6
-    goal = {**READY, "panda_joint1": READY["panda_joint1"] + turn}
-    options = PlannerOptions(longest_valid_segment=turn / 2)
+def _plate_across_the_turn(scene, turn: float, t: float, size: float):  # type: ignore[no-untyped-def]
+    """A copy of ``scene`` with a 2 mm plate (``size`` square) across the hand's way at
+    fraction ``t`` of a ``turn`` of joint 1, and the states of that turn by fraction."""
+    model = scene.robot
+    first = model.group("arm").joint_indices[0]
 
-    def along(t: float) -> np.ndarray:
-        q = shelf_scene.state.copy()
-        q[idx[0]] += t * turn
+    def along(f: float) -> np.ndarray:
+        q = scene.state.copy()
+        q[first] += f * turn
         return q
 
-    here, ahead = (frame_pose(model, along(t), "panda_hand").translation for t in (0.25, 0.26))
+    here, ahead = (frame_pose(model, along(f), "panda_hand").translation for f in (t, t + 0.01))
     normal = (ahead - here) / np.linalg.norm(ahead - here)
     up = np.array([0.0, 0.0, 1.0]) - normal[2] * normal
     up /= np.linalg.norm(up)
     rotation = np.column_stack([normal, np.cross(up, normal), up])
-    scene = shelf_scene.copy()
-    scene.add_object("plate", Box((0.002, 0.1, 0.1)), Pose.from_se3(pin.SE3(rotation, here)))
+    plated = scene.copy()
+    plated.add_object("plate", Box((0.002, size, size)), Pose.from_se3(pin.SE3(rotation, here)))
+    return plated, along
+
+
+def test_the_direct_line_is_verified_exactly_not_only_sampled(shelf_scene):
+    # Sampled every 0.8 rad, the straight line steps over a 2 mm plate across the hand's
+    # way; the exact verification finds it, and the search plans around it.
+    turn = 1.6
+    goal = {**READY, "panda_joint1": READY["panda_joint1"] + turn}
+    options = PlannerOptions(longest_valid_segment=turn / 2)
+    scene, along = _plate_across_the_turn(shelf_scene, turn, 0.25, 0.1)
     assert scene.in_collision(along(0.25))
     assert not any(scene.in_collision(along(t)) for t in (0.0, 0.5, 1.0))  # the samples miss it
     result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal), options=options))
@@ -267,22 +274,8 @@ def test_the_direct_line_is_verified_exactly_not_only_sampled(shelf_scene):
 def test_a_path_the_verification_turns_down_is_searched_again_finer(shelf_scene):
     # Checked every 0.4 rad, the search's first path steps through a 2 mm plate across
     # the hand's way; the verification turns it down and a finer search goes around.
-    model = shelf_scene.robot
-    idx = model.group("arm").joint_indices
     goal = {**READY, "panda_joint1": READY["panda_joint1"] + 1.6}
-
-    def along(t: float) -> np.ndarray:
-        q = shelf_scene.state.copy()
-        q[idx[0]] += t * 1.6
-        return q
-
-    here, ahead = (frame_pose(model, along(t), "panda_hand").translation for t in (0.5, 0.51))
-    normal = (ahead - here) / np.linalg.norm(ahead - here)
-    up = np.array([0.0, 0.0, 1.0]) - normal[2] * normal
-    up /= np.linalg.norm(up)
-    rotation = np.column_stack([normal, np.cross(up, normal), up])
-    scene = shelf_scene.copy()
-    scene.add_object("plate", Box((0.002, 0.12, 0.12)), Pose.from_se3(pin.SE3(rotation, here)))
+    scene, _ = _plate_across_the_turn(shelf_scene, 1.6, 0.5, 0.12)
     result = MotionPlanner(scene).plan(PlanRequest("arm", JointGoal(goal), options=PlannerOptions(
         longest_valid_segment=0.4, direct=False, seed=0)))
     assert result.searches >= 2
