@@ -228,6 +228,9 @@ class CollisionChecker:
         self._place = pin.updateGeometryPlacements
         self._update = self._manager.update
         self._collide = self._manager.collide
+        # pinocchio makes every pair's distance request alike, signed by default.
+        requests = self._geometry_data.distanceRequests
+        self._signed = len(requests) == 0 or bool(requests[0].enable_signed_distance)
         # Slow path (reports): separate data with contact computation, made on first use.
         self._report: tuple[pin.Data, pin.GeometryData] | None = None
 
@@ -262,6 +265,19 @@ class CollisionChecker:
             if callback.collision:
                 return i
         return -1
+
+    def pair_distances(self, q_pin: np.ndarray, pairs: Sequence[int], out: np.ndarray) -> None:
+        """The signed distances (m, negative: penetration) of the checked pairs ``pairs``
+        (indices into the geometry model's collision pairs) at ``q_pin``, into ``out``."""
+        self._place(self._model, self._data, self._geometry, self._geometry_data, q_pin)
+        if not self._signed:
+            # pinocchio's requests compute signed distances by default; make sure.
+            for request in self._geometry_data.distanceRequests:
+                request.enable_signed_distance = True
+            self._signed = True
+        compute, geometry, geometry_data = pin.computeDistance, self._geometry, self._geometry_data
+        for i, k in enumerate(pairs):
+            out[i] = compute(geometry, geometry_data, int(k)).min_distance
 
     def _report_data(self) -> tuple[pin.Data, pin.GeometryData]:
         if self._report is None:

@@ -158,6 +158,9 @@ class PathVerifier:
     What depends on the robot alone (its joint tree, the lever arms and bounding volumes
     of its links' geometry) is kept per robot model and reused by the verifiers of later
     scene revisions; only the world and attached objects and the pairs are built anew.
+    The exact distances are the checker's (:meth:`CollisionChecker.pair_distances`, on
+    its own pinocchio data: no second copy of coal's per-pair solvers is made), so a
+    verifier is used like its checker, by one thread at a time.
     """
 
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
@@ -166,9 +169,8 @@ class PathVerifier:
             raise ValueError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot
         self.margin = margin
+        self._checker = checker
         self._geometry = checker.geometry_model
-        self._geometry_data: pin.GeometryData | None = None     # made on the first coal query
-        self._data: pin.Data | None = None
         tree = _tree(robot)
         self._tree = tree
         records = [tree.record(obj) for obj in self._geometry.geometryObjects]
@@ -274,16 +276,9 @@ class PathVerifier:
                 count = _walk(*walked)
                 if count <= 0:
                     break
-                if self._geometry_data is None:
-                    self._make_data()
-                model, data = self.robot.model, self._data
-                geometry, geometry_data = self._geometry, self._geometry_data
-                pin.updateGeometryPlacements(model, data, geometry, geometry_data,
-                                             self.robot.to_pin(q))
+                self._checker.pair_distances(self.robot.to_pin(q), selected[:count],
+                                             distances)
                 evaluated += 1
-                compute = pin.computeDistance
-                for i in range(count):
-                    distances[i] = compute(geometry, geometry_data, int(selected[i])).min_distance
                 queries += count
             if count == _NOT_FINITE:
                 row = int(settings[_S_BAD])
@@ -307,13 +302,6 @@ class PathVerifier:
         return (np.zeros((n_pairs, _COLUMNS + 2 * nq)), np.zeros((2, n_pairs)),
                 np.zeros(n_pairs, dtype=np.int64),
                 np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(), np.zeros(_S_COUNT))
-
-    def _make_data(self) -> None:
-        self._data = self.robot.model.createData()
-        geometry_data = self._geometry.createData()
-        for request in geometry_data.distanceRequests:
-            request.enable_signed_distance = True
-        self._geometry_data = geometry_data
 
 
 # Columns of the packed arrays the kernels read (one row per joint, geometry or pair).

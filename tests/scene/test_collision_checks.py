@@ -70,6 +70,22 @@ def test_min_distance_names_the_closest_pair_and_goes_negative_in_collision(
     assert pair == ("panda_hand", "table")
 
 
+def test_pair_distances_are_the_signed_distances_of_the_report(
+    cell: Scene, panda_model: RobotModel, arm: ArmState
+) -> None:
+    # The path verifier's exact distances: the fast path's data, no second copy.
+    checker = cell.checker
+    pairs_all = np.arange(checker.pair_count)
+    for q in (cell.state, arm(joint2=1.6, joint4=-0.5)):
+        out = np.full(checker.pair_count, np.nan)
+        checker.pair_distances(panda_model.to_pin(q), pairs_all, out)
+        distance, _ = checker.min_distance(panda_model.to_pin(q))
+        assert np.isfinite(out).all()
+        assert out.min() == pytest.approx(distance, abs=1e-9)
+    assert out.min() < 0.0  # pushed into the table: negative, not clipped at zero
+    assert not checker.in_collision(panda_model.to_pin(cell.state))  # the fast path still works
+
+
 def test_min_distance_to_a_ball_shrinks_by_at_most_how_far_it_moves(empty_scene: Scene) -> None:
     empty_scene.add_object("ball", Sphere(0.05), Pose((-0.3, 0.0, 0.05)))
     far, pair = empty_scene.min_distance()
