@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import math
+import random
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -814,25 +815,26 @@ def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: n
         reduced.append(path[j])
         i = j
     path = reduced
-    rng = np.random.default_rng(seed)
+    # Python's generator and plain floats: a try costs a few µs, not numpy's ~30.
+    rng = random.Random(seed)
+    lengths = [math.dist(a, b) for a, b in zip(path[:-1], path[1:])]
     for _ in range(2 * len(path)):
         if len(path) < 3:
             break
         # Shortcut between points inside two different segments.
-        s1, s2 = sorted(rng.choice(len(path) - 1, size=2, replace=False))
-        if s2 - s1 < 1:
-            continue
-        t1, t2 = rng.uniform(0.0, 1.0, size=2)
+        s1, s2 = sorted(rng.sample(range(len(path) - 1), 2))
+        t1, t2 = rng.random(), rng.random()
         p1 = path[s1] + t1 * (path[s1 + 1] - path[s1])
         p2 = path[s2] + t2 * (path[s2 + 1] - path[s2])
         # Only a shortcut worth having is checked: one that saves a share of the length.
-        lengths = np.linalg.norm(np.diff(np.array(path), axis=0), axis=1)
-        along = ((1.0 - t1) * lengths[s1] + float(np.sum(lengths[s1 + 1:s2]))
-                 + t2 * lengths[s2])
-        if along - float(np.linalg.norm(p2 - p1)) < _SHORTCUT_GAIN * float(np.sum(lengths)):
+        span = math.dist(p1, p2)
+        along = (1.0 - t1) * lengths[s1] + math.fsum(lengths[s1 + 1:s2]) + t2 * lengths[s2]
+        if along - span < _SHORTCUT_GAIN * math.fsum(lengths):
             continue
         if edge_valid(p1, p2):
             path = path[: s1 + 1] + [p1, p2] + path[s2 + 1:]
+            lengths = (lengths[:s1] + [t1 * lengths[s1], span, (1.0 - t2) * lengths[s2]]
+                       + lengths[s2 + 1:])
     return np.array(path)
 
 
