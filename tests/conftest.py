@@ -21,18 +21,15 @@ REPO_ROOT = Path(__file__).resolve().parents[1]
 
 @pytest.fixture(scope="session", autouse=True)
 def _verifier_kernels_compiled() -> None:
-    """The path verifier's kernels, compiled (or loaded from numba's disk cache) before
+    """The path verifier's and the search screen's kernels, compiled (or loaded from numba's disk cache) before
     the first test: on a fresh machine the first plan compiles them (10-15 s of CPU,
     minutes on a busy machine), which would otherwise fall inside whichever test plans
     first, in this process or in a planning worker, and past its deadlines."""
-    import numpy as np
-
     from taskrunner.scene import Scene
+    from taskrunner.scene.screen import warm_kernels
 
-    model = load_robot(DATA_ROOT / "robots" / "servo_arm")
-    scene = Scene(model)
-    q = scene.state
-    scene.path_verifier().verify(np.stack([q, np.clip(q + 1e-3, model.lower, model.upper)]))
+    scene = Scene(load_robot(DATA_ROOT / "robots" / "servo_arm"))
+    warm_kernels(scene.path_verifier(), scene.state)
 
 
 @pytest.fixture(scope="session")

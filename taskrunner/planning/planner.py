@@ -56,6 +56,7 @@ from taskrunner.planning.request import (
 from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
+from taskrunner.scene.collision import VERIFY_MARGIN
 from taskrunner.types import JointPath, JointTrajectory
 
 if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
@@ -136,6 +137,7 @@ class MotionPlanner:
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
         self._spheres: tuple[object, object] | None = None  # (checker, SphereModel)
         self._groups: dict[str, object] = {}
+        self._screen: tuple[object, object] | None = None  # (PathVerifier, StateScreen)
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
@@ -364,7 +366,8 @@ class MotionPlanner:
         idx = group.joint_indices
         out = _Direct()
         count = [0]
-        edge_valid = self._edge_validity(group, start, options.longest_valid_segment, count)
+        edge_valid = self._edge_validity(group, start, options.longest_valid_segment, count,
+                                         margin=options.verify_margin)
         for index, q_goal in goals:
             if not edge_valid(start[idx], q_goal[idx]):
                 continue
@@ -401,17 +404,18 @@ class MotionPlanner:
         return self._groups[group.name]
 
     def _checks(self, group: Group, start: np.ndarray, resolution: float,
-                known: set[bytes] | None = None
+                known: set[bytes] | None = None, margin: float = VERIFY_MARGIN
                 ) -> tuple[Callable[[np.ndarray], bool],
                            Callable[[np.ndarray, np.ndarray], bool], list[int]]:
         """A state check and an edge check over the group's values (an edge's first
         state is taken as checked), and a counter of the states they checked. ``known``:
         see :meth:`_edge_validity` (the exact checks only; states found valid by the
-        state check are added)."""
-        exact, count = self._validity(group, start)
+        state check are added). ``margin``: the request's verification margin (see
+        :meth:`_scan`)."""
+        exact, count = self._validity(group, start, margin)
         fast = self._fast_checker(group)
         if fast is None:
-            exact_edge = self._edge_validity(group, start, resolution, count, known)
+            exact_edge = self._edge_validity(group, start, resolution, count, known, margin)
             if known is None:
                 return exact, exact_edge, count
 
@@ -466,14 +470,28 @@ class MotionPlanner:
 
         return is_valid, edge_valid, count
 
-    def _validity(self, group: Group, start: np.ndarray) -> tuple[Callable[[np.ndarray], bool], list[int]]:
+    def _scan(self, margin: float) -> Callable[[np.ndarray], int]:
+        """The index of the first of some full states (the rows of a C-contiguous array)
+        in collision, or -1: the scene checker's verdict, screened
+        (:class:`~taskrunner.scene.screen.StateScreen`: coal only on the pairs that cheap
+        compiled bounds cannot clear). Built on the path verifier of the request's
+        ``margin``, which verifies the path afterwards; kept while the scene is not edited."""
+        verifier = self.scene.path_verifier(margin)
+        if self._screen is None or self._screen[0] is not verifier:
+            from taskrunner.scene.screen import StateScreen
+
+            self._screen = (verifier, StateScreen(verifier))
+        return self._screen[1].first_in_collision
+
+    def _validity(self, group: Group, start: np.ndarray, margin: float = VERIFY_MARGIN
+                  ) -> tuple[Callable[[np.ndarray], bool], list[int]]:
         """A fast validity check over the group's values, and a call counter."""
         model = self.scene.robot
-        checker = self.scene.checker
+        scan = self._scan(margin)
         q = start.copy()
+        rows = q[None, :]  # a view: the state as the one row the scan takes
         idx = group.joint_indices
         mimic = model.mimic_follows(idx)
-        to_pin = model.to_pin
         count = [0]
 
         def is_valid(values: np.ndarray) -> bool:
@@ -481,12 +499,13 @@ class MotionPlanner:
             q[idx] = values
             if mimic:
                 model.apply_mimic(q)
-            return not checker.in_collision(to_pin(q))
+            return scan(rows) < 0
 
         return is_valid, count
 
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
-                       count: list[int], known: set[bytes] | None = None
+                       count: list[int], known: set[bytes] | None = None,
+                       margin: float = VERIFY_MARGIN
                        ) -> Callable[[np.ndarray, np.ndarray], bool]:
         """An edge check over the group's values: the edge's end, then the states every
         ``resolution`` (max over joints) in between, coarse to fine (see
@@ -497,15 +516,14 @@ class MotionPlanner:
         edge's end found there is not checked again (RRT-Connect's goal tree checks
         edges towards nodes of its own tree). Ends found valid are added."""
         model = self.scene.robot
-        in_collision = self.scene.checker.in_collision
-        first_in_collision = self.scene.checker.first_in_collision
+        scan = self._scan(margin)
         idx = group.joint_indices
         base = start.copy()
         mimic = model.mimic_follows(idx)
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
 
         q_end = start.copy()
-        to_pin = model.to_pin
+        end_row = q_end[None, :]
         # The group's columns: a slice where they are contiguous (cheaper than a gather).
         columns: slice | np.ndarray = idx
         if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
@@ -518,7 +536,7 @@ class MotionPlanner:
                 q_end[columns] = b
                 if mimic:
                     model.apply_mimic(q_end)
-                if in_collision(to_pin(q_end)):
+                if scan(end_row) >= 0:
                     return False
                 if known is not None:
                     known.add(key)
@@ -541,7 +559,7 @@ class MotionPlanner:
                 states[:, columns] = a + fractions * delta
             if mimic:
                 model.apply_mimic(states)
-            hit = first_in_collision(to_pin(states))
+            hit = scan(states)
             count[0] += len(states) if hit < 0 else hit + 1
             return hit < 0
 
@@ -564,7 +582,7 @@ class MotionPlanner:
         known = {np.ascontiguousarray(q[idx], dtype=float).tobytes()
                  for q in [start] + [g for _, g in goals]}
         is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment,
-                                                   known)
+                                                   known, options.verify_margin)
         lower = model.lower[idx].copy()
         upper = model.upper[idx].copy()
         # Continuous joints: one turn around wherever the start and goals are.
@@ -692,7 +710,8 @@ class MotionPlanner:
         None (with the verifications made) when both collide."""
         # The search's waypoints are valid states: edges ending at one skip that check.
         known = {np.ascontiguousarray(w, dtype=float).tobytes() for w in waypoints}
-        _, edge_valid, _ = self._checks(group, start, options.longest_valid_segment, known)
+        _, edge_valid, _ = self._checks(group, start, options.longest_valid_segment, known,
+                                        options.verify_margin)
         candidates = []
         if options.simplify and len(waypoints) > 2:
             candidates.append(_shortcut(edge_valid, waypoints, options.seed))

@@ -27,8 +27,6 @@ from multiprocessing.connection import Connection
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from taskrunner.errors import PlanningError, TaskrunnerError
 from taskrunner.planning.request import PlanRequest, PlanResult
 from taskrunner.processes import start_ignoring_sigint
@@ -47,13 +45,12 @@ _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its ver
 
 
 def _warm_verifier(scene: Scene) -> None:
-    """Verify a short motion from the start state, so that the path verifier's compiled
-    kernels are loaded (compiled, the first time on a machine: then cached on disk)
-    before the first request rather than during it."""
-    robot = scene.robot
-    q = scene.state
-    nudged = np.clip(q + 1e-3, robot.lower, robot.upper)
-    scene.path_verifier().verify(np.stack([q, nudged]))
+    """Verify and screen a short motion from the start state, so that the path
+    verifier's and the search's compiled kernels are loaded (compiled, the first time on
+    a machine: then cached on disk) before the first request rather than during it."""
+    from taskrunner.scene.screen import warm_kernels
+
+    warm_kernels(scene.path_verifier(), scene.state)
 
 
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,

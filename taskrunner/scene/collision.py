@@ -266,6 +266,17 @@ class CollisionChecker:
                 return i
         return -1
 
+    def pairs_collide(self, q_pin: np.ndarray, pairs: Sequence[int]) -> bool:
+        """True if any of the checked pairs ``pairs`` (indices into the geometry model's
+        collision pairs) collides at ``q_pin``: the narrow phase on those pairs only, in
+        order, stopping at the first in collision."""
+        self._place(self._model, self._data, self._geometry, self._geometry_data, q_pin)
+        collide, geometry, geometry_data = pin.computeCollision, self._geometry, self._geometry_data
+        for k in pairs:
+            if collide(geometry, geometry_data, int(k)):
+                return True
+        return False
+
     def pair_distances(self, q_pin: np.ndarray, pairs: Sequence[int], out: np.ndarray) -> None:
         """The signed distances (m, negative: penetration) of the checked pairs ``pairs``
         (indices into the geometry model's collision pairs) at ``q_pin``, into ``out``."""

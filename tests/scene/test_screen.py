@@ -1,0 +1,131 @@
+"""The search's screened state check gives the checker's verdict on every state."""
+
+from __future__ import annotations
+
+import numpy as np
+import pinocchio as pin
+import pytest
+
+from taskrunner.resources import DATA_ROOT
+from taskrunner.robot import RobotModel
+from taskrunner.robot.cell import load_cell
+from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.scene.screen import StateScreen
+from taskrunner.shapes import Box, Cylinder, Sphere
+from taskrunner.types import Pose
+
+
+def _screen(scene: Scene) -> StateScreen:
+    return StateScreen(scene.path_verifier())
+
+
+def _boundary_states(scene: Scene, rng: np.random.Generator, count: int) -> np.ndarray:
+    """States 1e-4 rad (max over joints) either side of where a random free state's
+    straight line to a colliding one first collides: bodies a fraction of a millimetre
+    apart or into each other, the hardest states for a screen."""
+    robot = scene.robot
+    out = []
+    tries = 0
+    while len(out) < count and tries < 50 * count:
+        tries += 1
+        a, b = robot.random_state(rng), robot.random_state(rng)
+        if scene.in_collision(a) or not scene.in_collision(b):
+            continue
+        lo, hi = 0.0, 1.0
+        while np.max(np.abs(b - a)) * (hi - lo) > 1e-5:
+            mid = 0.5 * (lo + hi)
+            if scene.in_collision(robot.apply_mimic(a + mid * (b - a))):
+                hi = mid
+            else:
+                lo = mid
+        step = 1e-4 / np.max(np.abs(b - a))
+        out += [robot.apply_mimic(a + (lo - step) * (b - a)),
+                robot.apply_mimic(a + min(1.0, hi + step) * (b - a))]
+    assert len(out) >= count  # the scene has obstacles to find
+    return np.array(out)
+
+
+def _agrees(scene: Scene, states: np.ndarray) -> None:
+    screen = _screen(scene)
+    checker, to_pin = scene.checker, scene.robot.to_pin
+    # Within coal's tolerance of touching, coal's verdict depends on its warm start (the
+    # pair checked before): compare the states where its broadphase path and its report
+    # (every pair, other data) agree.
+    stable = [checker.in_collision(to_pin(q)) == bool(checker.collisions(to_pin(q)))
+              for q in states]
+    assert sum(stable) > 0.9 * len(states)
+    states = states[np.array(stable)]
+    verdicts = [checker.in_collision(to_pin(q)) for q in states]
+    screened = [screen.first_in_collision(np.ascontiguousarray(q[None, :])) == 0 for q in states]
+    assert screened == verdicts
+    assert any(verdicts) and not all(verdicts)
+    # Rows: the first in collision, as the checker finds it.
+    for start in range(0, len(states) - 8, 7):
+        rows = np.ascontiguousarray(states[start:start + 8])
+        assert screen.first_in_collision(rows) == checker.first_in_collision(to_pin(rows))
+
+
+def _panda_cell(panda_model: RobotModel) -> Scene:
+    scene = Scene(panda_model)
+    scene.add_object("table", Box((1.2, 1.2, 0.04)), Pose((0.3, 0.0, -0.02)))
+    scene.allow_collision("panda_link0", "table")
+    scene.add_object("post", Cylinder(0.04, 0.5), Pose((0.45, -0.25, 0.25)))
+    scene.add_object("ball", Sphere(0.06), Pose((0.35, 0.3, 0.45)))
+    tilted = pin.SE3(pin.rpy.rpyToMatrix(0.2, 0.1, 0.3), np.array([0.6, 0.0, 0.35]))
+    scene.add_object("shelf", Box((0.3, 0.6, 0.02)), Pose.from_se3(tilted))
+    return scene
+
+
+def test_panda_cell_with_boxes_cylinder_and_ball(panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    rng = np.random.default_rng(3)
+    random = np.array([panda_model.random_state(rng) for _ in range(300)])
+    _agrees(scene, np.vstack([random, _boundary_states(scene, rng, 60)]))
+
+
+def test_an_object_in_the_hand_is_screened_with_the_hand(panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    # Between the fingers, 10 cm out from the hand's frame.
+    held = scene.link_pose("panda_hand").se3 * pin.SE3(np.eye(3), np.array([0.0, 0.0, 0.1]))
+    scene.add_object("cube", Box((0.04, 0.04, 0.04)), Pose.from_se3(held), attach_to="panda_hand",
+                     touch_links=("panda_hand", "panda_leftfinger", "panda_rightfinger"))
+    rng = np.random.default_rng(4)
+    random = np.array([panda_model.random_state(rng) for _ in range(300)])
+    _agrees(scene, np.vstack([random, _boundary_states(scene, rng, 40)]))
+
+
+def test_ur5_and_servo_arm_alone(ur5_model: RobotModel, servo_arm_model: RobotModel) -> None:
+    for model, seed in ((ur5_model, 5), (servo_arm_model, 6)):
+        scene = Scene(model)
+        rng = np.random.default_rng(seed)
+        random = np.array([model.random_state(rng) for _ in range(300)])
+        _agrees(scene, np.vstack([random, _boundary_states(scene, rng, 30)]))
+
+
+@pytest.mark.parametrize("cell", ["panda_pair", "servo_arm_table"])
+def test_shipped_cells(cell: str) -> None:
+    scene = scene_from_cell(load_cell(DATA_ROOT / "robots" / "cells" / f"{cell}.yaml"))
+    rng = np.random.default_rng(7)
+    random = np.array([scene.robot.random_state(rng) for _ in range(200)])
+    _agrees(scene, np.vstack([random, _boundary_states(scene, rng, 30)]))
+
+
+def test_clear_states_never_reach_coal(panda_model: RobotModel) -> None:
+    # The screen's point: where the bounding volumes clear every pair, coal is not asked.
+    scene = _panda_cell(panda_model)
+    screen = _screen(scene)
+    asked = []
+    narrow = scene.checker.pairs_collide
+
+    def counting(q_pin: np.ndarray, pairs: np.ndarray) -> bool:
+        asked.append(len(pairs))
+        return narrow(q_pin, pairs)
+
+    screen.checker = type("Counting", (), {"pairs_collide": staticmethod(counting),
+                                           "first_in_collision": scene.checker.first_in_collision})()
+    ready = panda_model.state_with(panda_model.default_state(),
+                                   panda_model.named_state("arm_and_hand", "default"))
+    rows = np.ascontiguousarray(np.repeat(ready[None, :], 5, axis=0))
+    assert screen.first_in_collision(rows) == -1
+    assert len(asked) < 5  # at most the states where a pair is within the volumes
+    assert sum(asked) < scene.checker.pair_count
