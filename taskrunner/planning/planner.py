@@ -60,7 +60,8 @@ from taskrunner.scene.collision import VERIFY_MARGIN
 from taskrunner.types import JointPath, JointTrajectory
 
 if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
-    from taskrunner.scene.sweep import PathVerification
+    from taskrunner.scene.screen import StateScreen
+    from taskrunner.scene.sweep import PathVerification, PathVerifier
 
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
@@ -137,7 +138,7 @@ class MotionPlanner:
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
         self._spheres: tuple[object, object] | None = None  # (checker, SphereModel)
         self._groups: dict[str, object] = {}
-        self._screen: tuple[object, object] | None = None  # (PathVerifier, StateScreen)
+        self._screen: tuple[PathVerifier, StateScreen] | None = None
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
@@ -481,7 +482,7 @@ class MotionPlanner:
             from taskrunner.scene.screen import StateScreen
 
             self._screen = (verifier, StateScreen(verifier))
-        return self._screen[1].first_in_collision
+        return self._screen[1].scanner()
 
     def _validity(self, group: Group, start: np.ndarray, margin: float = VERIFY_MARGIN
                   ) -> tuple[Callable[[np.ndarray], bool], list[int]]:
@@ -520,47 +521,47 @@ class MotionPlanner:
         idx = group.joint_indices
         base = start.copy()
         mimic = model.mimic_follows(idx)
+        # Per number of steps: the fractions of the inner states (coarse to fine) and the
+        # states' rows, the end's first: one scan for the end and the inner states.
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-
-        q_end = start.copy()
-        end_row = q_end[None, :]
         # The group's columns: a slice where they are contiguous (cheaper than a gather).
         columns: slice | np.ndarray = idx
         if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
             columns = slice(int(idx[0]), int(idx[0]) + len(idx))
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
-            key = b.tobytes() if known is not None else b""
-            if known is None or key not in known:
-                count[0] += 1
-                q_end[columns] = b
-                if mimic:
-                    model.apply_mimic(q_end)
-                if scan(end_row) >= 0:
-                    return False
-                if known is not None:
-                    known.add(key)
             delta = b - a
-            steps = math.ceil(float(np.abs(delta).max()) / resolution)
-            if steps < 2:
-                return True
+            steps = max(1, math.ceil(float(np.abs(delta).max()) / resolution))
             cached = orders.get(steps)
             if cached is None:
-                order = _bisection_order(steps)
-                states = np.empty((steps - 1, len(base)))
-                states[:] = base
-                cached = orders[steps] = (order[:, None] / steps, states)
-            fractions, states = cached
+                fractions = np.concatenate([[1.0], _bisection_order(steps) / steps])[:, None]
+                rows = np.empty((steps, len(base)))
+                rows[:] = base
+                cached = orders[steps] = (fractions, rows)
+            fractions, rows = cached
+            key = b.tobytes() if known is not None else b""
+            end = known is None or key not in known
+            if end:
+                states = rows
+            elif steps < 2:
+                return True
+            else:
+                states = rows[1:]
+                fractions = fractions[1:]
             if isinstance(columns, slice):
                 block = states[:, columns]
                 np.multiply(fractions, delta, out=block)
                 block += a
             else:
                 states[:, columns] = a + fractions * delta
+            if end:
+                rows[0, columns] = b  # exactly the end (a + 1.0 * (b - a) may round)
             if mimic:
                 model.apply_mimic(states)
             hit = scan(states)
             count[0] += len(states) if hit < 0 else hit + 1
+            if end and known is not None and hit != 0:
+                known.add(key)
             return hit < 0
 
         return edge_valid

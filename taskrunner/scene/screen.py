@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 import threading
+from collections.abc import Callable
 
 import numpy as np
 
@@ -89,6 +90,30 @@ class StateScreen:
         nj, ng = len(self._tree_i), len(self._gi)
         work = np.zeros((nj + 2 * ng, _W_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
+
+    def scanner(self) -> Callable[[np.ndarray], int]:
+        """:meth:`first_in_collision` with work arrays of its own, for one thread: what a
+        search calls thousands of times (no lock, the arrays and methods bound once)."""
+        checker, robot = self.checker, self.robot
+        to_pin = robot.to_pin
+        if not self.supported:
+            first = checker.first_in_collision
+            return lambda states: first(to_pin(states))
+        work, found = self._new_buffers()
+        tree_i, tree_f, gi, geo, pairs = self._tree_i, self._tree_f, self._gi, self._geo, self._pairs
+        kernel, collide = _first_uncleared, checker.pairs_collide
+
+        def scan(states: np.ndarray) -> int:
+            begin = 0
+            while True:
+                row, count = kernel(states, begin, tree_i, tree_f, gi, geo, pairs, work, found)
+                if row < 0:
+                    return -1
+                if collide(to_pin(states[row]), found[:count]):
+                    return int(row)
+                begin = row + 1
+
+        return scan
 
     def first_in_collision(self, states: np.ndarray) -> int:
         """The index of the first row of ``states`` (full state vectors, ``(n, nq)``,
