@@ -288,12 +288,11 @@ def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
     """States a lift away from the approximations of ``wanted``, orientation unchanged,
     joined to them by a straight line the arm can follow holding that orientation."""
     solver = _solver(model, group, link)
-    fk = _Frames(model, link)
     out: list[np.ndarray] = []
-    for item in approximate(model, group, link, wanted, start, seed, point, grasping):
+    for item, reached in _approximations(model, group, link, wanted, start, seed, point,
+                                         grasping):
         if len(out) >= KEEP:
             break
-        reached = fk(item.q)
         away = pin.SE3(reached.rotation, reached.translation
                        + np.asarray(lift(item.wanted, reached), dtype=float))
         q = _follows(solver, item.q, reached, away, rotation=reached.rotation)
@@ -315,18 +314,29 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
     Raises:
         IkFailedError: no wanted position is within reach.
     """
+    return [item for item, _ in _approximations(model, group, link, wanted, start, seed, point,
+                                                 grasping)]
+
+
+def _approximations(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
+                    start: np.ndarray, seed: int, point: np.ndarray | None = None,
+                    grasping: bool = False) -> list[tuple[Approximation, pin.SE3]]:
+    """:func:`approximate`'s candidates, each with its frame's pose (the forward
+    kinematics its angle was measured on, for the caller to reuse)."""
     offset = np.zeros(3) if point is None else np.asarray(point, dtype=float)
     solver = _solver(model, group, link)
     fk = _Frames(model, link)
     roll = wrist_roll(model, group, link, np.asarray(start, dtype=float))
 
-    def error(q: np.ndarray, pose: pin.SE3) -> float:
-        return orientation_error(fk(q), pose, grasping)
+    def candidate(q: np.ndarray, i: int, frame: pin.SE3 | None = None
+                  ) -> tuple[Approximation, pin.SE3]:
+        reached = fk(q) if frame is None else frame
+        return Approximation(q, i, orientation_error(reached, wanted[i], grasping)), reached
 
     sample = IkOptions(position_only=True, num_solutions=SAMPLES, seed=seed,
                        timeout=_IK_TIMEOUT, attempts=20 * SAMPLES)
     local, exact = _LOCAL, _EXACT
-    out: list[Approximation] = []
+    out: list[tuple[Approximation, pin.SE3]] = []
     failure: IkFailedError | None = None
     targets: dict[tuple[float, ...], list[int]] = {}
     for i, pose in enumerate(wanted):
@@ -340,28 +350,33 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
         except IkFailedError as exc:
             failure = exc
             continue
+        # Each solution's orientation, for the first wrist roll towards every wanted pose.
+        turned = [fk(s.q).rotation for s in solutions] if roll is not None else None
         for i in members:
-            aimed = [q for q in (_aimed(fk, roll, grasping, s.q, wanted[i], goal, offset,
-                                        solver, local) for s in solutions) if q is not None]
-            found = [Approximation(q, i, error(q, wanted[i])) for q in aimed]
+            found = []
+            for k, s in enumerate(solutions):
+                aimed = _aimed(fk, roll, grasping, s.q, wanted[i], goal, offset, solver, local,
+                               None if turned is None else turned[k])
+                if aimed is not None:
+                    found.append(candidate(aimed[0], i, aimed[1]))
             out += found
             if not found:
                 continue
             # Where the wanted pose is reachable exactly, a local full-pose solve from the
             # nearest approximation finds it.
-            best = min(found, key=lambda a: a.angle).q
+            best = min(found, key=lambda a: a[0].angle)[0].q
             try:
                 q = solver.solve_near(wanted[i], seed_q=best, options=exact)
             except IkFailedError:
                 continue
-            out.append(Approximation(q, i, error(q, wanted[i])))
+            out.append(candidate(q, i))
     if not out:
         if failure is not None:
             raise failure
         raise IkFailedError(f"no state of group {group!r} puts the point "
                             f"{np.round(offset, 4).tolist()} of {link!r} at "
                             f"{np.round(next(iter(targets)), 4).tolist()} (m, world)")
-    out.sort(key=lambda a: a.angle)
+    out.sort(key=lambda a: a[0].angle)
     return out
 
 
@@ -372,8 +387,11 @@ def _offset(fk: _Frames, q: np.ndarray, offset: np.ndarray) -> np.ndarray:
 
 def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.ndarray,
            pose: pin.SE3, goal: np.ndarray, offset: np.ndarray, solver: IkSolver,
-           local: IkOptions) -> np.ndarray | None:
-    """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``.
+           local: IkOptions, rotation: np.ndarray | None = None
+           ) -> tuple[np.ndarray, pin.SE3 | None] | None:
+    """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``, and
+    the frame's pose there where it was computed (else None); None where the point cannot
+    be re-aimed. ``rotation``: the frame's orientation at ``q``, if known.
 
     The rounds stop at their fixed point: once the point is within the IK tolerance of
     ``goal`` after a roll, a re-aim would leave the state as it is, and so would the next
@@ -382,24 +400,26 @@ def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.nd
     placed = bool(offset.any())  # a point away from the frame's origin
     for _ in range(FIXED_POINT_ROUNDS):
         if roll is not None:
-            q = _rolled(fk, roll, q, pose, solver.model, grasping)
+            q = _rolled(fk, roll, q, pose, solver.model, grasping, rotation)
+            rotation = None  # known for the first state only
         if not placed:
-            return q
+            return q, None
         frame = fk(q)
         target = goal - frame.rotation @ offset
         miss = target - frame.translation
         if float(miss @ miss) <= local.tolerance**2:
-            return q
+            return q, frame
         try:
             q = solver.solve_near(target, seed_q=q, options=local)
         except IkFailedError:
             return None
-    miss = np.linalg.norm(fk(q).translation + _offset(fk, q, offset) - goal)
-    return q if miss < 1e-4 else None
+    frame = fk(q)
+    miss = np.linalg.norm(frame.translation + frame.rotation @ offset - goal)
+    return (q, frame) if miss < 1e-4 else None
 
 
 def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
-            model: RobotModel, grasping: bool) -> np.ndarray:
+            model: RobotModel, grasping: bool, now: np.ndarray | None = None) -> np.ndarray:
     """``q`` with the wrist roll turned so the frame's y axis is nearest ``pose``'s (of the
     two closing senses, the one within the joint's limits and nearer the whole pose).
 
@@ -407,9 +427,11 @@ def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
     :func:`wrist_roll`), so each candidate's orientation is the present one turned about z:
     no forward kinematics per candidate. Turns a whole revolution apart give one
     orientation; of those the first within the limits (the shortest turn) is kept.
+    ``now``: the frame's orientation at ``q``, if known.
     """
     index, sense = roll
-    now = fk(q).rotation
+    if now is None:
+        now = fk(q).rotation
     z, y = now[:, 2], now[:, 1]
     rotation = pose.rotation  # a copy, made once
     wanted = rotation[:, 1]
