@@ -90,8 +90,8 @@ __all__ = ["CHEAP_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms
 _DISTANCE_SLACK = 1e-6  # m: GJK's distance tolerance; measured distances are reduced by it
 _EARLY = 0.25  # a pair due within this fraction of its step is measured with the others
 GAIN = 1.0  # optimistic step: (1 + GAIN) times the last distance (see the module's text)
-_BISECTIONS = 12  # at most this many evaluations to place a step inside a segment
-_CLOSE = 0.02  # a step placed within this fraction short of its bound is close enough
+_BISECTIONS = 4  # at most this many evaluations to place a step inside a segment
+_CLOSE = 0.1  # a step placed within this fraction short of its bound is close enough
 
 # Columns of the per-pair walk state (a float array, one row per pair; its lever arms on
 # the left and on the right follow). When each pair is due next, and from where it may be
@@ -316,7 +316,10 @@ _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
 # frames (n_joints + n_geometries, 18): a joint's world rotation, origin and axis; a
 # geometry's world rotation, origin, bounding sphere centre and bounding box centre.
 _FR_ROT, _FR_ORIGIN, _FR_AXIS, _FR_CENTRE, _FR_BOX = 0, 9, 12, 12, 15
-_FR_COLUMNS = 18
+# The walk places a geometry only when a pair of it is measured: column _FR_PLACED of its
+# row holds the count of compiled states when it was placed (inf: a world object's, fixed).
+_FR_PLACED = 18
+_FR_COLUMNS = 19
 # settings: margin, slack, gain, early, cheap-from; compiled states, cheap bounds; exact
 # distances pending (count, position); per-state lever arms; the contact (index into the
 # selected pairs) or the first state that is not finite; the walk started.
@@ -556,6 +559,15 @@ _inline = numba.njit(cache=True, nogil=True, error_model="numpy", inline="always
 def _forward(q, tree_i, tree_f, geo_i, geo_f, frames):  # type: ignore[no-untyped-def]
     """World frames of the joints and the geometries at state ``q`` (into ``frames``,
     columns ``_FR_*``: geometry ``g`` is row ``n_joints + g``)."""
+    _joint_frames(q, tree_i, tree_f, frames)
+    nj = tree_i.shape[0]
+    for g in range(geo_i.shape[0]):
+        _geometry_frame(g, geo_i, geo_f, frames, nj)
+
+
+@_inline
+def _joint_frames(q, tree_i, tree_f, frames):  # type: ignore[no-untyped-def]
+    """World frames of the joints at state ``q`` (rows ``0 .. n_joints - 1`` of ``frames``)."""
     nj = tree_i.shape[0]
     for a in range(3):
         for b in range(3):
@@ -600,26 +612,38 @@ def _forward(q, tree_i, tree_f, geo_i, geo_f, frames):  # type: ignore[no-untype
             for b in range(3):
                 total += frames[jid, 3 * a + b] * tree_f[jid, _TF_AXIS + b]
             frames[jid, _FR_AXIS + a] = total
-    for g in range(geo_i.shape[0]):
-        jid = geo_i[g, _GI_JOINT]
-        row = nj + g
-        for a in range(3):
-            total = frames[jid, _FR_ORIGIN + a]
-            for b in range(3):
-                total += frames[jid, 3 * a + b] * geo_f[g, _GF_TRANS + b]
-                value = 0.0
-                for c in range(3):
-                    value += frames[jid, 3 * a + c] * geo_f[g, _GF_ROT + 3 * c + b]
-                frames[row, 3 * a + b] = value
-            frames[row, _FR_ORIGIN + a] = total
-        for a in range(3):
-            centre = frames[row, _FR_ORIGIN + a]
-            box = frames[row, _FR_ORIGIN + a]
-            for b in range(3):
-                centre += frames[row, 3 * a + b] * geo_f[g, _GF_CENTRE + b]
-                box += frames[row, 3 * a + b] * geo_f[g, _GF_BOX + b]
-            frames[row, _FR_CENTRE + a] = centre
-            frames[row, _FR_BOX + a] = box
+
+
+@_inline
+def _geometry_frame(g, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+    """Geometry ``g``'s world frame, bounding sphere and box centres (row ``nj + g`` of
+    ``frames``) from its joint's frame."""
+    jid = geo_i[g, _GI_JOINT]
+    row = nj + g
+    for a in range(3):
+        total = frames[jid, _FR_ORIGIN + a]
+        for b in range(3):
+            total += frames[jid, 3 * a + b] * geo_f[g, _GF_TRANS + b]
+            value = 0.0
+            for c in range(3):
+                value += frames[jid, 3 * a + c] * geo_f[g, _GF_ROT + 3 * c + b]
+            frames[row, 3 * a + b] = value
+        frames[row, _FR_ORIGIN + a] = total
+    for a in range(3):
+        centre = frames[row, _FR_ORIGIN + a]
+        box = frames[row, _FR_ORIGIN + a]
+        for b in range(3):
+            centre += frames[row, 3 * a + b] * geo_f[g, _GF_CENTRE + b]
+            box += frames[row, 3 * a + b] * geo_f[g, _GF_BOX + b]
+        frames[row, _FR_CENTRE + a] = centre
+        frames[row, _FR_BOX + a] = box
+
+
+@_inline
+def _place(g, geo_i, geo_f, frames, nj, stamp):  # type: ignore[no-untyped-def]
+    """Place geometry ``g`` at the state of the joint frames (compiled state ``stamp``)."""
+    _geometry_frame(g, geo_i, geo_f, frames, nj)
+    frames[nj + g, _FR_PLACED] = np.inf if geo_i[g, _GI_JOINT] == 0 else stamp
 
 
 @_jit
@@ -661,27 +685,34 @@ def _sphere_to_box(frames, row, radius, box, geo_f, nj):  # type: ignore[no-unty
 @_inline
 def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
-    boxes on their six face normals: a lower bound on their distance where positive."""
+    boxes on their six face normals: a lower bound on their distance where positive.
+
+    Along a unit normal ``n``, the gap is ``|(c_a - c_b) . n|`` less each box's half
+    extent projected on ``n``; with ``C = R_a^T R_b`` the projections of one box's axes on
+    the other's normals are the entries of ``C`` (its own: 0 or 1)."""
     ra, rb = nj + a, nj + b
     best = -np.inf
-    for side in range(2):
-        owner = ra if side == 0 else rb
-        for axis in range(3):
-            # Unit normal: column ``axis`` of the owner's rotation.
-            gap = 0.0
-            for i in range(3):
-                gap += (frames[ra, _FR_BOX + i] - frames[rb, _FR_BOX + i]) \
-                    * frames[owner, 3 * i + axis]
-            gap = abs(gap)
-            for j in range(3):
-                dot_a = 0.0
-                dot_b = 0.0
-                for i in range(3):
-                    dot_a += frames[ra, 3 * i + j] * frames[owner, 3 * i + axis]
-                    dot_b += frames[rb, 3 * i + j] * frames[owner, 3 * i + axis]
-                gap -= geo_f[a, _GF_HALF + j] * abs(dot_a) + geo_f[b, _GF_HALF + j] * abs(dot_b)
-            if gap > best:
-                best = gap
+    for axis in range(3):
+        along_a = 0.0               # the centres' offset along a's and b's normals
+        along_b = 0.0
+        for m in range(3):
+            t = frames[ra, _FR_BOX + m] - frames[rb, _FR_BOX + m]
+            along_a += t * frames[ra, 3 * m + axis]
+            along_b += t * frames[rb, 3 * m + axis]
+        gap_a = abs(along_a) - geo_f[a, _GF_HALF + axis]
+        gap_b = abs(along_b) - geo_f[b, _GF_HALF + axis]
+        for j in range(3):
+            c_aj = 0.0              # C[axis, j] and C[j, axis]
+            c_ja = 0.0
+            for m in range(3):
+                c_aj += frames[ra, 3 * m + axis] * frames[rb, 3 * m + j]
+                c_ja += frames[ra, 3 * m + j] * frames[rb, 3 * m + axis]
+            gap_a -= geo_f[b, _GF_HALF + j] * abs(c_aj)
+            gap_b -= geo_f[a, _GF_HALF + j] * abs(c_ja)
+        if gap_a > best:
+            best = gap_a
+        if gap_b > best:
+            best = gap_b
     return best
 
 
@@ -974,6 +1005,8 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
                 walk[k, column] = 0.0
             schedule[0, k] = 0.0                   # every pair is measured at the start
             schedule[1, k] = 0.0
+        for g in range(geo_i.shape[0]):
+            frames[nj + g, _FR_PLACED] = -1.0      # not placed
     c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
@@ -984,6 +1017,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
     exact_phase = count > 0
     settings[_S_PENDING] = 0.0
     s = settings[_S_AT]
+    stamp = settings[_S_STATES]
     while True:
         if not exact_phase:
             count, s = _pick(walk, schedule, selected, states, q)
@@ -993,8 +1027,9 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
             if not per_state:
                 settings[_S_PENDING] = count
                 return count
-            _forward(q, tree_i, tree_f, geo_i, geo_f, frames)
+            _joint_frames(q, tree_i, tree_f, frames)
             settings[_S_STATES] += 1.0
+            stamp = settings[_S_STATES]
         exact = 0
         for i in range(count):
             k = selected[i]
@@ -1004,8 +1039,12 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
                     settings[_S_BAD] = i
                     return -1
             else:
-                d = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
-                                 frames, nj)
+                a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
+                if frames[nj + a, _FR_PLACED] < stamp:
+                    _place(a, geo_i, geo_f, frames, nj, stamp)
+                if frames[nj + b, _FR_PLACED] < stamp:
+                    _place(b, geo_i, geo_f, frames, nj, stamp)
+                d = _lower_bound(a, b, geo_i, geo_f, frames, nj)
                 if d < cheap_from or not d > 0.0:
                     selected[exact] = k
                     exact += 1
