@@ -56,6 +56,7 @@ if TYPE_CHECKING:  # the verifier's module loads numba: imported on first use
 __all__ = ["Scene", "SceneOptions"]
 
 WORLD = "world"
+_CHECKERS_KEPT = 4  # recent checkers a scene keeps to come back to (see Scene._build)
 
 
 @dataclass(frozen=True)
@@ -129,6 +130,9 @@ class Scene:
         self._checker: CollisionChecker | None = None
         self._verifier: tuple[CollisionChecker, PathVerifier] | None = None
         self._revision = 0
+        # The last checkers built, with the entries and allowed pairs they were built for.
+        self._built: tuple[tuple[tuple[_Entry, ...], frozenset[frozenset[str]],
+                                 CollisionChecker], ...] = ()
 
     # ----------------------------------------------------------------- copies
     def copy(self) -> Scene:
@@ -141,6 +145,7 @@ class Scene:
         other._fk_done = False
         other._checker = None
         other._verifier = None
+        other._built = ()  # a checker is not thread-safe: a copy builds its own
         return other
 
     def snapshot(self) -> SceneSnapshot:
@@ -467,11 +472,23 @@ class Scene:
         self._revision += 1
 
     def _build(self) -> CollisionChecker:
+        entries = tuple(self._entries.values())
+        allowed = self.allowed_collisions()
+        # An edit undone (an allowance given, then taken back) comes back to a scene a
+        # checker was built for: the very same entries (objects never change in place) and
+        # allowed pairs.
+        for built, pairs, checker in self._built:
+            if (len(built) == len(entries) and all(a is b for a, b in zip(built, entries))
+                    and pairs == allowed.keys()):
+                self._checker = checker
+                return checker
         bodies = []
-        for entry in self._entries.values():
+        for entry in entries:
             geometry = object_geometry(self.robot, entry.object, entry.geometry)
             bodies.append(Body(entry.object.name, (geometry,), static=not entry.object.attached))
-        self._checker = self._robot_geometry.checker(bodies, self.allowed_collisions())
+        self._checker = self._robot_geometry.checker(bodies, allowed)
+        self._built = (*self._built[-(_CHECKERS_KEPT - 1):],
+                       (entries, frozenset(allowed), self._checker))
         return self._checker
 
     def _as_state(self, q: np.ndarray | list[float]) -> np.ndarray:

@@ -1,0 +1,81 @@
+"""A scene edited back to a state it had (an allowance given, then taken back) gets the
+checker it had then, which answers as a fresh build does; anything else gets a new one."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from taskrunner.robot import RobotModel
+from taskrunner.scene import Scene
+from taskrunner.scene.collision import Body, CollisionChecker
+from taskrunner.scene.geometry import object_geometry
+from taskrunner.shapes import Box
+from taskrunner.types import Pose
+
+
+def _fresh(scene: Scene) -> CollisionChecker:
+    bodies = list(scene._link_bodies)
+    for obj in scene.objects:
+        geometry = object_geometry(scene.robot, obj, scene._entries[obj.name].geometry)
+        bodies.append(Body(obj.name, (geometry,), static=not obj.attached))
+    return CollisionChecker(scene.robot.model, bodies, scene.allowed_collisions())
+
+
+def _states(model: RobotModel, seed: int, count: int) -> list[np.ndarray]:
+    rng = np.random.default_rng(seed)
+    return [model.to_pin(model.random_state(rng)) for _ in range(count)]
+
+
+def test_an_allowance_taken_back_brings_back_the_checker_it_had(
+        cell: Scene, panda_model: RobotModel) -> None:
+    before = cell.checker
+    cell.allow_collision("shelf_board", "panda_hand")
+    allowed = cell.checker
+    assert allowed is not before
+    cell.disallow_collision("shelf_board", "panda_hand")
+    assert cell.checker is before
+    cell.allow_collision("shelf_board", "panda_hand")
+    assert cell.checker is allowed
+    fresh = _fresh(cell)
+    verdicts = [allowed.in_collision(q) for q in _states(panda_model, 4, 200)]
+    assert verdicts == [fresh.in_collision(q) for q in _states(panda_model, 4, 200)]
+    assert any(verdicts) and not all(verdicts)
+
+
+def test_a_pick_lift_off_allowance_removed_brings_back_the_attach_checker(
+        cell: Scene, panda_model: RobotModel, ready: np.ndarray) -> None:
+    # What a pick does: attach, allow the support to touch the object while it is lifted
+    # off, then take that back.
+    cell.add_object("cube", Box((0.04, 0.04, 0.04)), Pose((0.5, 0.0, 0.02)))
+    cell.attach_object("cube", "panda_hand", touch_links=["panda_leftfinger", "panda_rightfinger"])
+    attached = cell.checker
+    cell.allow_collision("cube", "table")
+    lifting = cell.checker
+    cell.disallow_collision("cube", "table")
+    assert cell.checker is attached and lifting is not attached
+    states = _states(panda_model, 9, 200)
+    fresh = _fresh(cell)
+    assert [attached.in_collision(q) for q in states] == [fresh.in_collision(q) for q in states]
+
+
+def test_moved_objects_and_copies_get_checkers_of_their_own(cell: Scene) -> None:
+    before = cell.checker
+    cell.move_object("shelf_top", Pose((0.75, 0.0, 0.65)))
+    moved = cell.checker
+    cell.move_object("shelf_top", Pose((0.75, 0.0, 0.61)))  # back where it was: a new entry
+    assert cell.checker is not before and cell.checker is not moved
+    copy = cell.copy()
+    assert copy.checker is not cell.checker
+    copy.allow_collision("shelf_board", "panda_hand")
+    copy.disallow_collision("shelf_board", "panda_hand")
+    assert copy.checker is not cell.checker
+
+
+def test_only_the_last_few_checkers_are_kept(cell: Scene) -> None:
+    first = cell.checker
+    for k in range(6):  # six other allowances, each checked
+        cell.allow_collision("shelf_board", f"panda_link{k + 1}")
+        assert cell.checker is not first
+    for k in range(6):
+        cell.disallow_collision("shelf_board", f"panda_link{k + 1}")
+    assert cell.checker is not first  # rebuilt: too many edits ago
