@@ -57,6 +57,7 @@ Waypoint: TypeAlias = Pose | pin.SE3
 """A pose of the moving link: an SE3 in the world frame, or a :class:`Pose` in the world,
 a robot link's frame (taken at the start state) or a scene object's frame."""
 
+_largest, _absolute = np.maximum.reduce, np.absolute  # the ufuncs, without np.max's wrapper
 MIN_STEPS_FOR_JUMP_TEST = 10  # MoveIt's MIN_STEPS_FOR_JUMP_THRESH: fewer steps, no mean
 _IK_TIMEOUT = 1.0  # s; never reached in practice (iterations run out first), so the
 # timeout cannot make the result depend on the machine's load
@@ -247,13 +248,14 @@ class CartesianPlanner:
                 # as interpolate_path makes them (np.linspace(0, 1, count + 1)[1:]'s values,
                 # without its overhead).
                 delta = q_next - q
-                count = max(1, math.ceil(float(np.abs(delta).max()) / options.collision_resolution))
+                count = max(1, math.ceil(float(_largest(_absolute(delta)))
+                                         / options.collision_resolution))
                 along = np.arange(1.0, count + 1.0)
                 along *= 1.0 / count
                 along[-1] = 1.0
                 dense = q + along[:, None] * delta
-                hit = next((i + 1 for i in range(count)
-                            if checker.in_collision(to_pin(dense[i]))), None)
+                first = checker.first_in_collision(to_pin(dense))  # in order, to the first hit
+                hit = None if first < 0 else first + 1
                 checks += count if hit is None else hit
                 if hit is not None:
                     at = fractions[-1] + hit / count * (point.fraction - fractions[-1])

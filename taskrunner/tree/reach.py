@@ -66,6 +66,7 @@ FULL_POSE_SOLUTIONS = 6  # IK solutions tried per pre-pose of a full-pose arm
 _IK_TIMEOUT = 1.0  # s; attempts run out long before, so results do not depend on load
 _EXACT = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
 _LOCAL = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
+_largest, _absolute = np.maximum.reduce, np.absolute  # the ufuncs, without the wrappers
 
 
 @dataclass(frozen=True)
@@ -229,7 +230,7 @@ def _follows(solver: IkSolver, q: np.ndarray, start: pin.SE3, end: pin.SE3,
             nxt = solver.solve_near(pin.SE3(held, origin + s * delta), seed_q=q, options=_EXACT)
         except IkFailedError:
             return None
-        if np.abs(nxt[idx] - q[idx]).max() > MAX_JOINT_STEP:
+        if _largest(_absolute(nxt[idx] - q[idx])) > MAX_JOINT_STEP:  # np.abs(...).max()
             return None
         q = nxt
     return q
@@ -289,13 +290,21 @@ def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
     joined to them by a straight line the arm can follow holding that orientation."""
     solver = _solver(model, group, link)
     out: list[np.ndarray] = []
+    # Wanted poses that differ by a turn the arm cannot make can give the same candidate
+    # state: its line (a function of the state and the lift) is followed once.
+    followed: dict[tuple[bytes, bytes], np.ndarray | None] = {}
     for item, reached in _approximations(model, group, link, wanted, start, seed, point,
                                          grasping):
         if len(out) >= KEEP:
             break
         away = pin.SE3(reached.rotation, reached.translation
                        + np.asarray(lift(item.wanted, reached), dtype=float))
-        q = _follows(solver, item.q, reached, away, rotation=reached.rotation)
+        key = (item.q.tobytes(), away.translation.tobytes())
+        if key in followed:
+            q = followed[key]
+        else:
+            q = followed[key] = _follows(solver, item.q, reached, away,
+                                         rotation=reached.rotation)
         if q is not None:
             out.append(q)
     if out:
