@@ -471,18 +471,22 @@ class MotionPlanner:
 
         return is_valid, edge_valid, count
 
-    def _scan(self, margin: float) -> Callable[[np.ndarray], int]:
-        """The index of the first of some full states (the rows of a C-contiguous array)
-        in collision, or -1: the scene checker's verdict, screened
-        (:class:`~taskrunner.scene.screen.StateScreen`: coal only on the pairs that cheap
-        compiled bounds cannot clear). Built on the path verifier of the request's
-        ``margin``, which verifies the path afterwards; kept while the scene is not edited."""
+    def _state_screen(self, margin: float) -> StateScreen:
+        """The scene's state screen (:class:`~taskrunner.scene.screen.StateScreen`: the
+        checker's verdicts, with coal only on the pairs that cheap compiled bounds cannot
+        clear), built on the path verifier of the request's ``margin``, which verifies
+        the path afterwards; kept while the scene is not edited."""
         verifier = self.scene.path_verifier(margin)
         if self._screen is None or self._screen[0] is not verifier:
             from taskrunner.scene.screen import StateScreen
 
             self._screen = (verifier, StateScreen(verifier))
-        return self._screen[1].scanner()
+        return self._screen[1]
+
+    def _scan(self, margin: float) -> Callable[[np.ndarray], int]:
+        """The index of the first of some full states (the rows of a C-contiguous array)
+        in collision, or -1 (:meth:`_state_screen`)."""
+        return self._state_screen(margin).scanner()
 
     def _validity(self, group: Group, start: np.ndarray, margin: float = VERIFY_MARGIN
                   ) -> tuple[Callable[[np.ndarray], bool], list[int]]:
@@ -517,49 +521,50 @@ class MotionPlanner:
         edge's end found there is not checked again (RRT-Connect's goal tree checks
         edges towards nodes of its own tree). Ends found valid are added."""
         model = self.scene.robot
-        scan = self._scan(margin)
+        screen = self._state_screen(margin)
+        scan = screen.scanner()
         idx = group.joint_indices
         base = start.copy()
         mimic = model.mimic_follows(idx)
-        # Per number of steps: the fractions of the inner states (coarse to fine) and the
-        # states' rows, the end's first: one scan for the end and the inner states.
+        # Per number of steps: the fractions of the states along the edge, the end's first
+        # (1.0), then the inner states coarse to fine; and the states' rows (one scan for
+        # the end and the inner states).
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         # The group's columns: a slice where they are contiguous (cheaper than a gather).
         columns: slice | np.ndarray = idx
         if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
             columns = slice(int(idx[0]), int(idx[0]) + len(idx))
+        # Contiguous columns and no mimic joint to follow: the states are interpolated in
+        # the screen's compiled loop, as far as the first collision.
+        line = screen.line_scanner() if isinstance(columns, slice) and not mimic else None
+        first = columns.start if isinstance(columns, slice) else 0
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
-            delta = b - a
-            steps = max(1, math.ceil(float(np.abs(delta).max()) / resolution))
+            steps = max(1, math.ceil(max(map(abs, (b - a).tolist())) / resolution))
             cached = orders.get(steps)
             if cached is None:
-                fractions = np.concatenate([[1.0], _bisection_order(steps) / steps])[:, None]
+                fractions = np.concatenate([[1.0], _bisection_order(steps) / steps])
                 rows = np.empty((steps, len(base)))
                 rows[:] = base
                 cached = orders[steps] = (fractions, rows)
             fractions, rows = cached
             key = b.tobytes() if known is not None else b""
             end = known is None or key not in known
-            if end:
-                states = rows
-            elif steps < 2:
+            begin = 0 if end else 1
+            if begin >= steps:
                 return True
+            if line is not None:
+                hit = line(rows, fractions, a, b, first, begin)
             else:
-                states = rows[1:]
-                fractions = fractions[1:]
-            if isinstance(columns, slice):
-                block = states[:, columns]
-                np.multiply(fractions, delta, out=block)
-                block += a
-            else:
-                states[:, columns] = a + fractions * delta
-            if end:
-                rows[0, columns] = b  # exactly the end (a + 1.0 * (b - a) may round)
-            if mimic:
-                model.apply_mimic(states)
-            hit = scan(states)
-            count[0] += len(states) if hit < 0 else hit + 1
+                states = rows[begin:]
+                states[:, columns] = a + fractions[begin:, None] * (b - a)
+                if end:
+                    rows[0, columns] = b  # exactly the end (a + 1.0 * (b - a) may round)
+                if mimic:
+                    model.apply_mimic(states)
+                hit = scan(states)
+                hit = hit if hit < 0 else begin + hit
+            count[0] += steps - begin if hit < 0 else hit - begin + 1
             if end and known is not None and hit != 0:
                 known.add(key)
             return hit < 0

@@ -115,6 +115,45 @@ class StateScreen:
 
         return scan
 
+    def line_scanner(self) -> Callable[[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int, int],
+                                         int]:
+        """A scan of states on a segment, for one thread: ``scan(rows, fractions, a, b,
+        first, begin)`` writes row ``s >= begin`` of ``rows`` (full states: the columns
+        ``first`` to ``first + len(a)`` are the segment's, the others are kept) as
+        ``a + fractions[s] (b - a)`` (``b`` at fraction 1) and returns the first row in
+        collision, or -1, as :meth:`scanner` would on the rows written; the interpolation
+        runs in the compiled loop, row by row, as far as the first collision."""
+        checker, robot = self.checker, self.robot
+        to_pin = robot.to_pin
+        if not self.supported:
+            first_in = checker.first_in_collision
+
+            def interpolated(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray,
+                             b: np.ndarray, first: int, begin: int) -> int:
+                block = rows[begin:, first:first + len(a)]
+                block[:] = a + fractions[begin:, None] * (b - a)
+                block[fractions[begin:] == 1.0] = b
+                hit = first_in(to_pin(rows[begin:]))
+                return hit if hit < 0 else begin + hit
+
+            return interpolated
+        work, found = self._new_buffers()
+        tree_i, tree_f, gi, geo, pairs = self._tree_i, self._tree_f, self._gi, self._geo, self._pairs
+        kernel, collide = _first_uncleared_on_line, checker.pairs_collide
+
+        def scan(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray, b: np.ndarray,
+                 first: int, begin: int) -> int:
+            while True:
+                row, count = kernel(rows, fractions, a, b, first, begin, tree_i, tree_f, gi,
+                                    geo, pairs, work, found)
+                if row < 0:
+                    return -1
+                if collide(to_pin(rows[row]), found[:count]):
+                    return int(row)
+                begin = row + 1
+
+        return scan
+
     def first_in_collision(self, states: np.ndarray) -> int:
         """The index of the first row of ``states`` (full state vectors, ``(n, nq)``,
         C-contiguous floats) in collision, or -1."""
@@ -209,81 +248,113 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     return best
 
 
-@_jit
-def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
-    """From row ``begin`` of ``states`` on, the first state at which some pairs are not
-    cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
-    every state clears every pair. A state that is not finite clears nothing."""
-    nj = tree_i.shape[0]
-    ng = gi.shape[0]
-    nq = states.shape[1]
+@_inline
+def _reset(nj, ng, work):  # type: ignore[no-untyped-def]
+    """The universe's frame, and no geometry box placed yet."""
     for a in range(3):
         for b in range(3):
             work[0, 3 * a + b] = 1.0 if a == b else 0.0
         work[0, _W_ORIGIN + a] = 0.0
     for g in range(ng):
         work[nj + g, 3] = -1.0
-    for s in range(begin, states.shape[0]):
-        stamp = float(s)
-        for jid in range(1, nj):
-            p = tree_i[jid, 0]
+
+
+@_inline
+def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
+    """How many pairs the bounding volumes leave at state ``q`` (their indices in
+    ``found``); ``stamp``: a number of this state, new since :func:`_reset`."""
+    nj = tree_i.shape[0]
+    ng = gi.shape[0]
+    nq = q.shape[0]
+    for jid in range(1, nj):
+        p = tree_i[jid, 0]
+        for a in range(3):
+            origin = work[p, _W_ORIGIN + a]
+            for b in range(3):
+                origin += work[p, 3 * a + b] * tree_f[jid, 9 + b]
+                total = 0.0
+                for c in range(3):
+                    total += work[p, 3 * a + c] * tree_f[jid, 3 * c + b]
+                work[jid, 3 * a + b] = total
+            work[jid, _W_ORIGIN + a] = origin
+        index = tree_i[jid, 2]
+        value = q[index] if 0 <= index < nq else 0.0
+        kind = tree_i[jid, 1]
+        x, y, z = tree_f[jid, 12], tree_f[jid, 13], tree_f[jid, 14]
+        if kind == 2:                                       # prismatic
             for a in range(3):
-                origin = work[p, _W_ORIGIN + a]
-                for b in range(3):
-                    origin += work[p, 3 * a + b] * tree_f[jid, 9 + b]
-                    total = 0.0
-                    for c in range(3):
-                        total += work[p, 3 * a + c] * tree_f[jid, 3 * c + b]
-                    work[jid, 3 * a + b] = total
-                work[jid, _W_ORIGIN + a] = origin
-            index = tree_i[jid, 2]
-            value = states[s, index] if 0 <= index < nq else 0.0
-            kind = tree_i[jid, 1]
-            x, y, z = tree_f[jid, 12], tree_f[jid, 13], tree_f[jid, 14]
-            if kind == 2:                                       # prismatic
-                for a in range(3):
-                    work[jid, _W_ORIGIN + a] += (work[jid, 3 * a] * x + work[jid, 3 * a + 1] * y
-                                                 + work[jid, 3 * a + 2] * z) * value
-            elif kind == 1:                                     # revolute: Rodrigues
-                c, sn = math.cos(value), math.sin(value)
-                t = 1.0 - c
-                l00, l01, l02 = c + x * x * t, x * y * t - z * sn, x * z * t + y * sn
-                l10, l11, l12 = y * x * t + z * sn, c + y * y * t, y * z * t - x * sn
-                l20, l21, l22 = z * x * t - y * sn, z * y * t + x * sn, c + z * z * t
-                for a in range(3):
-                    r0, r1, r2 = work[jid, 3 * a], work[jid, 3 * a + 1], work[jid, 3 * a + 2]
-                    work[jid, 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
-                    work[jid, 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
-                    work[jid, 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
-        for g in range(ng):
-            jid = gi[g, 0]
+                work[jid, _W_ORIGIN + a] += (work[jid, 3 * a] * x + work[jid, 3 * a + 1] * y
+                                             + work[jid, 3 * a + 2] * z) * value
+        elif kind == 1:                                     # revolute: Rodrigues
+            c, sn = math.cos(value), math.sin(value)
+            t = 1.0 - c
+            l00, l01, l02 = c + x * x * t, x * y * t - z * sn, x * z * t + y * sn
+            l10, l11, l12 = y * x * t + z * sn, c + y * y * t, y * z * t - x * sn
+            l20, l21, l22 = z * x * t - y * sn, z * y * t + x * sn, c + z * z * t
             for a in range(3):
-                work[nj + g, a] = (work[jid, _W_ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
-                                   + work[jid, 3 * a + 1] * geo[g, 1]
-                                   + work[jid, 3 * a + 2] * geo[g, 2])
-        count = 0
-        for k in range(pairs.shape[0]):
-            a, b = pairs[k, 0], pairs[k, 1]
-            dx = work[nj + a, 0] - work[nj + b, 0]
-            dy = work[nj + a, 1] - work[nj + b, 1]
-            dz = work[nj + a, 2] - work[nj + b, 2]
-            reach = geo[a, _G_RADIUS] + geo[b, _G_RADIUS] + CLEAR
-            if dx * dx + dy * dy + dz * dz > reach * reach:
+                r0, r1, r2 = work[jid, 3 * a], work[jid, 3 * a + 1], work[jid, 3 * a + 2]
+                work[jid, 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
+                work[jid, 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
+                work[jid, 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
+    for g in range(ng):
+        jid = gi[g, 0]
+        for a in range(3):
+            work[nj + g, a] = (work[jid, _W_ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
+                               + work[jid, 3 * a + 1] * geo[g, 1]
+                               + work[jid, 3 * a + 2] * geo[g, 2])
+    count = 0
+    for k in range(pairs.shape[0]):
+        a, b = pairs[k, 0], pairs[k, 1]
+        dx = work[nj + a, 0] - work[nj + b, 0]
+        dy = work[nj + a, 1] - work[nj + b, 1]
+        dz = work[nj + a, 2] - work[nj + b, 2]
+        reach = geo[a, _G_RADIUS] + geo[b, _G_RADIUS] + CLEAR
+        if dx * dx + dy * dy + dz * dz > reach * reach:
+            continue
+        if gi[b, 1] != 0:
+            _place_box(b, stamp, gi[b, 0], nj, geo, work)
+            if _sphere_box(work[nj + a, 0], work[nj + a, 1], work[nj + a, 2],
+                           geo[a, _G_RADIUS], b, nj, ng, geo, work) > CLEAR:
                 continue
-            if gi[b, 1] != 0:
-                _place_box(b, stamp, gi[b, 0], nj, geo, work)
-                if _sphere_box(work[nj + a, 0], work[nj + a, 1], work[nj + a, 2],
-                               geo[a, _G_RADIUS], b, nj, ng, geo, work) > CLEAR:
-                    continue
-            if gi[a, 1] != 0:
-                _place_box(a, stamp, gi[a, 0], nj, geo, work)
-                if _sphere_box(work[nj + b, 0], work[nj + b, 1], work[nj + b, 2],
-                               geo[b, _G_RADIUS], a, nj, ng, geo, work) > CLEAR:
-                    continue
-                if gi[b, 1] != 0 and _boxes_gap(a, b, nj, ng, geo, work) > CLEAR:
-                    continue
-            found[count] = k
-            count += 1
+        if gi[a, 1] != 0:
+            _place_box(a, stamp, gi[a, 0], nj, geo, work)
+            if _sphere_box(work[nj + b, 0], work[nj + b, 1], work[nj + b, 2],
+                           geo[b, _G_RADIUS], a, nj, ng, geo, work) > CLEAR:
+                continue
+            if gi[b, 1] != 0 and _boxes_gap(a, b, nj, ng, geo, work) > CLEAR:
+                continue
+        found[count] = k
+        count += 1
+    return count
+
+
+@_jit
+def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
+    """From row ``begin`` of ``states`` on, the first state at which some pairs are not
+    cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
+    every state clears every pair. A state that is not finite clears nothing."""
+    _reset(tree_i.shape[0], gi.shape[0], work)
+    for s in range(begin, states.shape[0]):
+        count = _uncleared(states[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
+        if count > 0:
+            return s, count
+    return -1, 0
+
+
+@_jit
+def _first_uncleared_on_line(rows, fractions, a, b, first, begin, tree_i, tree_f, gi, geo,  # type: ignore[no-untyped-def]
+                             pairs, work, found):
+    """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
+    values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
+    row ``s`` is written ``a + fractions[s] (b - a)`` there (``b`` itself at fraction 1)
+    before it is screened, so that a row returned holds its state."""
+    _reset(tree_i.shape[0], gi.shape[0], work)
+    n = a.shape[0]
+    for s in range(begin, rows.shape[0]):
+        f = fractions[s]
+        for i in range(n):
+            rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
+        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
         if count > 0:
             return s, count
     return -1, 0

@@ -129,3 +129,50 @@ def test_clear_states_never_reach_coal(panda_model: RobotModel) -> None:
     assert screen.first_in_collision(rows) == -1
     assert len(asked) < 5  # at most the states where a pair is within the volumes
     assert sum(asked) < scene.checker.pair_count
+
+
+def test_line_scan_is_the_scan_of_the_interpolated_rows(panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    screen = _screen(scene)
+    scan, line = screen.scanner(), screen.line_scanner()
+    arm = scene.robot.group("arm").joint_indices
+    first = int(arm[0])
+    assert np.array_equal(arm, np.arange(first, first + len(arm)))
+    rng = np.random.default_rng(8)
+    base = scene.state.copy()
+    hits = []
+    for _ in range(60):
+        a, b = (panda_model.random_state(rng)[arm] for _ in range(2))
+        fractions = np.concatenate([[1.0], rng.permutation(np.arange(1, 20)) / 20])
+        rows = np.repeat(base[None, :], len(fractions), axis=0)
+        for begin in (0, 1):
+            expected = rows.copy()
+            expected[:, first:first + len(arm)] = a + fractions[:, None] * (b - a)
+            expected[0, first:first + len(arm)] = b
+            hit = scan(np.ascontiguousarray(expected[begin:]))
+            want = hit if hit < 0 else begin + hit
+            got = line(rows, fractions, a, b, first, begin)
+            assert got == want
+            # The rows scanned hold their states (the one returned, and those before it).
+            stop = len(rows) if got < 0 else got + 1
+            assert np.array_equal(rows[begin:stop], expected[begin:stop])
+            hits.append(got)
+    assert any(h < 0 for h in hits) and any(h >= 0 for h in hits)
+
+
+def test_without_compiled_kinematics_the_scans_are_the_checkers(panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    screen = _screen(scene)
+    screen.supported = False  # as for a robot with joints the kernels do not cover
+    checker, to_pin = scene.checker, panda_model.to_pin
+    arm = scene.robot.group("arm").joint_indices
+    first = int(arm[0])
+    rng = np.random.default_rng(9)
+    fractions = np.concatenate([[1.0], np.arange(1, 12) / 12])
+    for _ in range(30):
+        a, b = (panda_model.random_state(rng)[arm] for _ in range(2))
+        rows = np.repeat(scene.state[None, :], len(fractions), axis=0)
+        got = screen.line_scanner()(rows, fractions, a, b, first, 1)
+        hit = checker.first_in_collision(to_pin(rows[1:]))
+        assert got == (hit if hit < 0 else hit + 1)
+        assert screen.scanner()(rows) == checker.first_in_collision(to_pin(rows))
