@@ -247,8 +247,9 @@ class MotionPlanner:
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
             # exact verification then finds: search again with a finer segment.
-            tried = replace(options, longest_valid_segment=options.longest_valid_segment
-                            / 2**refinement, seed=options.seed + 1000 * refinement)
+            tried = options if refinement == 0 else replace(
+                options, longest_valid_segment=options.longest_valid_segment / 2**refinement,
+                seed=options.seed + 1000 * refinement)
             if refinement and time.perf_counter() >= deadline:
                 assert failure is not None
                 raise PlanningTimeoutError(

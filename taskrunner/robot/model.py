@@ -272,7 +272,9 @@ class RobotModel:
     def mimic_follows(self, indices: Sequence[int] | np.ndarray) -> bool:
         """True if some mimic joint follows one of the state indices ``indices``,
         directly or through other mimic joints (moving them needs :meth:`apply_mimic`)."""
-        moved = {int(i) for i in indices}
+        if not self._mimic:
+            return False
+        moved = set(np.asarray(indices, dtype=int).reshape(-1).tolist())
         followed = False
         changed = True
         while changed:

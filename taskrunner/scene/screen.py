@@ -71,15 +71,18 @@ class StateScreen:
         geo_i, geo_f = verifier._geo_i, verifier._geo_f
         n = len(geo_i)
         self._gi = np.ascontiguousarray(geo_i[:, :2], dtype=np.int64)
+        # Each geometry's sphere centre and box in its joint's frame (the records give
+        # them in the geometry's own frame, and its placement on the joint).
+        rot = geo_f[:, sweep._GF_ROT:sweep._GF_ROT + 9].reshape(n, 3, 3)
+        trans = geo_f[:, sweep._GF_TRANS:sweep._GF_TRANS + 3]
         geo = np.zeros((n, _G_COLUMNS))
-        for g in range(n):
-            rot = geo_f[g, sweep._GF_ROT:sweep._GF_ROT + 9].reshape(3, 3)
-            trans = geo_f[g, sweep._GF_TRANS:sweep._GF_TRANS + 3]
-            geo[g, _G_CENTRE:_G_CENTRE + 3] = rot @ geo_f[g, sweep._GF_CENTRE:sweep._GF_CENTRE + 3] + trans
-            geo[g, _G_RADIUS] = geo_f[g, sweep._GF_RADIUS]
-            geo[g, _G_ROT:_G_ROT + 9] = rot.reshape(9)
-            geo[g, _G_BOX:_G_BOX + 3] = rot @ geo_f[g, sweep._GF_BOX:sweep._GF_BOX + 3] + trans
-            geo[g, _G_HALF:_G_HALF + 3] = geo_f[g, sweep._GF_HALF:sweep._GF_HALF + 3]
+        geo[:, _G_CENTRE:_G_CENTRE + 3] = np.einsum(
+            "gij,gj->gi", rot, geo_f[:, sweep._GF_CENTRE:sweep._GF_CENTRE + 3]) + trans
+        geo[:, _G_RADIUS] = geo_f[:, sweep._GF_RADIUS]
+        geo[:, _G_ROT:_G_ROT + 9] = rot.reshape(n, 9)
+        geo[:, _G_BOX:_G_BOX + 3] = np.einsum(
+            "gij,gj->gi", rot, geo_f[:, sweep._GF_BOX:sweep._GF_BOX + 3]) + trans
+        geo[:, _G_HALF:_G_HALF + 3] = geo_f[:, sweep._GF_HALF:sweep._GF_HALF + 3]
         self._geo = geo
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
