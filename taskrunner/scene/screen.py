@@ -25,10 +25,11 @@ the verifier's compiled kinematics cover (revolute, continuous, prismatic); for 
 from __future__ import annotations
 
 import math
-import threading
 from collections.abc import Callable
 
+import coal
 import numpy as np
+import pinocchio as pin
 
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
@@ -38,20 +39,84 @@ __all__ = ["CLEAR", "StateScreen", "warm_kernels"]
 
 CLEAR = 1e-6
 """m: a pair whose bounding volumes are farther apart than this is free at that state."""
+PROVEN = 1e-5
+"""m: a pair whose inner volumes overlap by more than this collides at that state (coal
+agrees without being asked: well beyond its 1 µm tolerance)."""
 
 # Columns of the per-geometry float rows (``geo``): the sphere's centre in its joint's frame
 # and radius; the box's axes (a rotation, row-major) and centre in the joint's frame and
 # half extents.
 _G_CENTRE, _G_RADIUS, _G_ROT, _G_BOX, _G_HALF = 0, 3, 4, 13, 16
-_G_COLUMNS = 19
-# Per-geometry int rows (``gi``): the joint, whether it has a box, whether it is fixed in
-# the world (joint 0: placed once).
-_I_JOINT, _I_BOX = 0, 1
+# ... and a sphere inside the geometry: its centre in the joint's frame and radius (0: none).
+_G_INNER, _G_INNER_RADIUS = 19, 22
+_G_COLUMNS = 23
+# Per-geometry int rows (``gi``): the joint, whether it has a box, whether the box is the
+# geometry itself (a box shape).
+_I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
 # Work rows: the joints' world frames (rotation, origin), then per geometry its sphere
 # centre (columns 0-2) and the state its box was last placed at (column 3), then per
 # geometry its box in the world (rotation, centre).
 _W_ROT, _W_ORIGIN = 0, 9
 _W_COLUMNS = 12
+
+
+_INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
+
+
+def _inner_sphere(geometry_object: pin.GeometryObject) -> tuple[float, float, float, float, float]:
+    """A sphere inside the geometry (centre in its frame, radius; radius 0: none known)
+    and 1.0 if the geometry is a box (its local bounding box is itself), else 0.0. Kept
+    per coal geometry (the robot's links are the same objects in every scene revision)."""
+    geometry = geometry_object.geometry
+    kept = _INNER.get(id(geometry))
+    if kept is not None and kept[0] is geometry:
+        return kept[1]
+    exact = 0.0
+    centre = np.zeros(3)
+    radius = 0.0
+    if isinstance(geometry, coal.Box):
+        exact = 1.0
+        radius = float(np.min(geometry.halfSide))
+    elif isinstance(geometry, coal.Sphere):
+        radius = float(geometry.radius)
+    elif isinstance(geometry, coal.Capsule):
+        radius = float(geometry.radius)
+    elif isinstance(geometry, coal.Cylinder):
+        radius = float(min(geometry.radius, geometry.halfLength))
+    elif isinstance(geometry, coal.Convex) and geometry.num_polygons > 0:
+        points = np.asarray(geometry.points(), dtype=float)
+        faces = np.array([[geometry.polygons(i)[k] for k in range(3)]
+                          for i in range(geometry.num_polygons)], dtype=np.int64)
+        centre = points.mean(axis=0)  # inside the hull of the points
+        p0, p1, p2 = points[faces[:, 0]], points[faces[:, 1]], points[faces[:, 2]]
+        normals = np.cross(p1 - p0, p2 - p0)
+        lengths = np.linalg.norm(normals, axis=1)
+        keep = lengths > 1e-12 * max(1.0, float(np.max(lengths, initial=0.0)))
+        if keep.any() and _closed(faces):
+            normals = normals[keep] / lengths[keep, None]
+            p0 = p0[keep]
+            # Outward normals (away from the centre); every point on or inside every face's
+            # plane: a closed convex hull, which holds the ball of radius the centre's
+            # smallest distance to a face plane.
+            offset = np.einsum("fi,fi->f", normals, centre - p0)
+            normals[offset > 0.0] *= -1.0
+            depth = np.abs(offset)
+            support = normals @ points.T - np.einsum("fi,fi->f", normals, p0)[:, None]
+            if float(support.max()) <= 1e-9 * max(1.0, float(np.abs(points).max())):
+                radius = float(depth.min())
+    radius = radius * (1.0 - 1e-9) if np.isfinite(radius) and radius > 0.0 else 0.0
+    found = (float(centre[0]), float(centre[1]), float(centre[2]), radius, exact)
+    if len(_INNER) > 4096:
+        _INNER.clear()
+    _INNER[id(geometry)] = (geometry, found)
+    return found
+
+
+def _closed(faces: np.ndarray) -> bool:
+    """True when every edge of the triangles ``faces`` is shared by exactly two of them."""
+    edges = np.sort(np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(len(counts)) and bool(np.all(counts == 2))
 
 
 class StateScreen:
@@ -70,7 +135,11 @@ class StateScreen:
         self._tree_i, self._tree_f = kin.tree_i, kin.tree_f
         geo_i, geo_f = verifier._geo_i, verifier._geo_f
         n = len(geo_i)
-        self._gi = np.ascontiguousarray(geo_i[:, :2], dtype=np.int64)
+        objects = verifier._geometry.geometryObjects
+        inner = np.array([_inner_sphere(objects[g]) for g in range(n)]).reshape(n, 5)
+        self._gi = np.zeros((n, 3), dtype=np.int64)
+        self._gi[:, :2] = geo_i[:, :2]
+        self._gi[:, _I_EXACT] = inner[:, 4]
         # Each geometry's sphere centre and box in its joint's frame (the records give
         # them in the geometry's own frame, and its placement on the joint).
         rot = geo_f[:, sweep._GF_ROT:sweep._GF_ROT + 9].reshape(n, 3, 3)
@@ -83,11 +152,12 @@ class StateScreen:
         geo[:, _G_BOX:_G_BOX + 3] = np.einsum(
             "gij,gj->gi", rot, geo_f[:, sweep._GF_BOX:sweep._GF_BOX + 3]) + trans
         geo[:, _G_HALF:_G_HALF + 3] = geo_f[:, sweep._GF_HALF:sweep._GF_HALF + 3]
+        placement = [objects[g].placement for g in range(n)]
+        geo[:, _G_INNER:_G_INNER + 3] = [placement[g].act(inner[g, :3]) for g in range(n)]
+        geo[:, _G_INNER_RADIUS] = inner[:, 3]
         self._geo = geo
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
-        self._lock = threading.Lock()
-        self._buffers = self._new_buffers()
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
         nj, ng = len(self._tree_i), len(self._gi)
@@ -112,7 +182,7 @@ class StateScreen:
                 row, count = kernel(states, begin, tree_i, tree_f, gi, geo, pairs, work, found)
                 if row < 0:
                     return -1
-                if collide(to_pin(states[row]), found[:count]):
+                if count < 0 or collide(to_pin(states[row]), found[:count]):
                     return int(row)
                 begin = row + 1
 
@@ -151,34 +221,21 @@ class StateScreen:
                                     geo, pairs, work, found)
                 if row < 0:
                     return -1
-                if collide(to_pin(rows[row]), found[:count]):
+                if count < 0 or collide(to_pin(rows[row]), found[:count]):
                     return int(row)
                 begin = row + 1
 
         return scan
 
     def first_in_collision(self, states: np.ndarray) -> int:
-        """The index of the first row of ``states`` (full state vectors, ``(n, nq)``,
-        C-contiguous floats) in collision, or -1."""
-        checker = self.checker
-        if not self.supported:
-            return checker.first_in_collision(self.robot.to_pin(states))
-        own = self._lock.acquire(blocking=False)         # else: a concurrent call
-        try:
-            work, found = self._buffers if own else self._new_buffers()
-            begin = 0
-            to_pin, collide = self.robot.to_pin, checker.pairs_collide
-            while True:
-                row, count = _first_uncleared(states, begin, self._tree_i, self._tree_f,
-                                              self._gi, self._geo, self._pairs, work, found)
-                if row < 0:
-                    return -1
-                if collide(to_pin(states[row]), found[:count]):
-                    return int(row)
-                begin = row + 1
-        finally:
-            if own:
-                self._lock.release()
+        """The index of the first row of ``states`` (full state vectors, ``(n, nq)``) in
+        collision, or -1."""
+        states = np.ascontiguousarray(states, dtype=float)
+        nq = self.robot.nq
+        if states.ndim != 2 or states.shape[1] != nq:
+            raise ValueError(f"states must be an (n, {nq}) array of full state vectors "
+                             f"(got shape {states.shape})")
+        return self.scanner()(states)
 
 
 def warm_kernels(verifier: PathVerifier, q: np.ndarray) -> None:
@@ -263,6 +320,41 @@ def _reset(nj, ng, work):  # type: ignore[no-untyped-def]
 
 
 @_inline
+def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
+    """True when geometries ``a`` and ``b`` surely overlap (by more than
+    :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
+    box where that box is the geometry (a box shape; placed already)."""
+    ra = geo[a, _G_INNER_RADIUS]
+    rb = geo[b, _G_INNER_RADIUS]
+    if ra <= 0.0 and rb <= 0.0:
+        return False
+    ja, jb = gi[a, _I_JOINT], gi[b, _I_JOINT]
+    ax = (work[ja, _W_ORIGIN] + work[ja, 0] * geo[a, _G_INNER] + work[ja, 1] * geo[a, _G_INNER + 1]
+          + work[ja, 2] * geo[a, _G_INNER + 2])
+    ay = (work[ja, _W_ORIGIN + 1] + work[ja, 3] * geo[a, _G_INNER]
+          + work[ja, 4] * geo[a, _G_INNER + 1] + work[ja, 5] * geo[a, _G_INNER + 2])
+    az = (work[ja, _W_ORIGIN + 2] + work[ja, 6] * geo[a, _G_INNER]
+          + work[ja, 7] * geo[a, _G_INNER + 1] + work[ja, 8] * geo[a, _G_INNER + 2])
+    bx = (work[jb, _W_ORIGIN] + work[jb, 0] * geo[b, _G_INNER] + work[jb, 1] * geo[b, _G_INNER + 1]
+          + work[jb, 2] * geo[b, _G_INNER + 2])
+    by = (work[jb, _W_ORIGIN + 1] + work[jb, 3] * geo[b, _G_INNER]
+          + work[jb, 4] * geo[b, _G_INNER + 1] + work[jb, 5] * geo[b, _G_INNER + 2])
+    bz = (work[jb, _W_ORIGIN + 2] + work[jb, 6] * geo[b, _G_INNER]
+          + work[jb, 7] * geo[b, _G_INNER + 1] + work[jb, 8] * geo[b, _G_INNER + 2])
+    if ra > 0.0 and rb > 0.0:
+        reach = ra + rb - PROVEN
+        if reach > 0.0 and (ax - bx) ** 2 + (ay - by) ** 2 + (az - bz) ** 2 < reach * reach:
+            return True
+    if ra > 0.0 and gi[b, _I_EXACT] != 0 and gi[b, _I_BOX] != 0:
+        if _sphere_box(ax, ay, az, ra, b, nj, ng, geo, work) < -PROVEN:
+            return True
+    if rb > 0.0 and gi[a, _I_EXACT] != 0 and gi[a, _I_BOX] != 0:
+        if _sphere_box(bx, by, bz, rb, a, nj, ng, geo, work) < -PROVEN:
+            return True
+    return False
+
+
+@_inline
 def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``); ``stamp``: a number of this state, new since :func:`_reset`."""
@@ -326,6 +418,8 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: 
                 continue
             if gi[b, 1] != 0 and _boxes_gap(a, b, nj, ng, geo, work) > CLEAR:
                 continue
+        if _proven(a, b, nj, ng, gi, geo, work):
+            return -1
         found[count] = k
         count += 1
     return count
@@ -339,7 +433,7 @@ def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, work, found)
     _reset(tree_i.shape[0], gi.shape[0], work)
     for s in range(begin, states.shape[0]):
         count = _uncleared(states[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
-        if count > 0:
+        if count != 0:
             return s, count
     return -1, 0
 
@@ -358,6 +452,6 @@ def _first_uncleared_on_line(rows, fractions, a, b, first, begin, tree_i, tree_f
         for i in range(n):
             rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
         count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
-        if count > 0:
+        if count != 0:
             return s, count
     return -1, 0
