@@ -29,7 +29,6 @@ from collections.abc import Callable
 
 import coal
 import numpy as np
-import pinocchio as pin
 
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
@@ -63,11 +62,10 @@ _W_COLUMNS = 12
 _INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
 
 
-def _inner_sphere(geometry_object: pin.GeometryObject) -> tuple[float, float, float, float, float]:
+def _inner_sphere(geometry: coal.CollisionGeometry) -> tuple[float, float, float, float, float]:
     """A sphere inside the geometry (centre in its frame, radius; radius 0: none known)
     and 1.0 if the geometry is a box (its local bounding box is itself), else 0.0. Kept
     per coal geometry (the robot's links are the same objects in every scene revision)."""
-    geometry = geometry_object.geometry
     kept = _INNER.get(id(geometry))
     if kept is not None and kept[0] is geometry:
         return kept[1]
@@ -136,7 +134,7 @@ class StateScreen:
         geo_i, geo_f = verifier._geo_i, verifier._geo_f
         n = len(geo_i)
         objects = verifier._geometry.geometryObjects
-        inner = np.array([_inner_sphere(objects[g]) for g in range(n)]).reshape(n, 5)
+        inner = np.array([_inner_sphere(objects[g].geometry) for g in range(n)]).reshape(n, 5)
         self._gi = np.zeros((n, 3), dtype=np.int64)
         self._gi[:, :2] = geo_i[:, :2]
         self._gi[:, _I_EXACT] = inner[:, 4]
@@ -152,8 +150,7 @@ class StateScreen:
         geo[:, _G_BOX:_G_BOX + 3] = np.einsum(
             "gij,gj->gi", rot, geo_f[:, sweep._GF_BOX:sweep._GF_BOX + 3]) + trans
         geo[:, _G_HALF:_G_HALF + 3] = geo_f[:, sweep._GF_HALF:sweep._GF_HALF + 3]
-        placement = [objects[g].placement for g in range(n)]
-        geo[:, _G_INNER:_G_INNER + 3] = [placement[g].act(inner[g, :3]) for g in range(n)]
+        geo[:, _G_INNER:_G_INNER + 3] = np.einsum("gij,gj->gi", rot, inner[:, :3]) + trans
         geo[:, _G_INNER_RADIUS] = inner[:, 3]
         self._geo = geo
         self._pairs = np.ascontiguousarray(
