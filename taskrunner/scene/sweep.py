@@ -42,12 +42,16 @@ stretch, the next one is optimistic, where the bound reaches ``(1 + GAIN) d`` (a
 ``margin``), since a pair's distance rarely falls as fast as its bound allows; if that
 one does not cover the gap with the last, measurements at ``d`` steps fill it from the
 left (each is covered whatever it measures: the walk always advances). Pairs due at
-nearby positions share one forward kinematics. A measurement is a lower bound on the
-distance: far pairs take a cheap one, computed in compiled code (bounding spheres,
-bounding boxes: see :func:`_lower_bound`); only below :data:`CHEAP_FROM` does
-the verifier ask coal for the exact distance of the scene checker's geometry. The walk
-runs compiled (numba, ``cache=True``: compiled once per machine), in one call until some
-pairs need coal's distance and again after each such round (:func:`_walk`). The robot's
+nearby positions share one forward kinematics (a geometry is placed only when a pair of
+it is measured). A measurement is a lower bound on the distance: far pairs take a cheap
+one, computed in compiled code (bounding spheres, bounding boxes: see
+:func:`_lower_bound`); below :data:`CHEAP_FROM`, a pair of boxes and convex hulls takes
+the separation of the shapes themselves along their boxes' face normals and a few
+directions of Gilbert's iteration (exact support functions: :func:`_support_bound`) when
+that is at least :data:`EXACT_FROM`; only otherwise does the verifier ask coal for the
+exact distance of the scene checker's geometry. The walk runs compiled (numba,
+``cache=True``: compiled once per machine), in one call until some pairs need coal's
+distance and again after each such round (:func:`_walk`). The robot's
 joint tree and the rows of its links' geometry (lever arms, bounding volumes) are kept per
 robot model, with those of primitive scene shapes, so that the verifier of a new scene
 revision builds only what changed.
@@ -85,7 +89,7 @@ import numba
 if not numba.config.CACHE_DIR:  # type: ignore[attr-defined]  # numba was imported first
     numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]  # type: ignore[attr-defined]
 
-__all__ = ["CHEAP_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms"]
+__all__ = ["CHEAP_FROM", "EXACT_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms"]
 
 _DISTANCE_SLACK = 1e-6  # m: GJK's distance tolerance; measured distances are reduced by it
 _EARLY = 0.25  # a pair due within this fraction of its step is measured with the others
@@ -100,6 +104,11 @@ _HAS_L, _PL, _DL, _HAS_R, _PR, _DR = range(6)
 _COLUMNS = 6
 _REVOLUTE, _PRISMATIC = 1, 2
 CHEAP_FROM = 0.01  # m: a pair whose cheap lower bound is at least this takes it, not coal's
+# m: below CHEAP_FROM, a pair of boxes and convex hulls takes the bound from their support
+# functions (:func:`_support_bound`) if it is at least this; coal's distance otherwise.
+EXACT_FROM = 0.001
+_SUPPORT_STEPS = 4  # at most this many directions refined by Gilbert's iteration
+_SUPPORT_TOLERANCE = 0.05  # ... until the bound is within this fraction of the distance
 
 
 def lever_arms(robot: RobotModel, geometry_model: pin.GeometryModel) -> np.ndarray:
@@ -132,7 +141,8 @@ class PathVerification:
             fraction of the next segment); None for a valid path.
         pair: the geometry names of that contact; None for a valid path.
         state: the full state vector there; None for a valid path.
-        bounds: cheap lower bounds taken instead of an exact distance (far pairs).
+        bounds: lower bounds taken instead of coal's exact distance (far pairs: bounding
+            volumes; closer pairs of boxes and convex hulls: their support functions).
     """
 
     valid: bool
@@ -178,7 +188,16 @@ class PathVerifier:
         count = len(records)
         self._geometry_names = [r.name for r in records]
         levers = np.array([r.levers for r in records]).reshape(count, nq)
-        self._geo_i = np.array([r.ints for r in records], dtype=np.int64).reshape(count, 2)
+        geo_i = np.zeros((count, 5), dtype=np.int64)
+        hulls = [r.points for r in records if r.points is not None]
+        self._points = np.ascontiguousarray(np.vstack(hulls)) if hulls else np.zeros((0, 3))
+        start = 0
+        for g, r in enumerate(records):
+            geo_i[g, :3] = r.ints
+            if r.points is not None:
+                geo_i[g, _GI_FROM], geo_i[g, _GI_COUNT] = start, len(r.points)
+                start += len(r.points)
+        self._geo_i = geo_i
         self._geo_f = np.array([r.floats for r in records]).reshape(count, _GF_COLUMNS)
         self._levers = levers
         pairs = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
@@ -195,6 +214,7 @@ class PathVerifier:
                               CHEAP_FROM if tree.supported else np.inf)
         self._settings[_S_PER_STATE] = 1.0 if tree.supported else 0.0
         self._settings[_S_BAD] = -1.0
+        self._settings[_S_EXACT_FROM] = EXACT_FROM
         self._busy = threading.Lock()
         self._buffers = self._new_buffers()
 
@@ -240,6 +260,20 @@ class PathVerifier:
         _lower_bounds(self._pair_i, self._geo_i, self._geo_f, frames, kin.tree_i.shape[0], out)
         return out
 
+    def support_bounds(self, q: np.ndarray) -> np.ndarray:
+        """Per pair, the bound on its distance (m) at state ``q`` that the verifier takes
+        from the shapes' support functions below :data:`CHEAP_FROM` (pairs of boxes and
+        convex hulls; ``-inf`` for other shapes or without compiled kinematics): where
+        positive, the pair is at least that far apart."""
+        out = np.full(len(self._first), -np.inf)
+        if not self._tree.supported:
+            return out
+        kin = self._kinematics
+        frames = kin.frames(np.asarray(q, dtype=float))
+        _support_bounds(self._pair_i, self._geo_i, self._geo_f, frames, self._points,
+                        kin.tree_i.shape[0], out)
+        return out
+
     def verify(self, states: np.ndarray) -> PathVerification:
         """Verify the polyline through full state vectors ``states`` (``(n, nq)``).
 
@@ -268,16 +302,16 @@ class PathVerifier:
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             kin = self._kinematics
-            walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._pair_i,
-                      self._pair_levers, states, cumulative, frames, walk, schedule,
-                      selected, distances, q, settings)
+            walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._points,
+                      self._pair_i, self._pair_levers, states, cumulative, frames, walk,
+                      schedule, selected, distances, q, settings)
             queries = evaluated = 0
+            pair_distances, to_pin = self._checker.pair_distances, self.robot.to_pin
             while True:
                 count = _walk(*walked)
                 if count <= 0:
                     break
-                self._checker.pair_distances(self.robot.to_pin(q), selected[:count],
-                                             distances)
+                pair_distances(to_pin(q), selected[:count].tolist(), distances)
                 evaluated += 1
                 queries += count
             if count == _NOT_FINITE:
@@ -307,9 +341,12 @@ class PathVerifier:
 # Columns of the packed arrays the kernels read (one row per joint, geometry or pair).
 _TI_PARENT, _TI_KIND, _TI_STATE = range(3)                    # tree_i (n_joints, 3)
 _TF_ROT, _TF_TRANS, _TF_AXIS = 0, 9, 12                       # tree_f (n_joints, 15)
-_GI_JOINT, _GI_BOX = range(2)                                 # geo_i (n_geometries, 2)
-_GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX = 0, 9, 12, 15, 16, 19
-_GF_COLUMNS = 22                                              # geo_f (n_geometries, 22)
+# geo_i (n_geometries, 5): joint, has a bounding box, shape (_SHAPE_*), its first vertex
+# in the verifier's points and their count (a hull).
+_GI_JOINT, _GI_BOX, _GI_SHAPE, _GI_FROM, _GI_COUNT = range(5)
+_SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL = 0, 1, 2
+_GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX, _GF_SWEPT = 0, 9, 12, 15, 16, 19, 22
+_GF_COLUMNS = 23                                              # geo_f (n_geometries, 23)
 # pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
 # such joint (deepest first): its state index, code, the geometry it moves, its joint id.
 _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
@@ -324,7 +361,8 @@ _FR_COLUMNS = 19
 # distances pending (count, position); per-state lever arms; the contact (index into the
 # selected pairs) or the first state that is not finite; the walk started.
 _S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD, _S_STARTED = 5, 6, 7, 8, 9, 10, 11
-_S_COUNT = 12
+_S_EXACT_FROM, _S_SUPPORTS = 12, 13  # below CHEAP_FROM, coal's distance below this; bounds so
+_S_COUNT = 14
 _NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
 
 
@@ -334,8 +372,9 @@ class _Record:
 
     name: str
     levers: np.ndarray
-    ints: tuple[int, int]
+    ints: tuple[int, int, int]
     floats: np.ndarray
+    points: np.ndarray | None = None
 
 
 class _Tree:
@@ -437,8 +476,8 @@ class _Tree:
         kept = self._records.get(key)
         if kept is not None:
             record = kept[1]
-            return record if record.name == name else _Record(name, record.levers,
-                                                              record.ints, record.floats)
+            return record if record.name == name else _Record(name, record.levers, record.ints,
+                                                              record.floats, record.points)
         record = self._build_record(geometry_object)
         if len(self._records) > 4096:
             self._records.clear()
@@ -461,8 +500,23 @@ class _Tree:
         if has_box:
             floats[_GF_HALF:_GF_HALF + 3] = 0.5 * (high - low)
             floats[_GF_BOX:_GF_BOX + 3] = 0.5 * (high + low)
+        # Shapes whose support function the kernels evaluate exactly: a box (its bounding
+        # box is itself) and a convex hull (its vertices); inflated by a swept sphere.
+        shape, points = _SHAPE_NONE, None
+        swept = float(geometry.getSweptSphereRadius()) \
+            if hasattr(geometry, "getSweptSphereRadius") else 0.0
+        if type(geometry) is coal.Box and has_box:
+            shape = _SHAPE_BOX
+        elif isinstance(geometry, coal.ConvexBase):
+            vertices = np.asarray(geometry.points(), dtype=float)
+            if vertices.ndim == 2 and vertices.shape[1] == 3 and len(vertices) \
+                    and np.isfinite(vertices).all():
+                shape, points = _SHAPE_HULL, np.ascontiguousarray(vertices)
+        floats[_GF_SWEPT] = swept if math.isfinite(swept) and swept >= 0.0 else 0.0
+        if not (math.isfinite(swept) and swept >= 0.0):
+            shape = _SHAPE_NONE
         return _Record(geometry_object.name, levers,
-                       (int(geometry_object.parentJoint), int(has_box)), floats)
+                       (int(geometry_object.parentJoint), int(has_box), shape), floats, points)
 
 
 def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:
@@ -742,6 +796,115 @@ def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
 
 
 @_inline
+def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
+    """The point of geometry ``g`` (a box or a convex hull, see ``_SHAPE_*``; swept sphere
+    left out) furthest along the world direction ``(dx, dy, dz)``."""
+    row = nj + g
+    # The direction in the geometry's frame (its rotation's columns are its axes).
+    lx = frames[row, 0] * dx + frames[row, 3] * dy + frames[row, 6] * dz
+    ly = frames[row, 1] * dx + frames[row, 4] * dy + frames[row, 7] * dz
+    lz = frames[row, 2] * dx + frames[row, 5] * dy + frames[row, 8] * dz
+    if geo_i[g, _GI_SHAPE] == _SHAPE_BOX:
+        px = geo_f[g, _GF_HALF] if lx >= 0.0 else -geo_f[g, _GF_HALF]
+        py = geo_f[g, _GF_HALF + 1] if ly >= 0.0 else -geo_f[g, _GF_HALF + 1]
+        pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
+        ox, oy, oz = frames[row, _FR_BOX], frames[row, _FR_BOX + 1], frames[row, _FR_BOX + 2]
+    else:
+        first = geo_i[g, _GI_FROM]
+        best = -np.inf
+        px = py = pz = 0.0
+        for v in range(first, first + geo_i[g, _GI_COUNT]):
+            value = points[v, 0] * lx + points[v, 1] * ly + points[v, 2] * lz
+            if value > best:
+                best = value
+                px, py, pz = points[v, 0], points[v, 1], points[v, 2]
+        ox, oy, oz = (frames[row, _FR_ORIGIN], frames[row, _FR_ORIGIN + 1],
+                      frames[row, _FR_ORIGIN + 2])
+    return (ox + frames[row, 0] * px + frames[row, 1] * py + frames[row, 2] * pz,
+            oy + frames[row, 3] * px + frames[row, 4] * py + frames[row, 5] * pz,
+            oz + frames[row, 6] * px + frames[row, 7] * py + frames[row, 8] * pz)
+
+
+@_inline
+def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
+    """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
+    their support functions (boxes and convex hulls; -inf for other shapes).
+
+    For any unit direction ``n``, ``min over a of n.a - max over b of n.b`` is at most
+    their distance (they are separated by at least that along ``n``); the points are the
+    shapes' own (a box's corners, a hull's vertices), so the bound is exact for the
+    direction. The directions tried: the face normals of the boxes among them, then the
+    best of those refined by Gilbert's iteration on the difference ``A - B`` (its point
+    closest to the origin, approached over segments), until the bound is within
+    ``_SUPPORT_TOLERANCE`` of the distance estimate or after ``_SUPPORT_STEPS``. Each swept
+    sphere radius is subtracted."""
+    if geo_i[a, _GI_SHAPE] == _SHAPE_NONE or geo_i[b, _GI_SHAPE] == _SHAPE_NONE:
+        return -np.inf
+    ra, rb = nj + a, nj + b
+    swept = geo_f[a, _GF_SWEPT] + geo_f[b, _GF_SWEPT]
+    best = -np.inf
+    # A point of A - B to start from: along the centres' offset.
+    nx = frames[rb, _FR_CENTRE] - frames[ra, _FR_CENTRE]
+    ny = frames[rb, _FR_CENTRE + 1] - frames[ra, _FR_CENTRE + 1]
+    nz = frames[rb, _FR_CENTRE + 2] - frames[ra, _FR_CENTRE + 2]
+    # Face normals of the boxes (pointing from A to B), and the offset itself.
+    for side in range(3):
+        for axis in range(4):
+            if side < 2:
+                if axis == 3:
+                    continue
+                owner = ra if side == 0 else rb
+                if geo_i[owner - nj, _GI_SHAPE] != _SHAPE_BOX:
+                    continue
+                ux, uy, uz = frames[owner, axis], frames[owner, 3 + axis], frames[owner, 6 + axis]
+                if ux * nx + uy * ny + uz * nz < 0.0:
+                    ux, uy, uz = -ux, -uy, -uz
+            else:
+                if axis > 0:
+                    break
+                length = math.sqrt(nx * nx + ny * ny + nz * nz)
+                if not length > 0.0:
+                    continue
+                ux, uy, uz = nx / length, ny / length, nz / length
+            # Separation along u: min over B of u.b - max over A of u.a.
+            ax, ay, az = _support(a, ux, uy, uz, geo_i, geo_f, frames, points, nj)
+            bx, by, bz = _support(b, -ux, -uy, -uz, geo_i, geo_f, frames, points, nj)
+            gap = (bx - ax) * ux + (by - ay) * uy + (bz - az) * uz
+            if gap > best:
+                best = gap
+                nx, ny, nz = ux, uy, uz
+    # Gilbert: v, a point of B - A, moves towards the origin's nearest; -v/|v| directions.
+    ax, ay, az = _support(a, nx, ny, nz, geo_i, geo_f, frames, points, nj)
+    bx, by, bz = _support(b, -nx, -ny, -nz, geo_i, geo_f, frames, points, nj)
+    vx, vy, vz = bx - ax, by - ay, bz - az
+    for _ in range(_SUPPORT_STEPS):
+        length = math.sqrt(vx * vx + vy * vy + vz * vz)
+        if not length > 0.0:
+            break
+        ux, uy, uz = vx / length, vy / length, vz / length
+        ax, ay, az = _support(a, ux, uy, uz, geo_i, geo_f, frames, points, nj)
+        bx, by, bz = _support(b, -ux, -uy, -uz, geo_i, geo_f, frames, points, nj)
+        wx, wy, wz = bx - ax, by - ay, bz - az
+        gap = wx * ux + wy * uy + wz * uz
+        if gap > best:
+            best = gap
+        if length - gap <= _SUPPORT_TOLERANCE * length:
+            break
+        # The point of the segment [v, w] nearest the origin.
+        dx, dy, dz = wx - vx, wy - vy, wz - vz
+        dd = dx * dx + dy * dy + dz * dz
+        if not dd > 0.0:
+            break
+        t = -(vx * dx + vy * dy + vz * dz) / dd
+        if t <= 0.0:
+            break
+        if t > 1.0:
+            t = 1.0
+        vx, vy, vz = vx + t * dx, vy + t * dy, vz + t * dz
+    return best - swept
+
+
+@_inline
 def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
     """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
     for the joints that count): for a revolute joint, the distance from its axis to the
@@ -975,8 +1138,8 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
 
 
 @_jit
-def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative, frames,  # type: ignore[no-untyped-def]
-          walk, schedule, selected, distances, q, settings):
+def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cumulative,  # type: ignore[no-untyped-def]
+          frames, walk, schedule, selected, distances, q, settings):
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -1010,6 +1173,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
     c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
+    exact_from = settings[_S_EXACT_FROM]
     slack = settings[1]
     # First the exact distances the caller measured (if any), then on along the path; one
     # loop, so that the measurement's code is compiled once.
@@ -1046,9 +1210,14 @@ def _walk(tree_i, tree_f, geo_i, geo_f, pair_i, pair_levers, states, cumulative,
                     _place(b, geo_i, geo_f, frames, nj, stamp)
                 d = _lower_bound(a, b, geo_i, geo_f, frames, nj)
                 if d < cheap_from or not d > 0.0:
-                    selected[exact] = k
-                    exact += 1
-                    continue
+                    bound = _support_bound(a, b, geo_i, geo_f, frames, points, nj)
+                    if bound > d:
+                        d = bound
+                    if not (bound > -np.inf and d >= exact_from):
+                        selected[exact] = k
+                        exact += 1
+                        continue
+                    settings[_S_SUPPORTS] += 1.0
                 settings[_S_BOUNDS] += 1.0
             _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule,
                      c0, settings)
@@ -1077,6 +1246,14 @@ def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-unt
     for k in range(pair_i.shape[0]):
         out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
                               frames, nj)
+
+
+@_jit
+def _support_bounds(pair_i, geo_i, geo_f, frames, points, nj, out):  # type: ignore[no-untyped-def]
+    """Per pair, :func:`_support_bound` at the state of ``frames``."""
+    for k in range(pair_i.shape[0]):
+        out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+                                frames, points, nj)
 
 
 @_jit

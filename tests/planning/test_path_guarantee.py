@@ -310,6 +310,40 @@ def test_cheap_lower_bounds_never_exceed_the_distance(panda_model):
     assert useful > 0
 
 
+def test_support_bounds_never_exceed_the_distance_and_are_tight_near_faces(panda_model):
+    # Boxes at random poses around the arm; the Panda's links are convex hulls (and its
+    # fingers' pads boxes): every pair of them gets a support bound, to compare with coal.
+    rng = np.random.default_rng(11)
+    scene = Scene(panda_model)
+    for i in range(6):
+        size = tuple(rng.uniform(0.02, 0.4, 3))
+        centre = np.array([rng.uniform(-0.6, 0.7), rng.uniform(-0.6, 0.6), rng.uniform(0.0, 0.9)])
+        scene.add_object(f"box{i}", Box(size), Pose.from_se3(pin.SE3(
+            pin.rpy.rpyToMatrix(*rng.uniform(-np.pi, np.pi, 3)), centre)))
+    robot = scene.robot
+    verifier = PathVerifier(robot, scene.checker)
+    geometry = scene.checker.geometry_model
+    data, geometry_data = robot.model.createData(), geometry.createData()
+    supported = close = tight = useful = 0
+    for _ in range(60):
+        q = robot.random_state(rng)
+        bounds = verifier.support_bounds(q)
+        pin.computeDistances(robot.model, data, geometry, geometry_data, robot.to_pin(q))
+        exact = np.array([r.min_distance for r in geometry_data.distanceResults])
+        finite = np.isfinite(bounds)
+        supported += int(finite.sum())
+        assert np.all(bounds[finite] <= exact[finite] + 1e-9)
+        near = finite & (exact > 0.0) & (exact < 0.05)
+        close += int(near.sum())
+        tight += int(np.sum(bounds[near] >= 0.9 * exact[near]))
+        useful += int(np.sum(bounds[near] >= 0.5 * exact[near]))
+    assert supported > 1000 and close > 20
+    print(f"support bounds near (< 5 cm): {close}, within 10 %: {tight}, within half: {useful}")
+    # Random poses: often a corner or an edge is nearest, where the directions tried fall
+    # short; face contacts (a link over a shelf or a wall) come out exact.
+    assert tight > 0.25 * close and useful > 0.5 * close
+
+
 def test_verifier_names_a_bad_state(panda_model):
     scene = Scene(panda_model)
     verifier = PathVerifier(scene.robot, scene.checker)
