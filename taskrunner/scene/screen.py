@@ -170,18 +170,12 @@ class StateScreen:
             first = checker.first_in_collision
             return lambda states: first(to_pin(states))
         work, found = self._new_buffers()
-        tree_i, tree_f, gi, geo, pairs = self._tree_i, self._tree_f, self._gi, self._geo, self._pairs
-        kernel, collide = _first_uncleared, checker.pairs_collide
+        tail = (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, work, found)
+        collide = checker.pairs_collide
 
         def scan(states: np.ndarray) -> int:
-            begin = 0
-            while True:
-                row, count = kernel(states, begin, tree_i, tree_f, gi, geo, pairs, work, found)
-                if row < 0:
-                    return -1
-                if count < 0 or collide(to_pin(states[row]), found[:count]):
-                    return int(row)
-                begin = row + 1
+            return _until_collision(_first_uncleared, (states,), 0, tail, states, found,
+                                    collide, to_pin)
 
         return scan
 
@@ -208,19 +202,13 @@ class StateScreen:
 
             return interpolated
         work, found = self._new_buffers()
-        tree_i, tree_f, gi, geo, pairs = self._tree_i, self._tree_f, self._gi, self._geo, self._pairs
-        kernel, collide = _first_uncleared_on_line, checker.pairs_collide
+        tail = (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, work, found)
+        collide = checker.pairs_collide
 
         def scan(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray, b: np.ndarray,
                  first: int, begin: int) -> int:
-            while True:
-                row, count = kernel(rows, fractions, a, b, first, begin, tree_i, tree_f, gi,
-                                    geo, pairs, work, found)
-                if row < 0:
-                    return -1
-                if count < 0 or collide(to_pin(rows[row]), found[:count]):
-                    return int(row)
-                begin = row + 1
+            return _until_collision(_first_uncleared_on_line, (rows, fractions, a, b, first),
+                                    begin, tail, rows, found, collide, to_pin)
 
         return scan
 
@@ -233,6 +221,22 @@ class StateScreen:
             raise ValueError(f"states must be an (n, {nq}) array of full state vectors "
                              f"(got shape {states.shape})")
         return self.scanner()(states)
+
+
+def _until_collision(kernel: Callable[..., tuple[int, int]], head: tuple[object, ...], begin: int,
+                     tail: tuple[object, ...], rows: np.ndarray, found: np.ndarray,
+                     collide: Callable[[np.ndarray, np.ndarray], bool],
+                     to_pin: Callable[[np.ndarray], np.ndarray]) -> int:
+    """Run ``kernel(*head, begin, *tail)`` from row ``begin`` on, asking coal about the
+    pairs it leaves at each row it stops at, until a row is in collision (its index) or
+    none is (-1)."""
+    while True:
+        row, count = kernel(*head, begin, *tail)
+        if row < 0:
+            return -1
+        if count < 0 or collide(to_pin(rows[row]), found[:count]):
+            return int(row)
+        begin = row + 1
 
 
 def warm_kernels(verifier: PathVerifier, q: np.ndarray) -> None:
@@ -317,6 +321,15 @@ def _reset(nj, ng, work):  # type: ignore[no-untyped-def]
 
 
 @_inline
+def _inner_centre(g, jid, geo, work):  # type: ignore[no-untyped-def]
+    """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed)."""
+    x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
+    return (work[jid, _W_ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
+            work[jid, _W_ORIGIN + 1] + work[jid, 3] * x + work[jid, 4] * y + work[jid, 5] * z,
+            work[jid, _W_ORIGIN + 2] + work[jid, 6] * x + work[jid, 7] * y + work[jid, 8] * z)
+
+
+@_inline
 def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     """True when geometries ``a`` and ``b`` surely overlap (by more than
     :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
@@ -325,19 +338,8 @@ def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     rb = geo[b, _G_INNER_RADIUS]
     if ra <= 0.0 and rb <= 0.0:
         return False
-    ja, jb = gi[a, _I_JOINT], gi[b, _I_JOINT]
-    ax = (work[ja, _W_ORIGIN] + work[ja, 0] * geo[a, _G_INNER] + work[ja, 1] * geo[a, _G_INNER + 1]
-          + work[ja, 2] * geo[a, _G_INNER + 2])
-    ay = (work[ja, _W_ORIGIN + 1] + work[ja, 3] * geo[a, _G_INNER]
-          + work[ja, 4] * geo[a, _G_INNER + 1] + work[ja, 5] * geo[a, _G_INNER + 2])
-    az = (work[ja, _W_ORIGIN + 2] + work[ja, 6] * geo[a, _G_INNER]
-          + work[ja, 7] * geo[a, _G_INNER + 1] + work[ja, 8] * geo[a, _G_INNER + 2])
-    bx = (work[jb, _W_ORIGIN] + work[jb, 0] * geo[b, _G_INNER] + work[jb, 1] * geo[b, _G_INNER + 1]
-          + work[jb, 2] * geo[b, _G_INNER + 2])
-    by = (work[jb, _W_ORIGIN + 1] + work[jb, 3] * geo[b, _G_INNER]
-          + work[jb, 4] * geo[b, _G_INNER + 1] + work[jb, 5] * geo[b, _G_INNER + 2])
-    bz = (work[jb, _W_ORIGIN + 2] + work[jb, 6] * geo[b, _G_INNER]
-          + work[jb, 7] * geo[b, _G_INNER + 1] + work[jb, 8] * geo[b, _G_INNER + 2])
+    ax, ay, az = _inner_centre(a, gi[a, _I_JOINT], geo, work)
+    bx, by, bz = _inner_centre(b, gi[b, _I_JOINT], geo, work)
     if ra > 0.0 and rb > 0.0:
         reach = ra + rb - PROVEN
         if reach > 0.0 and (ax - bx) ** 2 + (ay - by) ** 2 + (az - bz) ** 2 < reach * reach:
