@@ -25,20 +25,45 @@ import weakref
 from dataclasses import replace
 from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from taskrunner.errors import PlanningError, TaskrunnerError
-from taskrunner.planning.request import PlanRequest, PlanResult
+from taskrunner.planning.request import JointGoal, PlanRequest, PlanResult
 from taskrunner.processes import start_ignoring_sigint
 from taskrunner.scene import Scene
 
-__all__ = ["PlanHandle", "PlanningWorker", "WorkerDiedError"]
+if TYPE_CHECKING:
+    from taskrunner.planning.planner import MotionPlanner
+
+__all__ = ["PlanHandle", "PlanningWorker", "WorkerDiedError", "stays"]
 
 _NO_CANCEL = -1
 
 
 class WorkerDiedError(PlanningError):
     """The planning worker process ended while a request was in flight."""
+
+
+def stays(scene: Scene, request: PlanRequest) -> bool:
+    """Whether ``request`` asks for no motion and no timing: its goals are all joint
+    goals, one of them equal to its start state (default: the scene's), and it asks for
+    no timed path. The planner answers such a request from its checks of the start and
+    the goals alone (limits, collisions): no search, no path verification, no toppra."""
+    if request.timing is not None or not all(isinstance(g, JointGoal) for g in request.goals):
+        return False
+    start = scene.state if request.start is None else np.asarray(request.start, dtype=float)
+    model = scene.robot
+    for goal in request.goals:
+        assert isinstance(goal, JointGoal)
+        try:
+            q = model.state_with(start, goal.values)
+        except (TaskrunnerError, IndexError, ValueError):
+            return False  # the worker's planner says what is wrong
+        if q.shape == start.shape and float(np.max(np.abs(q - start))) < 1e-9:
+            return True
+    return False
 
 
 _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its verifier
@@ -164,7 +189,13 @@ class PlanningWorker:
 
     One request is in flight at a time; :meth:`submit` while one is running waits for it.
     Use several workers for parallel planning. Close with :meth:`close` or a ``with``.
+
+    A request to stay where the group is (:func:`stays`) is answered in the caller's
+    process, by the same planner on the caller's scene: it needs no search and no path
+    verification, so it does not wait for the worker to load or warm up.
     """
+
+    _stays_here: tuple[Scene, MotionPlanner] | None = None
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
                  wait_ready: bool = True, nice: int = 0,
@@ -249,6 +280,8 @@ class PlanningWorker:
         with self._lock:
             if self._pending is not None:
                 self._collect(self._pending, timeout=None)
+            if stays(scene, request):
+                return self._answer_here(scene, request)
             self._await_ready(self._start_timeout)
             if not self._process.is_alive():
                 self._start(self._start_timeout)
@@ -290,6 +323,23 @@ class PlanningWorker:
         self.close()
 
     # ------------------------------------------------------------------ internals
+    def _answer_here(self, scene: Scene, request: PlanRequest) -> PlanHandle:
+        """Plan a request that stays (:func:`stays`) in this process, on ``scene``: a
+        handle answered already."""
+        from taskrunner.planning.planner import MotionPlanner
+
+        here = self._stays_here
+        if here is None or here[0] is not scene:
+            here = self._stays_here = (scene, MotionPlanner(scene))
+        if request.start is None:
+            request = replace(request, start=scene.state)
+        handle = PlanHandle(self, next(self._ids))
+        try:
+            handle._outcome = ("ok", here[1].plan(request))
+        except TaskrunnerError as exc:
+            handle._outcome = ("error", exc)
+        return handle
+
     def _send(self, handle: PlanHandle, scene: Scene, key: tuple[int, int],
               request: PlanRequest) -> None:
         snapshot = scene.snapshot() if key != self._sent_scene else None
