@@ -4,6 +4,8 @@
                                       [--problems P,Q] [--repeats N]
     python benchmarks/verify_bench.py --moveit benchmarks/problems [--classes C,D]
                                       [--per-class N] [--baseline REV] [--fine] [--json]
+    python benchmarks/verify_bench.py --planner-paths benchmarks/problems [--classes C,D]
+                                      [--per-class N] [--baseline REV] [--repeats N] [--json]
 
 Collects the paths the planner returns (RRTConnect, seeded) on the thin-plate scenes of
 ``tests/planning/test_path_guarantee.py`` (a 1-3 mm plate across the straight line from the
@@ -40,6 +42,16 @@ by 1 cm (a new scene revision, so a new collision checker), then ``PathVerifier(
 checker)`` built (the checker's own build not timed); the current code keeps the robot's
 rows between builds, as it does between a scene's revisions. ``--fine`` re-checks accepted
 paths at 0.1 mm as above (slow).
+
+``--planner-paths DIR`` takes the same problem sets and records every path the planner
+verifies while planning each problem (``MotionPlanner(scene).plan(request)``, seed = problem
+index, timing off: the returned path and the shortcut candidates it checked, rejected ones
+included), then verifies each recorded path with the current verifier and the baseline's,
+interleaved (alternating which goes first), ``--repeats`` times each, and reports per class
+the median CPU time (``time.process_time``; the median of the repeats per path, then the
+median over paths), the compiled walk's calls (:func:`taskrunner.scene.sweep._walk`: one
+more than the rounds of exact distances) and coal's distance queries per path, the
+rejections of each and the verdicts that differ, with the load average along the run.
 
 Output: a table per class (paths, median and p90 ms per path, median distance queries, old
 and new), and with ``--json`` one JSON line at the end.
@@ -410,6 +422,113 @@ def run_moveit(args: argparse.Namespace) -> dict:
             "seed": args.seed, "baseline": args.baseline, "moveit": table}
 
 
+def run_planner_paths(args: argparse.Namespace) -> dict:
+    """Every path the planner verified on the MoveIt problems, current verifier against the
+    baseline's, interleaved, CPU time per path."""
+    from taskrunner.moveit import load_motion_plan_request, load_planning_scene
+    from taskrunner.resources import DATA_ROOT
+    from taskrunner.robot import load_robot
+    from taskrunner.scene import sweep
+
+    baseline = load_baseline(args.baseline)
+    if baseline is None:
+        raise SystemExit(f"cannot read taskrunner/scene/sweep.py at {args.baseline!r}")
+    modules = {"new": sweep, "old": baseline}
+    folder = Path(args.planner_paths)
+    robot = load_robot(DATA_ROOT / "robots" / "panda")
+    base = Scene(robot)
+    recorded: list[np.ndarray] = []
+    verify = sweep.PathVerifier.verify
+
+    def recording(verifier: PathVerifier, states: np.ndarray) -> Any:
+        recorded.append(np.array(states, dtype=float))
+        return verify(verifier, states)
+
+    loads = [os.getloadavg()[0]]
+    table = []
+    for cls in args.classes.split(","):
+        rows: list[dict[str, Any]] = []
+        for i in range(args.per_class):
+            stem = f"{i + 1:04d}"
+            if not (folder / cls / f"{stem}_scene.yaml").exists():
+                raise SystemExit(f"error: {folder / cls / stem}_scene.yaml is missing "
+                                 f"(python benchmarks/make_problems.py)")
+            scene = base.copy()
+            load_planning_scene(folder / cls / f"{stem}_scene.yaml", robot).apply(scene)
+            request_file = load_motion_plan_request(folder / cls / f"{stem}_request.yaml", robot)
+            request_file.apply_start(scene)
+            request = request_file.plan_request(scene, seed=i, timing=False)
+            recorded.clear()
+            sweep.PathVerifier.verify = recording  # type: ignore[method-assign]
+            try:
+                MotionPlanner(scene).plan(request)
+            except PlanningError:
+                pass
+            finally:
+                sweep.PathVerifier.verify = verify  # type: ignore[method-assign]
+            checker = scene.checker
+            verifiers = {name: module.PathVerifier(robot, checker) for name, module in modules.items()}
+            for n, states in enumerate(list(recorded)):
+                row: dict[str, Any] = {}
+                for name, module in modules.items():      # counts (not timed)
+                    walk, calls = module._walk, [0]
+
+                    def counted(*walked: Any, _walk: Any = walk, _calls: list = calls) -> Any:
+                        _calls[0] += 1
+                        return _walk(*walked)
+
+                    module._walk = counted
+                    try:
+                        verdict = verifiers[name].verify(states)
+                    finally:
+                        module._walk = walk
+                    row[f"{name}_walks"] = calls[0]
+                    row[f"{name}_queries"] = verdict.distance_queries
+                    row[f"{name}_valid"] = bool(verdict.valid)
+                times: dict[str, list[float]] = {"new": [], "old": []}
+                order = ["new", "old"] if (i + n) % 2 == 0 else ["old", "new"]
+                for _ in range(args.repeats):
+                    for name in order:
+                        t0 = time.process_time()
+                        verifiers[name].verify(states)
+                        times[name].append(time.process_time() - t0)
+                    order.reverse()
+                for name, values in times.items():
+                    row[f"{name}_us"] = float(np.median(values)) * 1e6
+                rows.append(row)
+            loads.append(os.getloadavg()[0])
+        entry: dict[str, Any] = {"cls": cls, "paths": len(rows)}
+        for name in ("new", "old"):
+            entry[f"{name}_cpu_us_median"] = round(float(np.median([r[f"{name}_us"] for r in rows])), 1) \
+                if rows else None
+            for key in ("walks", "queries"):
+                entry[f"{name}_{key}_mean"] = round(float(np.mean([r[f"{name}_{key}"] for r in rows])), 2) \
+                    if rows else None
+            entry[f"{name}_rejected"] = sum(not r[f"{name}_valid"] for r in rows)
+        entry["verdicts_differ"] = sum(r["new_valid"] != r["old_valid"] for r in rows)
+        table.append(entry)
+    return {"machine": f"{platform.node()} {platform.processor() or platform.machine()}, "
+                       f"{os.cpu_count()} cores",
+            "load_min": min(loads), "load_max": max(loads),
+            "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+            "baseline": args.baseline, "repeats": args.repeats, "planner_paths": table}
+
+
+def print_planner_paths(report: dict) -> None:
+    print(f"{'class':<18}{'paths':>6}{'old us':>9}{'new us':>9}{'ratio':>7}{'walks old':>10}"
+          f"{'new':>6}{'queries old':>12}{'new':>6}{'rejected old':>13}{'new':>5}{'differ':>7}")
+    for e in report["planner_paths"]:
+        if not e["paths"]:
+            continue
+        print(f"{e['cls']:<18}{e['paths']:>6}{e['old_cpu_us_median']:>9.0f}{e['new_cpu_us_median']:>9.0f}"
+              f"{e['new_cpu_us_median'] / e['old_cpu_us_median']:>7.2f}{e['old_walks_mean']:>10.1f}"
+              f"{e['new_walks_mean']:>6.1f}{e['old_queries_mean']:>12.1f}{e['new_queries_mean']:>6.1f}"
+              f"{e['old_rejected']:>13}{e['new_rejected']:>5}{e['verdicts_differ']:>7}")
+    print(f"machine {report['machine']}, load {report['load_min']:.2f}-{report['load_max']:.2f}, "
+          f"{report['date']} (CPU us per path: median of {report['repeats']} repeats, then over paths;"
+          f" walks, queries: mean per path)")
+
+
 def print_moveit(report: dict) -> None:
     rows = report["moveit"]
     with_old = bool(rows) and "old_ms_median" in rows[0]
@@ -459,7 +578,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--per-class", type=int, default=10, help="with --moveit")
     parser.add_argument("--fine", action="store_true",
                         help="with --moveit: re-check accepted paths at 0.1 mm (slow)")
+    parser.add_argument("--planner-paths", metavar="DIR",
+                        help="every path the planner verifies on the MoveIt problem sets of DIR")
     args = parser.parse_args(argv)
+    if args.planner_paths:
+        report = run_planner_paths(args)
+        print_planner_paths(report)
+        if args.json:
+            print(json.dumps(report))
+        return 0
     if args.moveit:
         report = run_moveit(args)
         print_moveit(report)
