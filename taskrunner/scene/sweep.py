@@ -843,7 +843,8 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
     ra, rb = nj + a, nj + b
     swept = geo_f[a, _GF_SWEPT] + geo_f[b, _GF_SWEPT]
     best = -np.inf
-    # A point of A - B to start from: along the centres' offset.
+    vx = vy = vz = 0.0
+    # The offset of the bounding spheres' centres, from A to B.
     nx = frames[rb, _FR_CENTRE] - frames[ra, _FR_CENTRE]
     ny = frames[rb, _FR_CENTRE + 1] - frames[ra, _FR_CENTRE + 1]
     nz = frames[rb, _FR_CENTRE + 2] - frames[ra, _FR_CENTRE + 2]
@@ -872,14 +873,12 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
             gap = (bx - ax) * ux + (by - ay) * uy + (bz - az) * uz
             if gap > best:
                 best = gap
-                nx, ny, nz = ux, uy, uz
-    # Gilbert: v, a point of B - A, moves towards the origin's nearest; -v/|v| directions.
-    ax, ay, az = _support(a, nx, ny, nz, geo_i, geo_f, frames, points, nj)
-    bx, by, bz = _support(b, -nx, -ny, -nz, geo_i, geo_f, frames, points, nj)
-    vx, vy, vz = bx - ax, by - ay, bz - az
+                vx, vy, vz = bx - ax, by - ay, bz - az      # a point of B - A
+    # Gilbert: v, a point of B - A (its norm: at least the distance), moves towards the
+    # origin's nearest; the directions v/|v|.
     for _ in range(_SUPPORT_STEPS):
         length = math.sqrt(vx * vx + vy * vy + vz * vz)
-        if not length > 0.0:
+        if not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length:
             break
         ux, uy, uz = vx / length, vy / length, vz / length
         ax, ay, az = _support(a, ux, uy, uz, geo_i, geo_f, frames, points, nj)
