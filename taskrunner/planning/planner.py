@@ -61,7 +61,7 @@ from taskrunner.types import JointPath, JointTrajectory
 
 if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
     from taskrunner.scene.screen import StateScreen
-    from taskrunner.scene.sweep import PathVerification, PathVerifier
+    from taskrunner.scene.sweep import PathVerification
 
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
@@ -138,7 +138,7 @@ class MotionPlanner:
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
         self._spheres: tuple[object, object] | None = None  # (checker, SphereModel)
         self._groups: dict[str, object] = {}
-        self._screen: tuple[PathVerifier, StateScreen] | None = None
+        self._group_columns: dict[str, tuple[slice | np.ndarray, bool]] = {}
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
@@ -473,16 +473,10 @@ class MotionPlanner:
         return is_valid, edge_valid, count
 
     def _state_screen(self, margin: float) -> StateScreen:
-        """The scene's state screen (:class:`~taskrunner.scene.screen.StateScreen`: the
-        checker's verdicts, with coal only on the pairs that cheap compiled bounds cannot
-        clear), built on the path verifier of the request's ``margin``, which verifies
-        the path afterwards; kept while the scene is not edited."""
-        verifier = self.scene.path_verifier(margin)
-        if self._screen is None or self._screen[0] is not verifier:
-            from taskrunner.scene.screen import StateScreen
-
-            self._screen = (verifier, StateScreen(verifier))
-        return self._screen[1]
+        """The scene's state screen (:meth:`Scene.state_screen`: the checker's verdicts,
+        with coal only on the pairs that cheap compiled bounds cannot clear), built on the
+        path verifier of the request's ``margin``, which verifies the path afterwards."""
+        return self.scene.state_screen(margin)
 
     def _scan(self, margin: float) -> Callable[[np.ndarray], int]:
         """The index of the first of some full states (the rows of a C-contiguous array)
@@ -509,6 +503,19 @@ class MotionPlanner:
 
         return is_valid, count
 
+    def _columns(self, group: Group) -> tuple[slice | np.ndarray, bool]:
+        """The group's columns of a state (a slice where they are contiguous: cheaper than
+        a gather) and whether a mimic joint follows one of them (kept per group)."""
+        found = self._group_columns.get(group.name)
+        if found is None:
+            idx = group.joint_indices
+            columns: slice | np.ndarray = idx
+            if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
+                columns = slice(int(idx[0]), int(idx[0]) + len(idx))
+            found = self._group_columns[group.name] = (columns,
+                                                       self.scene.robot.mimic_follows(idx))
+        return found
+
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
                        count: list[int], known: set[bytes] | None = None,
                        margin: float = VERIFY_MARGIN
@@ -524,17 +531,12 @@ class MotionPlanner:
         model = self.scene.robot
         screen = self._state_screen(margin)
         scan = screen.scanner()
-        idx = group.joint_indices
         base = start.copy()
-        mimic = model.mimic_follows(idx)
+        columns, mimic = self._columns(group)
         # Per number of steps: the fractions of the states along the edge, the end's first
         # (1.0), then the inner states coarse to fine; and the states' rows (one scan for
         # the end and the inner states).
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-        # The group's columns: a slice where they are contiguous (cheaper than a gather).
-        columns: slice | np.ndarray = idx
-        if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
-            columns = slice(int(idx[0]), int(idx[0]) + len(idx))
         # Contiguous columns and no mimic joint to follow: the states are interpolated in
         # the screen's compiled loop, as far as the first collision.
         line = screen.line_scanner() if isinstance(columns, slice) and not mimic else None

@@ -51,6 +51,7 @@ from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
 
 if TYPE_CHECKING:  # the verifier's module loads numba: imported on first use
+    from taskrunner.scene.screen import StateScreen
     from taskrunner.scene.sweep import PathVerifier
 
 __all__ = ["Scene", "SceneOptions"]
@@ -129,6 +130,7 @@ class Scene:
         self._fk_done = False
         self._checker: CollisionChecker | None = None
         self._verifier: tuple[CollisionChecker, PathVerifier] | None = None
+        self._screen: tuple[PathVerifier, StateScreen] | None = None
         self._revision = 0
         # The last checkers built, with the entries and allowed pairs they were built for.
         self._built: tuple[tuple[tuple[_Entry, ...], frozenset[frozenset[str]],
@@ -145,6 +147,7 @@ class Scene:
         other._fk_done = False
         other._checker = None
         other._verifier = None
+        other._screen = None
         other._built = ()  # a checker is not thread-safe: a copy builds its own
         return other
 
@@ -458,6 +461,20 @@ class Scene:
         if cached is None or cached[0] is not checker or cached[1].margin != margin:
             cached = (checker, PathVerifier(self.robot, checker, margin))
             self._verifier = cached
+        return cached[1]
+
+    def state_screen(self, margin: float = VERIFY_MARGIN) -> StateScreen:
+        """The planner's screened state check (:class:`taskrunner.scene.screen.StateScreen`:
+        the checker's verdicts, coal asked only where bounding volumes cannot settle them)
+        for the scene as it is now, built on :meth:`path_verifier` with ``margin``. Kept
+        with that verifier."""
+        from taskrunner.scene.screen import StateScreen
+
+        verifier = self.path_verifier(margin)
+        cached = self._screen
+        if cached is None or cached[0] is not verifier:
+            cached = (verifier, StateScreen(verifier))
+            self._screen = cached
         return cached[1]
 
     # ----------------------------------------------------------------- internals
