@@ -176,3 +176,14 @@ def test_without_compiled_kinematics_the_scans_are_the_checkers(panda_model: Rob
         hit = checker.first_in_collision(to_pin(rows[1:]))
         assert got == (hit if hit < 0 else hit + 1)
         assert screen.scanner()(rows) == checker.first_in_collision(to_pin(rows))
+
+
+def test_the_scene_keeps_its_screen_until_an_edit(panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    screen = scene.state_screen()
+    assert scene.state_screen() is screen
+    assert screen.checker is scene.checker
+    scene.add_object("crate", Box((0.1, 0.1, 0.1)), Pose((0.5, 0.0, 0.05)))
+    rebuilt = scene.state_screen()
+    assert rebuilt is not screen and rebuilt.checker is scene.checker
+    assert scene.copy().state_screen() is not rebuilt  # a copy builds its own
