@@ -149,6 +149,13 @@ class PlanHandle:
             self._worker._collect(self, timeout=0.0)
         return self._outcome is not None
 
+    def wait(self, timeout: float) -> bool:
+        """Wait up to ``timeout`` seconds for the answer; True once it is there (whatever
+        it is: :meth:`result` gives it)."""
+        if self._outcome is None:
+            self._worker._collect(self, timeout=timeout)
+        return self._outcome is not None
+
     def result(self, timeout: float | None = None) -> PlanResult:
         """The plan, waiting up to ``timeout`` seconds (None: as long as it takes).
 
@@ -305,6 +312,7 @@ class PlanningWorker:
     def close(self) -> None:
         """Stop the worker process (idempotent)."""
         _OPEN.discard(self)
+        self._stays_here = None
         if self._process.is_alive():
             try:
                 self._cancel.value = self._pending.request_id if self._pending else _NO_CANCEL

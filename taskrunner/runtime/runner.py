@@ -130,6 +130,19 @@ class Runner:
         """Whether :meth:`cancel` was called."""
         return self._cancel.is_set()
 
+    def _pause(self, seconds: float) -> None:
+        """Wait for the next tick: ``seconds``, or until :meth:`cancel`; when the running
+        leaf waits for a plan from a worker, until that plan is answered, if sooner (the
+        leaf then goes on at once, not at the next period)."""
+        if seconds <= 0.0:
+            return
+        ticket = getattr(self.current_leaf(), "ticket", None)
+        wait = getattr(ticket, "wait", None)
+        if callable(wait) and not ticket.done() and not self._cancel.is_set():
+            wait(seconds)  # a cancel meanwhile is seen at the next tick, within the period
+        else:
+            self._cancel.wait(seconds)
+
     def current_leaf(self) -> TaskLeaf | None:
         """The leaf running now, if any."""
         tip = self.tree.tip()
@@ -159,7 +172,7 @@ class Runner:
                 status = self.tree.status
                 if status in (Status.SUCCESS, Status.FAILURE):
                     break
-                self._cancel.wait(max(0.0, period - (time.monotonic() - started)))
+                self._pause(period - (time.monotonic() - started))
         except TaskrunnerError as exc:  # a leaf let one of ours escape: fail, don't crash
             self.tree.stop(Status.INVALID)
             return self._finish("failed", 3, str(exc))

@@ -88,3 +88,34 @@ def test_the_worker_plans_the_other_requests_after_one_that_stayed(loading_worke
     moved = loading_worker.plan(scene, PlanRequest("arm", JointGoal(MOVED)), timeout=120.0)
     assert moved.path.waypoints[-1][0] == pytest.approx(MOVED["panda_joint1"], abs=1e-9)
     assert loading_worker._ready
+
+
+def test_a_runner_goes_on_when_the_plan_it_waits_for_is_answered():
+    import threading
+    from types import SimpleNamespace
+
+    from taskrunner.runtime.runner import Runner
+
+    class Ticket:
+        def __init__(self, answered: bool) -> None:
+            self.answered, self.waited = answered, []
+
+        def done(self) -> bool:
+            return self.answered
+
+        def wait(self, timeout: float) -> bool:
+            self.waited.append(timeout)
+            return True
+
+    cancel = threading.Event()
+    pending, answered = Ticket(False), Ticket(True)
+    for leaf, waits in ((SimpleNamespace(ticket=pending), [0.01]),
+                        (SimpleNamespace(ticket=answered), []),  # waits out the period
+                        (SimpleNamespace(ticket=None), []), (None, [])):
+        runner = SimpleNamespace(current_leaf=lambda leaf=leaf: leaf, _cancel=cancel)
+        Runner._pause(runner, 0.01)  # type: ignore[arg-type]
+        assert leaf is None or leaf.ticket is None or leaf.ticket.waited == waits
+    cancel.set()  # cancelled: no waiting on a plan
+    runner = SimpleNamespace(current_leaf=lambda: SimpleNamespace(ticket=pending), _cancel=cancel)
+    Runner._pause(runner, 0.01)  # type: ignore[arg-type]
+    assert pending.waited == [0.01]
