@@ -299,7 +299,8 @@ class MotionPlanner:
         bad = model.limit_violations(start)
         if bad:
             raise InvalidStateError("start state outside the joint limits: " + "; ".join(bad))
-        if self.scene.in_collision(start):
+        # The checker's verdict, screened (most states clear every pair without coal).
+        if self._state_screen(request.options.verify_margin).scanner()(start[None, :]) >= 0:
             contacts = self.scene.collisions(start)
             pairs = [(c.a, c.b) for c in contacts]
             raise StartInCollisionError(
@@ -314,6 +315,7 @@ class MotionPlanner:
         valid: list[tuple[int, np.ndarray]] = []
         rejected: list[tuple[int, np.ndarray]] = []
         unreachable: list[IkFailedError] = []
+        scan = self._state_screen(request.options.verify_margin).scanner()
         for index, goal in enumerate(request.goals):
             try:
                 candidates = self._goal_candidates(goal, group, start, request.options)
@@ -326,7 +328,8 @@ class MotionPlanner:
                 if bad:
                     raise InvalidStateError(f"goal {index} outside the joint limits: "
                                             + "; ".join(bad))
-                (rejected if self.scene.in_collision(q) else valid).append((index, q))
+                row = np.ascontiguousarray(q, dtype=float)[None, :]
+                (rejected if scan(row) >= 0 else valid).append((index, q))
         if not valid and not rejected:
             raise unreachable[0]
         if not valid:
