@@ -344,7 +344,9 @@ _TF_ROT, _TF_TRANS, _TF_AXIS = 0, 9, 12                       # tree_f (n_joints
 # geo_i (n_geometries, 5): joint, has a bounding box, shape (_SHAPE_*), its first vertex
 # in the verifier's points and their count (a hull).
 _GI_JOINT, _GI_BOX, _GI_SHAPE, _GI_FROM, _GI_COUNT = range(5)
-_SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL = 0, 1, 2
+# A shape is its core (a box, a convex hull, a cylinder about z, a point for a sphere) grown
+# by the radius _GF_SWEPT.
+_SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL, _SHAPE_CYLINDER, _SHAPE_SPHERE = range(5)
 _GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX, _GF_SWEPT = 0, 9, 12, 15, 16, 19, 22
 _GF_COLUMNS = 23                                              # geo_f (n_geometries, 23)
 # pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
@@ -500,14 +502,25 @@ class _Tree:
         if has_box:
             floats[_GF_HALF:_GF_HALF + 3] = 0.5 * (high - low)
             floats[_GF_BOX:_GF_BOX + 3] = 0.5 * (high + low)
-        # Shapes whose support function the kernels evaluate exactly: a box (its bounding
-        # box is itself) and a convex hull (its vertices); inflated by a swept sphere.
+        # Shapes whose support function the kernels evaluate exactly (or of a shape that
+        # contains them): a box, a cylinder (about z) or a sphere from its bounding box,
+        # centred on it; a convex hull from its vertices; each grown by its swept sphere
+        # radius.
         shape, points = _SHAPE_NONE, None
         swept = float(geometry.getSweptSphereRadius()) \
             if hasattr(geometry, "getSweptSphereRadius") else 0.0
-        if type(geometry) is coal.Box and has_box:
+        kind = type(geometry)
+        half = floats[_GF_HALF:_GF_HALF + 3]
+        if not has_box or np.any(floats[_GF_BOX:_GF_BOX + 3] != 0.0):
+            pass
+        elif kind is coal.Box:
             shape = _SHAPE_BOX
-        elif isinstance(geometry, coal.ConvexBase):
+        elif kind is coal.Cylinder and half[0] == half[1]:
+            shape = _SHAPE_CYLINDER
+        elif kind is coal.Sphere:
+            shape = _SHAPE_SPHERE
+            swept += float(half.max())
+        if isinstance(geometry, coal.ConvexBase):
             vertices = np.asarray(geometry.points(), dtype=float)
             if vertices.ndim == 2 and vertices.shape[1] == 3 and len(vertices) \
                     and np.isfinite(vertices).all():
@@ -797,17 +810,26 @@ def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
 
 @_inline
 def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
-    """The point of geometry ``g`` (a box or a convex hull, see ``_SHAPE_*``; swept sphere
-    left out) furthest along the world direction ``(dx, dy, dz)``."""
+    """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
+    grown by) furthest along the world direction ``(dx, dy, dz)``."""
     row = nj + g
     # The direction in the geometry's frame (its rotation's columns are its axes).
     lx = frames[row, 0] * dx + frames[row, 3] * dy + frames[row, 6] * dz
     ly = frames[row, 1] * dx + frames[row, 4] * dy + frames[row, 7] * dz
     lz = frames[row, 2] * dx + frames[row, 5] * dy + frames[row, 8] * dz
-    if geo_i[g, _GI_SHAPE] == _SHAPE_BOX:
-        px = geo_f[g, _GF_HALF] if lx >= 0.0 else -geo_f[g, _GF_HALF]
-        py = geo_f[g, _GF_HALF + 1] if ly >= 0.0 else -geo_f[g, _GF_HALF + 1]
-        pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
+    shape = geo_i[g, _GI_SHAPE]
+    if shape != _SHAPE_HULL:
+        px = py = pz = 0.0
+        if shape == _SHAPE_BOX:
+            px = geo_f[g, _GF_HALF] if lx >= 0.0 else -geo_f[g, _GF_HALF]
+            py = geo_f[g, _GF_HALF + 1] if ly >= 0.0 else -geo_f[g, _GF_HALF + 1]
+            pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
+        elif shape == _SHAPE_CYLINDER:
+            radial = math.sqrt(lx * lx + ly * ly)
+            if radial > 0.0:
+                px = geo_f[g, _GF_HALF] * lx / radial
+                py = geo_f[g, _GF_HALF] * ly / radial
+            pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
         ox, oy, oz = frames[row, _FR_BOX], frames[row, _FR_BOX + 1], frames[row, _FR_BOX + 2]
     else:
         first = geo_i[g, _GI_FROM]
@@ -833,8 +855,9 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
     For any unit direction ``n``, ``min over a of n.a - max over b of n.b`` is at most
     their distance (they are separated by at least that along ``n``); the points are the
     shapes' own (a box's corners, a hull's vertices), so the bound is exact for the
-    direction. The directions tried: the face normals of the boxes among them, then the
-    best of those refined by Gilbert's iteration on the difference ``A - B`` (its point
+    direction. The directions tried: the face normals of the boxes among them, a cylinder's
+    axis and the direction from its axis towards the other's centre, the centres' offset,
+    then the best of those refined by Gilbert's iteration on the difference ``A - B`` (its point
     closest to the origin, approached over segments), until the bound is within
     ``_SUPPORT_TOLERANCE`` of the distance estimate or after ``_SUPPORT_STEPS``. Each swept
     sphere radius is subtracted."""
@@ -848,16 +871,28 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
     nx = frames[rb, _FR_CENTRE] - frames[ra, _FR_CENTRE]
     ny = frames[rb, _FR_CENTRE + 1] - frames[ra, _FR_CENTRE + 1]
     nz = frames[rb, _FR_CENTRE + 2] - frames[ra, _FR_CENTRE + 2]
-    # Face normals of the boxes (pointing from A to B), and the offset itself.
+    # Face normals of the boxes, a cylinder's axis and the direction away from it towards
+    # the other's centre (all pointing from A to B), and the offset itself.
     for side in range(3):
         for axis in range(4):
             if side < 2:
                 if axis == 3:
                     continue
                 owner = ra if side == 0 else rb
-                if geo_i[owner - nj, _GI_SHAPE] != _SHAPE_BOX:
+                shape = geo_i[owner - nj, _GI_SHAPE]
+                if shape == _SHAPE_CYLINDER and axis < 2:
+                    ux, uy, uz = frames[owner, 2], frames[owner, 5], frames[owner, 8]
+                    if axis == 1:     # the offset less its part along the axis
+                        along = ux * nx + uy * ny + uz * nz
+                        ux, uy, uz = nx - along * ux, ny - along * uy, nz - along * uz
+                        length = math.sqrt(ux * ux + uy * uy + uz * uz)
+                        if not length > 0.0:
+                            continue
+                        ux, uy, uz = ux / length, uy / length, uz / length
+                elif shape == _SHAPE_BOX:
+                    ux, uy, uz = frames[owner, axis], frames[owner, 3 + axis], frames[owner, 6 + axis]
+                else:
                     continue
-                ux, uy, uz = frames[owner, axis], frames[owner, 3 + axis], frames[owner, 6 + axis]
                 if ux * nx + uy * ny + uz * nz < 0.0:
                     ux, uy, uz = -ux, -uy, -uz
             else:

@@ -311,14 +311,18 @@ def test_cheap_lower_bounds_never_exceed_the_distance(panda_model):
 
 
 def test_support_bounds_never_exceed_the_distance_and_are_tight_near_faces(panda_model):
-    # Boxes at random poses around the arm; the Panda's links are convex hulls (and its
-    # fingers' pads boxes): every pair of them gets a support bound, to compare with coal.
+    # Boxes, cylinders and spheres at random poses around the arm; the Panda's links are
+    # convex hulls (and its fingers' pads boxes): every pair of them gets a support bound,
+    # to compare with coal.
+    from taskrunner.shapes import Cylinder, Sphere
+
     rng = np.random.default_rng(11)
     scene = Scene(panda_model)
-    for i in range(6):
-        size = tuple(rng.uniform(0.02, 0.4, 3))
+    for i in range(9):
+        size = rng.uniform(0.02, 0.4, 3)
+        shape = (Box(tuple(size)), Cylinder(size[0] / 2, size[2]), Sphere(size[1] / 2))[i % 3]
         centre = np.array([rng.uniform(-0.6, 0.7), rng.uniform(-0.6, 0.6), rng.uniform(0.0, 0.9)])
-        scene.add_object(f"box{i}", Box(size), Pose.from_se3(pin.SE3(
+        scene.add_object(f"object{i}", shape, Pose.from_se3(pin.SE3(
             pin.rpy.rpyToMatrix(*rng.uniform(-np.pi, np.pi, 3)), centre)))
     robot = scene.robot
     verifier = PathVerifier(robot, scene.checker)
@@ -339,9 +343,9 @@ def test_support_bounds_never_exceed_the_distance_and_are_tight_near_faces(panda
         useful += int(np.sum(bounds[near] >= 0.5 * exact[near]))
     assert supported > 1000 and close > 20
     print(f"support bounds near (< 5 cm): {close}, within 10 %: {tight}, within half: {useful}")
-    # Random poses: often a corner or an edge is nearest, where the directions tried fall
-    # short; face contacts (a link over a shelf or a wall) come out exact.
-    assert tight > 0.25 * close and useful > 0.5 * close
+    # Random poses: often a corner, an edge or a rim is nearest, where the directions tried
+    # fall short; face contacts (a link over a shelf or a wall) come out exact.
+    assert tight > 0.2 * close and useful > 0.5 * close
 
 
 def test_verifier_names_a_bad_state(panda_model):
