@@ -131,15 +131,17 @@ class Runner:
         return self._cancel.is_set()
 
     def _pause(self, seconds: float) -> None:
-        """Wait for the next tick: ``seconds``, or until :meth:`cancel`; when the running
-        leaf waits for a plan from a worker, until that plan is answered, if sooner (the
-        leaf then goes on at once, not at the next period)."""
+        """Wait for the next tick: ``seconds``, or until :meth:`cancel`. When the running
+        leaf waits for a plan from a worker: until that plan is answered, if sooner (the
+        leaf then goes on at once, not at the next period); a cancel is seen at the next
+        tick, within the period."""
         if seconds <= 0.0:
             return
         ticket = getattr(self.current_leaf(), "ticket", None)
         wait = getattr(ticket, "wait", None)
-        if callable(wait) and not ticket.done() and not self._cancel.is_set():
-            wait(seconds)  # a cancel meanwhile is seen at the next tick, within the period
+        if ticket is not None and callable(wait) and not ticket.done() \
+                and not self._cancel.is_set():
+            wait(seconds)
         else:
             self._cancel.wait(seconds)
 
