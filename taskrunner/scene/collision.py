@@ -266,7 +266,7 @@ class CollisionChecker:
                 return i
         return -1
 
-    def pairs_collide(self, q_pin: np.ndarray, pairs: Sequence[int]) -> bool:
+    def pairs_collide(self, q_pin: np.ndarray, pairs: Sequence[int] | np.ndarray) -> bool:
         """True if any of the checked pairs ``pairs`` (indices into the geometry model's
         collision pairs) collides at ``q_pin``: the narrow phase on those pairs only, in
         order, stopping at the first in collision."""

@@ -25,7 +25,7 @@ the verifier's compiled kinematics cover (revolute, continuous, prismatic); for 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import coal
 import numpy as np
@@ -225,7 +225,7 @@ class StateScreen:
 
 def _until_collision(kernel: Callable[..., tuple[int, int]], head: tuple[object, ...], begin: int,
                      tail: tuple[object, ...], rows: np.ndarray, found: np.ndarray,
-                     collide: Callable[[np.ndarray, np.ndarray], bool],
+                     collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
                      to_pin: Callable[[np.ndarray], np.ndarray]) -> int:
     """Run ``kernel(*head, begin, *tail)`` from row ``begin`` on, asking coal about the
     pairs it leaves at each row it stops at, until a row is in collision (its index) or
