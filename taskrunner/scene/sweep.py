@@ -617,7 +617,9 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 
 # ---------------------------------------------------------------------- kernels
 # The entry points (called from Python) are compiled functions of their own; the helpers
-# are inlined into their callers (numba IR inlining: no call or reference-count overhead).
+# are inlined into their callers (numba IR inlining: no call or reference-count overhead),
+# except the support bound and its support function (called rarely, and large: each compiled
+# once, then called; inlined they would add seconds to the first compilation).
 _jit = numba.njit(cache=True, nogil=True, error_model="numpy")
 _inline = numba.njit(cache=True, nogil=True, error_model="numpy", inline="always")
 
@@ -808,7 +810,7 @@ def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
     return best
 
 
-@_inline
+@_jit
 def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
@@ -847,7 +849,7 @@ def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[n
             oz + frames[row, 6] * px + frames[row, 7] * py + frames[row, 8] * pz)
 
 
-@_inline
+@_jit
 def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).
