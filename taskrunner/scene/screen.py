@@ -32,7 +32,7 @@ import numpy as np
 
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
-from taskrunner.scene.sweep import PathVerifier, _inline, _jit
+from taskrunner.scene.sweep import PathVerifier, _inline, _jit, _joint_frames
 
 __all__ = ["CLEAR", "StateScreen", "warm_kernels"]
 
@@ -56,7 +56,9 @@ _I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
 # centre (columns 0-2) and the state its box was last placed at (column 3), then per
 # geometry its box in the world (rotation, centre).
 _W_ROT, _W_ORIGIN = 0, 9
-_W_COLUMNS = 12
+_W_COLUMNS = 15  # the joints' rows also hold their axes in the world (columns 12-14)
+# The joints' rows are the verifier's (its kinematics writes them: :func:`_joint_frames`).
+assert sweep._FR_ROT == _W_ROT and sweep._FR_ORIGIN == _W_ORIGIN and sweep._FR_AXIS + 3 <= _W_COLUMNS
 
 
 _INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
@@ -311,11 +313,7 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
 
 @_inline
 def _reset(nj, ng, work):  # type: ignore[no-untyped-def]
-    """The universe's frame, and no geometry box placed yet."""
-    for a in range(3):
-        for b in range(3):
-            work[0, 3 * a + b] = 1.0 if a == b else 0.0
-        work[0, _W_ORIGIN + a] = 0.0
+    """No geometry box placed yet."""
     for g in range(ng):
         work[nj + g, 3] = -1.0
 
@@ -359,37 +357,7 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: 
     ``found``); ``stamp``: a number of this state, new since :func:`_reset`."""
     nj = tree_i.shape[0]
     ng = gi.shape[0]
-    nq = q.shape[0]
-    for jid in range(1, nj):
-        p = tree_i[jid, 0]
-        for a in range(3):
-            origin = work[p, _W_ORIGIN + a]
-            for b in range(3):
-                origin += work[p, 3 * a + b] * tree_f[jid, 9 + b]
-                total = 0.0
-                for c in range(3):
-                    total += work[p, 3 * a + c] * tree_f[jid, 3 * c + b]
-                work[jid, 3 * a + b] = total
-            work[jid, _W_ORIGIN + a] = origin
-        index = tree_i[jid, 2]
-        value = q[index] if 0 <= index < nq else 0.0
-        kind = tree_i[jid, 1]
-        x, y, z = tree_f[jid, 12], tree_f[jid, 13], tree_f[jid, 14]
-        if kind == 2:                                       # prismatic
-            for a in range(3):
-                work[jid, _W_ORIGIN + a] += (work[jid, 3 * a] * x + work[jid, 3 * a + 1] * y
-                                             + work[jid, 3 * a + 2] * z) * value
-        elif kind == 1:                                     # revolute: Rodrigues
-            c, sn = math.cos(value), math.sin(value)
-            t = 1.0 - c
-            l00, l01, l02 = c + x * x * t, x * y * t - z * sn, x * z * t + y * sn
-            l10, l11, l12 = y * x * t + z * sn, c + y * y * t, y * z * t - x * sn
-            l20, l21, l22 = z * x * t - y * sn, z * y * t + x * sn, c + z * z * t
-            for a in range(3):
-                r0, r1, r2 = work[jid, 3 * a], work[jid, 3 * a + 1], work[jid, 3 * a + 2]
-                work[jid, 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
-                work[jid, 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
-                work[jid, 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
+    _joint_frames(q, tree_i, tree_f, work)
     for g in range(ng):
         jid = gi[g, 0]
         for a in range(3):
