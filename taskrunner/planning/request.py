@@ -81,7 +81,7 @@ def group_planner(group: Group) -> str:
     return (group.planner.planner if group.planner is not None else None) or DEFAULT_PLANNER
 
 
-DEFAULT_RANGE = 1.25
+DEFAULT_RANGE = 1.5
 """rad: the tree growth step of RRT-style planners unless a request or the group's
 ``ompl_planning.yaml`` gives one (see :attr:`PlannerOptions.range`)."""
 
