@@ -299,8 +299,9 @@ class MotionPlanner:
         bad = model.limit_violations(start)
         if bad:
             raise InvalidStateError("start state outside the joint limits: " + "; ".join(bad))
-        # The checker's verdict, screened (most states clear every pair without coal).
-        if self._state_screen(request.options.verify_margin).scanner()(start[None, :]) >= 0:
+        # The checker itself, not the search's screen: a request answered without a search
+        # (a group already at its goal) loads no compiled kernels.
+        if self.scene.in_collision(start):
             contacts = self.scene.collisions(start)
             pairs = [(c.a, c.b) for c in contacts]
             raise StartInCollisionError(
@@ -315,7 +316,6 @@ class MotionPlanner:
         valid: list[tuple[int, np.ndarray]] = []
         rejected: list[tuple[int, np.ndarray]] = []
         unreachable: list[IkFailedError] = []
-        scan = self._state_screen(request.options.verify_margin).scanner()
         for index, goal in enumerate(request.goals):
             try:
                 candidates = self._goal_candidates(goal, group, start, request.options)
@@ -328,8 +328,7 @@ class MotionPlanner:
                 if bad:
                     raise InvalidStateError(f"goal {index} outside the joint limits: "
                                             + "; ".join(bad))
-                row = np.ascontiguousarray(q, dtype=float)[None, :]
-                (rejected if scan(row) >= 0 else valid).append((index, q))
+                (rejected if self.scene.in_collision(q) else valid).append((index, q))
         if not valid and not rejected:
             raise unreachable[0]
         if not valid:
