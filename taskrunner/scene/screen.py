@@ -297,7 +297,8 @@ def _scan_both(screen: StateScreen, states: np.ndarray) -> None:
 def _warm_mark() -> Path:
     """The file that marks the kernels of these sources as compiled on this machine."""
     digest = hashlib.sha256()
-    for module in (__file__, sweep.__file__):
+    for module in (__file__, sweep.__file__):  # numba caches per source file and content
+        digest.update(str(Path(module).resolve()).encode())
         digest.update(Path(module).read_bytes())
     digest.update(f"{numba.__version__} {sys.version}".encode())
     cache = os.environ.get("NUMBA_CACHE_DIR") or str(user_cache_dir() / "numba")
