@@ -9,14 +9,13 @@ import time
 
 import numpy as np
 import pytest
-from plan_helpers import READY, SHELF, dense_states
+from plan_helpers import READY, dense_states
 
 from taskrunner.errors import PlanningCancelledError, UnknownNameError
 from taskrunner.kinematics import frame_pose
 from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
 from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.planning.worker import PlanningWorker, WorkerDiedError
-from taskrunner.scene import Scene
 from taskrunner.shapes import Box
 from taskrunner.types import Pose
 
@@ -30,13 +29,8 @@ def worker(robots_dir, example_robot_data):
 
 
 @pytest.fixture
-def scene(panda_model):
-    scene = Scene(panda_model)
-    for name, size, xyz in SHELF:
-        scene.add_object(name, Box(size), Pose(xyz))
-    scene.allow_collision("panda_link0", "table")
-    scene.set_state(READY)
-    return scene
+def scene(shelf_scene):
+    return shelf_scene  # the Panda at 'ready' before a table and a shelf (conftest)
 
 
 def test_worker_plans_the_same_path_as_in_process(worker, scene):

@@ -5,14 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from plan_helpers import READY, SHELF
+from plan_helpers import READY
 
 from taskrunner.errors import StartInCollisionError, UnknownNameError
 from taskrunner.planning import JointGoal, MotionPlanner, PlanRequest
 from taskrunner.planning.request import NamedGoal, PoseGoal
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.planning.worker import PlanningWorker, stays
-from taskrunner.scene import Scene
 from taskrunner.shapes import Box
 from taskrunner.types import Pose
 
@@ -20,13 +19,8 @@ MOVED = {**READY, "panda_joint1": 0.9}
 
 
 @pytest.fixture
-def scene(panda_model):
-    scene = Scene(panda_model)
-    for name, size, xyz in SHELF:
-        scene.add_object(name, Box(size), Pose(xyz))
-    scene.allow_collision("panda_link0", "table")
-    scene.set_state(READY)
-    return scene
+def scene(shelf_scene):
+    return shelf_scene  # the Panda at 'ready' before a table and a shelf (conftest)
 
 
 @pytest.fixture(scope="module")
