@@ -38,6 +38,7 @@ __all__ = [
     "GoalInCollisionError",
     "IkFailedError",
     "InvalidStateError",
+    "NoDirectPathError",
     "PlanningCancelledError",
     "PlanningTimeoutError",
     "StartInCollisionError",
@@ -181,6 +182,12 @@ class PlanningTimeoutError(PlanningError):
 
 class PlanningCancelledError(PlanningError):
     """The request was cancelled before a path was found."""
+
+
+class NoDirectPathError(PlanningError):
+    """A request that allows straight joint-space lines only
+    (``PlannerOptions.direct_only``) found the line to every goal state blocked: no
+    search was run."""
 
 
 class BackendError(TaskrunnerError):

@@ -37,6 +37,7 @@ from taskrunner.errors import (
     GoalInCollisionError,
     IkFailedError,
     InvalidStateError,
+    NoDirectPathError,
     PlanningCancelledError,
     PlanningError,
     PlanningTimeoutError,
@@ -239,6 +240,10 @@ class MotionPlanner:
                 return PlanResult(path, start, q_goal, goal_index, options.planner, 0.0, 0.0,
                                   time.perf_counter() - t_start, checks, direct=True,
                                   verify_queries=queries, verify_time=verify_time)
+            if options.direct_only:
+                raise NoDirectPathError(
+                    f"the straight line from the start to each of the {len(candidates)} goal "
+                    f"states of group {group.name!r} is blocked (direct_only: no search)")
         failure: PathVerification | None = None
         # The searches of a request (its attempts, and the finer searches after a path
         # is turned down) share one budget: planning_time per attempt.

@@ -119,6 +119,11 @@ class PlannerOptions:
             verified exactly; the search runs only when every such line is blocked. A
             free straight line is also the shortest path, so optimizing planners lose
             nothing by it.
+        direct_only: with ``direct``, answer by a straight line or not at all: when every
+            goal state's line is blocked, raise
+            :class:`~taskrunner.errors.NoDirectPathError` instead of searching. A caller
+            whose goal list is costly to compute asks this with its first goals, then
+            with all of them if it must.
         range: rad; the longest edge RRT-style planners grow a tree by at once. 0 (the
             default): the ``range`` of the group's default planner configuration in
             ``ompl_planning.yaml`` when it gives one above 0, else :data:`DEFAULT_RANGE`
@@ -145,6 +150,7 @@ class PlannerOptions:
     simplify: bool = True
     goal_samples: int = 6
     direct: bool = True
+    direct_only: bool = False
     range: float = 0.0
     restart: int = 20_000
 
@@ -165,6 +171,8 @@ class PlannerOptions:
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
                 raise ValueError(f"'{name}' must be a positive integer (got {value!r})")
+        if self.direct_only and not self.direct:
+            raise ValueError("'direct_only' needs 'direct' (a straight line to try)")
         if isinstance(self.seed, bool) or not isinstance(self.seed, (int, np.integer)):
             raise ValueError(f"'seed' must be an integer (got {self.seed!r})")
 
