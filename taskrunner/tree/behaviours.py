@@ -32,6 +32,7 @@ from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.runtime.replay import motion_data
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
+from taskrunner.tree.reach import StagedGoals
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
@@ -153,27 +154,51 @@ class MoveToGoal(_Executes):
 
     Args:
         goal: builds the goal from the context when the leaf starts (so poses of objects
-            are read from the scene as it is then).
+            are read from the scene as it is then). A
+            :class:`~taskrunner.tree.reach.StagedGoals` list is asked for in two steps
+            where the options try straight lines (``direct``): its first goal alone, by
+            the straight line only (``direct_only``); when that fails, the whole list.
+            The plan is the one the whole list gives at once: the planner takes the
+            first goal whose line is free, and the list's first goal is the whole list
+            where the start state may be a later goal (answered "already there" first).
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext, group: str,
-                 goal: Callable[[TaskContext], Goal | tuple[Goal, ...]],
+                 goal: Callable[[TaskContext], Goal | tuple[Goal, ...] | StagedGoals],
                  options: PlannerOptions | None = None,
                  timing: TimingOptions | None = None) -> None:
         super().__init__(name, location, ctx, timing)
         self.group = group
-        self.goal = goal
+        self._goal = goal
         self.options = options or PlannerOptions()
         self.ticket: PlanTicket | None = None
+        # A staged list and the request for all of it, while its first goal is asked for.
+        self._rest: tuple[StagedGoals, PlanRequest] | None = None
+
+    def goal(self, ctx: TaskContext) -> Goal | tuple[Goal, ...]:
+        """The leaf's goal(s) built in ``ctx`` (a staged list in full)."""
+        found = self._goal(ctx)
+        return found.all() if isinstance(found, StagedGoals) else found
 
     def start(self) -> None:
         super().start()
         self.ticket = None
+        self._rest = None
         try:
-            goal = _resolve_named(self.goal(self.ctx), self.ctx.scene.robot, self.group)
-            request = PlanRequest(self.group, goal, start=self.ctx.scene.state,
-                                  options=replace(self.options, seed=self.ctx.next_seed()),
+            found = self._goal(self.ctx)
+            options = replace(self.options, seed=self.ctx.next_seed())
+            goal: Goal | tuple[Goal, ...]
+            if isinstance(found, StagedGoals):
+                staged = options.direct and not options.direct_only
+                goal = found.first() if staged else found.all()
+            else:
+                goal = found
+            request = PlanRequest(self.group, _resolve_named(goal, self.ctx.scene.robot, self.group),
+                                  start=self.ctx.scene.state, options=options,
                                   timing=self.timing if self.ctx.planner_times else None)
+            if isinstance(found, StagedGoals) and not found.complete:
+                self._rest = (found, request)
+                request = replace(request, options=replace(options, direct_only=True))
             self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
         except TaskrunnerError as exc:
             self.fail(str(exc))
@@ -187,13 +212,32 @@ class MoveToGoal(_Executes):
             return Status.RUNNING
         try:
             result = self.ticket.result(0.0)
-            self.ticket = None
-            return self.execute_path(result.path, result.planning_time, result.trajectory)
         except TaskrunnerError as exc:
             self.ticket = None
+            if self._rest is not None:
+                return self._ask_all()  # the first goal's line was blocked (or it failed)
+            return self.fail(str(exc))
+        self.ticket = None
+        self._rest = None
+        try:
+            return self.execute_path(result.path, result.planning_time, result.trajectory)
+        except TaskrunnerError as exc:
             return self.fail(str(exc))
 
+    def _ask_all(self) -> Status:
+        """Plan for the whole staged list: the request the leaf would have made at once."""
+        assert self._rest is not None
+        found, request = self._rest
+        self._rest = None
+        try:
+            goal = _resolve_named(found.all(), self.ctx.scene.robot, self.group)
+            self.ticket = self.ctx.planner.submit(self.ctx.scene, replace(request, goal=goal))
+        except TaskrunnerError as exc:
+            return self.fail(str(exc))
+        return self.update()  # an in-process planner has answered already
+
     def abort(self) -> None:
+        self._rest = None
         if self.ticket is not None:
             self.ticket.cancel()
             self.ticket = None

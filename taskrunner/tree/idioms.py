@@ -59,7 +59,7 @@ from taskrunner.tree.grasps import (
     releases_with_grasp,
 )
 from taskrunner.tree.outcome import Orientation, Outcome, Tolerance, arm_orientation, measure
-from taskrunner.tree.reach import Lift, approach_goals
+from taskrunner.tree.reach import Lift, StagedGoals, staged_approach_goals
 from taskrunner.types import Pose
 
 __all__ = ["default_orientation", "grasp_candidates", "hand_links", "handoff", "object_extent",
@@ -103,14 +103,15 @@ def _gripper_pose(ctx: TaskContext, arm_name: str, which: str) -> dict[str, floa
 
 
 def _goals(c: TaskContext, arm_name: str, contact: Sequence[pin.SE3], lift: Lift,
-           point: np.ndarray | None = None, grasping: bool = False) -> tuple[Goal, ...]:
+           point: np.ndarray | None = None, grasping: bool = False) -> StagedGoals:
     """Goals a straight move away from the grasp frame poses ``contact`` (``lift(i, pose)``:
     the world offset from ``contact[i]``, reached at ``pose``), from which that move can
     be followed back; a short arm places ``point`` of its grasp frame exactly, its
-    orientation as near as it can (see :mod:`taskrunner.tree.reach`)."""
+    orientation as near as it can (see :mod:`taskrunner.tree.reach`). The list is computed
+    as far as the planner needs it (:class:`~taskrunner.tree.reach.StagedGoals`)."""
     arm = c.arm(arm_name)
-    return approach_goals(c.scene.robot, arm.group, arm.grasp_frame, contact, lift,
-                          c.scene.state, c.next_seed(), point, grasping)
+    return staged_approach_goals(c.scene.robot, arm.group, arm.grasp_frame, contact, lift,
+                                 c.scene.state, c.next_seed(), point, grasping)
 
 
 def _move(ctx: TaskContext, name: str, location: str | None, arm_name: str,
@@ -173,7 +174,7 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
     grasps: list[pin.SE3] = []
     resting: list[tuple[str, str]] = []
 
-    def pre_grasps(c: TaskContext) -> tuple[Goal, ...]:
+    def pre_grasps(c: TaskContext) -> StagedGoals:
         grasps[:] = grasp_candidates(c, obj, grasp)
         return _goals(c, arm_name, grasps, lambda i, p: -grasps[i].rotation[:, 2] * approach,
                       grasping=True)
@@ -243,7 +244,7 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         bottom = carried.translation[2] - half_height(held.shape, carried.rotation)
         return max(0.0, lowest - bottom) if short else 0.0
 
-    def pre_places(c: TaskContext) -> tuple[Goal, ...]:
+    def pre_places(c: TaskContext) -> StagedGoals:
         held = c.scene.object(obj)
         if held.attached_to != arm.holder:
             raise SceneError(f"object {obj!r} is not held by arm {arm_name!r}")
@@ -310,7 +311,7 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
         return PoseGoal(Pose.from_se3(meeting[0] * give.grip(held.pose.se3).inverse()),
                         link=give.grasp_frame, position_only=False)
 
-    def pre_grasps(c: TaskContext) -> tuple[Goal, ...]:
+    def pre_grasps(c: TaskContext) -> StagedGoals:
         held = c.scene.object(obj)
         if held.attached_to != give.holder:
             raise SceneError(f"object {obj!r} is not held by arm {giver!r}")

@@ -33,7 +33,6 @@ approximated on their own and the approach follows the line by position only.
 
 from __future__ import annotations
 
-import itertools
 import math
 import threading
 import weakref
@@ -49,8 +48,8 @@ from taskrunner.planning.request import Goal, JointGoal, PoseGoal
 from taskrunner.robot.model import RobotModel
 from taskrunner.types import Pose
 
-__all__ = ["Approximation", "Lift", "approach_goals", "approximate", "approximate_goals",
-           "orientation_error", "wrist_roll"]
+__all__ = ["Approximation", "Lift", "StagedGoals", "approach_goals", "approximate",
+           "approximate_goals", "orientation_error", "staged_approach_goals", "wrist_roll"]
 
 Lift = Callable[[int, pin.SE3], np.ndarray]
 """``(index of a wanted pose, link pose reached there) -> world offset (m)``."""
@@ -67,6 +66,9 @@ _IK_TIMEOUT = 1.0  # s; attempts run out long before, so results do not depend o
 _EXACT = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
 _LOCAL = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
 _largest, _absolute = np.maximum.reduce, np.absolute  # the ufuncs, without the wrappers
+# m (and Frobenius norm of a rotation difference): a goal state equal to the start state
+# puts the frame within the IK tolerance (1e-5) of its target; this is a hundred times that.
+_AT_TARGET = 1e-3
 
 
 @dataclass(frozen=True)
@@ -162,9 +164,24 @@ def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[p
     Raises:
         IkFailedError: a short arm reaches no contact position.
     """
+    return staged_approach_goals(model, group, link, contact, lift, start, seed, point,
+                                 grasping, keep).all()
+
+
+def staged_approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[pin.SE3],
+                          lift: Lift, start: np.ndarray, seed: int,
+                          point: np.ndarray | None = None, grasping: bool = False,
+                          keep: int = KEEP) -> StagedGoals:
+    """:func:`approach_goals`' list, computed as far as it is asked for (see
+    :class:`StagedGoals`): the IK searches now, the lines followed from their solutions
+    as goals are taken.
+
+    Raises:
+        IkFailedError: a short arm reaches no contact position.
+    """
+    start = np.array(start, dtype=float)
     if model.group(group).position_only_ik:
-        return approximate_goals(model, group, link, contact, start, seed, point, lift,
-                                 grasping, keep)
+        return _lifted(model, group, link, contact, start, seed, point, lift, grasping, keep)
     solver = _solver(model, group, link)
     options = IkOptions(position_only=False, num_solutions=FULL_POSE_SOLUTIONS, seed=seed,
                         timeout=_IK_TIMEOUT, attempts=20 * FULL_POSE_SOLUTIONS)
@@ -177,17 +194,76 @@ def approach_goals(model: RobotModel, group: str, link: str, contact: Sequence[p
         except IkFailedError:
             continue
         found.append(_followers(solver, [np.array(s.q) for s in solutions], away, there))
+
+    def otherwise() -> tuple[Goal, ...]:
+        # No line can be followed: plan to the pre-poses anyway; the straight move will
+        # say why it stops.
+        return tuple(PoseGoal(Pose.from_se3(p), link=link, position_only=False) for p in pre)
+
     # Every contact pose's states in turn, so that one pose blocked by an obstacle (its
     # states in collision, which the planner drops) leaves the others to choose from.
     # The lines are followed as the goals are taken: those after the last goal kept are
     # never needed.
-    states = _in_turn(found)
-    first = next(states, None)
-    if first is None:
-        # No line can be followed: plan to the pre-poses anyway; the straight move will
-        # say why it stops.
-        return tuple(PoseGoal(Pose.from_se3(p), link=link, position_only=False) for p in pre)
-    return _joint_goals(model, group, itertools.chain([first], states), 2 * keep)
+    here = _Frames(model, link)(start).translation
+    near = any(float(np.linalg.norm(p.translation - here)) <= _AT_TARGET for p in pre)
+    return StagedGoals(model, group, _in_turn(found), 2 * keep, otherwise, whole=near)
+
+
+class StagedGoals:
+    """A goal list of joint goals computed as far as it is asked for.
+
+    :meth:`all` is the whole list (at most ``keep`` distinct states, in order; or
+    ``otherwise()`` when there is none). :meth:`first` is its first goal alone, computed
+    without the rest, unless the start state may be one of the later goals (a planner
+    answers "already there" before it tries the first goal's line): then it is the whole
+    list too. A planner that reaches the first goal by its straight line
+    (:attr:`~taskrunner.planning.request.PlannerOptions.direct_only`) answers as it
+    would with the whole list; where it does not, ask again with :meth:`all` (the rest is
+    computed from where :meth:`first` stopped).
+    """
+
+    def __init__(self, model: RobotModel, group: str, states: Iterator[np.ndarray], keep: int,
+                 otherwise: Callable[[], tuple[Goal, ...]], whole: bool = False) -> None:
+        self._idx = model.group(group).joint_indices
+        self._names = model.group(group).joint_names
+        self._states, self._keep, self._otherwise = states, keep, otherwise
+        self._chosen: list[np.ndarray] = []
+        self._goals: list[JointGoal] = []
+        self._whole = whole
+        self._all: tuple[Goal, ...] | None = None
+
+    @property
+    def complete(self) -> bool:
+        """:meth:`first` is (or was) the whole list."""
+        return self._whole or self._all is not None
+
+    def first(self) -> tuple[Goal, ...]:
+        """The first goal alone, or the whole list (see the class docstring)."""
+        if self._whole or (not self._goals and not self._take()):
+            return self.all()
+        return (self._goals[0],)
+
+    def all(self) -> tuple[Goal, ...]:
+        """The whole list."""
+        if self._all is None:
+            while self._take():
+                pass
+            self._all = tuple(self._goals) if self._goals else self._otherwise()
+        return self._all
+
+    def _take(self) -> bool:
+        """Add the next distinct state as a goal; False when the list is full or the
+        states have run out."""
+        if len(self._goals) >= self._keep:
+            return False
+        idx = self._idx
+        for q in self._states:
+            if any(np.max(np.abs(q[idx] - c[idx])) < 1e-3 for c in self._chosen):
+                continue
+            self._chosen.append(q)
+            self._goals.append(JointGoal(dict(zip(self._names, q[idx]))))
+            return True
+        return False
 
 
 def _followers(solver: IkSolver, states: list[np.ndarray], away: pin.SE3, there: pin.SE3
@@ -278,40 +354,57 @@ def approximate_goals(model: RobotModel, group: str, link: str, wanted: Sequence
     if lift is None:
         states = [a.q for a in approximate(model, group, link, wanted, start, seed, point,
                                            grasping)]
-    else:
-        states = _lifted(model, group, link, wanted, start, seed, point, lift, grasping)
-    return _joint_goals(model, group, states, keep)
+        return _joint_goals(model, group, states, keep)
+    return _lifted(model, group, link, wanted, np.array(start, dtype=float), seed, point, lift,
+                   grasping, keep).all()
 
 
 def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
             start: np.ndarray, seed: int, point: np.ndarray | None, lift: Lift,
-            grasping: bool) -> list[np.ndarray]:
+            grasping: bool, keep: int) -> StagedGoals:
     """States a lift away from the approximations of ``wanted``, orientation unchanged,
-    joined to them by a straight line the arm can follow holding that orientation."""
+    joined to them by a straight line the arm can follow holding that orientation (at
+    most :data:`KEEP` of them, their lines followed as they are taken)."""
     solver = _solver(model, group, link)
-    out: list[np.ndarray] = []
-    # Wanted poses that differ by a turn the arm cannot make can give the same candidate
-    # state: its line (a function of the state and the lift) is followed once.
-    followed: dict[tuple[bytes, bytes], np.ndarray | None] = {}
-    for item, reached in _approximations(model, group, link, wanted, start, seed, point,
-                                         grasping):
-        if len(out) >= KEEP:
-            break
-        away = pin.SE3(reached.rotation, reached.translation
+    candidates = _approximations(model, group, link, wanted, start, seed, point, grasping)
+
+    def away(item: Approximation, reached: pin.SE3) -> pin.SE3:
+        return pin.SE3(reached.rotation, reached.translation
                        + np.asarray(lift(item.wanted, reached), dtype=float))
-        key = (item.q.tobytes(), away.translation.tobytes())
-        if key in followed:
-            q = followed[key]
-        else:
-            q = followed[key] = _follows(solver, item.q, reached, away,
-                                         rotation=reached.rotation)
-        if q is not None:
-            out.append(q)
-    if out:
-        return out
-    moved = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
-             for i, p in enumerate(wanted)]
-    return [a.q for a in approximate(model, group, link, moved, start, seed, point, grasping)]
+
+    def states() -> Iterator[np.ndarray]:
+        # Wanted poses that differ by a turn the arm cannot make can give the same
+        # candidate state: its line (a function of the state and the lift) is followed once.
+        followed: dict[tuple[bytes, bytes], np.ndarray | None] = {}
+        count = 0
+        for item, reached in candidates:
+            if count >= KEEP:
+                return
+            there = away(item, reached)
+            key = (item.q.tobytes(), there.translation.tobytes())
+            if key in followed:
+                q = followed[key]
+            else:
+                q = followed[key] = _follows(solver, item.q, reached, there,
+                                             rotation=reached.rotation)
+            if q is not None:
+                count += 1
+                yield q
+
+    def otherwise() -> tuple[Goal, ...]:
+        # No line can be followed: the moved poses approximated on their own.
+        moved = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
+                 for i, p in enumerate(wanted)]
+        return _joint_goals(model, group, [a.q for a in approximate(
+            model, group, link, moved, start, seed, point, grasping)], keep)
+
+    # A goal state holds its candidate's orientation at its lifted position (within the
+    # IK tolerance): the start state can be one only where its frame is there.
+    now = _Frames(model, link)(start)
+    near = any(np.linalg.norm(reached.rotation - now.rotation) <= _AT_TARGET
+               and np.linalg.norm(away(item, reached).translation - now.translation) <= _AT_TARGET
+               for item, reached in candidates)
+    return StagedGoals(model, group, states(), keep, otherwise, whole=near)
 
 
 def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
