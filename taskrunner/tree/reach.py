@@ -38,6 +38,7 @@ import threading
 import weakref
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 import pinocchio as pin
@@ -355,8 +356,9 @@ def approximate_goals(model: RobotModel, group: str, link: str, wanted: Sequence
         states = [a.q for a in approximate(model, group, link, wanted, start, seed, point,
                                            grasping)]
         return _joint_goals(model, group, states, keep)
-    return _lifted(model, group, link, wanted, np.array(start, dtype=float), seed, point, lift,
-                   grasping, keep).all()
+    goals = _lifted(model, group, link, wanted, np.array(start, dtype=float), seed, point, lift,
+                    grasping, keep).all()
+    return cast(tuple[JointGoal, ...], goals)  # joint goals, or _joint_goals' when none
 
 
 def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
