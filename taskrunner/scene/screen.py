@@ -13,8 +13,11 @@ the under-table pick's); those cost about a microsecond instead of coal's five.
 The tests are the cheapest first: the two spheres; then each sphere against the other
 geometry's box (the box's own frame); then the two boxes' separation along their six face
 normals. Each is a lower bound on the distance of the two geometries (they lie inside
-their sphere and their box), so clearing a pair never hides a contact. World objects do
-not move: their spheres and boxes are placed once per screen.
+their sphere and their box), so clearing a pair never hides a contact. Geometries that
+do not move (world objects, the robot's fixed links) have their spheres placed once per
+scan and their boxes the first time a pair needs one; the others' spheres at every state,
+their boxes when a pair needs them. The pairs' reaches (the sum of the two radii) are
+squared once per screen.
 
 The screen is built from a :class:`~taskrunner.scene.sweep.PathVerifier` (the same
 geometry records: bounding spheres, boxes, the joint tree) and runs on robots whose joints
@@ -164,11 +167,19 @@ class StateScreen:
         self._geo = geo
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
+        reach = geo[self._pairs[:, 0], _G_RADIUS] + geo[self._pairs[:, 1], _G_RADIUS] + CLEAR
+        self._reach2 = np.ascontiguousarray(reach * reach)
+        self._moving = np.ascontiguousarray(np.flatnonzero(self._gi[:, 0] != 0), dtype=np.int64)
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
         nj, ng = len(self._tree_i), len(self._gi)
         work = np.zeros((nj + 2 * ng, _W_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
+
+    def _tail(self, work: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, ...]:
+        """The kernels' arguments after the states: this screen's arrays and the work ones."""
+        return (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, self._reach2,
+                self._moving, work, found)
 
     def scanner(self) -> Callable[[np.ndarray], int]:
         """:meth:`first_in_collision` with work arrays of its own, for one thread: what a
@@ -179,7 +190,7 @@ class StateScreen:
             first = checker.first_in_collision
             return lambda states: first(to_pin(states))
         work, found = self._new_buffers()
-        tail = (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, work, found)
+        tail = self._tail(work, found)
         collide = checker.pairs_collide
 
         def scan(states: np.ndarray) -> int:
@@ -211,7 +222,7 @@ class StateScreen:
 
             return interpolated
         work, found = self._new_buffers()
-        tail = (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, work, found)
+        tail = self._tail(work, found)
         collide = checker.pairs_collide
 
         def scan(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray, b: np.ndarray,
@@ -322,7 +333,8 @@ def _compile_alone() -> None:
 def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s box in the world at the current state (``s``: its stamp)."""
     ng = (work.shape[0] - nj) // 2
-    if work[nj + g, 3] == s:
+    placed = work[nj + g, 3]
+    if placed == s or (jid == 0 and placed >= 0.0):  # fixed: placed once per scan
         return
     work[nj + g, 3] = s
     row = nj + ng + g
@@ -378,10 +390,13 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
 
 
 @_inline
-def _reset(nj, ng, work):  # type: ignore[no-untyped-def]
-    """No geometry box placed yet."""
+def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
+    """No geometry box placed yet; the fixed geometries' sphere centres placed."""
     for g in range(ng):
         work[nj + g, 3] = -1.0
+        if gi[g, 0] == 0:
+            for a in range(3):
+                work[nj + g, a] = geo[g, a]
 
 
 @_inline
@@ -418,7 +433,7 @@ def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
 
 
 @_jit
-def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
+def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
     since :func:`_reset`. Compiled once, called by both scans (inlined into each, the
@@ -426,7 +441,8 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: 
     nj = tree_i.shape[0]
     ng = gi.shape[0]
     _joint_frames(q, tree_i, tree_f, work)
-    for g in range(ng):
+    for m in range(moving.shape[0]):
+        g = moving[m]
         jid = gi[g, 0]
         for a in range(3):
             work[nj + g, a] = (work[jid, _W_ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
@@ -438,8 +454,7 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: 
         dx = work[nj + a, 0] - work[nj + b, 0]
         dy = work[nj + a, 1] - work[nj + b, 1]
         dz = work[nj + a, 2] - work[nj + b, 2]
-        reach = geo[a, _G_RADIUS] + geo[b, _G_RADIUS] + CLEAR
-        if dx * dx + dy * dy + dz * dz > reach * reach:
+        if dx * dx + dy * dy + dz * dz > reach2[k]:
             continue
         if gi[b, 1] != 0:
             _place_box(b, stamp, gi[b, 0], nj, geo, work)
@@ -461,13 +476,13 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, work, found):  # type: 
 
 
 @_jit
-def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, work, found):  # type: ignore[no-untyped-def]
+def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """From row ``begin`` of ``states`` on, the first state at which some pairs are not
     cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
     every state clears every pair. A state that is not finite clears nothing."""
-    _reset(tree_i.shape[0], gi.shape[0], work)
+    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, states.shape[0]):
-        count = _uncleared(states[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
+        count = _uncleared(states[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found)
         if count != 0:
             return s, count
     return -1, 0
@@ -475,18 +490,18 @@ def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, work, found)
 
 @_jit
 def _first_uncleared_on_line(rows, fractions, a, b, first, begin, tree_i, tree_f, gi, geo,  # type: ignore[no-untyped-def]
-                             pairs, work, found):
+                             pairs, reach2, moving, work, found):
     """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
     values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
     row ``s`` is written ``a + fractions[s] (b - a)`` there (``b`` itself at fraction 1)
     before it is screened, so that a row returned holds its state."""
-    _reset(tree_i.shape[0], gi.shape[0], work)
+    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
     n = a.shape[0]
     for s in range(begin, rows.shape[0]):
         f = fractions[s]
         for i in range(n):
             rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, work, found)
+        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found)
         if count != 0:
             return s, count
     return -1, 0
