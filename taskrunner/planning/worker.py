@@ -15,6 +15,7 @@ state always travels in the request.
 from __future__ import annotations
 
 import atexit
+import gc
 import itertools
 import multiprocessing as mp
 import os
@@ -103,6 +104,13 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
     from taskrunner.planning.toppra_import import import_toppra
     from taskrunner.robot.cell import load_cell_or_robot
 
+    # No garbage collection while the model loads and numba is imported: its passes over
+    # the growing heap took ~0.01 s of CPU. Collecting again for the verifier's warm-up (a
+    # first one on a machine compiles its kernels, which makes much garbage); then what
+    # the start left is frozen: later collections skip it (the little cyclic garbage the
+    # load made, ~0.35 MB of parsed XML, stays with it).
+    collecting = gc.isenabled()
+    gc.disable()
     try:
         started = time.perf_counter()
         cell = load_cell_or_robot(source)
@@ -111,14 +119,22 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
         scene.checker  # noqa: B018 - build the collision geometry before the first request
         if timing:
             import_toppra()  # every plan is timed: import it while the caller still loads
+        import taskrunner.scene.screen  # noqa: F401 - numba (the path verifier's kernels)
+
+        if collecting:
+            gc.enable()
         # Loaded; what follows may compile the verifier's kernels (once per machine, 10-15 s
         # of CPU): the parent then waits longer than for a load.
         conn.send(("loaded", cell.model.name, time.perf_counter() - started))
         _warm_verifier(scene)  # and verified: load its compiled kernels now too
+        gc.freeze()
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:
         conn.send(("failed", exc, 0.0))
         return
+    finally:
+        if collecting:
+            gc.enable()
     while True:
         try:
             message = conn.recv()
