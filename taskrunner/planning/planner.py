@@ -548,8 +548,24 @@ class MotionPlanner:
         # the screen's compiled loop, as far as the first collision.
         line = screen.line_scanner() if isinstance(columns, slice) and not mimic else None
         first = columns.start if isinstance(columns, slice) else 0
+        # ... and there, the step count too, the fractions taken from the process's table.
+        segment = (screen.segment_scanner(base, first, _FRACTIONS, resolution)
+                   if line is not None else None)
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
+            if segment is not None:
+                known_end = known is not None and b.tobytes() in known
+                hit, steps = segment(a, b, 1 if known_end else 0)
+                if hit == -2 and steps <= _TABLE_STEPS:
+                    _fill_fractions(steps)
+                    hit, steps = segment(a, b, 1 if known_end else 0)
+                if hit != -2:
+                    begin = 1 if known_end else 0
+                    if begin < steps:
+                        count[0] += steps - begin if hit < 0 else hit - begin + 1
+                    if known is not None and not known_end and hit != 0:
+                        known.add(b.tobytes())
+                    return hit < 0
             steps = max(1, math.ceil(max(map(abs, (b - a).tolist())) / resolution))
             cached = orders.get(steps)
             if cached is None:
@@ -803,6 +819,20 @@ def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type
         assert best is not None
         raise best
     return found
+
+
+# The edge checks' fractions per number of steps (row ``steps``: the end's 1.0, then
+# ``_bisection_order(steps) / steps``), up to _TABLE_STEPS steps, each row filled the first
+# time an edge of that many steps comes (a row not starting with 1.0 is not filled yet);
+# longer edges take their fractions from ``_bisection_order`` directly.
+_TABLE_STEPS = 256
+_FRACTIONS = np.zeros((_TABLE_STEPS + 1, _TABLE_STEPS))
+
+
+def _fill_fractions(steps: int) -> None:
+    row = _FRACTIONS[steps]
+    row[1:steps] = _bisection_order(steps) / steps
+    row[0] = 1.0  # last: marks the row filled for the compiled scan reading it
 
 
 @functools.lru_cache(maxsize=1024)

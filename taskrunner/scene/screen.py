@@ -227,8 +227,53 @@ class StateScreen:
 
         def scan(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray, b: np.ndarray,
                  first: int, begin: int) -> int:
-            return _until_collision(_first_uncleared_on_line, (rows, fractions, a, b, first),
-                                    begin, tail, rows, found, collide, to_pin)
+            table = fractions.reshape(1, -1)
+            while True:
+                row, count, _ = _first_uncleared_on_line(rows, table, a, b, first, begin,
+                                                         len(fractions), 1.0, *tail)
+                if row < 0:
+                    return -1
+                if count < 0 or collide(to_pin(rows[row]), found[:count]):
+                    return int(row)
+                begin = row + 1
+
+        return scan
+
+    def segment_scanner(self, base: np.ndarray, first: int, table: np.ndarray,
+                        resolution: float) -> Callable[[np.ndarray, np.ndarray, int],
+                                                       tuple[int, int]] | None:
+        """A search's edge check, for one thread (None where the screen runs coal alone):
+        ``scan(a, b, begin)`` checks the segment from ``a`` to ``b`` (the values of columns
+        ``first`` to ``first + len(a)`` of ``base``, a full state; the other columns are
+        ``base``'s) cut in ``steps = max(1, ceil(max |b - a| / resolution))`` steps: its
+        states at the fractions ``table[steps, begin:steps]`` (row ``steps`` of ``table``:
+        the end's 1.0 first, then the inner states in the order to check them), and returns
+        the first of them in collision (its position in that row) or -1, and ``steps``.
+        -2: ``table`` has no row for that many steps, or not yet (a row not starting with
+        1.0): fill it (``table`` is read, not copied) and call again, or check the segment
+        otherwise. The step count, the interpolation and the screening run in one
+        compiled call."""
+        if not self.supported:
+            return None
+        if (table.dtype != np.float64 or not table.flags.c_contiguous or table.ndim != 2
+                or table.shape[0] < 2 or table.shape[1] < table.shape[0] - 1):
+            raise ValueError("'table' must be a C-contiguous float array with a row of "
+                             f"fractions per step count (got {table.dtype}, {table.shape})")
+        rows = np.empty((table.shape[0] - 1, self.robot.nq))
+        rows[:] = np.asarray(base, dtype=float)
+        work, found = self._new_buffers()
+        tail = self._tail(work, found)
+        collide, to_pin = self.checker.pairs_collide, self.robot.to_pin
+
+        def scan(a: np.ndarray, b: np.ndarray, begin: int) -> tuple[int, int]:
+            while True:
+                row, count, steps = _first_uncleared_on_line(rows, table, a, b, first, begin,
+                                                             0, resolution, *tail)
+                if row < 0:
+                    return row, steps
+                if count < 0 or collide(to_pin(rows[row]), found[:count]):
+                    return row, steps
+                begin = row + 1
 
         return scan
 
@@ -303,6 +348,9 @@ def _scan_both(screen: StateScreen, states: np.ndarray) -> None:
     rows = states.copy()
     values = np.ascontiguousarray(states[0])
     screen.line_scanner()(rows, np.array([1.0, 0.5]), values, values.copy(), 0, 0)
+    scan = screen.segment_scanner(states[0], 0, np.array([[0.0], [1.0]]), 1.0)
+    if scan is not None:
+        scan(values, values.copy(), 0)
 
 
 def _warm_mark() -> Path:
@@ -489,19 +537,36 @@ def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, reach2, movi
 
 
 @_jit
-def _first_uncleared_on_line(rows, fractions, a, b, first, begin, tree_i, tree_f, gi, geo,  # type: ignore[no-untyped-def]
-                             pairs, reach2, moving, work, found):
+def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, tree_i, tree_f,  # type: ignore[no-untyped-def]
+                             gi, geo, pairs, reach2, moving, work, found):
     """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
     values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
-    row ``s`` is written ``a + fractions[s] (b - a)`` there (``b`` itself at fraction 1)
-    before it is screened, so that a row returned holds its state."""
-    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
+    row ``s`` (``begin <= s < steps``) is written ``a + f (b - a)`` there, ``f`` the
+    fraction ``table[0, s]`` (``b`` itself at 1), before it is screened, so that a row
+    returned holds its state. ``steps`` 0: the segment's own count,
+    ``max(1, ceil(max |b - a| / resolution))``, and the fractions ``table[steps]``
+    (``(-2, 0, steps)`` without such a row, or where it does not start with 1.0).
+    Returns the row, the pairs left (as :func:`_first_uncleared`) and ``steps``."""
     n = a.shape[0]
-    for s in range(begin, rows.shape[0]):
+    if steps > 0:
+        fractions = table[0]
+    else:
+        longest = 0.0
+        for i in range(n):
+            gap = abs(b[i] - a[i])
+            if gap > longest:
+                longest = gap
+        steps = max(1, math.ceil(longest / resolution))
+        if steps >= table.shape[0] or steps > rows.shape[0] or table[steps, 0] != 1.0:
+            return -2, 0, steps
+        fractions = table[steps]
+    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
+    for s in range(begin, steps):
         f = fractions[s]
         for i in range(n):
             rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found)
+        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work,
+                           found)
         if count != 0:
-            return s, count
-    return -1, 0
+            return s, count, steps
+    return -1, 0, steps

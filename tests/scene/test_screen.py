@@ -160,6 +160,47 @@ def test_line_scan_is_the_scan_of_the_interpolated_rows(panda_model: RobotModel)
     assert any(h < 0 for h in hits) and any(h >= 0 for h in hits)
 
 
+def test_segment_scan_counts_its_steps_and_is_the_line_scan_of_its_table_row(
+        panda_model: RobotModel) -> None:
+    scene = _panda_cell(panda_model)
+    screen = _screen(scene)
+    line = screen.line_scanner()
+    arm = scene.robot.group("arm").joint_indices
+    first = int(arm[0])
+    rng = np.random.default_rng(10)
+    base = scene.state.copy()
+    resolution = 0.07
+    table = np.zeros((41, 40))  # rows up to 40 steps, filled as they come
+    segment = screen.segment_scanner(base, first, table, resolution)
+    assert segment is not None
+    seen = {"free": 0, "hit": 0, "unfilled": 0, "too long": 0}
+    for _ in range(80):
+        a = panda_model.random_state(rng)[arm]
+        b = a + rng.choice([-1.0, 1.0]) * rng.uniform(0.0, 3.5, len(arm))
+        steps = max(1, int(np.ceil(np.max(np.abs(b - a)) / resolution)))
+        hit, counted = segment(a, b, 0)
+        assert counted == steps
+        if steps > 40:
+            assert hit == -2
+            seen["too long"] += 1
+            continue
+        if table[steps, 0] != 1.0:
+            assert hit == -2  # the row is not filled yet
+            seen["unfilled"] += 1
+            table[steps, :steps] = np.concatenate([[1.0], rng.permutation(np.arange(1, steps))
+                                                   / steps])
+        fractions = table[steps, :steps].copy()
+        for begin in (0, 1):
+            rows = np.repeat(base[None, :], steps, axis=0)
+            want = line(rows, fractions, a, b, first, begin) if begin < steps else -1
+            got, counted = segment(a, b, begin)
+            assert (got, counted) == (want, steps)
+            seen["free" if got < 0 else "hit"] += 1
+    assert all(count > 0 for count in seen.values()), seen
+    with pytest.raises(ValueError, match="row of fractions per step count"):
+        screen.segment_scanner(base, first, np.zeros((5, 2)), resolution)
+
+
 def test_without_compiled_kinematics_the_scans_are_the_checkers(panda_model: RobotModel) -> None:
     scene = _panda_cell(panda_model)
     screen = _screen(scene)
