@@ -36,6 +36,7 @@ from __future__ import annotations
 import math
 import threading
 import weakref
+from collections import OrderedDict
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import cast
@@ -50,7 +51,8 @@ from taskrunner.robot.model import RobotModel
 from taskrunner.types import Pose
 
 __all__ = ["Approximation", "Lift", "StagedGoals", "approach_goals", "approximate",
-           "approximate_goals", "orientation_error", "staged_approach_goals", "wrist_roll"]
+           "approximate_goals", "forget", "orientation_error", "staged_approach_goals",
+           "wrist_roll"]
 
 Lift = Callable[[int, pin.SE3], np.ndarray]
 """``(index of a wanted pose, link pose reached there) -> world offset (m)``."""
@@ -137,6 +139,47 @@ def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
     return solver
 
 
+_MEMO_SIZE = 512
+_MEMO: OrderedDict[tuple[object, ...], tuple[weakref.ref, object]] = OrderedDict()
+_MEMO_LOCK = threading.Lock()
+
+
+def _remembered(model: RobotModel, key: tuple[object, ...], make: Callable[[], object]) -> object:
+    """``make()``, remembered for ``model`` and ``key`` (the last :data:`_MEMO_SIZE` kept).
+
+    The goal choice is a function of its inputs (the model, the poses, the start state,
+    the seed; solvers' answers do not depend on their earlier calls), and a task is
+    chosen for twice with the same ones: by ``run-task check``'s dry run and by the run
+    that follows in the same process. Values are kept read-only and shared."""
+    full = (id(model), *key)
+    with _MEMO_LOCK:
+        hit = _MEMO.get(full)
+        if hit is not None and hit[0]() is model:
+            _MEMO.move_to_end(full)
+            return hit[1]
+    value = make()
+    with _MEMO_LOCK:
+        _MEMO[full] = (weakref.ref(model), value)
+        while len(_MEMO) > _MEMO_SIZE:
+            _MEMO.popitem(last=False)
+    return value
+
+
+def forget() -> None:
+    """Drop every remembered goal choice (see :func:`_remembered`)."""
+    with _MEMO_LOCK:
+        _MEMO.clear()
+
+
+def _frozen(q: np.ndarray) -> np.ndarray:
+    q.setflags(write=False)
+    return q
+
+
+def _bytes(pose: pin.SE3) -> bytes:
+    return pose.homogeneous.tobytes()
+
+
 class _Frames:
     """Forward kinematics of one frame (a private pin.Data): the joints' placements and
     that frame's only (the same arithmetic as every frame's)."""
@@ -190,11 +233,18 @@ def staged_approach_goals(model: RobotModel, group: str, link: str, contact: Seq
            for i, p in enumerate(contact)]
     found: list[Iterator[np.ndarray]] = []
     for away, there in zip(pre, contact):
-        try:
-            solutions = solver.solve_all(away, seed_q=start, options=options)
-        except IkFailedError:
+        def solve(away: pin.SE3 = away) -> tuple[np.ndarray, ...] | None:
+            try:
+                return tuple(_frozen(np.array(s.q)) for s in solver.solve_all(
+                    away, seed_q=start, options=options))
+            except IkFailedError:
+                return None
+        solutions = _remembered(model, ("solutions", group, link, _bytes(away), start.tobytes(),
+                                        seed, FULL_POSE_SOLUTIONS), solve)
+        if solutions is None:
             continue
-        found.append(_followers(solver, [np.array(s.q) for s in solutions], away, there))
+        assert isinstance(solutions, tuple)
+        found.append(_followers(model, group, link, solver, list(solutions), away, there))
 
     def otherwise() -> tuple[Goal, ...]:
         # No line can be followed: plan to the pre-poses anyway; the straight move will
@@ -267,12 +317,23 @@ class StagedGoals:
         return False
 
 
-def _followers(solver: IkSolver, states: list[np.ndarray], away: pin.SE3, there: pin.SE3
-               ) -> Iterator[np.ndarray]:
+def _followers(model: RobotModel, group: str, link: str, solver: IkSolver,
+               states: list[np.ndarray], away: pin.SE3, there: pin.SE3) -> Iterator[np.ndarray]:
     """The states (at ``away``) from which the line to ``there`` can be followed, in order."""
     for q in states:
-        if _follows(solver, q, away, there) is not None:
+        if _line(model, group, link, solver, q, away, there) is not None:
             yield q
+
+
+def _line(model: RobotModel, group: str, link: str, solver: IkSolver, q: np.ndarray,
+          start: pin.SE3, end: pin.SE3, rotation: np.ndarray | None = None) -> np.ndarray | None:
+    """:func:`_follows`, remembered (see :func:`_remembered`)."""
+    def follow() -> np.ndarray | None:
+        reached = _follows(solver, q, start, end, rotation)
+        return None if reached is None else _frozen(reached)
+    key = ("line", group, link, q.tobytes(), _bytes(start), _bytes(end),
+           None if rotation is None else rotation.tobytes(), LINE_STEP, LINE_TURN, MAX_JOINT_STEP)
+    return cast(np.ndarray | None, _remembered(model, key, follow))
 
 
 def _in_turn(iterators: list[Iterator[np.ndarray]]) -> Iterator[np.ndarray]:
@@ -387,8 +448,8 @@ def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
             if key in followed:
                 q = followed[key]
             else:
-                q = followed[key] = _follows(solver, item.q, reached, there,
-                                             rotation=reached.rotation)
+                q = followed[key] = _line(model, group, link, solver, item.q, reached, there,
+                                          rotation=reached.rotation)
             if q is not None:
                 count += 1
                 yield q
@@ -426,7 +487,26 @@ def _approximations(model: RobotModel, group: str, link: str, wanted: Sequence[p
                     start: np.ndarray, seed: int, point: np.ndarray | None = None,
                     grasping: bool = False) -> list[tuple[Approximation, pin.SE3]]:
     """:func:`approximate`'s candidates, each with its frame's pose (the forward
-    kinematics its angle was measured on, for the caller to reuse)."""
+    kinematics its angle was measured on, for the caller to reuse); remembered (see
+    :func:`_remembered`: their states read-only, the poses not to be changed)."""
+    start = np.asarray(start, dtype=float)
+    key = ("approximations", group, link, b"".join(_bytes(p) for p in wanted), start.tobytes(),
+           seed, None if point is None else np.asarray(point, dtype=float).tobytes(), grasping,
+           SAMPLES, FIXED_POINT_ROUNDS, FREE_TURN_WEIGHT)
+
+    def compute() -> tuple[tuple[Approximation, pin.SE3], ...]:
+        found = _compute_approximations(model, group, link, wanted, start, seed, point,
+                                        grasping)
+        for item, _ in found:
+            _frozen(item.q)
+        return tuple(found)
+    return list(cast(tuple[tuple[Approximation, pin.SE3], ...], _remembered(model, key, compute)))
+
+
+def _compute_approximations(model: RobotModel, group: str, link: str,
+                            wanted: Sequence[pin.SE3], start: np.ndarray, seed: int,
+                            point: np.ndarray | None = None, grasping: bool = False
+                            ) -> list[tuple[Approximation, pin.SE3]]:
     offset = np.zeros(3) if point is None else np.asarray(point, dtype=float)
     solver = _solver(model, group, link)
     fk = _Frames(model, link)

@@ -153,3 +153,40 @@ def test_a_blocked_first_line_asks_again_with_every_goal(panda_cell):
     # The second goal, by its straight line.
     assert positions.shape[0] >= 2
     assert positions[-1][list(idx).index(0)] == pytest.approx(-0.5)
+
+
+# ----------------------------------------------------------------------------- memo
+@pytest.mark.parametrize(("robot", "group", "link"), ARMS)
+def test_a_remembered_choice_is_the_choice_made_afresh(robot, group, link, request,
+                                                         monkeypatch):
+    """``run-task check`` and the run choose with the same inputs: the second gets the
+    first's answers, which are what a fresh choice gives."""
+    model = request.getfixturevalue(f"{robot}_model")
+    start = model.default_state()
+    contact = _contact(model, group, link, 6)
+    reach.forget()
+    first = reach.approach_goals(model, group, link, contact, _back, start, seed=5)
+    solves = []
+    monkeypatch.setattr(reach, "_follows", lambda *a, **k: solves.append(a))
+    again = reach.approach_goals(model, group, link, contact, _back, start, seed=5)
+    assert _values(again) == _values(first) and not solves  # nothing solved again
+    monkeypatch.undo()
+    reach.forget()
+    reach._SOLVERS.models = {}  # fresh solvers too
+    fresh = reach.approach_goals(model, group, link, contact, _back, start, seed=5)
+    assert _values(fresh) == _values(first)
+    # Other inputs are another choice: computed, not taken from this one's.
+    for other_seed, poses in ((6, contact), (5, contact[1:])):
+        known = len(reach._MEMO)
+        reach.approach_goals(model, group, link, poses, _back, start, seed=other_seed)
+        assert len(reach._MEMO) > known
+
+
+def test_remembered_states_are_read_only(servo_arm_model):
+    model = servo_arm_model
+    contact = _contact(model, "arm", "tool0", 3)
+    reach.forget()
+    found = reach.approximate(model, "arm", "tool0", contact, model.default_state(), 4)
+    assert found and not any(a.q.flags.writeable for a in found)
+    again = reach.approximate(model, "arm", "tool0", contact, model.default_state(), 4)
+    assert [a.q.tobytes() for a in again] == [a.q.tobytes() for a in found]
