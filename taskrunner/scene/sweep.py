@@ -41,7 +41,12 @@ The walk is adaptive per pair: after a measurement ``(s, d)`` that extends the c
 stretch, the next one is optimistic, where the bound reaches ``(1 + GAIN) d`` (at least
 ``margin``), since a pair's distance rarely falls as fast as its bound allows; if that
 one does not cover the gap with the last, measurements at ``d`` steps fill it from the
-left (each is covered whatever it measures: the walk always advances). Pairs due at
+left (each is covered whatever it measures: the walk always advances). Pairs whose bound
+``B`` is the same function (the same joints move one body and not the other, with the same
+lever arms: a link and each of the world objects) are walked as one *unit*: its
+measurement is the least of its pairs' lower bounds, a lower bound on each pair's
+distance, so the coverage above holds for every pair of it, and a link near one shelf
+board of ten is scheduled once, not ten times. Units due at
 nearby positions share one forward kinematics (a geometry is placed only when a pair of
 it is measured). A measurement is a lower bound on the distance: far pairs take a cheap
 one, computed in compiled code (bounding spheres, bounding boxes: see
@@ -97,11 +102,14 @@ GAIN = 1.0  # optimistic step: (1 + GAIN) times the last distance (see the modul
 _BISECTIONS = 4  # at most this many evaluations to place a step inside a segment
 _CLOSE = 0.1  # a step placed within this fraction short of its bound is close enough
 
-# Columns of the per-pair walk state (a float array, one row per pair; its lever arms on
-# the left and on the right follow). When each pair is due next, and from where it may be
-# measured early, are rows 0 and 1 of the schedule (inf: done).
-_HAS_L, _PL, _DL, _HAS_R, _PR, _DR = range(6)
-_COLUMNS = 6
+# Columns of the walk state (a float array, one row per unit: pairs whose motion bound is
+# the same function, see :func:`_group_pairs`; its lever arms on the left and on the right
+# follow): the measurements on the left and right of a gap, and while a unit's members wait
+# for coal's distances, the least distance of those in and how many are pending. When each
+# unit is due next, and from where it may be measured early, are rows 0 and 1 of the
+# schedule (inf: done).
+_HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _UMIN, _UPENDING = range(8)
+_COLUMNS = 8
 _REVOLUTE, _PRISMATIC = 1, 2
 CHEAP_FROM = 0.01  # m: a pair whose cheap lower bound is at least this takes it, not coal's
 # m: below CHEAP_FROM, a pair of boxes and convex hulls takes the bound from their support
@@ -208,6 +216,17 @@ class PathVerifier:
         self._pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
         _pair_rows(first, second, levers, tree.order, tree.revolute, tree.state_joint,
                    tree.supported, self._pair_levers, self._pair_i)
+        # Pairs that move alike (a link and each world object: the same joints, lever arms)
+        # are walked as one unit, measured together, their least distance its measurement.
+        unit_of = np.zeros(len(first), dtype=np.int64)
+        representative = np.zeros(len(first), dtype=np.int64)
+        units = _group_pairs(self._pair_i, self._pair_levers, unit_of, representative)
+        self._unit_of = unit_of
+        self._members = np.argsort(unit_of, kind="stable").astype(np.int64)
+        self._unit_from = np.zeros(units + 1, dtype=np.int64)
+        np.cumsum(np.bincount(unit_of, minlength=units), out=self._unit_from[1:])
+        self._unit_i = self._pair_i[representative[:units]].copy()
+        self._unit_levers = self._pair_levers[representative[:units]].copy()
         self._kinematics = _Kinematics(tree, self._geo_i, self._geo_f)
         self._settings = np.zeros(_S_COUNT)
         self._settings[:5] = (margin, _DISTANCE_SLACK, GAIN, _EARLY,
@@ -298,13 +317,14 @@ class PathVerifier:
         cumulative = np.empty_like(states)                    # per joint, sum of |dq|
         own = self._busy.acquire(blocking=False)              # else: a concurrent call
         try:
-            walk, schedule, selected, distances, q, frames, settings = \
+            walk, schedule, picked, selected, distances, q, frames, settings = \
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             kin = self._kinematics
             walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._points,
-                      self._pair_i, self._pair_levers, states, cumulative, frames, walk,
-                      schedule, selected, distances, q, settings)
+                      self._pair_i, self._unit_i, self._unit_levers, self._members,
+                      self._unit_from, self._unit_of, states, cumulative, frames, walk,
+                      schedule, picked, selected, distances, q, settings)
             queries = evaluated = 0
             pair_distances, to_pin = self._checker.pair_distances, self.robot.to_pin
             while True:
@@ -330,11 +350,12 @@ class PathVerifier:
                 self._busy.release()
 
     def _new_buffers(self) -> tuple[np.ndarray, ...]:
-        """Work arrays of :func:`_walk`: walk state, schedule, selected pairs, their
-        distances, the state, its frames, the settings."""
-        n_pairs, nq = len(self._first), self.robot.nq
-        return (np.zeros((n_pairs, _COLUMNS + 2 * nq)), np.zeros((2, n_pairs)),
-                np.zeros(n_pairs, dtype=np.int64),
+        """Work arrays of :func:`_walk`: walk state and schedule (per unit), the units
+        picked, the pairs selected for coal's distances, those distances, the state, its
+        frames, the settings."""
+        n_pairs, n_units, nq = len(self._first), len(self._unit_i), self.robot.nq
+        return (np.zeros((n_units, _COLUMNS + 2 * nq)), np.zeros((2, n_units)),
+                np.zeros(n_units, dtype=np.int64), np.zeros(n_pairs, dtype=np.int64),
                 np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(), np.zeros(_S_COUNT))
 
 
@@ -1174,8 +1195,9 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
 
 
 @_jit
-def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cumulative,  # type: ignore[no-untyped-def]
-          frames, walk, schedule, selected, distances, q, settings):
+def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
+          unit_from, unit_of, states, cumulative, frames, walk, schedule, picked, selected,
+          distances, q, settings):
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -1183,8 +1205,12 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cum
     contact (``settings[_S_BAD]``: its index into ``selected``), ``_NOT_FINITE`` for a
     state that is not finite (its row in ``settings[_S_BAD]``). The first call fills
     ``cumulative`` (per joint, the sum of ``|dq|`` up to each state) and resets ``walk``.
-    Pairs whose cheap lower bound is at least ``settings[4]`` take it as their
-    measurement."""
+
+    The walk schedules units (``unit_i``, ``unit_levers``: rows like ``pair_i``'s and the
+    pair lever arms, one per unit; the pairs of unit ``u`` are ``members[unit_from[u]:
+    unit_from[u + 1]]``, ``unit_of`` the reverse): a unit's measurement is the least of
+    its pairs' lower bounds. Pairs whose cheap lower bound is at least ``settings[4]``
+    take it as their measurement."""
     nj = tree_i.shape[0]
     n, nq = states.shape
     if settings[_S_STARTED] == 0.0:
@@ -1202,7 +1228,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cum
         for k in range(walk.shape[0]):
             for column in range(_COLUMNS):
                 walk[k, column] = 0.0
-            schedule[0, k] = 0.0                   # every pair is measured at the start
+            schedule[0, k] = 0.0                   # every unit is measured at the start
             schedule[1, k] = 0.0
         for g in range(geo_i.shape[0]):
             frames[nj + g, _FR_PLACED] = -1.0      # not placed
@@ -1211,34 +1237,49 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cum
     cheap_from = settings[4]
     exact_from = settings[_S_EXACT_FROM]
     slack = settings[1]
-    # First the exact distances the caller measured (if any), then on along the path; one
-    # loop, so that the measurement's code is compiled once.
-    count = int(settings[_S_PENDING])
-    exact_phase = count > 0
-    settings[_S_PENDING] = 0.0
     s = settings[_S_AT]
-    stamp = settings[_S_STATES]
+    # First the exact distances the caller measured (if any): each unit whose pairs are all
+    # in takes the least distance as its measurement.
+    count = int(settings[_S_PENDING])
+    settings[_S_PENDING] = 0.0
+    for i in range(count):
+        k = selected[i]
+        d = distances[i] - slack
+        if not d > 0.0:  # also NaN
+            settings[_S_BAD] = i
+            return -1
+        u = unit_of[k]
+        if d < walk[u, _UMIN]:
+            walk[u, _UMIN] = d
+        walk[u, _UPENDING] -= 1.0
+    for i in range(count):
+        u = unit_of[selected[i]]
+        if walk[u, _UPENDING] == 0.0:
+            walk[u, _UPENDING] = -1.0  # measured once
+            _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geo_f, frames, nj,
+                     walk, schedule, c0, settings)
+    # Then on along the path.
     while True:
-        if not exact_phase:
-            count, s = _pick(walk, schedule, selected, states, q)
-            if count == 0:
-                return 0
-            settings[_S_AT] = s
-            if not per_state:
-                settings[_S_PENDING] = count
-                return count
+        picks, s = _pick(walk, schedule, picked, states, q)
+        if picks == 0:
+            return 0
+        settings[_S_AT] = s
+        if per_state:
             _joint_frames(q, tree_i, tree_f, frames)
             settings[_S_STATES] += 1.0
-            stamp = settings[_S_STATES]
+        stamp = settings[_S_STATES]
         exact = 0
-        for i in range(count):
-            k = selected[i]
-            if exact_phase:
-                d = distances[i] - slack
-                if not d > 0.0:  # also NaN
-                    settings[_S_BAD] = i
-                    return -1
-            else:
+        for i in range(picks):
+            u = picked[i]
+            least = np.inf
+            pending = 0
+            for m in range(unit_from[u], unit_from[u + 1]):
+                k = members[m]
+                if not per_state:
+                    selected[exact] = k
+                    exact += 1
+                    pending += 1
+                    continue
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 if frames[nj + a, _FR_PLACED] < stamp:
                     _place(a, geo_i, geo_f, frames, nj, stamp)
@@ -1252,14 +1293,19 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, pair_levers, states, cum
                     if not (bound > -np.inf and d >= exact_from):
                         selected[exact] = k
                         exact += 1
+                        pending += 1
                         continue
                     settings[_S_SUPPORTS] += 1.0
                 settings[_S_BOUNDS] += 1.0
-            _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule,
-                     c0, settings)
-        if exact_phase:
-            exact_phase = False
-        elif exact > 0:
+                if d < least:
+                    least = d
+            if pending == 0:
+                _measure(u, least, s, cumulative, unit_i, unit_levers, geo_f, frames, nj, walk,
+                         schedule, c0, settings)
+            else:
+                walk[u, _UMIN] = least
+                walk[u, _UPENDING] = pending
+        if exact > 0:
             settings[_S_PENDING] = exact
             return exact
 
@@ -1290,6 +1336,51 @@ def _support_bounds(pair_i, geo_i, geo_f, frames, points, nj, out):  # type: ign
     for k in range(pair_i.shape[0]):
         out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
                                 frames, points, nj)
+
+
+@_jit
+def _group_pairs(pair_i, pair_levers, unit_of, representative):  # type: ignore[no-untyped-def]
+    """Sort the pairs into units of pairs whose motion bound is the same function (the
+    same joints counting, each with the same code, moved geometry and lever arms; the
+    codes may all name the other body, which bounds alike): ``unit_of[k]`` is pair ``k``'s
+    unit, ``representative[u]`` the first pair of unit ``u``. Returns the count of units.
+    A link and each world object form such pairs: one unit per link."""
+    nq = pair_levers.shape[1]
+    units = 0
+    for k in range(pair_i.shape[0]):
+        count = pair_i[k, _PI_COUNT]
+        found = -1
+        for u in range(units):
+            r = representative[u]
+            if pair_i[r, _PI_COUNT] != count:
+                continue
+            same = True
+            for j in range(nq):
+                if pair_levers[r, j] != pair_levers[k, j]:
+                    same = False
+                    break
+            if not same:
+                continue
+            flip = count > 0 and (pair_i[r, _PI_JOINTS + nq] % 2) != (pair_i[k, _PI_JOINTS + nq] % 2)
+            for i in range(count):
+                code_r = pair_i[r, _PI_JOINTS + nq + i]
+                code_k = pair_i[k, _PI_JOINTS + nq + i]
+                if flip:
+                    code_k = code_k + 1 if code_k % 2 == 1 else code_k - 1
+                if (pair_i[r, _PI_JOINTS + i] != pair_i[k, _PI_JOINTS + i] or code_r != code_k
+                        or pair_i[r, _PI_JOINTS + 2 * nq + i] != pair_i[k, _PI_JOINTS + 2 * nq + i]
+                        or pair_i[r, _PI_JOINTS + 3 * nq + i] != pair_i[k, _PI_JOINTS + 3 * nq + i]):
+                    same = False
+                    break
+            if same:
+                found = u
+                break
+        if found < 0:
+            representative[units] = k
+            found = units
+            units += 1
+        unit_of[k] = found
+    return units
 
 
 @_jit

@@ -18,7 +18,7 @@ from plan_helpers import READY
 
 from taskrunner.errors import PlanningError
 from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
-from taskrunner.scene import Scene
+from taskrunner.scene import Scene, sweep
 from taskrunner.scene.sweep import PathVerifier, lever_arms
 from taskrunner.shapes import Box
 from taskrunner.types import Pose
@@ -205,9 +205,49 @@ def test_a_plate_clipped_between_any_coarse_states_is_found(panda_model):
         # another order, once other tests had loaded the Panda).
         assert result.state is not None and scene.min_distance(result.state).distance < 1e-5
         weakened = PathVerifier(scene.robot, scene.checker)
-        weakened._pair_levers = weakened._pair_levers * 0.6   # a deliberately unsound bound
+        weakened._unit_levers = weakened._unit_levers * 0.6   # a deliberately unsound bound
         fooled += weakened.verify(states).valid
     assert fooled > 0
+
+
+def test_pairs_that_move_alike_are_walked_as_one_unit(panda_model):
+    """A link's pairs with the world objects share their motion bound: one unit each;
+    pairs of two moving links stay apart. The verdicts hold with or without compiled
+    kinematics (exact distances of every pair of a unit, full-reach lever arms)."""
+    rng = np.random.default_rng(5)
+    cases = []
+    while len(cases) < 12:
+        found = _clipped_sweep(panda_model, rng, depth=0.001 if len(cases) % 2 else -0.003)
+        if found is not None:
+            cases.append(found)
+    for n, (scene, states) in enumerate(cases):
+        scene.add_object("post", Box((0.05, 0.05, 0.3)), Pose((0.6, -0.6, 0.15)))
+        verifier = PathVerifier(scene.robot, scene.checker)
+        geometry = scene.checker.geometry_model
+        fixed = {g for g, obj in enumerate(geometry.geometryObjects) if obj.parentJoint == 0}
+        by_link: dict[int, set[int]] = {}
+        for k, (a, b) in enumerate(zip(verifier._first, verifier._second)):
+            unit = int(verifier._unit_of[k])
+            assert k in verifier._members[verifier._unit_from[unit]:verifier._unit_from[unit + 1]]
+            if (a in fixed) != (b in fixed):
+                by_link.setdefault(int(b if a in fixed else a), set()).add(unit)
+            elif a not in fixed and b not in fixed:
+                assert np.count_nonzero(verifier._unit_of == unit) == 1
+        assert by_link and all(len(units) == 1 for units in by_link.values())
+        assert len(set(map(min, by_link.values()))) == len(by_link)
+        assert len(verifier._unit_i) < len(verifier._first)
+        clipped = n % 2 == 1
+        assert _collides_somewhere(scene, states) == clipped
+        exact_only = PathVerifier(scene.robot, scene.checker)
+        exact_only._settings[4] = np.inf       # no cheap bounds: coal's distances only
+        exact_only._settings[sweep._S_PER_STATE] = 0.0  # full-reach lever arms, no kinematics
+        for checked in (verifier, exact_only):
+            result = checked.verify(states)
+            assert result.valid == (not clipped)
+            if clipped:
+                assert result.pair is not None and "plate/0" in result.pair
+        alone = exact_only.verify(states)
+        assert alone.bounds == 0 and alone.distance_queries >= len(verifier._first)
 
 
 def test_compiled_kinematics_match_pinocchio(panda_model, ur5_model):
