@@ -28,10 +28,15 @@ sets ``PYTHONDONTWRITEBYTECODE`` would otherwise have every warm run compile tas
 ~90 modules from source again (0.2-0.3 s, which an installed package never pays).
 ``--no-bytecode-cache`` keeps the environment's setting instead.
 
+``--busy N`` keeps N other processes busy (a Python loop each, at the same priority) for
+the whole measurement: a known share of the CPUs taken, on top of whatever else the
+machine runs (the load average is reported either way).
+
 Usage::
 
     python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold]
                                  [--json] [--pythonpath DIR] [--no-bytecode-cache]
+                                 [--busy N]
 
 ``--pythonpath DIR`` runs the taskrunner found in DIR instead (``git archive`` of an
 older commit, for a before/after in the same run). Prints a table, and with ``--json``
@@ -125,9 +130,28 @@ def _stats(values: list[float]) -> dict[str, float]:
             "min": float(array.min()), "max": float(array.max())}
 
 
+_BUSY_LOOP = "import time\nwhile True:\n    for i in range(100000):\n        pass\n"
+
+
 def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = False,
-        pythonpath: str | None = None, bytecode_cache: bool = True) -> dict[str, Any]:
-    """Measure ``runs`` warm starts (and one cold one with ``cold``); see the module doc."""
+        pythonpath: str | None = None, bytecode_cache: bool = True,
+        busy: int = 0) -> dict[str, Any]:
+    """Measure ``runs`` warm starts (and one cold one with ``cold``), with ``busy`` other
+    processes spinning meanwhile; see the module doc."""
+    spinning = [subprocess.Popen([sys.executable, "-c", _BUSY_LOOP], stdin=subprocess.DEVNULL)
+                for _ in range(busy)]
+    try:
+        result = _measure(task, runs, seed, cold, pythonpath, bytecode_cache)
+    finally:
+        for process in spinning:
+            process.kill()
+            process.wait()
+    result["busy"] = busy
+    return result
+
+
+def _measure(task: str, runs: int, seed: int, cold: bool, pythonpath: str | None,
+             bytecode_cache: bool) -> dict[str, Any]:
     env = dict(os.environ)
     env.pop("PYTHONPROFILEIMPORTTIME", None)
     if pythonpath:
@@ -177,6 +201,8 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
                     str(result["failed_runs"])))
     out.append(("warm runs' bytecode", "cached (own folder)" if result.get("bytecode_cache")
                 else "as the environment says (PYTHONDONTWRITEBYTECODE: compiled every run)"))
+    if result.get("busy"):
+        out.append(("other processes kept busy meanwhile", str(result["busy"])))
     out.append(("load average (1 min) before / after",
                 f"{result['load_before']:.2f} / {result['load_after']:.2f}"))
     return out
@@ -194,9 +220,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-bytecode-cache", action="store_true",
                         help="warm runs keep the environment's PYTHONDONTWRITEBYTECODE and "
                              "PYTHONPYCACHEPREFIX (see the module doc)")
+    parser.add_argument("--busy", type=int, default=0, metavar="N",
+                        help="keep N other processes busy meanwhile (0)")
     args = parser.parse_args(argv)
+    if args.busy < 0:
+        parser.error("--busy must be 0 or more")
     result = run(args.task, args.runs, args.seed, args.cold, args.pythonpath,
-                 not args.no_bytecode_cache)
+                 not args.no_bytecode_cache, args.busy)
     table = rows(result)
     width = max(len(what) for what, _ in table)
     for what, figure in table:
