@@ -73,5 +73,5 @@ def lighter_cache_loads() -> bool:
     load_overload._lighter = True  # type: ignore[attr-defined]
     load_overload.__wrapped__ = original  # type: ignore[attr-defined]
     load_overload.__doc__ = original.__doc__
-    cache.load_overload = load_overload
+    cache.load_overload = load_overload  # type: ignore[method-assign]
     return True
