@@ -537,7 +537,6 @@ class MotionPlanner:
         edges towards nodes of its own tree). Ends found valid are added."""
         model = self.scene.robot
         screen = self._state_screen(margin)
-        scan = screen.scanner()
         base = start.copy()
         columns, mimic = self._columns(group)
         # Per number of steps: the fractions of the states along the edge, the end's first
@@ -546,11 +545,12 @@ class MotionPlanner:
         orders: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         # Contiguous columns and no mimic joint to follow: the states are interpolated in
         # the screen's compiled loop, as far as the first collision.
-        line = screen.line_scanner() if isinstance(columns, slice) and not mimic else None
+        interpolated = isinstance(columns, slice) and not mimic
         first = columns.start if isinstance(columns, slice) else 0
         # ... and there, the step count too, the fractions taken from the process's table.
         segment = (screen.segment_scanner(base, first, _FRACTIONS, resolution)
-                   if line is not None else None)
+                   if interpolated else None)
+        scans: list[Callable[..., int]] = []  # the others' scan, made when first needed
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
             if segment is not None:
@@ -579,8 +579,10 @@ class MotionPlanner:
             begin = 0 if end else 1
             if begin >= steps:
                 return True
-            if line is not None:
-                hit = line(rows, fractions, a, b, first, begin)
+            if not scans:
+                scans.append(screen.line_scanner() if interpolated else screen.scanner())
+            if interpolated:
+                hit = scans[0](rows, fractions, a, b, first, begin)
             else:
                 states = rows[begin:]
                 states[:, columns] = a + fractions[begin:, None] * (b - a)
@@ -588,7 +590,7 @@ class MotionPlanner:
                     rows[0, columns] = b  # exactly the end (a + 1.0 * (b - a) may round)
                 if mimic:
                     model.apply_mimic(states)
-                hit = scan(states)
+                hit = scans[0](states)
                 hit = hit if hit < 0 else begin + hit
             count[0] += steps - begin if hit < 0 else hit - begin + 1
             if end and known is not None and hit != 0:
@@ -887,7 +889,7 @@ def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: n
         if len(path) < 3:
             break
         # Shortcut between points inside two different segments.
-        s1, s2 = sorted(rng.sample(range(len(path) - 1), 2))
+        s1, s2 = _two_of(rng, len(path) - 1)
         t1, t2 = rng.random(), rng.random()
         p1 = path[s1] + t1 * (path[s1 + 1] - path[s1])
         p2 = path[s2] + t2 * (path[s2 + 1] - path[s2])
@@ -901,6 +903,21 @@ def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: n
             lengths = (lengths[:s1] + [t1 * lengths[s1], span, (1.0 - t2) * lengths[s2]]
                        + lengths[s2 + 1:])
     return np.array(path)
+
+
+def _two_of(rng: random.Random, n: int) -> tuple[int, int]:
+    """``sorted(rng.sample(range(n), 2))`` (the same draws from ``rng``, so the same
+    pair), without ``sample``'s general-purpose overhead (a few µs a call)."""
+    first = rng.randrange(n)
+    if n <= 21:  # sample() picks from a pool, the picked slot refilled from its end
+        second = rng.randrange(n - 1)
+        if second == first:
+            second = n - 1
+    else:        # ... or draws again until the index is new
+        second = rng.randrange(n)
+        while second == first:
+            second = rng.randrange(n)
+    return (first, second) if first < second else (second, first)
 
 
 _VALIDATOR: list[type] = []
