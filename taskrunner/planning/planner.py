@@ -421,10 +421,13 @@ class MotionPlanner:
         see :meth:`_edge_validity` (the exact checks only; states found valid by the
         state check are added). ``margin``: the request's verification margin (see
         :meth:`_scan`)."""
-        exact, count = self._validity(group, start, margin)
         fast = self._fast_checker(group)
+        # One compiled segment scan for both (a state is a segment of one step).
+        segment = self._segment_scan(group, start, resolution, margin) if fast is None else None
+        exact, count = self._validity(group, start, margin, segment)
         if fast is None:
-            exact_edge = self._edge_validity(group, start, resolution, count, known, margin)
+            exact_edge = self._edge_validity(group, start, resolution, count, known, margin,
+                                             segment)
             if known is None:
                 return exact, exact_edge, count
 
@@ -490,16 +493,29 @@ class MotionPlanner:
         in collision, or -1 (:meth:`_state_screen`)."""
         return self._state_screen(margin).scanner()
 
-    def _validity(self, group: Group, start: np.ndarray, margin: float = VERIFY_MARGIN
+    def _validity(self, group: Group, start: np.ndarray, margin: float = VERIFY_MARGIN,
+                  segment: Callable[[np.ndarray, np.ndarray, int], tuple[int, int]] | None = None
                   ) -> tuple[Callable[[np.ndarray], bool], list[int]]:
-        """A fast validity check over the group's values, and a call counter."""
+        """A fast validity check over the group's values, and a call counter. ``segment``:
+        :meth:`_segment_scan`'s for the same start and margin, if any (a state is then
+        checked as a segment of one step)."""
+        count = [0]
+        if segment is not None:
+            def state_valid(values: np.ndarray) -> bool:
+                count[0] += 1
+                hit, _ = segment(values, values, 0)
+                if hit == -2:  # the table's row of one step, not filled yet
+                    _fill_fractions(1)
+                    hit, _ = segment(values, values, 0)
+                return hit == -1
+
+            return state_valid, count
         model = self.scene.robot
         scan = self._scan(margin)
         q = start.copy()
         rows = q[None, :]  # a view: the state as the one row the scan takes
         idx = group.joint_indices
         mimic = model.mimic_follows(idx)
-        count = [0]
 
         def is_valid(values: np.ndarray) -> bool:
             count[0] += 1
@@ -523,10 +539,23 @@ class MotionPlanner:
                                                        self.scene.robot.mimic_follows(idx))
         return found
 
+    def _segment_scan(self, group: Group, start: np.ndarray, resolution: float, margin: float
+                      ) -> Callable[[np.ndarray, np.ndarray, int], tuple[int, int]] | None:
+        """The screen's segment scan (:meth:`StateScreen.segment_scanner`) of the group's
+        values from ``start``, the fractions from the process's table; None where the
+        group's columns are not contiguous, a mimic joint follows one, or the screen runs
+        coal alone."""
+        columns, mimic = self._columns(group)
+        if not isinstance(columns, slice) or mimic:
+            return None
+        return self._state_screen(margin).segment_scanner(start.copy(), columns.start,
+                                                          _FRACTIONS, resolution)
+
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
                        count: list[int], known: set[bytes] | None = None,
-                       margin: float = VERIFY_MARGIN
-                       ) -> Callable[[np.ndarray, np.ndarray], bool]:
+                       margin: float = VERIFY_MARGIN,
+                       segment: Callable[[np.ndarray, np.ndarray, int], tuple[int, int]]
+                       | None = None) -> Callable[[np.ndarray, np.ndarray], bool]:
         """An edge check over the group's values: the edge's end, then the states every
         ``resolution`` (max over joints) in between, coarse to fine (see
         :func:`_bisection_order`); the edge's first state is taken as checked. One Python
@@ -534,7 +563,8 @@ class MotionPlanner:
 
         ``known``: the group values (``tobytes()``) of states already found valid: an
         edge's end found there is not checked again (RRT-Connect's goal tree checks
-        edges towards nodes of its own tree). Ends found valid are added."""
+        edges towards nodes of its own tree). Ends found valid are added. ``segment``:
+        :meth:`_segment_scan`'s for the same arguments, made here if not given."""
         model = self.scene.robot
         screen = self._state_screen(margin)
         base = start.copy()
@@ -548,8 +578,8 @@ class MotionPlanner:
         interpolated = isinstance(columns, slice) and not mimic
         first = columns.start if isinstance(columns, slice) else 0
         # ... and there, the step count too, the fractions taken from the process's table.
-        segment = (screen.segment_scanner(base, first, _FRACTIONS, resolution)
-                   if interpolated else None)
+        if segment is None and interpolated:
+            segment = self._segment_scan(group, start, resolution, margin)
         scans: list[Callable[..., int]] = []  # the others' scan, made when first needed
 
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
