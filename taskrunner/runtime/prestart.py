@@ -176,10 +176,25 @@ def lighter_scipy_decorator() -> bool:
             signature.parameters):
         return False
 
+    # All keyword-only with defaults (SciPy 1.15-1.17): the arguments are the defaults
+    # updated with the keywords given, in the signature's order, as binding them gives,
+    # without binding each of the ~200 calls (~5 ms of CPU).
+    parameters = signature.parameters.values()
+    defaults = None
+    if all(p.kind is p.KEYWORD_ONLY and p.default is not p.empty for p in parameters):
+        defaults = {p.name: p.default for p in parameters}
+
     def xp_capabilities(**kwargs: Any) -> Any:
-        bound = signature.bind(**kwargs)  # an unknown keyword: the original's TypeError
-        bound.apply_defaults()
-        capabilities = dict(bound.arguments)
+        if defaults is None:
+            bound = signature.bind(**kwargs)  # an unknown keyword: the original's TypeError
+            bound.apply_defaults()
+            capabilities = dict(bound.arguments)
+        else:
+            unknown = kwargs.keys() - defaults.keys()
+            if unknown:
+                raise TypeError(f"xp_capabilities() got an unexpected keyword argument "
+                                f"{min(unknown)!r}")
+            capabilities = {**defaults, **kwargs}
         into = capabilities.pop("capabilities_table")
         into = table if into is None else into
         capabilities.pop("extra_note")
