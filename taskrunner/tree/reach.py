@@ -29,6 +29,11 @@ For such an arm the pre-pose is the contact state moved along the line with the
 orientation unchanged, checked point by point, so the straight approach can hold the
 orientation all the way; where no candidate allows that, the moved poses are
 approximated on their own and the approach follows the line by position only.
+
+The goal list is computed as far as it is used (:class:`StagedGoals`: a planner nearly
+always takes the first goal by its straight line), and the choice is remembered by its
+inputs (model, poses, start state, seed), so ``run-task check``'s dry run and the run that
+follows it choose once.
 """
 
 from __future__ import annotations
@@ -474,7 +479,8 @@ def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.S
                 start: np.ndarray, seed: int, point: np.ndarray | None = None,
                 grasping: bool = False) -> list[Approximation]:
     """Every candidate of :func:`approximate_goals`, nearest the wanted orientation first
-    (``angle``: see :func:`orientation_error`).
+    (``angle``: see :func:`orientation_error`). Their states are read-only: the same
+    inputs give the same (remembered) arrays.
 
     Raises:
         IkFailedError: no wanted position is within reach.
