@@ -807,6 +807,17 @@ def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @_inline
+def _sphere_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+    """The distance of geometries ``a``'s and ``b``'s bounding spheres (placed): the first
+    of :func:`_lower_bound`'s bounds, which is at least this."""
+    ra, rb = nj + a, nj + b
+    gap = 0.0
+    for i in range(3):
+        gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
+    return math.sqrt(gap) - geo_f[a, _GF_RADIUS] - geo_f[b, _GF_RADIUS]
+
+
+@_inline
 def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
@@ -1273,18 +1284,36 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, mem
             u = picked[i]
             least = np.inf
             pending = 0
-            for m in range(unit_from[u], unit_from[u + 1]):
-                k = members[m]
-                if not per_state:
-                    selected[exact] = k
+            first, last = unit_from[u], unit_from[u + 1]
+            if not per_state:
+                for m in range(first, last):
+                    selected[exact] = members[m]
                     exact += 1
                     pending += 1
-                    continue
+                walk[u, _UMIN] = least
+                walk[u, _UPENDING] = pending
+                continue
+            # The pairs' bounding sphere gaps first (``distances`` serves as scratch: the
+            # caller's distances were taken above); then, from the nearest on, the full
+            # bound of each pair whose gap is below the least bound so far: the others'
+            # bounds (at least their gap) cannot lower the unit's measurement.
+            nearest = first
+            for m in range(first, last):
+                k = members[m]
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 if frames[nj + a, _FR_PLACED] < stamp:
                     _place(a, geo_i, geo_f, frames, nj, stamp)
                 if frames[nj + b, _FR_PLACED] < stamp:
                     _place(b, geo_i, geo_f, frames, nj, stamp)
+                distances[m] = _sphere_gap(a, b, geo_f, frames, nj)
+                if distances[m] < distances[nearest]:
+                    nearest = m
+            for t in range(first - 1, last):
+                m = nearest if t < first else t
+                if (t >= first and m == nearest) or distances[m] >= least:
+                    continue
+                k = members[m]
+                a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 d = _lower_bound(a, b, geo_i, geo_f, frames, nj)
                 if d < cheap_from or not d > 0.0:
                     bound = _support_bound(a, b, geo_i, geo_f, frames, points, nj)
