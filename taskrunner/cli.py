@@ -326,6 +326,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     # imports and the check make long-lived modules, classes and models, which its passes
     # walked again and again (~0.01-0.02 s of CPU before the first motion).
     collecting = gc.isenabled()
+    frozen = gc.get_freeze_count()
     gc.disable()
     early = None
     try:
@@ -339,6 +340,11 @@ def cmd_run(args: argparse.Namespace) -> int:
     finally:
         if collecting:
             gc.enable()
+        if frozen == 0:
+            # What the start froze goes back to the collector (a caller in the same
+            # process keeps its heap collectable; nothing is left for the interpreter's
+            # exit to skip). A caller's own earlier freeze is left as it was.
+            gc.unfreeze()
         if early is not None:
             early.close()  # a no-op once the run adopted it
 
