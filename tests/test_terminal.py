@@ -258,3 +258,15 @@ def test_ctrl_c_under_the_live_tree_shows_the_notice_and_ends_with_the_summary(t
     assert "pick_place: cancelled (exit 130)" in shown
     assert screen.wraps == 0 and len(screen.scrollback) < 20
     assert text.rstrip().endswith(".json")  # the summary's record line is the last
+
+
+def test_a_plain_run_in_a_terminal_ends_with_its_summary(tmp_path):
+    """The expectations' check after the last motion loads the compiled kernels in
+    run-task's own process; nothing (no terminal reset from numba's colour set-up) comes
+    after the summary's record line."""
+    chunks = run_in_terminal(_run_task("pick_place", "--plain", "--backend", "mock"), 80, 20,
+                             tmp_path)
+    text = b"".join(c for _, c in chunks).decode()
+    assert "expectations met" in text
+    assert "\x1b" not in text
+    assert text.rstrip().endswith(".json")

@@ -88,6 +88,9 @@ from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 if not os.environ.get("NUMBA_CACHE_DIR"):
     # Before numba's import: an installed package's own folder may be read-only.
     os.environ["NUMBA_CACHE_DIR"] = str(user_cache_dir() / "numba")
+# Plain compiler messages: with colorama installed, numba's colour set-up registers an exit
+# handler that writes a terminal reset (ESC[0m) to stdout after the command's own output.
+os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
 
 import numba
 
