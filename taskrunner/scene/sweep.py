@@ -487,18 +487,23 @@ class _Tree:
         """The packed rows of a geometry object. Kept for a robot link's geometry (the
         robot's own, never edited: the same object, joint and placement give the same
         rows) and for a primitive shape (box, sphere, cylinder, capsule, cone: keyed by its
-        dimensions too), so that a scene edit only builds the rows of what it changed."""
+        kind, dimensions, joint and placement, not by the coal object, which each scene
+        revision makes anew), so that a scene edit only builds the rows of what it
+        changed."""
         name = geometry_object.name
         geometry = geometry_object.geometry
         joint = int(geometry_object.parentJoint)
-        if joint > 0 and name.rpartition("/")[0] in self.links:
-            shape: tuple[float, ...] | None = ()
+        shape = _shape_key(geometry)
+        placement = np.asarray(geometry_object.placement.homogeneous).tobytes()
+        key: tuple[object, ...]
+        if shape is not None:
+            # A primitive's rows follow from its kind, dimensions, joint and placement: the
+            # same for the new coal object a scene revision makes of an unchanged body.
+            key = (type(geometry).__name__, joint, placement, shape)
+        elif joint > 0 and name.rpartition("/")[0] in self.links:
+            key = (id(geometry), joint, placement)
         else:
-            shape = _shape_key(geometry)
-        if shape is None:
             return self._build_record(geometry_object)
-        key = (id(geometry), joint, np.asarray(geometry_object.placement.homogeneous).tobytes(),
-               shape)
         kept = self._records.get(key)
         if kept is not None:
             record = kept[1]
@@ -559,6 +564,12 @@ class _Tree:
 def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:
     """A primitive shape's dimensions (None for anything else)."""
     kind = type(geometry)
+    if kind not in (coal.Box, coal.Sphere, coal.Cylinder, coal.Capsule, coal.Cone):
+        return None
+    swept = float(geometry.getSweptSphereRadius()) \
+        if hasattr(geometry, "getSweptSphereRadius") else 0.0
+    if swept != 0.0:
+        return None  # inflated: built each time (rare)
     if kind is coal.Box:
         return tuple(float(v) for v in geometry.halfSide)
     if kind is coal.Sphere:
