@@ -461,8 +461,9 @@ class _Tree:
         self.order = np.argsort(-state_depth, kind="stable").astype(np.int64)
         self.revolute = np.array([j >= 0 and kind[j] == _REVOLUTE for j in self.state_joint],
                                  dtype=np.int64)
-        self._records: dict[tuple[int, int, bytes, tuple[float, ...]],
-                            tuple[object, _Record]] = {}
+        # By (kind, joint, placement, dimensions) for primitives, (object id, joint,
+        # placement) for a link's other geometry.
+        self._records: dict[tuple[object, ...], tuple[object, _Record]] = {}
 
     def levers(self, geometry_object: pin.GeometryObject) -> np.ndarray:
         """:func:`lever_arms` of one geometry object."""
