@@ -503,11 +503,7 @@ class MotionPlanner:
         if segment is not None:
             def state_valid(values: np.ndarray) -> bool:
                 count[0] += 1
-                hit, _ = segment(values, values, 0)
-                if hit == -2:  # the table's row of one step, not filled yet
-                    _fill_fractions(1)
-                    hit, _ = segment(values, values, 0)
-                return hit == -1
+                return segment(values, values, 0)[0] == -1
 
             return state_valid, count
         model = self.scene.robot
@@ -549,7 +545,7 @@ class MotionPlanner:
         if not isinstance(columns, slice) or mimic:
             return None
         return self._state_screen(margin).segment_scanner(start.copy(), columns.start,
-                                                          _FRACTIONS, resolution)
+                                                          _FRACTIONS, resolution, _fill_fractions)
 
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
                        count: list[int], known: set[bytes] | None = None,
@@ -585,12 +581,9 @@ class MotionPlanner:
         def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
             if segment is not None:
                 known_end = known is not None and b.tobytes() in known
-                hit, steps = segment(a, b, 1 if known_end else 0)
-                if hit == -2 and steps <= _TABLE_STEPS:
-                    _fill_fractions(steps)
-                    hit, steps = segment(a, b, 1 if known_end else 0)
-                if hit != -2:
-                    begin = 1 if known_end else 0
+                begin = 1 if known_end else 0
+                hit, steps = segment(a, b, begin)
+                if hit != -2:  # else longer than the table: the states made below
                     if begin < steps:
                         count[0] += steps - begin if hit < 0 else hit - begin + 1
                     if known is not None and not known_end and hit != 0:

@@ -227,21 +227,15 @@ class StateScreen:
 
         def scan(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray, b: np.ndarray,
                  first: int, begin: int) -> int:
-            table = fractions.reshape(1, -1)
-            while True:
-                row, count, _ = _first_uncleared_on_line(rows, table, a, b, first, begin,
-                                                         len(fractions), 1.0, *tail)
-                if row < 0:
-                    return -1
-                if count < 0 or collide(to_pin(rows[row]), found[:count]):
-                    return int(row)
-                begin = row + 1
+            row, _ = _line_until_collision(rows, fractions.reshape(1, -1), a, b, first, begin,
+                                           len(fractions), 1.0, tail, found, collide, to_pin)
+            return -1 if row < 0 else int(row)
 
         return scan
 
     def segment_scanner(self, base: np.ndarray, first: int, table: np.ndarray,
-                        resolution: float) -> Callable[[np.ndarray, np.ndarray, int],
-                                                       tuple[int, int]] | None:
+                        resolution: float, fill: Callable[[int], None] | None = None
+                        ) -> Callable[[np.ndarray, np.ndarray, int], tuple[int, int]] | None:
         """A search's edge check, for one thread (None where the screen runs coal alone):
         ``scan(a, b, begin)`` checks the segment from ``a`` to ``b`` (the values of columns
         ``first`` to ``first + len(a)`` of ``base``, a full state; the other columns are
@@ -249,9 +243,10 @@ class StateScreen:
         states at the fractions ``table[steps, begin:steps]`` (row ``steps`` of ``table``:
         the end's 1.0 first, then the inner states in the order to check them), and returns
         the first of them in collision (its position in that row) or -1, and ``steps``.
-        -2: ``table`` has no row for that many steps, or not yet (a row not starting with
-        1.0): fill it (``table`` is read, not copied) and call again, or check the segment
-        otherwise. The step count, the interpolation and the screening run in one
+        A row not filled yet (not starting with 1.0) is filled by ``fill(steps)`` (which
+        writes ``table``: it is read, not copied) before the scan; -2: ``table`` has no
+        row for that many steps, or, without ``fill``, not yet (check the segment
+        otherwise). The step count, the interpolation and the screening run in one
         compiled call."""
         if not self.supported:
             return None
@@ -266,14 +261,13 @@ class StateScreen:
         collide, to_pin = self.checker.pairs_collide, self.robot.to_pin
 
         def scan(a: np.ndarray, b: np.ndarray, begin: int) -> tuple[int, int]:
-            while True:
-                row, count, steps = _first_uncleared_on_line(rows, table, a, b, first, begin,
-                                                             0, resolution, *tail)
-                if row < 0:
-                    return row, steps
-                if count < 0 or collide(to_pin(rows[row]), found[:count]):
-                    return row, steps
-                begin = row + 1
+            row, steps = _line_until_collision(rows, table, a, b, first, begin, 0, resolution,
+                                               tail, found, collide, to_pin)
+            if row == -2 and fill is not None and steps < table.shape[0]:
+                fill(steps)
+                row, steps = _line_until_collision(rows, table, a, b, first, begin, 0,
+                                                   resolution, tail, found, collide, to_pin)
+            return row, steps
 
         return scan
 
@@ -301,6 +295,21 @@ def _until_collision(kernel: Callable[..., tuple[int, int]], head: tuple[object,
             return -1
         if count < 0 or collide(to_pin(rows[row]), found[:count]):
             return int(row)
+        begin = row + 1
+
+
+def _line_until_collision(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
+                          first: int, begin: int, steps: int, resolution: float,
+                          tail: tuple[object, ...], found: np.ndarray,
+                          collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
+                          to_pin: Callable[[np.ndarray], np.ndarray]) -> tuple[int, int]:
+    """:func:`_until_collision` of :func:`_first_uncleared_on_line`: the first row in
+    collision (-1: none; -2: no fractions for the segment's steps) and the steps."""
+    while True:
+        row, count, counted = _first_uncleared_on_line(rows, table, a, b, first, begin, steps,
+                                                       resolution, *tail)
+        if row < 0 or count < 0 or collide(to_pin(rows[row]), found[:count]):
+            return row, counted
         begin = row + 1
 
 
