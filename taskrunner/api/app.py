@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import asyncio
+import contextlib
 import gc
 import logging
 import secrets
@@ -11,6 +13,7 @@ from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
 
+from taskrunner.api.admission import Admission, ControlExecutor
 from taskrunner.api.cells import CellRegistry, settle_heap
 from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
@@ -60,10 +63,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         work.start()
         app.state.cells, app.state.manager, app.state.store = registry, manager, store
         app.state.work = work
+        app.state.control = ControlExecutor()
+        reaper = asyncio.create_task(_reap_planners(registry, settings.planner_idle_s))
         settle_heap()
         try:
             yield
         finally:
+            reaper.cancel()
+            with contextlib.suppress(asyncio.CancelledError):
+                await reaper
+            app.state.control.close()
             work.close()
             manager.shutdown(settings.shutdown_timeout_s)
             registry.close()
@@ -80,9 +89,28 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.settings = settings
     app.state.token = (settings.token or new_token()) if settings.auth else None
+    # Heavy work bounded (each kind: so many at once, so many more waiting, then 503);
+    # control requests on threads of their own (see api.admission).
+    app.state.planning = Admission("plans and previews", settings.max_planners,
+                                   settings.work_queue, settings.plan_timeout_s,
+                                   setting="max_planners")
+    app.state.checking = Admission("task loads and checks", settings.check_workers,
+                                   settings.work_queue, settings.check_timeout_s,
+                                   setting="check_workers")
     for module in (health, runs, tasks, cells, plan, viewer):
         app.include_router(module.router)
     add_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
     app.add_middleware(RunDetailFastPath)  # outermost: polls skip the rest
     return app
+
+
+async def _reap_planners(registry: CellRegistry, idle_s: float) -> None:
+    """Close planning workers idle for ``idle_s`` (checked every ``idle_s / 4``, at
+    least every 30 s): a burst of plans leaves no processes behind."""
+    period = min(max(idle_s / 4, 0.05), 30.0)
+    while True:
+        await asyncio.sleep(period)
+        closed = await asyncio.to_thread(registry.reap_planners, idle_s)
+        if closed:
+            log.info("closed %d idle planning worker(s)", closed)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import gc
 import logging
 import threading
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -57,7 +58,8 @@ class CellSession:
     planner_kind: str
     planner_nice: int = 0
     backends: dict[str, Backend] = field(default_factory=dict)
-    idle_planners: list[Any] = field(default_factory=list)
+    # Idle planning workers, each with the time.monotonic() it was given back at.
+    idle_planners: list[tuple[Any, float]] = field(default_factory=list)
     last_scene: Scene | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
     taught: set[tuple[str, str]] = field(default_factory=set)
@@ -122,7 +124,7 @@ class CellSession:
             return InProcessPlanner()
         with self.lock:
             if self.idle_planners:
-                worker = self.idle_planners.pop()
+                worker, _ = self.idle_planners.pop()
                 # The worker sends a scene snapshot when (id(scene), revision) changes; a
                 # new run's scene may reuse a freed scene's id: make it send one.
                 worker._sent_scene = None
@@ -136,13 +138,24 @@ class CellSession:
             planner.close()
             return
         with self.lock:
-            self.idle_planners.append(planner)
+            self.idle_planners.append((planner, time.monotonic()))
+
+    def reap_planners(self, idle_s: float) -> int:
+        """Close the planning workers idle for ``idle_s`` or longer; how many."""
+        now = time.monotonic()
+        with self.lock:
+            old = [p for p, since in self.idle_planners if now - since >= idle_s]
+            self.idle_planners = [(p, since) for p, since in self.idle_planners
+                                  if now - since < idle_s]
+        for planner in old:
+            planner.close()
+        return len(old)
 
     def close(self) -> None:
         with self.lock:
             for backend in self.backends.values():
                 backend.close()
-            for planner in self.idle_planners:
+            for planner, _ in self.idle_planners:
                 planner.close()
             self.backends.clear()
             self.idle_planners.clear()
@@ -232,6 +245,12 @@ class CellRegistry:
     def loaded(self, path: Path) -> CellSession | None:
         with self._lock:
             return self._sessions.get(path.resolve())
+
+    def reap_planners(self, idle_s: float) -> int:
+        """Close every cell's planning workers idle for ``idle_s`` or longer; how many."""
+        with self._lock:
+            sessions = list(self._sessions.values())
+        return sum(session.reap_planners(idle_s) for session in sessions)
 
     def close(self) -> None:
         with self._lock:

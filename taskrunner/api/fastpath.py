@@ -24,8 +24,6 @@ import asyncio
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
-from starlette.concurrency import run_in_threadpool
-
 from taskrunner.api.auth import token_matches
 
 __all__ = ["RunDetailFastPath"]
@@ -71,7 +69,7 @@ class RunDetailFastPath:
         body, refresh = live.detail.fresh()
         rounds = 0
         while body is None:  # it changed: rebuild (a build begun after this poll came will do)
-            built = await self._rebuilt(live)
+            built = await self._rebuilt(live, scope)
             rounds += 1
             body, refresh = live.detail.fresh()
             if body is None and rounds == 2:
@@ -82,16 +80,18 @@ class RunDetailFastPath:
         await send({"type": "http.response.body", "body": body})
         self.served += 1
         if refresh:
-            await run_in_threadpool(live.detail.refresh)
+            await _control(scope).run(live.detail.refresh)
         return True
 
-    async def _rebuilt(self, live: Any) -> bytes:
+    async def _rebuilt(self, live: Any, scope: Scope) -> bytes:
         """Rebuild the run's body off the event loop, once for all the polls waiting for
         it (each then checks it is current: a poll that came during a rebuild may need
         the next one)."""
         building = self._building.get(live.run_id)
         if building is None or building.get_loop() is not asyncio.get_running_loop():
-            building = asyncio.ensure_future(run_in_threadpool(live.detail.body))
+            # On the control threads: a moving run's state is never queued behind other
+            # requests' work in the shared pool.
+            building = asyncio.ensure_future(_control(scope).run(live.detail.body))
             self._building[live.run_id] = building
             building.add_done_callback(lambda done: self._built(live.run_id, done))
         return await asyncio.shield(building)
@@ -99,6 +99,11 @@ class RunDetailFastPath:
     def _built(self, run_id: str, done: asyncio.Future[bytes]) -> None:
         if self._building.get(run_id) is done:
             del self._building[run_id]
+
+
+def _control(scope: Scope) -> Any:
+    """The app's :class:`~api.admission.ControlExecutor`."""
+    return scope["app"].state.control
 
 
 def _authorised(state: Any, scope: Scope) -> bool:

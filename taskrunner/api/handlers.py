@@ -11,6 +11,7 @@ ArmBusyError            409   ``detail`` names the run holding the arm
 RunNotFinishedError     409   cancelling a run that has ended
 RunNotFoundError        404
 CellNotFoundError       404
+ServerBusyError         503   ``detail``: what is running and waiting; ``Retry-After``
 other TaskrunnerError   422
 body too large          413
 ======================  ====  ==========================================================
@@ -25,6 +26,7 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse
 
+from taskrunner.api.admission import ServerBusyError
 from taskrunner.api.cells import CellNotFoundError, PoseConflictError
 from taskrunner.api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
 from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
@@ -83,6 +85,12 @@ async def _not_found(request: Request, exc: Exception) -> JSONResponse:
     return _answer(404, str(exc))
 
 
+async def _server_busy(request: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, ServerBusyError)
+    return JSONResponse({"detail": str(exc)}, status_code=503,
+                        headers={"Retry-After": str(max(1, round(exc.retry_after_s)))})
+
+
 async def _value_error(request: Request, exc: Exception) -> JSONResponse:
     return _answer(422, str(exc))
 
@@ -98,6 +106,7 @@ def add_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(RunNotFoundError, _not_found)
     app.add_exception_handler(CellNotFoundError, _not_found)
     app.add_exception_handler(PoseConflictError, _not_finished)
+    app.add_exception_handler(ServerBusyError, _server_busy)
     app.add_exception_handler(ValueError, _value_error)
 
 

@@ -281,6 +281,15 @@ class RunManager:
         return [e for e in self.record(run_id).events if e.seq > after], False
 
     # ----------------------------------------------------------------- control
+    def cancel_live(self, run_id: str) -> LiveRun | None:
+        """Cancel ``run_id`` if it is in flight on this server (never blocks: safe on the
+        event loop); None if it is not (ended or unknown: see :meth:`cancel`)."""
+        live = self.live(run_id)
+        if live is None or live.done.is_set():
+            return None
+        live.runner.cancel()
+        return live
+
     def cancel(self, run_id: str) -> LiveRun:
         """Stop a run in flight: its motion stops where it is, it ends as cancelled.
 

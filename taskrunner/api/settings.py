@@ -61,6 +61,12 @@ class Settings(BaseSettings):
             answer comes on time, the work runs on: tests).
         check_workers: how many checks run at once (more wait, within the time limit).
         plan_timeout_s: longest a ``/plan`` may take, planner start-up included (s).
+        max_planners: how many plans and previews run at once (each holds a planning
+            process); more wait in a queue.
+        work_queue: how many more plans, previews or checks may wait for their turn;
+            one more is answered 503 with ``Retry-After``, as is one that waited longer
+            than its time limit (``plan_timeout_s``, ``check_timeout_s``).
+        planner_idle_s: a planning process idle this long is closed (s).
         header_timeout_s: a connection must send its request headers within this (s).
         servo_port: the serial port of the ``serial`` backend (default: the one in the
             robot's hardware.yaml).
@@ -92,6 +98,9 @@ class Settings(BaseSettings):
     check_isolation: str = "process"
     check_workers: int = 2
     plan_timeout_s: float = 60.0
+    max_planners: int = 2
+    work_queue: int = 8
+    planner_idle_s: float = 120.0
     header_timeout_s: float = 10.0
     servo_port: str | None = None
     servo_url: str | None = None
@@ -142,12 +151,21 @@ class Settings(BaseSettings):
             value = [p for p in str(value).split(os.pathsep) if p]
         return tuple(Path(p).resolve() for p in value)
 
-    @field_validator("max_body_bytes", "check_memory_mb", "check_workers", mode="before")
+    @field_validator("max_body_bytes", "check_memory_mb", "check_workers", "max_planners",
+                     mode="before")
     @classmethod
     def _positive_int(cls, value: Any, info: Any) -> Any:
         number = _integer(value)
         if number is None or number < 1:
             raise ValueError(f"'{info.field_name}' must be a positive integer (got {value!r})")
+        return number
+
+    @field_validator("work_queue", mode="before")
+    @classmethod
+    def _count(cls, value: Any, info: Any) -> Any:
+        number = _integer(value)
+        if number is None or number < 0:
+            raise ValueError(f"'{info.field_name}' must be an integer >= 0 (got {value!r})")
         return number
 
     @field_validator("planner_nice", mode="before")
@@ -159,7 +177,8 @@ class Settings(BaseSettings):
         return number
 
     @field_validator("sim_speed", "tick_hz", "shutdown_timeout_s", "check_timeout_s",
-                     "plan_timeout_s", "header_timeout_s", "firmware_speedup", mode="before")
+                     "plan_timeout_s", "header_timeout_s", "firmware_speedup",
+                     "planner_idle_s", mode="before")
     @classmethod
     def _positive(cls, value: Any, info: Any) -> Any:
         number = _number(value)

@@ -16,6 +16,7 @@ from fastapi.testclient import TestClient
 from test_detail_cache import FakeClock, FakeRun, reference
 
 from taskrunner.api import create_app
+from taskrunner.api.admission import ControlExecutor
 from taskrunner.api.detail import RunDetailCache
 from taskrunner.api.fastpath import RunDetailFastPath
 
@@ -128,7 +129,8 @@ def _app_with(run: SimpleNamespace, token: str | None = None,
     manager = SimpleNamespace(live=lambda run_id: run if run_id == run.run_id else None)
     settings = SimpleNamespace(open_reads=open_reads)
     return SimpleNamespace(state=SimpleNamespace(manager=manager, token=token,
-                                                 settings=settings))
+                                                 settings=settings,
+                                                 control=ControlExecutor()))
 
 
 async def _get(fast: RunDetailFastPath, app: Any, path: str) -> tuple[int, bytes]:

@@ -9,9 +9,10 @@ from fastapi import APIRouter, Depends, Response
 from pydantic_core import to_json
 from starlette.concurrency import run_in_threadpool
 
+from taskrunner.api.admission import Admission
 from taskrunner.api.auth import require_read
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells, get_settings
+from taskrunner.api.dependencies import get_cells, get_planning, get_settings
 from taskrunner.api.requestwork import RequestWork, WorkLimitError
 from taskrunner.api.schemas import ErrorBody, PlanBody, PlanResponse
 from taskrunner.api.settings import Settings
@@ -27,20 +28,25 @@ router = APIRouter(tags=["plan"])
 
 @router.post("/plan", response_model=PlanResponse, dependencies=[Depends(require_read)],
              responses={401: {"model": ErrorBody}, 404: {"model": ErrorBody},
-                        413: {"model": ErrorBody}, 422: {"model": ErrorBody}})
+                        413: {"model": ErrorBody}, 422: {"model": ErrorBody},
+                        503: {"model": ErrorBody}})
 async def plan(body: PlanBody, cells: Annotated[CellRegistry, Depends(get_cells)],
-               settings: Annotated[Settings, Depends(get_settings)]) -> Response:
+               settings: Annotated[Settings, Depends(get_settings)],
+               planning: Annotated[Admission, Depends(get_planning)]) -> Response:
     """Plan a collision-free motion of ``group`` from where the cell's backend is now
     (with the cell's fixed objects) to a named pose, joint values or a link pose, and
     time it (rad, s). Nothing moves. No path: 422 with the planner's reason; no answer
-    within the server's ``plan_timeout_s``: 422, and the search is stopped."""
-    limit = settings.plan_timeout_s
-    # A thread with a deadline: the answer comes on time even if building the scene or
-    # an in-process planner runs late (a worker process is also told to stop).
-    work = RequestWork("inprocess", limit, 0, 1, setting="plan_timeout_s",
-                       what="the plan took longer than {s} s")
-    deadline = time.monotonic() + limit
-    answer = await run_in_threadpool(work.call, _plan, body, cells, deadline, limit)
+    within the server's ``plan_timeout_s``: 422, and the search is stopped. At most
+    ``max_planners`` plans and previews run at once and ``work_queue`` more wait; beyond
+    that: 503 with ``Retry-After``."""
+    async with planning.slot():
+        limit = settings.plan_timeout_s
+        # A thread with a deadline: the answer comes on time even if building the scene
+        # or an in-process planner runs late (a worker process is also told to stop).
+        work = RequestWork("inprocess", limit, 0, 1, setting="plan_timeout_s",
+                           what="the plan took longer than {s} s")
+        deadline = time.monotonic() + limit
+        answer = await run_in_threadpool(work.call, _plan, body, cells, deadline, limit)
     return Response(answer, media_type="application/json")
 
 

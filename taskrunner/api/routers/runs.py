@@ -11,9 +11,18 @@ from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, 
 from fastapi.sse import EventSourceResponse, ServerSentEvent
 from starlette.concurrency import run_in_threadpool
 
+from taskrunner.api.admission import Admission, ControlExecutor
 from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_store, get_work
+from taskrunner.api.dependencies import (
+    get_cells,
+    get_checking,
+    get_control,
+    get_manager,
+    get_settings,
+    get_store,
+    get_work,
+)
 from taskrunner.api.requestwork import RequestWork, load_request, precheck_request
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
@@ -35,39 +44,44 @@ router = APIRouter(prefix="/runs", tags=["runs"])
 
 _ERRORS: dict[int | str, dict[str, Any]] = {
     401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
-    413: {"model": ErrorBody}, 422: {"model": ErrorBody}}
+    413: {"model": ErrorBody}, 422: {"model": ErrorBody}, 503: {"model": ErrorBody}}
 
 
 @router.post("", status_code=status.HTTP_202_ACCEPTED, response_model=RunAccepted,
              dependencies=[Depends(require_write)], responses=_ERRORS)
-def start_run(body: RunCreate, response: Response,
-              settings: Annotated[Settings, Depends(get_settings)],
-              manager: Annotated[RunManager, Depends(get_manager)],
-              cells: Annotated[CellRegistry, Depends(get_cells)],
-              work: Annotated[RequestWork, Depends(get_work)],
-              store: Annotated[RunStore, Depends(get_store)]) -> RunAccepted:
+async def start_run(body: RunCreate, response: Response,
+                    settings: Annotated[Settings, Depends(get_settings)],
+                    manager: Annotated[RunManager, Depends(get_manager)],
+                    cells: Annotated[CellRegistry, Depends(get_cells)],
+                    work: Annotated[RequestWork, Depends(get_work)],
+                    store: Annotated[RunStore, Depends(get_store)],
+                    checking: Annotated[Admission, Depends(get_checking)]) -> RunAccepted:
     """Start a task (a file of the tasks folder, or inline YAML) on a cell's backend.
 
     The task is checked first (``check``, default true): a task with problems answers 422
     with every problem and nothing moves. Answers 202 at once with the run id; the run
     goes on in the background. A run that needs an arm (joints) a run in flight moves is
-    refused with 409: runs are not queued.
+    refused with 409: runs are not queued. Loading and checking the task share
+    ``check_workers`` with ``/tasks/check``; beyond them and the ``work_queue``: 503 with
+    ``Retry-After``.
     """
-    # Loaded within the limits (time, memory) and folders of request work.
-    spec, task_file, text = work.call(load_request, settings.folder_policy(),
-                                      settings.tasks_dir, body.task, body.yaml,
-                                      body.parameters)
-    if body.check and body.cell is None:
-        # Check first, as run-task does: a task that cannot succeed moves nothing. (On
-        # another cell than its own, the names are checked when the run starts.)
-        taught = store.taught_poses(settings.cells_dir)
-        raise_for_problems(work.call(precheck_request, settings.folder_policy(),
-                                     settings.tasks_dir, body.task, body.yaml,
-                                     body.parameters, body.seed, taught))
+    async with checking.slot():
+        # Loaded within the limits (time, memory) and folders of request work.
+        spec, task_file, text = await run_in_threadpool(
+            work.call, load_request, settings.folder_policy(), settings.tasks_dir,
+            body.task, body.yaml, body.parameters)
+        if body.check and body.cell is None:
+            # Check first, as run-task does: a task that cannot succeed moves nothing.
+            # (On another cell than its own, the names are checked when the run starts.)
+            taught = await run_in_threadpool(store.taught_poses, settings.cells_dir)
+            raise_for_problems(await run_in_threadpool(
+                work.call, precheck_request, settings.folder_policy(), settings.tasks_dir,
+                body.task, body.yaml, body.parameters, body.seed, taught))
     if body.cell is not None:
         spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
-    live = manager.start(spec, body.backend, seed=body.seed, task_text=text,
-                         task_file=task_file, speed=body.speed)
+    live = await run_in_threadpool(
+        lambda: manager.start(spec, body.backend, seed=body.seed, task_text=text,
+                              task_file=task_file, speed=body.speed))
     url = f"/runs/{live.run_id}"
     response.headers["Location"] = url
     return RunAccepted(run_id=live.run_id, status="running", url=url)
@@ -89,22 +103,30 @@ async def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
 
 @router.get("/{run_id}", response_model=RunDetail, dependencies=[Depends(require_read)],
             responses=_ERRORS)
-async def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> Response:
+async def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
+                  control: Annotated[ControlExecutor, Depends(get_control)]) -> Response:
     """A run: status, the node running now (with its file:line), the tree, the events so
     far and the result."""
     # Polls of live runs are answered before routing, from their cached bodies
     # (api.fastpath); what reaches this is a recorded run (database) or a first build.
-    body = await run_in_threadpool(manager.detail, run_id)
+    body = await control.run(manager.detail, run_id)
     return Response(body, media_type="application/json")
 
 
 @router.post("/{run_id}/cancel", status_code=status.HTTP_202_ACCEPTED,
              response_model=RunAccepted, dependencies=[Depends(require_write)],
              responses=_ERRORS)
-def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]) -> RunAccepted:
+async def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
+                     control: Annotated[ControlExecutor, Depends(get_control)]
+                     ) -> RunAccepted:
     """Stop a run: the motion stops where it is and the run ends as cancelled (409 if it
     has already ended). Follow its events or poll it to see it end."""
-    live = manager.cancel(run_id)
+    # A run in flight is cancelled here, on the event loop (no thread to wait for, so no
+    # burst of other requests can hold the stop back); an ended or unknown run is looked
+    # up in the database on the control threads.
+    live = manager.cancel_live(run_id)
+    if live is None:
+        live = await control.run(manager.cancel, run_id)
     return RunAccepted(run_id=run_id, status=live.record.status,  # type: ignore[arg-type]
                        url=f"/runs/{run_id}")
 

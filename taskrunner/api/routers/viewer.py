@@ -22,9 +22,17 @@ from fastapi import APIRouter, Depends, HTTPException, Request
 from fastapi.responses import FileResponse, JSONResponse
 from starlette.concurrency import run_in_threadpool
 
+from taskrunner.api.admission import Admission
 from taskrunner.api.auth import require_read
 from taskrunner.api.cells import CellRegistry
-from taskrunner.api.dependencies import get_cells, get_manager, get_settings, get_work
+from taskrunner.api.dependencies import (
+    get_cells,
+    get_checking,
+    get_manager,
+    get_planning,
+    get_settings,
+    get_work,
+)
 from taskrunner.api.requestwork import RequestWork, load_request
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import CheckRequest, ErrorBody
@@ -128,13 +136,15 @@ def list_tasks(settings: Annotated[Settings, Depends(get_settings)]) -> list[str
 @router.post("/viewer/tasks/tree", dependencies=[Depends(require_read)], responses=_ERRORS)
 async def task_tree(body: TaskRequest, settings: Annotated[Settings, Depends(get_settings)],
                     cells: Annotated[CellRegistry, Depends(get_cells)],
-                    work: Annotated[RequestWork, Depends(get_work)]) -> JSONResponse:
+                    work: Annotated[RequestWork, Depends(get_work)],
+                    checking: Annotated[Admission, Depends(get_checking)]) -> JSONResponse:
     """The task compiled into its behaviour tree, each node with its file:line, and the
     id of its cell. Nothing is planned or moved."""
-    spec, _, _ = await run_in_threadpool(work.call, load_request, settings.folder_policy(),
-                                         settings.tasks_dir, body.task, body.yaml,
-                                         body.parameters)
-    tree, cell_id = await run_in_threadpool(_compile, spec, cells)
+    async with checking.slot():
+        spec, _, _ = await run_in_threadpool(work.call, load_request,
+                                             settings.folder_policy(), settings.tasks_dir,
+                                             body.task, body.yaml, body.parameters)
+        tree, cell_id = await run_in_threadpool(_compile, spec, cells)
     return JSONResponse({"task": spec.name, "cell": cell_id, "tree": tree})
 
 
@@ -152,13 +162,22 @@ def _compile(spec: Any, cells: CellRegistry) -> tuple[dict[str, Any], str]:
 
 
 @router.post("/viewer/tasks/preview", dependencies=[Depends(require_read)], responses=_ERRORS)
-def task_preview(body: TaskRequest, settings: Annotated[Settings, Depends(get_settings)],
-                 cells: Annotated[CellRegistry, Depends(get_cells)],
-                 work: Annotated[RequestWork, Depends(get_work)]) -> JSONResponse:
+async def task_preview(body: TaskRequest,
+                       settings: Annotated[Settings, Depends(get_settings)],
+                       cells: Annotated[CellRegistry, Depends(get_cells)],
+                       work: Annotated[RequestWork, Depends(get_work)],
+                       planning: Annotated[Admission, Depends(get_planning)]) -> JSONResponse:
     """Plan only: the task run on a private mock controller from its cell's start state
     (nothing of the cell moves), each motion planned and timed as a run would; answers
     the motions and scenes as a replay, and how the dry run ended. Stopped past the
-    server's ``plan_timeout_s``."""
+    server's ``plan_timeout_s``. Previews share ``max_planners`` with ``/plan``; beyond
+    them and the ``work_queue``: 503 with ``Retry-After``."""
+    async with planning.slot():
+        return await run_in_threadpool(_preview, body, settings, cells, work)
+
+
+def _preview(body: TaskRequest, settings: Settings, cells: CellRegistry,
+             work: RequestWork) -> JSONResponse:
     from taskrunner.backends.mock import MockBackend
     from taskrunner.runtime.runner import Runner, RunOptions
 
