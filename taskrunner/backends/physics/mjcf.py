@@ -16,6 +16,7 @@ collisions are the planner's to prevent). Units: m, kg, rad.
 from __future__ import annotations
 
 import hashlib
+import logging
 import math
 import os
 import xml.etree.ElementTree as ET
@@ -26,6 +27,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from taskrunner.backends.physics.inertia import (
+    DEFAULT_LINK_DENSITY,
+    LinkInertia,
+    estimate_link_inertias,
+)
 from taskrunner.errors import BackendError
 from taskrunner.materials import Material
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
@@ -36,11 +42,13 @@ if TYPE_CHECKING:
 __all__ = ["ObjectPhysics", "PhysicsCell", "PhysicsObject", "cell_mjcf", "compiled_model",
            "physics_cell"]
 
+log = logging.getLogger(__name__)
+
 WORLD = "world"
 # contype / conaffinity bits: robot geoms (2) touch world geoms (1) but not each other.
 _ROBOT_BITS = ('contype="2"', 'conaffinity="1"')
 _WORLD_BITS = ('contype="1"', 'conaffinity="3"')
-_MIN_MASS = 1e-3  # kg: a link without <inertial> (MuJoCo needs mass on moving bodies)
+_MIN_MASS = 1e-3  # kg: a moving link with neither <inertial> nor collision geometry
 _MIN_INERTIA = 1e-6  # kg m^2
 
 
@@ -120,6 +128,8 @@ class PhysicsCell:
         mimic: follower joint -> (leader, multiplier, offset).
         grasp_modes: per arm group, "friction" or "weld" (the cell's ``grasp_mode``).
         frame_links: frames that are not links (tool frames) -> the link each is fixed to.
+        link_inertias: for moving links without ``<inertial>``, the mass and inertia of
+            their collision geometry (:mod:`taskrunner.backends.physics.inertia`).
     """
 
     name: str
@@ -131,17 +141,21 @@ class PhysicsCell:
     mimic: Mapping[str, tuple[str, float, float]] = field(default_factory=dict)
     grasp_modes: Mapping[str, str] = field(default_factory=dict)
     frame_links: Mapping[str, str] = field(default_factory=dict)
+    link_inertias: Mapping[str, LinkInertia] = field(default_factory=dict)
 
     def with_objects(self, objects: Iterable[PhysicsObject]) -> PhysicsCell:
         """The same cell with ``objects`` as its objects."""
         return PhysicsCell(self.name, self.urdf_xml, tuple(objects), self.hand_links,
                            self.gripper_joints, dict(self.grasp_frames), dict(self.mimic),
-                           dict(self.grasp_modes), dict(self.frame_links))
+                           dict(self.grasp_modes), dict(self.frame_links),
+                           dict(self.link_inertias))
 
 
-def physics_cell(cell: Cell) -> PhysicsCell:
+def physics_cell(cell: Cell, link_density: float = DEFAULT_LINK_DENSITY) -> PhysicsCell:
     """The plain-data physics description of ``cell``: its objects are static furniture,
-    except world objects given a mass or density (free bodies)."""
+    except world objects given a mass or density (free bodies). Moving links without
+    ``<inertial>`` get the mass of their collision geometry at ``link_density`` (kg/m³),
+    with one warning per robot naming them."""
     import pinocchio as pin
 
     model = cell.model
@@ -180,8 +194,33 @@ def physics_cell(cell: Cell) -> PhysicsCell:
     mimic = {j.name: (j.mimic.source, j.mimic.multiplier, j.mimic.offset)
              for j in model.joints if j.mimic is not None}
     modes = dict(getattr(cell, "grasp_modes", {}) or {})
+    inertias, bare = estimate_link_inertias(model.urdf_xml, _geometry_shape, _origin_transform,
+                                            link_density)
+    prefixes = sorted(((i.prefix, i.name) for i in model.instances), key=lambda p: -len(p[0]))
+    by_robot: dict[str, list[str]] = {}
+    for link in sorted([*inertias, *bare]):
+        robot = next((name for prefix, name in prefixes if link.startswith(prefix)), cell.name)
+        shown = (f"{link} {inertias[link].mass:.3g} kg" if link in inertias
+                 else f"{link} (no geometry: {1e3 * _MIN_MASS:g} g)")
+        by_robot.setdefault(robot, []).append(shown)
+    for robot, shown in by_robot.items():
+        log.warning("robot %r: %d link(s) without <inertial> weighed from their collision "
+                    "geometry at %g kg/m³ (mujoco backend): %s", robot, len(shown),
+                    link_density, ", ".join(shown))
     return PhysicsCell(cell.name, model.urdf_xml, tuple(objects), frozenset(hands),
-                       frozenset(fingers), frames, mimic, modes, aliases)
+                       frozenset(fingers), frames, mimic, modes, aliases, inertias)
+
+
+def _geometry_shape(geometry: ET.Element) -> Shape | None:
+    return _urdf_geom(geometry, None)
+
+
+def _origin_transform(element: ET.Element) -> tuple[np.ndarray, np.ndarray]:
+    """An element's ``<origin>``: translation and rotation matrix."""
+    origin = element.find("origin")
+    xyz = _floats(None if origin is None else origin.get("xyz"), 3)
+    rpy = _floats(None if origin is None else origin.get("rpy"), 3)
+    return np.array(xyz), _matrix(quat_from_rpy(rpy))
 
 
 def _descendants(urdf_xml: str, links: set[str]) -> set[str]:
@@ -303,7 +342,7 @@ def _shape_geom(shape: Shape, meshes: _Meshes, placement: str, extra: str) -> st
     return f"<geom {kind} {placement} {extra}/>"
 
 
-def _urdf_geom(geometry: ET.Element, meshes: _Meshes) -> Shape | None:
+def _urdf_geom(geometry: ET.Element, meshes: _Meshes | None) -> Shape | None:
     box = geometry.find("box")
     if box is not None:
         size = _floats(box.get("size"), 3)
@@ -399,7 +438,8 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
         elif kind != "fixed":
             raise BackendError(f"URDF joint {jname!r}: type {kind!r} is not supported "
                                "by the mujoco backend")
-        out.extend(pad + "  " + line for line in _link_body(name, link, meshes, kind != "fixed"))
+        out.extend(pad + "  " + line for line in _link_body(name, link, meshes, kind != "fixed",
+                                                             cell.link_inertias.get(name)))
         for obj in attached.get(name, []):
             out.append(pad + "  " + _static_geom(obj, meshes))
         for sub in children.get(name, []):
@@ -459,10 +499,16 @@ def weld_name(link: str, obj: str) -> str:
     return f"grasp/{link}/{obj}"
 
 
-def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool) -> list[str]:
+def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool,
+               estimated: LinkInertia | None = None) -> list[str]:
     lines: list[str] = []
     if link is None:
         return lines
+    if estimated is not None and link.find("inertial") is None:
+        tensor = estimated.inertia
+        diag = [max(float(tensor[k, k]), _MIN_INERTIA) for k in range(3)]
+        lines.append(f'<inertial pos="{_fmt(estimated.com)}" mass="{estimated.mass:.10g}" '
+                     f'fullinertia="{_fmt([*diag, tensor[0, 1], tensor[0, 2], tensor[1, 2]])}"/>')
     inertial = link.find("inertial")
     if inertial is not None:
         mass_el = inertial.find("mass")
