@@ -24,9 +24,12 @@ from taskrunner.tasks.steps import (
     MOTION_OPTIONS,
     STEP_LIST_SCHEMA,
     AddObjectStep,
+    AttachStep,
+    HandoffStep,
     IncludeStep,
     MotionOptions,
     MotionStep,
+    PickStep,
     RemoveObjectStep,
     ScalarSchema,
     Step,  # noqa: F401 (resolves the forward reference of StepList)
@@ -40,6 +43,8 @@ from taskrunner.tasks.steps import (
 __all__ = ["ParamType", "Parameter", "ParameterDecl", "TaskFile", "TaskSpec", "step_document"]
 
 ParamType = Literal["float", "int", "bool", "str"]
+_HANDLING = (PickStep, AttachStep, HandoffStep)
+"""Steps that take hold of an object: it must be free to move in a physics simulation."""
 
 
 class ParameterDecl(Node):
@@ -126,14 +131,20 @@ class TaskSpec(Node):
         return walk_steps(self.steps)
 
     def object_materials(self) -> dict[str, Material]:
-        """Mass, density and friction of the task's objects that give any (the task's
-        ``objects:``, then ``add_object`` steps; the first declaration of a name wins)."""
+        """Mass, density and friction of every object the task declares or handles: the
+        task's ``objects:``, then ``add_object`` steps (the first declaration of a name
+        wins), then the objects its steps pick, attach or hand over (an empty
+        :class:`Material`: the simulator's defaults). A physics backend makes these free
+        bodies; other objects of the scene (a scene file's world objects) stay fixed."""
         found: dict[str, Material] = {}
         declared = [*self.objects, *(s.object for s in self.walk() if isinstance(s, AddObjectStep))]
         for obj in declared:
-            material = material_of(obj)
-            if material and obj.name not in found:
-                found[obj.name] = material
+            if obj.name not in found:
+                found[obj.name] = material_of(obj)
+        for step in self.walk():
+            name = getattr(step, "object", None)
+            if isinstance(name, str) and isinstance(step, _HANDLING) and name not in found:
+                found[name] = Material()
         return found
 
     def to_document(self) -> dict[str, Any]:

@@ -30,7 +30,7 @@ def test_task_objects_and_added_objects_give_their_materials(tmp_path):
         "  - add_object: {name: c, shape: cylinder, radius: 0.02, length: 0.1,\n"
         "                 pose: {xyz: [0.4, 0.2, 0.8]}, density: 7800}"), tmp_path / "t.yaml")
     assert spec.object_materials() == {"a": Material(0.2, None, (0.6, 0.01)),
-                                       "c": Material(None, 7800.0, None)}
+                                       "b": Material(), "c": Material(None, 7800.0, None)}
 
 
 def test_a_parameter_gives_a_mass(tmp_path):

@@ -186,6 +186,8 @@ class MujocoBackend(BaseBackend):
         self._weld_changes: list[tuple[str, _Held, bool]] = []
         self._materials: dict[str, ObjectPhysics] = {}
         self._cell_physics = {o.name: o.physics for o in cell.objects if o.physics is not None}
+        self._cell_static = frozenset(o.name for o in cell.objects if not o.movable)
+        self._named: frozenset[str] | None = None  # objects the task handles (bind_scene)
         modes = {**cell.grasp_modes, **self._options.grasp_mode}
         unknown = sorted(set(modes) - set(cell.grasp_frames))
         if unknown:
@@ -224,18 +226,29 @@ class MujocoBackend(BaseBackend):
         """Use the task's scene: its objects join the world (rebuilding it if they are new)
         and its attachments say what is held at each ``execute``. Duck-typed: anything
         with ``objects`` (name, shape, pose, attached_to) and ``object_pose(name)``.
-        ``materials``: per object, the mass, density and friction the task gives it
-        (:class:`~taskrunner.materials.Material`), over the cell's."""
+        ``materials``: per object the task declares or handles, the mass, density and
+        friction it gives it (:class:`~taskrunner.materials.Material`, empty for the
+        defaults), over the cell's.
+
+        Which objects are free bodies (MoveIt's semantics: a scene's world objects are
+        fixed): those ``materials`` names, those attached to the robot, and the cell's
+        objects with a mass or density. Any other object of the scene (a PlanningScene
+        file's table, shelf or wall) is static where the scene has it. Without
+        ``materials`` ever given, every object the cell does not fix is free.)"""
         names = tuple(scene.object_names)
         physics = {name: ObjectPhysics.from_material(m, self._options.default_object)
                    for name, m in (materials or {}).items() if m}
+        named = None if materials is None else frozenset(materials)
+        attached = frozenset(o.name for o in scene.objects if o.attached_to is not None)
         with self._lock:
             if (scene is self._scene and names == self._scene_names
-                    and (materials is None or physics == self._materials)):
+                    and attached <= self._free_names
+                    and (materials is None or (physics == self._materials
+                                               and named == self._named))):
                 return
             self._scene, self._scene_names = scene, names
             if materials is not None:
-                self._materials = physics
+                self._materials, self._named = physics, named
             self._sync_objects()
 
     def physics_report(self) -> dict[str, Any] | None:
@@ -323,6 +336,7 @@ class MujocoBackend(BaseBackend):
         self._finger = np.array([n in cell.gripper_joints for n in self._names])
         self._objects = {o.name: mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, o.name)
                          for o in cell.objects if o.movable}
+        self._free_names = frozenset(self._objects)
         self._robot_bodies = {int(b) for b in range(1, model.nbody)
                               if model.body(b).name not in self._objects}
         self._hand_bodies = {mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
@@ -390,22 +404,31 @@ class MujocoBackend(BaseBackend):
         scene = self._scene
         if scene is None:
             return
-        static = {o.name for o in self._cell.objects if not o.movable}
-        wanted = []
+        static = self._cell_static
+        free = {o.name for o in self._cell.objects if o.movable} | set(self._named or ())
+        wanted, fixed = [], []
         for obj in scene.objects:
             if obj.name in static:
                 continue
             pose = scene.object_pose(obj.name)
             physics = self._materials.get(obj.name, self._cell_physics.get(obj.name))
+            if (self._named is not None and obj.name not in free
+                    and obj.attached_to is None and obj.name not in self._free_names):
+                fixed.append(PhysicsObject(obj.name, obj.shape, pose.xyz, pose.quat,
+                                           movable=False, physics=physics))
+                continue
             wanted.append(PhysicsObject(obj.name, obj.shape, pose.xyz, pose.quat, movable=True,
                                         physics=physics))
         built = {o.name: o.physics for o in self._cell.objects if o.movable}
-        if {o.name: o.physics for o in wanted} == built:
+        built_fixed = {o.name for o in self._cell.objects
+                       if not o.movable and o.name not in static}
+        if ({o.name: o.physics for o in wanted} == built
+                and {o.name for o in fixed} == built_fixed):
             return
         if self._executions:
             raise BackendError("objects were added to the scene while a motion runs; the "
                                "mujoco backend adds objects between motions")
-        kept = [o for o in self._cell.objects if not o.movable and o.name in static]
+        kept = [o for o in self._cell.objects if not o.movable and o.name in static] + fixed
         poses = dict(self._object_poses)
         self._build(self._cell.with_objects([*kept, *wanted]))
         self._object_poses.update({k: v for k, v in poses.items() if k in self._objects})

@@ -1,0 +1,52 @@
+"""A MoveIt PlanningScene's world objects on the mujoco backend: fixed, as in MoveIt,
+unless the task takes hold of them.
+
+Skipped where mujoco is not installed (``pip install 'taskrunner[mujoco]'``).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.tasks.loader import load_task
+from taskrunner.tree.check import check_task
+
+mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
+                             "'taskrunner[mujoco]'")
+
+from taskrunner.backends.mock import MockBackend  # noqa: E402
+from taskrunner.backends.physics import MujocoBackend, MujocoOptions, physics_cell  # noqa: E402
+from taskrunner.planning.service import InProcessPlanner  # noqa: E402
+
+TASK = Path(__file__).parents[1] / "fixtures" / "moveit_scenes" / "task" / "pick_from_shelf.yaml"
+SHELF_Z = 0.75 + 0.1  # the scene file's shelf, in the world (panda_link0 is 0.75 m up)
+
+
+def test_a_scene_files_shelf_stays_put_and_check_mock_and_mujoco_agree(tmp_path):
+    report = check_task(TASK)
+    spec = load_task(TASK)
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state()))
+    mock = Runner(spec, cell, MockBackend(cell.model.joint_names, start), InProcessPlanner(),
+                  RunOptions(backend_name="mock")).run()
+    backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                            MujocoOptions(cache_dir=str(tmp_path / "cache")))
+    try:
+        record = Runner(spec, cell, backend, InProcessPlanner(),
+                        RunOptions(backend_name="mujoco")).run()
+        model, data = backend.model, backend._data
+        shelf = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "shelf")
+        assert shelf >= 0
+        assert model.geom_bodyid[shelf] == 0  # a world geom: no free joint
+        assert abs(float(data.geom_xpos[shelf][2]) - SHELF_Z) < 1e-3
+        assert "shelf" not in backend.object_poses()
+        cube = backend.object_poses()["cube"]  # the picked cube is a free body
+    finally:
+        backend.close()
+    assert report.ok, report.problems
+    assert (mock.status, record.status) == ("succeeded", "succeeded"), record.error
+    assert abs(cube.xyz[2] - 0.771) < 5e-3
