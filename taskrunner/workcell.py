@@ -22,6 +22,7 @@ seconds.
 
 from __future__ import annotations
 
+import logging
 import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -366,7 +367,8 @@ class Workcell:
 
     def plan_request(self, path: str | os.PathLike[str], *,
                      scene: str | os.PathLike[str] | None = None, robot: str | None = None,
-                     group: str | None = None, seed: int = 0, strict: bool | None = None) -> Plan:
+                     group: str | None = None, seed: int = 0, strict: bool | None = None,
+                     start_state_max_bounds_error: float | None = None) -> Plan:
         """Plan a MoveIt ``MotionPlanRequest`` YAML file (group, start state, joint or pose
         goal constraints, planner, time, attempts, scaling factors) and time it.
 
@@ -375,6 +377,12 @@ class Workcell:
             robot: the cell's robot the files are for (see :meth:`load_planning_scene`).
             group: plan for this group instead of the file's ``group_name``.
             seed: seeds OMPL and the IK goal sampling.
+            strict: what would be a warning is an error (a joint state naming joints
+                the model does not have, an unused field); None: ``TASKRUNNER_STRICT``.
+            start_state_max_bounds_error: a start joint outside its bounds by at most
+                this (rad or m) is moved onto the bound with a warning, as MoveIt's
+                ``FixStartStateBounds`` adapter does; the request file's own
+                ``start_state_max_bounds_error`` wins; None: 0.05, MoveIt's default.
 
         Raises:
             InputError: an invalid or unsupported request (file:line, field).
@@ -387,10 +395,16 @@ class Workcell:
             self.load_planning_scene(scene, robot=robot, strict=strict)
         request = load_motion_plan_request(path, self.model, robot=robot, group=group,
                                            strict=strict)
-        report = plan_request_file(self._scene, request, seed=seed)
+        report = plan_request_file(self._scene, request, seed=seed,
+                                   start_state_max_bounds_error=start_state_max_bounds_error)
+        for warning in request.warnings:  # the file's, and start joints moved onto bounds
+            logging.getLogger("taskrunner.moveit").warning("%s", warning)
         result = report.result
         if result is None or not report.success or result.trajectory is None:
-            raise PlanningError(report.message or "no motion")
+            from taskrunner.errors import InvalidStateError
+
+            error = InvalidStateError if report.error_kind == "InvalidStateError" else PlanningError
+            raise error(report.message or "no motion")
         return Plan(request.group, result.path, result.trajectory, self._full(result.start),
                     self._full(result.end), planning_time=result.total_time)
 

@@ -6,6 +6,7 @@ See :mod:`taskrunner.moveit.scene_file` for what each field becomes.
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
@@ -30,6 +31,9 @@ ROBOT_STATE_FIELDS = ("joint_state", "multi_dof_joint_state", "attached_collisio
                       "is_diff")
 JOINT_STATE_FIELDS = ("header", "name", "position", "velocity", "effort")
 POSE_FIELDS = ("position", "orientation")
+_MIMIC_TOLERANCE = 1e-6  # rad or m: a mimic joint's value that agrees with its source
+
+_log = logging.getLogger("taskrunner.moveit")
 
 
 @dataclass(frozen=True)
@@ -148,15 +152,7 @@ def read_robot_state(msg: Msg | None, names: NameMap) -> RobotStateData:
     values: dict[str, float] = {}
     joint_state = msg.msg("joint_state", JOINT_STATE_FIELDS)
     if joint_state is not None:
-        joint_names = joint_state.strings("name")
-        positions = joint_state.numbers("position")
-        if len(joint_names) != len(positions):
-            raise joint_state.error("position", f"must have one value per name ({len(joint_names)}) "
-                                                f"(got {len(positions)})")
-        for name, value in zip(joint_names, positions):
-            mapped = mapped_name(joint_state, "name", names.joint, name, "joint",
-                             list(names.model.joint_names))
-            values[mapped] = value
+        values = _joint_values(joint_state, names)
     multi = msg.msg("multi_dof_joint_state", ("header", "joint_names", "transforms", "twist",
                                               "wrench"))
     if multi is not None:
@@ -183,6 +179,59 @@ def read_robot_state(msg: Msg | None, names: NameMap) -> RobotStateData:
         assert obj is not None
         attached.append(read_collision_object(obj, names, link, tuple(touch)))
     return RobotStateData(values, tuple(attached), msg.boolean("is_diff"))
+
+
+def _joint_values(joint_state: Msg, names: NameMap) -> dict[str, float]:
+    """The values of a ``sensor_msgs/JointState`` for the joints the model moves.
+
+    A joint of the description that is fixed in the model has no value: ignored (debug
+    log). A name the model does not have at all (a mobile base's wheels in a file written
+    for the whole robot): one warning naming them all (strict mode: an error). A mimic
+    joint's value is ignored (it follows its source joint), with a warning when it does
+    not agree with the source's value in the same message.
+    """
+    joint_names = joint_state.strings("name")
+    positions = joint_state.numbers("position")
+    if len(joint_names) != len(positions):
+        raise joint_state.error("position", f"must have one value per name ({len(joint_names)}) "
+                                            f"(got {len(positions)})")
+    values: dict[str, float] = {}
+    mimics: dict[str, float] = {}
+    fixed: list[str] = []
+    unknown: list[str] = []
+    for name, value in zip(joint_names, positions):
+        mapped = try_name(joint_state, "name", names.joint, name)
+        if mapped is not None:
+            if names.model.joint(mapped).mimic is not None:
+                mimics[mapped] = value
+            else:
+                values[mapped] = value
+        elif try_name(joint_state, "name", names.fixed_joint, name) is not None:
+            fixed.append(name)
+        else:
+            unknown.append(name)
+    if fixed:
+        _log.debug("%s: %r names joints fixed in the model (no value): %s; ignored",
+                   joint_state.reader.path, joint_state.field("name"), ", ".join(fixed))
+    if unknown:
+        joint_state.warn("name", f"names joint(s) the model does not have: "
+                                 f"{', '.join(repr(n) for n in unknown)}; their values are ignored")
+    disagree = []
+    for joint, value in mimics.items():
+        mimic = names.model.joint(joint).mimic
+        assert mimic is not None
+        if mimic.source not in values:
+            disagree.append(f"{joint!r} = {value:.6g} (its source {mimic.source!r} is not given)")
+            continue
+        follows = mimic.multiplier * values[mimic.source] + mimic.offset
+        if abs(value - follows) > _MIMIC_TOLERANCE:
+            disagree.append(f"{joint!r} = {value:.6g}, not {follows:.6g} ({mimic.multiplier:g} × "
+                            f"{mimic.source!r} + {mimic.offset:g})")
+    if disagree:
+        joint_state.warn("position", f"gives mimic joint(s) values that do not follow their "
+                                     f"source: {'; '.join(disagree)}; the mimic joints follow "
+                                     "their source")
+    return values
 
 
 def try_name(msg: Msg, key: str, lookup: Callable[[str], str | None], name: str) -> str | None:

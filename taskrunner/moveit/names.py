@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+import pinocchio as pin
+
 from taskrunner.errors import UnknownNameError
 from taskrunner.robot.model import RobotModel
 
@@ -45,9 +47,18 @@ class NameMap:
         self.prefixes = ([instances[robot].prefix] if robot is not None
                          else sorted({inst.prefix for inst in model.instances if inst.prefix}))
         self._joints = frozenset(model.joint_names)
+        # Joints of the URDF that pinocchio merged into frames (pinocchio's own root,
+        # ``universe``, is not a joint of any description).
+        self._fixed = frozenset(f.name for f in model.model.frames
+                                if f.type == pin.FIXED_JOINT and f.name != "universe")
 
     def joint(self, name: str) -> str | None:
+        """A joint of the state vector (revolute, continuous, prismatic, mimic)."""
         return self._find(name, lambda n: n in self._joints)
+
+    def fixed_joint(self, name: str) -> str | None:
+        """A joint of the description that is fixed in the model (it has no value)."""
+        return self._find(name, lambda n: n in self._fixed)
 
     def link(self, name: str) -> str | None:
         """A link or other frame of the model (``world`` included)."""

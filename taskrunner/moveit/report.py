@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from taskrunner.errors import PlanningError
+from taskrunner.errors import InvalidStateError, PlanningError
 from taskrunner.moveit.request_file import MotionPlanRequestFile, load_motion_plan_request
 from taskrunner.moveit.scene_file import load_planning_scene
 from taskrunner.planning.planner import MotionPlanner
@@ -56,20 +56,30 @@ class PlanReport:
 
 
 def plan_request_file(scene: Scene, request: MotionPlanRequestFile, *, seed: int = 0,
-                      timing: bool = True, planner: MotionPlanner | None = None) -> PlanReport:
+                      timing: bool = True, planner: MotionPlanner | None = None,
+                      start_state_max_bounds_error: float | None = None) -> PlanReport:
     """Plan ``request`` in a copy of ``scene`` (with the start state's attached objects).
 
-    A planning failure is reported (``success`` False, ``error_kind``), not raised.
+    A planning failure is reported (``success`` False, ``error_kind``), not raised; so is
+    a start state outside its bounds by more than ``start_state_max_bounds_error`` (rad or
+    m; the request file's own value first, None: 0.05, see
+    :mod:`taskrunner.moveit.start_bounds`).
 
     Raises:
         InputError: a goal's frame is unknown (file:line).
     """
     scene = scene.copy()
     request.apply_start(scene)
-    plan_request = request.plan_request(scene, seed=seed, timing=timing)
+    started = time.perf_counter()
+    try:
+        plan_request = request.plan_request(scene, seed=seed, timing=timing,
+                                            start_state_max_bounds_error=start_state_max_bounds_error)
+    except InvalidStateError as exc:
+        return PlanReport(False, request.group, request.options.planner or "default",
+                          total_time=time.perf_counter() - started,
+                          error_kind=type(exc).__name__, message=str(exc))
     name = plan_request.options.planner or "default"
     planner = planner if planner is not None and planner.scene is scene else MotionPlanner(scene)
-    started = time.perf_counter()
     try:
         result = planner.plan(plan_request)
     except PlanningError as exc:
@@ -89,8 +99,11 @@ def plan_files(cell: Cell, request_path: str | os.PathLike[str],
                scene_path: str | os.PathLike[str] | None = None, *,
                robot: str | None = None, group: str | None = None, seed: int = 0,
                merge: bool | None = None, strict: bool | None = None,
+               start_state_max_bounds_error: float | None = None,
                ) -> tuple[PlanReport, list[LoadWarning]]:
-    """Load ``cell``'s scene, apply a PlanningScene file, plan a MotionPlanRequest file.
+    """Load ``cell``'s scene, apply a PlanningScene file, plan a MotionPlanRequest file
+    (``strict``: what would be a warning is an error; ``start_state_max_bounds_error``: see
+    :func:`plan_request_file`).
 
     Returns:
         the report and every warning of both files.
@@ -106,5 +119,6 @@ def plan_files(cell: Cell, request_path: str | os.PathLike[str],
         warnings += scene_file.warnings
     request = load_motion_plan_request(request_path, cell.model, robot=robot, group=group,
                                        strict=strict)
-    report = plan_request_file(scene, request, seed=seed)
+    report = plan_request_file(scene, request, seed=seed,
+                               start_state_max_bounds_error=start_state_max_bounds_error)
     return report, warnings + request.warnings

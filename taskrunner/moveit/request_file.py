@@ -40,7 +40,7 @@ from pathlib import Path
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import InputError
+from taskrunner.errors import InputError, InvalidStateError
 from taskrunner.moveit.fields import MessageReader, Msg
 from taskrunner.moveit.geometry import read_primitive
 from taskrunner.moveit.messages import (
@@ -53,6 +53,13 @@ from taskrunner.moveit.messages import (
 )
 from taskrunner.moveit.names import AmbiguousName, NameMap
 from taskrunner.moveit.scene_file import PlanningSceneFile, apply_object
+from taskrunner.moveit.start_bounds import (
+    BOUNDS_TOLERANCE,
+    START_STATE_MAX_BOUNDS_ERROR,
+    check_allowance,
+    describe_excess,
+    fix_start_bounds,
+)
 from taskrunner.planning.request import (
     PLANNERS,
     Goal,
@@ -77,7 +84,7 @@ REQUEST_FIELDS = ("workspace_parameters", "start_state", "goal_constraints", "pa
                   "group_name", "num_planning_attempts", "allowed_planning_time",
                   "max_velocity_scaling_factor", "max_acceleration_scaling_factor",
                   "cartesian_speed_end_effector_link", "cartesian_speed_limited_link",
-                  "max_cartesian_speed")
+                  "max_cartesian_speed", "start_state_max_bounds_error")
 CONSTRAINTS_FIELDS = ("name", "joint_constraints", "position_constraints",
                       "orientation_constraints", "visibility_constraints")
 _PIPELINES = ("", "ompl", "move_group")
@@ -98,6 +105,8 @@ class _JointCheck:
     position: float
     above: float
     below: float
+    where: str = ""
+    line: int | None = None
 
 
 @dataclass(frozen=True)
@@ -123,7 +132,11 @@ class MotionPlanRequestFile:
         start: joint values of ``start_state`` (model names).
         options: planner, time, attempts (seed 0: :meth:`plan_request` takes a seed).
         velocity_scaling, acceleration_scaling: for timing (None: the robot's defaults).
-        warnings: what was not used, by file:line.
+        start_state_max_bounds_error: the file's own allowance for a start state outside
+            its bounds (rad or m; None: the caller's, else MoveIt's default 0.05); see
+            :mod:`taskrunner.moveit.start_bounds`.
+        warnings: what was not used, by file:line; planning adds the start-state joints
+            moved onto their bounds.
     """
 
     path: Path | None
@@ -137,6 +150,8 @@ class MotionPlanRequestFile:
     pose_goals: tuple[_PoseTarget | None, ...]
     warnings: list[LoadWarning]
     names: NameMap = field(repr=False)
+    start_state_max_bounds_error: float | None = None
+    start_line: int | None = None
 
     def apply_start(self, scene: Scene) -> None:
         """Put the start state's attached objects into ``scene`` (use a copy of the
@@ -146,18 +161,42 @@ class MotionPlanRequestFile:
         for edit in self.start_attached:
             apply_object(scene, edit, carrier)
 
-    def plan_request(self, scene: Scene, *, seed: int = 0, timing: bool = True) -> PlanRequest:
-        """The request for :class:`~taskrunner.planning.MotionPlanner` on ``scene``: pose
-        goals are placed in the world at the start state.
+    def plan_request(self, scene: Scene, *, seed: int = 0, timing: bool = True,
+                     start_state_max_bounds_error: float | None = None) -> PlanRequest:
+        """The request for :class:`~taskrunner.planning.MotionPlanner` on ``scene``: the
+        start state is the scene's with ``start_state`` set, moved onto its joint bounds
+        where it is outside them by little (MoveIt's ``FixStartStateBounds``, see
+        :mod:`taskrunner.moveit.start_bounds`; each joint moved is added to
+        :attr:`warnings`); pose goals are placed in the world at the start state.
+
+        Args:
+            start_state_max_bounds_error: the allowance (rad or m) when the file gives
+                none; None: MoveIt's default, 0.05.
 
         Raises:
             InputError: a goal's frame is none of the world, a link, a scene object.
+            InvalidStateError: the start outside its bounds by more than the allowance, a
+                joint goal whose tolerance does not reach inside the joint's bounds.
         """
-        start = scene.robot.state_with(scene.state, self.start)
+        allowance = next((a for a in (self.start_state_max_bounds_error,
+                                      start_state_max_bounds_error) if a is not None),
+                         START_STATE_MAX_BOUNDS_ERROR)
+        check_allowance(allowance)
+        try:
+            start, fixes = fix_start_bounds(scene.robot, scene.robot.state_with(scene.state,
+                                                                                self.start),
+                                            allowance)
+        except InvalidStateError as exc:
+            raise InvalidStateError(f"{self.path}: {exc}") from None
+        for fix in fixes:
+            warning = LoadWarning(f"'start_state' {fix} (start_state_max_bounds_error "
+                                  f"{allowance:g}, as MoveIt's FixStartStateBounds)",
+                                  self.path, self.start_line)
+            self.warnings.append(warning)
         goals: list[Goal] = []
         for checks, target in zip(self.joint_goals, self.pose_goals):
             if checks is not None:
-                goals.append(JointGoal({c.joint: c.position for c in checks}))
+                goals.append(JointGoal({c.joint: self._goal_value(scene, c) for c in checks}))
             else:
                 assert target is not None
                 world = self._target_world(scene, target, start)
@@ -170,6 +209,24 @@ class MotionPlanRequestFile:
                            replace(self.options, seed=seed),
                            TimingOptions(self.velocity_scaling, self.acceleration_scaling)
                            if timing else None)
+
+    def _goal_value(self, scene: Scene, check: _JointCheck) -> float:
+        """The value a joint goal aims at: its ``position``, or when that is outside the
+        joint's bounds, the bound, if the constraint's tolerance reaches it (every value
+        within the tolerance meets the goal, as MoveIt's goal sampler takes it)."""
+        joint = scene.robot.joint(check.joint)
+        low = max(joint.lower, check.position - check.below - BOUNDS_TOLERANCE)
+        high = min(joint.upper, check.position + check.above + BOUNDS_TOLERANCE)
+        if joint.lower <= check.position <= joint.upper:
+            return check.position
+        if low <= high:
+            return float(np.clip(check.position, joint.lower, joint.upper))
+        bound = joint.lower if check.position < joint.lower else joint.upper
+        where = f"{self.path}:{check.line}" if check.line is not None else str(self.path)
+        unit = "m" if joint.type == "prismatic" else "rad"
+        raise InvalidStateError(f"{where}: '{check.where}.position': "
+                                f"{describe_excess(check.joint, check.position, bound, unit)}, beyond "
+                                f"its tolerance (+{check.above:g}/-{check.below:g})")
 
     def goal_violations(self, scene: Scene, start: np.ndarray, q: np.ndarray) -> list[str]:
         """How state ``q`` misses every goal's constraints as written (empty: it meets
@@ -281,13 +338,20 @@ def _constraints(msg: Msg, names: NameMap) -> tuple[tuple[_JointCheck, ...] | No
     if joints:
         checks = []
         for joint in joints:
+            written = joint.string("joint_name")
+            if try_name(joint, "joint_name", names.joint, written) is None and \
+                    try_name(joint, "joint_name", names.fixed_joint, written) is not None:
+                raise joint.error("joint_name", f"names joint {written!r}, fixed in the model: "
+                                                "a goal cannot constrain it (MoveIt rejects "
+                                                "such a constraint too)")
             name = mapped_name(joint, "joint_name", names.joint, joint.string("joint_name"), "joint",
                            list(names.model.joint_names))
             above, below = joint.number("tolerance_above"), joint.number("tolerance_below")
             for key, value in (("tolerance_above", above), ("tolerance_below", below)):
                 if value < 0:
                     raise joint.error(key, f"must be >= 0 (got {value})")
-            checks.append(_JointCheck(name, joint.number("position", None), above, below))
+            checks.append(_JointCheck(name, joint.number("position", None), above, below,
+                                      joint.where, joint.line))
         return tuple(checks), None
     if not positions:
         if orientations:
@@ -405,10 +469,17 @@ def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *,
     if attempts < 0:
         raise msg.error("num_planning_attempts", f"must be >= 0 (got {attempts})")
     options = PlannerOptions(planner=planner, planning_time=time_cap or 5.0, attempts=attempts or 1)
+    allowance = None
+    if msg.has("start_state_max_bounds_error"):
+        allowance = msg.number("start_state_max_bounds_error")
+        if allowance < 0:
+            raise msg.error("start_state_max_bounds_error", f"must be >= 0 (rad or m) "
+                                                            f"(got {allowance})")
     return MotionPlanRequestFile(
         Path(path), group_name, start.values, start.attached, options,
         _scaling(msg, "max_velocity_scaling_factor"), _scaling(msg, "max_acceleration_scaling_factor"),
-        tuple(g[0] for g in goals), tuple(g[1] for g in goals), reader.warnings, names)
+        tuple(g[0] for g in goals), tuple(g[1] for g in goals), reader.warnings, names,
+        allowance, msg.line_of("start_state"))
 
 
 def _group_of_joints(msg: Msg, model: RobotModel,
