@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import argparse
 import gc
+import logging
 import math
 import os
 import sys
@@ -83,6 +84,9 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
                              "TASKRUNNER_PACKAGE_PATH, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)")
     parser.add_argument("--strict", action="store_true",
                         help="robot file warnings (what MoveIt would skip) are errors")
+    parser.add_argument("--allow-missing-meshes", action="store_true",
+                        help="load robots whose mesh files cannot be found (or that have "
+                             "no collision geometry) without that geometry, with a warning")
     parser.add_argument("--collision", choices=("exact", "convex", "auto"), default=None,
                         help="link geometry of every robot: exact meshes, convex hulls, or "
                              "auto (hulls where tight; default: each robot's own choice)")
@@ -93,6 +97,8 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
 # takes 0.3 s, and run-task starts its planning worker (which inherits them) before that.
 STRICT_ENV, PACKAGE_PATH_ENV, COLLISION_ENV = (
     "TASKRUNNER_STRICT", "TASKRUNNER_PACKAGE_PATH", "TASKRUNNER_COLLISION")
+# taskrunner.robot.missing_meshes.ALLOW_MISSING_MESHES_ENV
+ALLOW_MISSING_MESHES_ENV = "TASKRUNNER_ALLOW_MISSING_MESHES"
 
 
 def _apply_robot_options(args: argparse.Namespace) -> None:
@@ -108,12 +114,24 @@ def _apply_robot_options(args: argparse.Namespace) -> None:
             [*map(str, folders), *([before] if before else [])])
     if getattr(args, "strict", False):
         os.environ[STRICT_ENV] = "1"
+    if getattr(args, "allow_missing_meshes", False):
+        os.environ[ALLOW_MISSING_MESHES_ENV] = "1"
     if getattr(args, "collision", None):
         os.environ[COLLISION_ENV] = args.collision
 
 
 def cmd_info(args: argparse.Namespace) -> int:
-    cell = _load(args.path)
+    # The loader logs each warning; info lists them in its report instead, so that each
+    # is shown once.
+    robot_log = logging.getLogger("taskrunner.robot")
+    quiet, propagate = logging.NullHandler(), robot_log.propagate
+    robot_log.addHandler(quiet)
+    robot_log.propagate = False
+    try:
+        cell = _load(args.path)
+    finally:
+        robot_log.removeHandler(quiet)
+        robot_log.propagate = propagate
     model = cell.model
     out = [f"cell {cell.name}: {len(model.instances)} robot(s), {model.nq} joints"]
     for inst in model.instances:

@@ -106,7 +106,8 @@ class Plan:
 
 def load_workcell(source: str | os.PathLike[str], *,
                   packages: PackageMap | None = None,
-                  collision: str | Mapping[str, str] | None = None) -> Workcell:
+                  collision: str | Mapping[str, str] | None = None,
+                  allow_missing_meshes: bool | None = None) -> Workcell:
     """Load a cell or a robot as a :class:`Workcell`.
 
     Args:
@@ -121,6 +122,10 @@ def load_workcell(source: str | os.PathLike[str], *,
             robot name: ``"exact"`` meshes, ``"convex"`` hulls, or ``"auto"`` (hulls
             where they are tight); None: each robot's ``collision:`` in the cell or its
             robot.yaml, else auto. ``Workcell.scene.link_geometry`` tells which link got what.
+        allow_missing_meshes: load robots whose mesh files cannot be found (or with no
+            collision geometry at all) without that geometry, with one warning per robot;
+            None: ``TASKRUNNER_ALLOW_MISSING_MESHES``. Otherwise either is a
+            :class:`~taskrunner.errors.MissingMeshError` listing every missing file.
 
     Raises:
         InputError: ``source`` is neither a file or folder nor a shipped name, or
@@ -128,7 +133,8 @@ def load_workcell(source: str | os.PathLike[str], *,
         RobotDescriptionError, YamlError: the cell or a robot's files are invalid (with
             file:line).
     """
-    cell = load_cell_or_robot(resolve_cell(source), packages)
+    cell = load_cell_or_robot(resolve_cell(source), packages,
+                              allow_missing_meshes=allow_missing_meshes)
     if collision is not None:
         from taskrunner.scene.linkgeometry import set_collision_choice
 

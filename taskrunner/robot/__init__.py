@@ -27,7 +27,8 @@ __all__ = [
 
 
 def load_robot(path: str | Path, packages: PackageMap | None = None,
-               strict: bool | None = None) -> RobotModel:
+               strict: bool | None = None,
+               allow_missing_meshes: bool | None = None) -> RobotModel:
     """Load one robot (manifest, MoveIt config folder, URDF or xacro) as a model.
 
     The robot's root link is placed at the world origin, with no name prefix.
@@ -37,6 +38,11 @@ def load_robot(path: str | Path, packages: PackageMap | None = None,
         packages: package map (default: the environment's and the robot's neighbours').
         strict: every warning (what MoveIt would skip, a missing mesh, a pose in
             self-collision…) is an error; None: the ``TASKRUNNER_STRICT`` variable.
+        allow_missing_meshes: load the robot even when mesh files it names cannot be
+            found, or it has no collision geometry (one warning); None: the
+            ``TASKRUNNER_ALLOW_MISSING_MESHES`` variable. Otherwise either is a
+            :class:`~taskrunner.errors.MissingMeshError`.
     """
     description = load_description(path, packages)
-    return build_model([Placement(description)], name=description.name, strict=strict)
+    return build_model([Placement(description)], name=description.name, strict=strict,
+                       allow_missing_meshes=allow_missing_meshes)

@@ -22,6 +22,7 @@ import pinocchio as pin
 
 from taskrunner.errors import RobotDescriptionError, YamlError
 from taskrunner.robot.description import RobotDescription
+from taskrunner.robot.missing_meshes import check_robot_geometry, resolve_allow_missing_meshes
 from taskrunner.robot.model import EndEffector, Group, JointInfo, Mimic, RobotInstance, RobotModel
 from taskrunner.robot.notes import LoadWarning, raise_if_strict
 from taskrunner.robot.selfcollision import self_collision_warnings
@@ -82,6 +83,7 @@ def build_model(
     extra_groups: Mapping[str, Sequence[str]] | None = None,
     strict: bool | None = None,
     check_self_collision: bool = True,
+    allow_missing_meshes: bool | None = None,
 ) -> RobotModel:
     """Build one model from one or more placed robot descriptions.
 
@@ -95,8 +97,14 @@ def build_model(
             pose in self-collision…) into an error; None: ``TASKRUNNER_STRICT``.
         check_self_collision: warn when the default state or a named pose is in
             self-collision (see :mod:`taskrunner.robot.selfcollision`).
+        allow_missing_meshes: load a robot whose mesh files cannot be found, or that has
+            no collision geometry at all, without that geometry (one warning per robot;
+            see :mod:`taskrunner.robot.missing_meshes`); None: the
+            ``TASKRUNNER_ALLOW_MISSING_MESHES`` variable.
 
     Raises:
+        MissingMeshError: a robot's mesh files cannot be found, or it has no collision
+            geometry, and ``allow_missing_meshes`` is not set.
         RobotDescriptionError, YamlError: names clash, a URDF is broken, a named pose is
             outside the limits; in strict mode, any warning.
     """
@@ -112,6 +120,8 @@ def build_model(
         raise RobotDescriptionError(f"robot instance names must be unique (got {names})")
     model_name = name or "+".join(names)
     warnings: list[LoadWarning] = [w for p in placements for w in p.description.warnings]
+    # Explicitly allowed, so logged but never raised by strict mode.
+    allowed_losses = _check_geometry(placements, allow_missing_meshes)
     xml, tree = _merge_urdf(placements, model_name, warnings)
     model, collision_model = _load_pinocchio(xml, placements)
     joints = _joint_infos(model, tree, placements, warnings)
@@ -160,10 +170,28 @@ def build_model(
         warnings += self_collision_warnings(robot)
     unique = list(dict.fromkeys(warnings))
     raise_if_strict(unique, strict)
+    unique = allowed_losses + unique
     robot.warnings = [str(w) for w in unique]
     for warning in unique:
         log.warning("%s", warning)
     return robot
+
+
+def _check_geometry(placements: Sequence[Placement],
+                    allow_missing_meshes: bool | None) -> list[LoadWarning]:
+    """Every robot's mesh files found and some collision geometry, or the opt-out (see
+    :mod:`taskrunner.robot.missing_meshes`): one warning per robot description."""
+    allow = resolve_allow_missing_meshes(allow_missing_meshes)
+    found: list[LoadWarning] = []
+    for description in {id(p.description.urdf): p.description for p in placements}.values():
+        urdf = description.urdf
+        collisions = sum(1 for link in urdf.root.findall("link")
+                         for _ in link.findall("collision"))
+        warning = check_robot_geometry(description.name, urdf.source, urdf.missing_meshes,
+                                       collisions, allow)
+        if warning is not None:
+            found.append(warning)
+    return found
 
 
 def _collision_choice(description: RobotDescription) -> str:

@@ -238,7 +238,8 @@ def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:
 
 
 def load_cell(path: str | Path, packages: PackageMap | None = None,
-              policy: FolderPolicy | None = None, strict: bool | None = None) -> Cell:
+              policy: FolderPolicy | None = None, strict: bool | None = None,
+              allow_missing_meshes: bool | None = None) -> Cell:
     """Load a cell file (see the module docstring).
 
     Args:
@@ -248,6 +249,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             policy, if any; none: anything loads). Robots outside the policy's robot
             folders are refused before any of their files is read (xacro runs code).
         strict: every warning of a robot is an error (see
+            :func:`taskrunner.robot.load_robot`).
+        allow_missing_meshes: load robots whose mesh files cannot be found (see
             :func:`taskrunner.robot.load_robot`).
 
     Raises:
@@ -313,7 +316,8 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         )
     try:
         model = build_model(placements, name=spec.name, extra_groups=spec.groups,
-                            strict=strict, check_self_collision=False)
+                            strict=strict, check_self_collision=False,
+                            allow_missing_meshes=allow_missing_meshes)
     except RobotDescriptionError as exc:
         if exc.path is None:  # a problem with the cell's own declarations
             raise YamlError(exc.reason, path, line_of(node, "groups")) from None
@@ -398,13 +402,16 @@ def _grasp_modes(spec: CellSpec, node: LineDict, model: RobotModel, path: Path
 
 
 def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None,
-                       strict: bool | None = None) -> Cell:
+                       strict: bool | None = None,
+                       allow_missing_meshes: bool | None = None) -> Cell:
     """A cell file, or a robot (manifest, folder, URDF, xacro) as a one-robot cell with no
     objects."""
     path = Path(path)
     if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
-        return load_cell(path, packages, strict=strict)
+        return load_cell(path, packages, strict=strict,
+                         allow_missing_meshes=allow_missing_meshes)
     description = load_description(path, packages)
-    model = build_model([Placement(description)], name=description.name, strict=strict)
+    model = build_model([Placement(description)], name=description.name, strict=strict,
+                        allow_missing_meshes=allow_missing_meshes)
     return Cell(model.name, path, model, (), {},
                 tools=install_tools(model, description.end_effector_settings))

@@ -11,7 +11,16 @@ gives a warning naming both folders):
 3. the folders searched for the robot at hand (its folder and the one above);
 4. ``ROS_PACKAGE_PATH`` (searched recursively, as rospack does);
 5. ``AMENT_PREFIX_PATH`` (each prefix's ``share/<pkg>``, as ament does);
-6. the ``example-robot-data`` wheel, when installed.
+6. the ``example-robot-data`` wheel, when installed;
+7. only for a package none of these has: the workspace around the robot, so that a
+   description package that is a sibling of the config package's repository is found
+   with no flag (``ws/src/sawyer_moveit/sawyer_moveit_config`` finds
+   ``ws/src/sawyer_robot/sawyer_description``). Up to two folders above the robot's
+   surroundings are searched, at most four folders deep, stopping at a workspace's
+   ``src`` folder or at a folder holding ``src``, ``.catkin_workspace`` or
+   ``.catkin_tools``, and never searching the home folder or the file system's root.
+
+A package that is not found is an error naming every folder searched.
 
 A package is a folder holding a ``package.xml``; its name is that file's ``<name>``,
 which may differ from the folder's name. Packages do not nest: the search does not
@@ -30,7 +39,8 @@ from taskrunner.errors import RobotDescriptionError
 from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.xmldoc import read_xml
 
-__all__ = ["PACKAGE_PATH_ENV", "PackageMap", "default_package_map", "example_robot_data_dir"]
+__all__ = ["PACKAGE_PATH_ENV", "PackageMap", "default_package_map", "example_robot_data_dir",
+           "package_of"]
 
 PACKAGE_PATH_ENV = "TASKRUNNER_PACKAGE_PATH"
 
@@ -39,7 +49,12 @@ _SKIP_DIRS = {".git", "__pycache__", "node_modules", ".venv", "build", "install"
 _IGNORE_MARKERS = ("COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE")
 
 # Search tiers, first wins (see the module docstring).
-_EXPLICIT, _USER, _ROBOT, _ROS, _AMENT, _BUNDLED = range(6)
+_EXPLICIT, _USER, _ROBOT, _ROS, _AMENT, _BUNDLED, _WORKSPACE = range(7)
+# The workspace search (tier 7): how many folders above the robot's surroundings, and how
+# deep below each.
+_WORKSPACE_LEVELS = 2
+_WORKSPACE_DEPTH = 4
+_WORKSPACE_MARKERS = ("src", ".catkin_workspace", ".catkin_tools")
 
 
 def example_robot_data_dir() -> Path | None:
@@ -88,6 +103,10 @@ class PackageMap:
         self._order = 0
         self._warned: set[str] = set()
         self._skipped: list[str] = []
+        # What was searched, for "not found" messages: (tier, order, description).
+        self._searched: list[tuple[int, int, str]] = []
+        # Workspaces around robots, searched only when a package is not found elsewhere.
+        self._pending: list[Path] = []
         self.warnings: list[LoadWarning] = []
         erd = example_robot_data_dir()
         if erd is not None:
@@ -102,9 +121,13 @@ class PackageMap:
                 self._discover(ros_root, _ROS)
             for prefix in _env_folders("AMENT_PREFIX_PATH"):
                 share = prefix / "share"
+                self._note_searched(_AMENT, f"{share} (AMENT_PREFIX_PATH)")
                 if share.is_dir():
                     for folder in sorted(share.iterdir()):
                         self._add_if_package(folder, _AMENT)
+            unset = [v for v in ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH") if not os.environ.get(v)]
+            if unset:
+                self._note_searched(_ROS, f"{' and '.join(unset)} not set")
         for root in search_roots:
             self.discover(root)
         for name, explicit in (packages or {}).items():
@@ -139,14 +162,28 @@ class PackageMap:
         self._register(name, folder.resolve(), tier)
         return True
 
-    def _discover(self, root: str | Path, tier: int) -> None:
+    def _note_searched(self, tier: int, what: str) -> None:
+        if all(w != what for _, _, w in self._searched):
+            self._searched.append((tier, self._order, what))
+            self._order += 1
+
+    def _discover(self, root: str | Path, tier: int, max_depth: int | None = None) -> None:
         root = Path(root)
+        label = {_USER: " (--package-path / TASKRUNNER_PACKAGE_PATH)",
+                 _ROS: " (ROS_PACKAGE_PATH)",
+                 _WORKSPACE: f" (the workspace around the robot, {max_depth} folders deep)",
+                 }.get(tier, "")
+        self._note_searched(tier, f"{root.resolve() if root.is_dir() else root}{label}"
+                                  f"{'' if root.is_dir() else ' (no such folder)'}")
         if not root.is_dir():
             return
         for dirpath, dirnames, filenames in os.walk(root):
             if any(marker in filenames for marker in _IGNORE_MARKERS):
                 dirnames[:] = []
                 continue
+            depth = len(Path(dirpath).relative_to(root).parts)
+            if max_depth is not None and depth >= max_depth:
+                dirnames[:] = []
             dirnames[:] = sorted(d for d in dirnames if d not in _SKIP_DIRS)
             if "package.xml" in filenames and self._add_if_package(Path(dirpath), tier):
                 dirnames[:] = []  # packages do not nest
@@ -163,6 +200,26 @@ class PackageMap:
         folder = path if path.is_dir() else path.parent
         self.discover(folder.parent)
         self.discover(folder)
+        for workspace in _workspace_folders(folder.parent):
+            if workspace not in self._pending:
+                self._pending.append(workspace)
+
+    def _search_workspaces(self) -> None:
+        """Search the pending workspace folders (tier 7), once."""
+        pending, self._pending = self._pending, []
+        for folder in pending:
+            self._discover(folder, _WORKSPACE, _WORKSPACE_DEPTH)
+
+    def has(self, name: str) -> bool:
+        """Whether package ``name`` can be found (searching the workspaces around the
+        robots when no other place has it)."""
+        if not self._entries.get(name) and self._pending:
+            self._search_workspaces()
+        return bool(self._entries.get(name))
+
+    def searched_folders(self) -> list[str]:
+        """Every place searched for packages so far, in search order, for messages."""
+        return [what for _, _, what in sorted(self._searched)]
 
     def add(self, name: str, folder: str | Path) -> None:
         """Register (or replace) one package, ahead of every found one."""
@@ -181,16 +238,17 @@ class PackageMap:
         Raises:
             RobotDescriptionError: the package is not in the map.
         """
-        entries = self._entries.get(name)
-        if not entries:
+        if not self.has(name):
             known = ", ".join(self.names) or "none"
             skipped = (f"; skipped broken manifests: {'; '.join(self._skipped)}"
                        if self._skipped else "")
+            searched = "; ".join(self.searched_folders()) or "no folder"
             raise RobotDescriptionError(
-                f"package {name!r} not found (known packages: {known}); add its folder "
-                f"with --package-path or {PACKAGE_PATH_ENV}, or place a package.xml naming "
-                f"it under a search root{skipped}"
+                f"package {name!r} not found (searched: {searched}; known packages: "
+                f"{known}); add its folder with --package-path or {PACKAGE_PATH_ENV}, or "
+                f"place a package.xml naming it under a search root{skipped}"
             )
+        entries = self._entries[name]
         tier, _, folder = entries[0]
         others = list(dict.fromkeys(str(f) for _, _, f in entries[1:] if f != folder))
         if others and tier != _EXPLICIT and name not in self._warned:
@@ -209,10 +267,10 @@ class PackageMap:
         Raises:
             RobotDescriptionError: an unknown package or URI scheme.
         """
-        if uri.startswith("package://"):
-            rest = uri[len("package://") :]
-            pkg, _, rel = rest.partition("/")
-            return self.find(pkg) / unquote(rel)
+        package = package_of(uri)
+        if package is not None:
+            rel = uri[len("package://"):].lstrip("/").partition("/")[2]
+            return self.find(package) / unquote(rel)
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         if "://" in uri:
@@ -222,3 +280,27 @@ class PackageMap:
 
     def __repr__(self) -> str:
         return f"PackageMap({self.names})"
+
+
+def package_of(uri: str) -> str | None:
+    """The package a ``package://`` URI names, else None. ``package:///pkg/rel`` (three
+    slashes, as example-robot-data writes them and pinocchio reads them) names ``pkg``."""
+    if not uri.startswith("package://"):
+        return None
+    return uri[len("package://"):].lstrip("/").partition("/")[0]
+
+
+def _workspace_folders(above: Path) -> list[Path]:
+    """The folders above ``above`` (the folder above a robot's, already searched) to
+    search for a package found nowhere else (see the module docstring, tier 7)."""
+    found: list[Path] = []
+    stops = {Path.home().resolve(), Path(above.anchor)}
+    current = above
+    for _ in range(_WORKSPACE_LEVELS):
+        if current.name == "src" or any((current / m).exists() for m in _WORKSPACE_MARKERS):
+            break  # the workspace itself: already searched
+        current = current.parent
+        if current in stops:
+            break
+        found.append(current)
+    return found

@@ -4,9 +4,11 @@ What comes out of :func:`read_urdf` is an XML tree that pinocchio can load with 
 around: xacro expanded, ``package://`` and relative mesh paths made absolute, the tags
 pinocchio has no use for (``<ros2_control>``, ``<gazebo>``, ``<transmission>``) removed,
 and the structure checked (unique names, every parent and child link present, one root,
-mimic joints naming a real joint). A missing mesh is a warning naming the link and the
-path: a visual is dropped, a collision falls back to the link's visual geometry, else
-the link has no collision geometry.
+mimic joints naming a real joint). Meshes that cannot be found are recorded
+(:attr:`UrdfDescription.missing_meshes`) and dropped from the tree: a visual is dropped, a
+collision falls back to the link's visual geometry, else the link has no collision
+geometry; building the model refuses such a robot unless told to load it without them
+(:mod:`taskrunner.robot.missing_meshes`).
 """
 
 from __future__ import annotations
@@ -14,12 +16,13 @@ from __future__ import annotations
 import copy
 import math
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from taskrunner.errors import RobotDescriptionError
+from taskrunner.robot.missing_meshes import MissingMesh
 from taskrunner.robot.notes import LoadWarning
-from taskrunner.robot.packages import PackageMap
+from taskrunner.robot.packages import PackageMap, package_of
 from taskrunner.robot.xacrofile import XacroOptions, expand_xacro
 from taskrunner.robot.xmldoc import XmlDocument, parse_xml
 from taskrunner.textfile import read_text_file
@@ -79,6 +82,9 @@ class UrdfDescription:
         links: link names in file order.
         joints: joint name → (type, parent link, child link).
         warnings: what was wrong but left the model usable.
+        missing_meshes: meshes that cannot be found (dropped from ``doc``; whether the
+            robot may load without them is decided when it is built, see
+            :mod:`taskrunner.robot.missing_meshes`).
     """
 
     doc: XmlDocument
@@ -88,6 +94,7 @@ class UrdfDescription:
     links: list[str]
     joints: dict[str, tuple[str, str, str]]
     warnings: list[LoadWarning]
+    missing_meshes: list[MissingMesh] = field(default_factory=list)
 
     @property
     def root(self) -> ET.Element:
@@ -130,6 +137,7 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
     if root.tag != "robot":
         raise doc.error(root, f"root element must be <robot> (got <{root.tag}>)")
     warnings: list[LoadWarning] = []
+    missing_meshes: list[MissingMesh] = []
     for tag in IGNORED_TAGS:
         for element in root.findall(tag):
             root.remove(element)
@@ -143,7 +151,7 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
         if name in links:
             raise doc.error(link, f"duplicate link {name!r}")
         links.append(name)
-        _resolve_meshes(doc, link, source, packages, warnings)
+        _resolve_meshes(doc, link, source, packages, missing_meshes)
     if not links:
         raise doc.error(root, "URDF has no <link>")
 
@@ -210,7 +218,8 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
     _check_acyclic(doc, joints, roots[0], links)
     # The warnings are logged by build_model (once, with the SRDF's), not here.
     return UrdfDescription(
-        doc, source, root.get("name", source.stem), roots[0], links, joints, warnings
+        doc, source, root.get("name", source.stem), roots[0], links, joints, warnings,
+        missing_meshes,
     )
 
 
@@ -271,52 +280,62 @@ def _resolve_meshes(
     link: ET.Element,
     source: Path,
     packages: PackageMap,
-    warnings: list[LoadWarning],
+    missing_meshes: list[MissingMesh],
 ) -> None:
-    """Make mesh paths absolute. A visual whose mesh is missing is dropped; a collision
-    whose mesh is missing too, and a link left without collision geometry takes its
-    visual geometry instead, else has none (each with a warning naming link and path)."""
-    link_name = link.get("name")
+    """Make mesh paths absolute, recording each mesh that cannot be found (see
+    :mod:`taskrunner.robot.missing_meshes`, which decides whether the robot may load
+    without it). A visual whose mesh is missing is dropped; a collision whose mesh is
+    missing too, and a link left without collision geometry takes its visual geometry
+    instead, else has none."""
+    link_name = link.get("name", "")
 
-    def missing(element: ET.Element, kind: str) -> str | None:
-        """Why the element's mesh cannot be used, or None (its path made absolute)."""
+    def find(element: ET.Element, kind: str) -> MissingMesh | None:
+        """The element's mesh if it cannot be found, else None (its path made absolute)."""
         mesh = element.find("geometry/mesh")
         if mesh is None:
             return None
         uri = mesh.get("filename", "")
+        line = doc.line(element)
+        package = package_of(uri)
+        if package is not None and not packages.has(package):
+            return MissingMesh(link_name, kind, uri, line, package=package,
+                               searched=tuple(packages.searched_folders()))
         try:
             resolved = packages.resolve(uri, source.parent)
         except RobotDescriptionError as exc:
-            return f"link {link_name!r}: {kind} mesh {uri!r}: {exc.reason}"
+            raise doc.error(element, f"link {link_name!r}: {kind} mesh {uri!r}: "
+                                     f"{exc.reason}") from None
         if not resolved.is_file():
-            return f"link {link_name!r}: {kind} mesh {uri!r} not found (looked at {resolved})"
+            relative = "://" not in uri and not Path(uri).is_absolute()
+            base = packages.find(package) if package is not None else (
+                source.parent if relative else None)
+            return MissingMesh(link_name, kind, uri, line, looked_at=resolved, base=base)
         mesh.set("filename", str(resolved))
         return None
 
     for element in list(link.findall("visual")):
-        problem = missing(element, "visual")
-        if problem is not None:
-            warnings.append(LoadWarning(f"{problem}; visual dropped", source, doc.line(element)))
+        found = find(element, "visual")
+        if found is not None:
+            missing_meshes.append(replace(found, fallback="visual dropped"))
             link.remove(element)
     collisions = link.findall("collision")
-    dropped: list[tuple[ET.Element, str]] = []
+    dropped: list[MissingMesh] = []
     for element in collisions:
-        problem = missing(element, "collision")
-        if problem is not None:
-            dropped.append((element, problem))
+        found = find(element, "collision")
+        if found is not None:
+            dropped.append(found)
             link.remove(element)
     if not dropped:
         return
     visuals = link.findall("visual")
     fallback = len(dropped) == len(collisions) and visuals
-    for element, problem in dropped:
-        if fallback:
-            what = "its visual geometry is used for collisions"
-        elif len(dropped) < len(collisions):
-            what = "that collision element is dropped"
-        else:
-            what = "the link has no collision geometry"
-        warnings.append(LoadWarning(f"{problem}; {what}", source, doc.line(element)))
+    if fallback:
+        what = "visual geometry used for collisions"
+    elif len(dropped) < len(collisions):
+        what = "collision element dropped"
+    else:
+        what = "no collision geometry"
+    missing_meshes += [replace(found, fallback=what) for found in dropped]
     if fallback:
         for visual in visuals:
             collision = ET.SubElement(link, "collision")

@@ -87,8 +87,10 @@ class MiniRobot:
     def line(self, name: str, needle: str, after: str | None = None) -> int:
         return line_in(self.text(name), needle, after)
 
-    def load(self, strict: bool | None = None) -> RobotModel:
-        return load_robot(self.folder, self.packages, strict=strict)
+    def load(self, strict: bool | None = None,
+             allow_missing_meshes: bool | None = None) -> RobotModel:
+        return load_robot(self.folder, self.packages, strict=strict,
+                          allow_missing_meshes=allow_missing_meshes)
 
     def error(self, kind: type[TaskrunnerError] = InputError,
               strict: bool | None = None) -> TaskrunnerError:

@@ -11,7 +11,13 @@ import logging
 
 import pytest
 
-from taskrunner.errors import RobotDescriptionError, TaskrunnerError, YamlError
+from taskrunner.errors import (
+    MissingMeshError,
+    RobotDescriptionError,
+    TaskrunnerError,
+    YamlError,
+)
+from taskrunner.robot import PackageMap, load_robot
 
 
 def test_unedited_mini_manifest_loads(make_mini):
@@ -43,27 +49,49 @@ def test_a_negative_mesh_scale_mirrors_and_a_zero_scale_is_an_error(make_mini, l
     assert "<mesh> 'scale' must be non-zero" in str(error)
 
 
-def test_missing_collision_mesh_is_a_warning_and_the_link_uses_its_visual(make_mini):
+def test_missing_collision_mesh_is_an_error_naming_link_uri_and_folder(make_mini, located):
     robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
-    m = robot.load()
+    error = robot.error(MissingMeshError)
     line = robot.line("mini.urdf", "<collision>", after='<link name="link2">')
+    message = located(error, robot.path("mini.urdf"), line)
+    package = robot.packages.find("mini_description")
+    assert f"files missing from package 'mini_description' (its folder: {package})" in message
+    assert (f"link 'link2': collision mesh 'package://mini_description/meshes/nope.stl' "
+            f"(line {line}); looked at {package / 'meshes' / 'nope.stl'}") in message
+    assert "--package-path DIR" in message and "--allow-missing-meshes" in message
+
+
+def test_missing_collision_mesh_loads_with_the_opt_out_and_the_link_uses_its_visual(
+        make_mini, caplog):
+    robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
+    with caplog.at_level(logging.WARNING):
+        m = robot.load(allow_missing_meshes=True)
     assert len(m.warnings) == 1
     warning = m.warnings[0]
-    assert warning.startswith(f"{robot.path('mini.urdf')}:{line}: link 'link2': collision mesh "
-                              "'package://mini_description/meshes/nope.stl' not found (looked at ")
-    assert warning.endswith("nope.stl); its visual geometry is used for collisions")
+    assert warning.startswith(f"{robot.path('mini.urdf')}: robot 'mini' loaded WITHOUT 1 mesh "
+                              "file(s) it names (--allow-missing-meshes): visual geometry used "
+                              "for collisions: link2. Causes: files missing from package "
+                              "'mini_description'")
+    logged = [r.getMessage() for r in caplog.records if r.levelno == logging.WARNING]
+    assert logged == [warning]  # one warning for the robot, logged once
     link2 = [g for g in m.collision_model.geometryObjects
              if m.model.frames[g.parentFrame].name == "link2"]
     assert len(link2) == 1 and "tetra.stl" in link2[0].meshPath
     assert "link2" not in m.links_without_collision_geometry()
 
 
-def test_missing_collision_mesh_is_an_error_in_strict_mode(make_mini, located):
+def test_the_opt_out_is_not_undone_by_strict_mode(make_mini):
     robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
-    error = robot.error(RobotDescriptionError, strict=True)
-    line = robot.line("mini.urdf", "<collision>", after='<link name="link2">')
-    message = located(error, robot.path("mini.urdf"), line)
-    assert "link 'link2': collision mesh 'package://mini_description/meshes/nope.stl' not found" in message
+    m = robot.load(strict=True, allow_missing_meshes=True)
+    assert len(m.warnings) == 1 and "loaded WITHOUT 1 mesh file(s)" in m.warnings[0]
+
+
+def test_the_opt_out_comes_from_the_environment_too(make_mini, monkeypatch):
+    robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
+    monkeypatch.setenv("TASKRUNNER_ALLOW_MISSING_MESHES", "1")
+    assert "loaded WITHOUT" in robot.load().warnings[0]
+    monkeypatch.setenv("TASKRUNNER_ALLOW_MISSING_MESHES", "0")
+    robot.error(MissingMeshError)
 
 
 def test_missing_collision_mesh_without_visual_leaves_the_link_without_geometry(make_mini):
@@ -75,45 +103,79 @@ def test_missing_collision_mesh_without_visual_leaves_the_link_without_geometry(
         return text.replace('tetra.stl" scale', 'nope.stl" scale', 1)
 
     robot = make_mini({"mini.urdf": edit})
-    m = robot.load()
-    assert m.warnings[0].endswith("; the link has no collision geometry")
+    assert "link 'link2': collision mesh" in str(robot.error(MissingMeshError))
+    m = robot.load(allow_missing_meshes=True)
+    assert "no collision geometry: link2." in m.warnings[0]
     assert "link2" in m.links_without_collision_geometry()
 
 
-def test_collision_mesh_in_an_unknown_package_names_the_package(make_mini):
+def test_collision_mesh_in_an_unknown_package_names_the_package_and_the_folders(
+        make_mini, located):
     robot = make_mini({"mini.urdf": ("package://mini_description/meshes/tetra.stl\" scale",
                                      "package://mini_meshes/tetra.stl\" scale")})
-    m = robot.load()
+    packages = PackageMap({"mini_description": robot.packages.find("mini_description")},
+                          search_roots=[robot.folder.parent], environment=False)
+    with pytest.raises(MissingMeshError) as info:
+        load_robot(robot.folder, packages)
     line = robot.line("mini.urdf", "<collision>", after='<link name="link2">')
-    assert m.warnings[0].startswith(
-        f"{robot.path('mini.urdf')}:{line}: link 'link2': collision mesh "
-        "'package://mini_meshes/tetra.stl': package 'mini_meshes' not found")
+    message = located(info.value, robot.path("mini.urdf"), line)
+    heading = next(row for row in message.splitlines() if "package 'mini_meshes'" in row)
+    assert heading == f"  package 'mini_meshes' not found (searched: {robot.folder.parent}):"
+    assert f"    link 'link2': collision mesh 'package://mini_meshes/tetra.stl' (line {line})" \
+        in message.splitlines()
 
 
-def test_missing_visual_only_mesh_is_a_warning_and_the_model_loads(make_mini, caplog):
+def test_missing_visual_only_mesh_is_an_error_and_loads_with_the_opt_out(make_mini, caplog):
     robot = make_mini({"mini.urdf": ('tetra.stl"/>', 'gone.stl"/>')})  # link1's visual
-    with caplog.at_level(logging.WARNING):
-        m = robot.load()
-    assert m.joint_names == ("j1", "j2", "j3")
-    assert len(m.warnings) == 1
-    warning = m.warnings[0]
     line = robot.line("mini.urdf", "<visual>", after='<link name="link1">')
-    assert warning.startswith(f"{robot.path('mini.urdf')}:{line}: link 'link1': visual mesh ")
-    assert "gone.stl" in warning and warning.endswith("visual dropped")
+    assert f"link 'link1': visual mesh 'package://mini_description/meshes/gone.stl' " \
+           f"(line {line})" in str(robot.error(MissingMeshError))
+    with caplog.at_level(logging.WARNING):
+        m = robot.load(allow_missing_meshes=True)
+    assert m.joint_names == ("j1", "j2", "j3")
+    assert len(m.warnings) == 1 and "visual dropped: link1." in m.warnings[0]
     logged = [r.getMessage() for r in caplog.records if r.levelno == logging.WARNING]
-    assert logged == [warning]  # logged once
+    assert logged == m.warnings  # logged once
     # The collision geometry of link1 (a cylinder) is still there.
     links = {m.model.frames[g.parentFrame].name for g in m.collision_model.geometryObjects}
     assert "link1" in links
 
 
-def test_visual_mesh_in_an_unknown_package_is_a_warning(make_mini):
-    robot = make_mini({"mini.urdf": ("package://mini_description/meshes/tetra.stl\"/>",
-                                     "package://lost_pkg/tetra.stl\"/>")})
-    m = robot.load()
-    assert len(m.warnings) == 1
-    assert "link 'link1': visual mesh 'package://lost_pkg/tetra.stl'" in m.warnings[0]
-    assert "package 'lost_pkg' not found" in m.warnings[0]
+def test_every_missing_mesh_is_listed_in_one_error_grouped_by_cause(make_mini):
+    robot = make_mini({"mini.urdf": lambda text: text.replace(
+        "package://mini_description/meshes/tetra.stl", "package://lost_pkg/tetra.stl", 2
+    ).replace('tetra.stl" scale', 'nope.stl" scale')})
+    message = str(robot.error(MissingMeshError))
+    rows = message.splitlines()
+    assert "3 mesh file(s) of robot 'mini' cannot be found" in rows[0]
+    headings = [row for row in rows if row.startswith("  ") and not row.startswith("    ")]
+    assert len(headings) == 2
+    assert headings[0].startswith("  package 'lost_pkg' not found (searched: ")
+    assert headings[1].startswith("  files missing from package 'mini_description'")
+    listed = [row for row in rows if row.startswith("    link ")]
+    assert [row.split(":")[0] for row in listed] == [
+        "    link 'link1'", "    link 'link2'", "    link 'link2'"]
+    assert sum("package://lost_pkg/tetra.stl" in row for row in listed) == 2
+
+
+def test_a_robot_with_no_collision_geometry_is_refused_unless_allowed(make_mini):
+    def strip(text: str) -> str:
+        while "<collision>" in text:
+            start = text.index("<collision>")
+            text = text[:start] + text[text.index("</collision>") + len("</collision>"):]
+        while "<visual>" in text:
+            start = text.index("<visual>")
+            text = text[:start] + text[text.index("</visual>") + len("</visual>"):]
+        return text
+
+    robot = make_mini({"mini.urdf": strip})
+    error = robot.error(MissingMeshError)
+    assert "robot 'mini' has no collision geometry at all" in str(error)
+    assert error.path == robot.path("mini.urdf")
+    m = robot.load(allow_missing_meshes=True)
+    assert m.warnings == [f"{robot.path('mini.urdf')}: robot 'mini' has no collision geometry "
+                          "at all (--allow-missing-meshes): nothing of it is collision-checked"]
+    assert m.collision_model.ngeoms == 0
 
 
 # ---------------------------------------------------------------- URDF structure

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from taskrunner.errors import PlanningError, RobotDescriptionError
+from taskrunner.errors import MissingMeshError, PlanningError, RobotDescriptionError
 from taskrunner.planning.planner import MotionPlanner
 from taskrunner.planning.request import NamedGoal, PlannerOptions, PlanRequest
 from taskrunner.robot import load_description, load_robot
@@ -132,6 +132,9 @@ REFUSED = {
 }
 # Ships its SRDF with an SDF model only (no URDF).
 WITHOUT_URDF = {"cassie_description/srdf/cassie_v2.srdf"}
+# URDFs without a single <collision> (dynamics models): refused unless explicitly allowed.
+NO_COLLISION_GEOMETRY = {"alexander_description/srdf/alexander.srdf",
+                         "simple_humanoid_description/srdf/simple_humanoid_classical.srdf"}
 
 
 def test_the_table_names_every_srdf_of_the_package(erd_robots):
@@ -152,7 +155,13 @@ def test_robot_with_an_srdf_loads_and_plans_between_its_named_poses(
         with pytest.raises(RobotDescriptionError, match=re.escape(REFUSED[srdf])):
             load_robot(tmp_path)
         return
-    model = load_robot(tmp_path)
+    if srdf in NO_COLLISION_GEOMETRY:
+        with pytest.raises(MissingMeshError, match="has no collision geometry at all"):
+            load_robot(tmp_path)
+        model = load_robot(tmp_path, allow_missing_meshes=True)
+        assert "has no collision geometry at all (--allow-missing-meshes)" in model.warnings[0]
+    else:
+        model = load_robot(tmp_path)
     assert model.nq > 0
     assert all(isinstance(w, str) and w for w in model.warnings)
     scene = Scene(model)

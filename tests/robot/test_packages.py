@@ -41,12 +41,18 @@ def test_explicit_entries_win_over_discovered_packages(tmp_path):
     assert packages.find("robot_description") == (tmp_path / "third").resolve()
 
 
-def test_unknown_package_error_names_it_and_the_known_ones(tmp_path):
-    packages = PackageMap({"mine": tmp_path})
+def test_unknown_package_error_names_it_the_folders_searched_and_the_known_ones(
+        tmp_path, monkeypatch):
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    (tmp_path / "roots" / "a").mkdir(parents=True)
+    packages = PackageMap({"mine": tmp_path}, search_roots=[tmp_path / "roots"])
     with pytest.raises(RobotDescriptionError) as info:
         packages.find("their_description")
     message = str(info.value)
-    assert message.startswith("package 'their_description' not found (known packages: ")
+    assert message.startswith(
+        f"package 'their_description' not found (searched: {tmp_path / 'roots'}; "
+        "ROS_PACKAGE_PATH and AMENT_PREFIX_PATH not set; known packages: ")
     assert "mine" in message
     assert "add its folder with --package-path or TASKRUNNER_PACKAGE_PATH" in message
 
