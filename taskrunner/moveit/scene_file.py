@@ -200,9 +200,11 @@ class PlanningSceneFile:
             link = self.names.link(name)
         except AmbiguousName as exc:
             raise InputError(f"'allowed_collision_matrix': {exc}", self.path, line) from None
-        if link is not None and link in scene.robot.link_names and link != "world":
-            return [link]
         parts = object_parts(scene, name)
+        if link is not None and link in scene.robot.link_names and link != "world":
+            # One string namespace, as MoveIt's ACM: a name that is a link and an object
+            # (a geometry-free frame, see Scene.add_object) is an entry for both.
+            return list(dict.fromkeys([link, *parts]))
         if not parts and name not in warned:
             warned.add(name)
             self.reader.warn(f"'allowed_collision_matrix' names {name!r}, neither a link of "

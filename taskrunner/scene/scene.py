@@ -122,6 +122,7 @@ class Scene:
         # The robot's part of every checker, shared by copies: an edit adds only objects.
         self._robot_geometry = RobotGeometry(robot.model, self._link_bodies)
         self._link_set = frozenset(robot.link_names)
+        self._bare_links = frozenset(robot.links_without_collision_geometry())
         self._meshes = MeshCache()
         self._entries: dict[str, _Entry] = {}
         self._allowed = AllowedCollisions(robot.disabled_collisions)
@@ -528,8 +529,16 @@ class Scene:
             raise SceneError(f"'name' must be a non-empty string (got {name!r})")
         if name in self._entries:
             raise SceneError(f"object {name!r} already exists; remove it or move it instead")
-        if name == WORLD or self.robot.model.existFrame(name):
-            raise SceneError(f"object name {name!r} is taken by a link or frame of the robot model")
+        if name == WORLD:
+            raise SceneError(f"object name {name!r} is the world frame")
+        # Object ids and robot frames are separate namespaces (as in MoveIt), but collision
+        # checks and allowances name bodies by one string (MoveIt's ACM does too): an object
+        # may share its name with a robot frame only when that frame is never a body there.
+        if name in self._link_set and (name not in self._bare_links
+                                       or any(name in pair for pair in self.robot.disabled_collisions)):
+            raise SceneError(f"object name {name!r} is a link of the robot with collision "
+                             "geometry or allowed collisions: collision checks and allowances "
+                             "would confuse the two; give the object another name")
 
     def _check_links(self, links: Iterable[str]) -> None:
         for link in links:
@@ -585,9 +594,10 @@ class Scene:
             raise SceneError(f"'pose' must be a taskrunner.types.Pose (got {type(pose).__name__})")
         if pose.frame == WORLD:
             return pose.se3
-        if pose.frame in self._entries:
-            return self._object_transform(self._entries[pose.frame].object) * pose.se3
+        # A robot frame first, then an object of that name (MoveIt's frame lookup order).
         if self.robot.model.existFrame(pose.frame):
             return self._frame_transform(self.robot.frame_id(pose.frame)) * pose.se3
+        if pose.frame in self._entries:
+            return self._object_transform(self._entries[pose.frame].object) * pose.se3
         known = [WORLD, *self._entries, *self.robot.link_names]
         raise UnknownNameError("frame", pose.frame, known)

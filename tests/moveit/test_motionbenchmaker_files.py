@@ -12,12 +12,14 @@ import pytest
 
 import taskrunner
 from taskrunner.cli import EXIT_INVALID, EXIT_OK, EXIT_PLANNING, main
-from taskrunner.errors import InputError, InvalidStateError
+from taskrunner.errors import InputError, InvalidStateError, SceneError
 from taskrunner.moveit import load_motion_plan_request, load_planning_scene, plan_files
 from taskrunner.moveit.start_bounds import fix_start_bounds
 from taskrunner.resources import resolve_cell
 from taskrunner.robot.cell import load_cell_or_robot
 from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.shapes import Box
+from taskrunner.types import Pose
 
 MBM = Path(__file__).resolve().parents[1] / "fixtures" / "motionbenchmaker"
 UR5_ROBOTIQ = MBM / "ur5_robotiq"
@@ -226,3 +228,30 @@ def test_a_joint_goal_just_outside_its_bound_aims_at_the_bound(panda) -> None:
     goal = plan_request.goal
     values = dict(goal.values)  # type: ignore[union-attr]
     assert values["panda_joint7"] == panda.model.joint("panda_joint7").upper
+
+
+# ----------------------------------------------------------------------------- item 3: ids
+def test_an_object_named_like_a_robot_frame_loads_and_plans(ur5) -> None:
+    """'base' is a geometry-free frame of the UR5; object ids are their own namespace."""
+    scene = scene_from_cell(ur5)
+    loaded = load_planning_scene(MBM / "ur5_base_object_scene.yaml", ur5.model, strict=True)
+    loaded.apply(scene)
+    assert "base" in scene.object_names
+    # 'header.frame_id: base' is the robot's frame (MoveIt looks robot frames up first).
+    expected = scene.to_world(Pose(xyz=(0.5, 0.0, 0.5), frame="base")).translation
+    assert np.allclose(scene.object_pose("marker").xyz, expected)
+    assert np.allclose(expected, (-0.5, 0.0, 0.5), atol=1e-9)
+    # The ACM entry 'base' covers the object (the link has no geometry to allow).
+    assert scene.collision_allowed("base", "table")
+    report, _ = plan_files(ur5, MBM / "ur5_table_request.yaml", MBM / "ur5_base_object_scene.yaml")
+    assert report.success and report.result is not None and report.result.trajectory is not None
+    assert_path_verified(scene, report.result.start, report.result.trajectory.names,
+                         np.asarray(report.result.trajectory.positions))
+
+
+def test_an_object_may_not_take_the_name_of_a_link_with_geometry(ur5) -> None:
+    scene = scene_from_cell(ur5)
+    with pytest.raises(SceneError, match="'shoulder_link' is a link of the robot with collision"):
+        scene.add_object("shoulder_link", Box((0.1, 0.1, 0.1)), Pose(xyz=(1.0, 0.0, 0.0)))
+    scene.add_object("tool0", Box((0.1, 0.1, 0.1)), Pose(xyz=(1.0, 0.0, 0.0)))
+    assert not scene.collisions()

@@ -76,7 +76,7 @@ def test_duplicate_and_link_names_are_refused(empty_scene: Scene) -> None:
     empty_scene.add_object("ball", Sphere(0.05), Pose((1.0, 0.0, 0.5)))
     with pytest.raises(SceneError, match="'ball' already exists"):
         empty_scene.add_object("ball", Sphere(0.05), Pose((1.0, 0.0, 0.5)))
-    with pytest.raises(SceneError, match="taken by a link"):
+    with pytest.raises(SceneError, match="is a link of the robot with collision geometry"):
         empty_scene.add_object("panda_hand", Sphere(0.05), Pose((1.0, 0.0, 0.5)))
     with pytest.raises(SceneError, match="non-empty string"):
         empty_scene.add_object("", Sphere(0.05), Pose())
