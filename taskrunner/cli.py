@@ -787,6 +787,46 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _json_error(args: argparse.Namespace | None, exc: BaseException, code: int,
+                kind: str | None = None) -> int:
+    """With ``--json`` (``args`` None: it was given): the error as the command's JSON
+    report on stdout (``success`` false, ``error_kind``, ``message``, ``file``, ``line``,
+    ``exit_code``); returns ``code``."""
+    if args is None or getattr(args, "json", False):
+        import json
+
+        path = getattr(exc, "path", None)
+        print(json.dumps({"success": False, "error_kind": kind or type(exc).__name__,
+                          "message": getattr(exc, "reason", None) or str(exc),
+                          "file": str(path) if path is not None else None,
+                          "line": getattr(exc, "line", None), "exit_code": code,
+                          "warnings": []}, indent=2))
+    return code
+
+
+def _parse(parser: argparse.ArgumentParser, argv: list[str]) -> argparse.Namespace | int:
+    """``parser.parse_args(argv)``; with ``--json``, a usage error is also a JSON report
+    (``error_kind`` ``UsageError``, argparse's exit code 2)."""
+    if "--json" not in argv:
+        return parser.parse_args(argv)
+    import contextlib
+    import io
+
+    usage = io.StringIO()
+    try:
+        with contextlib.redirect_stderr(usage):
+            parsed = parser.parse_args(argv)
+    except SystemExit as exc:
+        sys.stderr.write(usage.getvalue())
+        if not exc.code:
+            raise
+        lines = usage.getvalue().strip().splitlines()
+        return _json_error(None, InputError(lines[-1] if lines else "invalid arguments"),
+                           int(exc.code), kind="UsageError")
+    sys.stderr.write(usage.getvalue())
+    return parsed
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = _parser()
@@ -794,7 +834,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return cmd_collision_matrix(argparse.Namespace(), argv[1:])
     if argv and argv[0] not in COMMANDS and not argv[0].startswith("-"):
         argv = ["run", *argv]
-    args = parser.parse_args(argv)
+    args = _parse(parser, argv)
+    if isinstance(args, int):
+        return args
     commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
                 "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
@@ -804,16 +846,19 @@ def main(argv: Sequence[str] | None = None) -> int:
         return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:
         print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INVALID
+        return _json_error(args, exc, EXIT_INVALID)
     except PlanningError as exc:
         print(f"planning failed: {exc}", file=sys.stderr)
-        return EXIT_PLANNING
+        return _json_error(args, exc, EXIT_PLANNING)
     except BackendError as exc:
         print(f"backend failed: {exc}", file=sys.stderr)
-        return EXIT_EXECUTION
+        return _json_error(args, exc, EXIT_EXECUTION)
     except TaskrunnerError as exc:
         print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INVALID
+        return _json_error(args, exc, EXIT_INVALID)
+    except Exception as exc:  # a bug: the traceback goes to stderr, JSON still to stdout
+        _json_error(args, exc, 1)
+        raise
     except KeyboardInterrupt:  # a run turns Ctrl-C into a cancel; this is anything else
         print("interrupted", file=sys.stderr)
         return EXIT_CANCELLED

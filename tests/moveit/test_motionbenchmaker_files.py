@@ -255,3 +255,25 @@ def test_an_object_may_not_take_the_name_of_a_link_with_geometry(ur5) -> None:
         scene.add_object("shoulder_link", Box((0.1, 0.1, 0.1)), Pose(xyz=(1.0, 0.0, 0.0)))
     scene.add_object("tool0", Box((0.1, 0.1, 0.1)), Pose(xyz=(1.0, 0.0, 0.0)))
     assert not scene.collisions()
+
+
+# ----------------------------------------------------------------------------- item 4: --json
+def test_plan_json_prints_an_invalid_file_as_json_with_file_line_and_exit_code(capsys) -> None:
+    bad = Path(__file__).resolve().parents[1] / "fixtures" / "moveit_scenes" / "bad"
+    code = main(["plan", "panda", "--scene", str(bad / "cylinder_dims.yaml"), "--request",
+                 str(MBM / "panda_fingers_request.yaml"), "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert code == EXIT_INVALID == out["exit_code"]
+    assert out["success"] is False and out["error_kind"] == "InputError"
+    assert out["file"] == str(bad / "cylinder_dims.yaml") and out["line"] == 7
+    assert "'world.collision_objects[0].primitives[0].dimensions'" in out["message"]
+
+
+def test_plan_json_prints_strict_and_usage_errors_as_json(capsys) -> None:
+    code = main(["plan", "ur5", "--strict", "--request", str(MBM / "ur5_table_request.yaml"),
+                 "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert code == EXIT_INVALID and out["line"] == 17 and "does not have" in out["message"]
+    code = main(["plan", "ur5", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert code == 2 and out["error_kind"] == "UsageError" and "--request" in out["message"]
