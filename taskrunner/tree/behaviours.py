@@ -12,7 +12,7 @@ taskrunner's own errors.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -30,6 +30,7 @@ from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptio
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.runtime.replay import motion_data
+from taskrunner.tree.choice import choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
@@ -180,13 +181,38 @@ class MoveToGoal(_Executes):
         found = self._goal(ctx)
         return found.all() if isinstance(found, StagedGoals) else found
 
+    def goal_list(self, ctx: TaskContext) -> Goal | tuple[Goal, ...] | StagedGoals:
+        """The leaf's goal(s) built in ``ctx``, a staged list as it is."""
+        return self._goal(ctx)
+
+    def choice_key(self, ctx: TaskContext, found: Goal | tuple[Goal, ...] | StagedGoals,
+                   seed: int) -> tuple[Hashable, ...] | None:
+        """The key of the goal state chosen among ``found`` in ``ctx`` with the request's
+        ``seed`` (see :mod:`taskrunner.tree.choice`), or None where there is one goal
+        state only (a joint or named goal)."""
+        if isinstance(found, StagedGoals):
+            goals = found.key
+        else:
+            single = found[0] if isinstance(found, tuple) and len(found) == 1 else found
+            if isinstance(single, (JointGoal, NamedGoal)):
+                return None
+            goals = goals_key(found)
+        return choice_key(ctx.scene, self.group, self.name, goals, seed)
+
     def start(self) -> None:
         super().start()
         self.ticket = None
         self._rest = None
         try:
-            found = self._goal(self.ctx)
+            found: Goal | tuple[Goal, ...] | StagedGoals = self._goal(self.ctx)
             options = replace(self.options, seed=self.ctx.next_seed())
+            key = self.choice_key(self.ctx, found, options.seed)
+            picked = chosen(self.ctx.scene.robot, key) if key is not None else None
+            if picked is not None:
+                # The goal state the check followed to the end of its step: that one only.
+                group = self.ctx.scene.robot.group(self.group)
+                found = JointGoal(dict(zip(group.joint_names,
+                                           picked[group.joint_indices].tolist())))
             goal: Goal | tuple[Goal, ...]
             if isinstance(found, StagedGoals):
                 staged = options.direct and not options.direct_only

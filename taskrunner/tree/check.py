@@ -21,12 +21,12 @@ earlier ones leave: a picked object is attached where it was grasped, a placed o
 where it was released. What needs a planner is not checked: the joint-space path of a
 ``go`` or of the motion to a pre-grasp.
 
-Of several goal states the dry run follows the first collision-free one: the one the
-run's planner reaches (RRTConnect connects to the first goal state it is given; the IK
-searches are seeded as in the run, so the goal states are the run's). When the rest of
-the step fails from it but another goal state would do, the problem is reported all
-the same, with a note. (A ``retry`` does not help there: its next attempt starts its IK
-searches from where the arm is, the first goal state of the failed attempt.)
+Of several goal states (the IK searches are seeded as in the run, so they are the run's)
+the dry run follows the first collision-free one; when the rest of the step fails from
+it, the others in turn (each followed through first goal states only), and the first from
+which the step succeeds is taken. The state followed is remembered as the run's choice
+(:mod:`taskrunner.tree.choice`): the run that follows plans to that state alone, so it
+reaches the state the check judged whichever its planner would have met first.
 
 A step with a name problem, or naming an object missing because of one, is skipped.
 After a failed step the dry run finishes it without checks (collisions ignored), so
@@ -42,7 +42,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Hashable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -67,9 +67,8 @@ from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, Po
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.robot.model import Group
-from taskrunner.scene import Contact, Scene, SceneObject, scene_from_cell
-from taskrunner.scene.collision import Body, CollisionChecker
-from taskrunner.scene.geometry import MeshCache, object_geometry, shape_geometry
+from taskrunner.scene import Contact, Scene, scene_from_cell
+from taskrunner.scene.geometry import MeshCache
 from taskrunner.tasks import (
     AddObjectStep,
     FallbackStep,
@@ -96,19 +95,19 @@ from taskrunner.tree.behaviours import (
     SceneAction,
     TaskLeaf,
 )
+from taskrunner.tree.choice import remember
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.idioms import place_target
+from taskrunner.tree.occupancy import OVERLAP_TOLERANCE, target_overlap
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
-from taskrunner.types import Pose
+from taskrunner.tree.reach import StagedGoals
 
 __all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
 
 MAX_GOAL_STATES = 8
 """Goal states of one ``MoveToGoal`` tried, in the planner's order, to see whether any
 lets the rest of its step succeed."""
-OVERLAP_TOLERANCE = 0.001
-"""Penetration (m) up to which an object put down touches, rather than overlaps, another."""
 _JOINT_STEP = 0.01  # rad between the collision checks of a MoveJoints line, as in a run
 
 
@@ -332,13 +331,11 @@ def _moved(ctx: TaskContext, q: np.ndarray) -> TaskContext:
 
 @dataclass(frozen=True)
 class _Failure:
-    """Why a step's leaves stopped: at leaf ``leaf``, in the situation ``ctx``; ``other``
-    names a MoveToGoal stage where another goal state would have let the step succeed."""
+    """Why a step's leaves stopped: at leaf ``leaf``, in the situation ``ctx``."""
 
     leaf: int
     text: str
     ctx: TaskContext
-    other: str | None = None
 
 
 class _Unreachable(Exception):
@@ -443,11 +440,6 @@ class _DryRun:
                                                 f"{_achieved(self.outcome, step, ctx)}"))
                 return end
             text, start, ctx = failure.text, failure.leaf, failure.ctx
-            if failure.other:
-                other = failure.other
-                aimed = other.startswith("to ") or " to " in other
-                what = f"{_goal_word(other)} solution" if aimed else f"goal state of '{other}'"
-                text += f" (another {what} would do, but the run takes the planner's first)"
         self.problems.append(_at(step, f"{_describe(step)}: {text}"))
         self.tainted = True
         if self.stopped is None:  # where a run stops: a fallback's next branch starts there
@@ -485,30 +477,17 @@ class _DryRun:
         return None, True
 
     def overlap(self, scene: Scene, name: str, target: pin.SE3) -> Contact | None:
-        """The deepest overlap (beyond :data:`OVERLAP_TOLERANCE`) of object ``name`` put at
-        world pose ``target`` with another world object, or None. (World objects are never
-        checked against each other in a run.)"""
-        model = scene.robot
-
-        def body(obj: SceneObject, static: bool) -> Body:
-            geometry = shape_geometry(obj.shape, self._meshes)
-            return Body(obj.name, (object_geometry(model, obj, geometry),), static)
-
-        placed = SceneObject(name, scene.object(name).shape, Pose.from_se3(target))
-        bodies = [body(placed, False)] + [body(o, True) for o in scene.objects
-                                          if o.name != name and not o.attached]
-        checker = CollisionChecker(model.model, bodies, scene.allowed_collisions())
-        contacts = [c for c in checker.collisions(model.to_pin(scene.state))
-                    if c.depth > OVERLAP_TOLERANCE]
-        return contacts[0] if contacts else None
+        """:func:`~taskrunner.tree.occupancy.target_overlap` (the place idiom's own check)."""
+        return target_overlap(scene, name, target, self._meshes)
 
     # ------------------------------------------------------------------ playing leaves
     def play(self, leaves: list[Behaviour], index: int, step: StepNode, ctx: TaskContext,
              explore: bool = True) -> tuple[TaskContext, _Failure | None]:
         """Play ``leaves[index:]`` on ``ctx`` (its scene edited in place). At a MoveToGoal,
         go on from its first goal state; when the rest fails from there and ``explore``,
-        try the other goal states (each followed through first goal states only), just
-        to say whether one would have done."""
+        try the other goal states (each followed through first goal states only) and go
+        on from the first that lets the rest succeed. The state followed is remembered as
+        the run's choice (:mod:`taskrunner.tree.choice`)."""
         while index < len(leaves):
             leaf, stage = leaves[index], _stage(leaves[index], step)
             if not isinstance(leaf, MoveToGoal):
@@ -517,29 +496,43 @@ class _DryRun:
                     return ctx, _Failure(index, text, ctx)
                 index += 1
                 continue
-            states = self.goal_states(leaf, stage, ctx)
-            if isinstance(states, str):
-                return ctx, _Failure(index, states, ctx)
+            found = self.goal_states(leaf, stage, ctx)
+            if isinstance(found, str):
+                return ctx, _Failure(index, found, ctx)
+            states, key = found
+            model = ctx.scene.robot
+            # The state followed is the run's choice (taskrunner.tree.choice): the first,
+            # or the first other one from which the rest of the step succeeds.
+            if key is not None:
+                remember(model, key, states[0])
             end, first = self.play(leaves, index + 1, step, _moved(ctx, states[0]), explore)
-            if first is None or not explore or first.other:
+            if first is None or not explore:
                 return end, first
             for q in states[1:]:
-                if self.play(leaves, index + 1, step, _moved(ctx, q), False)[1] is None:
-                    return end, replace(first, other=stage or "goal")
+                if key is not None:
+                    remember(model, key, q)
+                other_end, failed = self.play(leaves, index + 1, step, _moved(ctx, q), False)
+                if failed is None:
+                    return other_end, None
+            if key is not None:
+                remember(model, key, states[0])
             return end, first
         return ctx, None
 
     def goal_states(self, leaf: MoveToGoal, stage: str | None, ctx: TaskContext
-                    ) -> list[np.ndarray] | str:
+                    ) -> tuple[list[np.ndarray], tuple[Hashable, ...] | None] | str:
         """The collision-free goal states of ``leaf`` in the planner's order (at most
-        :data:`MAX_GOAL_STATES`), or what is wrong."""
+        :data:`MAX_GOAL_STATES`) and the key of the run's choice among them (None: one
+        goal state only), or what is wrong."""
         scene, model = ctx.scene, ctx.scene.robot
         lead, word = (f"{stage}: " if stage else ""), _goal_word(stage)
         start = scene.state
         try:
-            goals = leaf.goal(ctx)
+            found = leaf.goal_list(ctx)
+            goals = found.all() if isinstance(found, StagedGoals) else found
             group = model.group(leaf.group)
             seed = ctx.next_seed()  # as MoveToGoal draws it, so IK finds what the run finds
+            key = leaf.choice_key(ctx, found, seed)
             if not self.tainted and scene.in_collision(start):
                 return f"{lead}start state in collision ({_pairs(scene.collisions(start), scene)})"
             valid: list[np.ndarray] = []
@@ -558,7 +551,7 @@ class _DryRun:
             return f"{lead}{exc}"
         if not valid:
             return f"{word} in collision ({_pairs(scene.collisions(rejected[0]), scene)})"
-        return valid[:MAX_GOAL_STATES]
+        return valid[:MAX_GOAL_STATES], key
 
     def candidates(self, goals: tuple[Any, ...], group: Group, start: np.ndarray,
                    options: PlannerOptions, scene: Scene) -> list[np.ndarray]:

@@ -46,6 +46,7 @@ from taskrunner.tree.behaviours import (
     SceneAction,
 )
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.grasp_contact import touching_grasps
 from taskrunner.tree.grasps import (
     backed_off,
     grasp_candidates,
@@ -58,6 +59,7 @@ from taskrunner.tree.grasps import (
     release_poses,
     releases_with_grasp,
 )
+from taskrunner.tree.occupancy import check_target_free
 from taskrunner.tree.outcome import Orientation, Outcome, Tolerance, arm_orientation, measure
 from taskrunner.tree.reach import Lift, StagedGoals, staged_approach_goals
 from taskrunner.types import Pose
@@ -176,6 +178,8 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
 
     def pre_grasps(c: TaskContext) -> StagedGoals:
         grasps[:] = grasp_candidates(c, obj, grasp)
+        # Only grasps whose closed fingers meet the object (before the arm moves).
+        grasps[:] = touching_grasps(c, arm_name, obj, grasps)
         return _goals(c, arm_name, grasps, lambda i, p: -grasps[i].rotation[:, 2] * approach,
                       grasping=True)
 
@@ -267,7 +271,11 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         c.scene.detach_object(obj)
         _allow_hand(obj, arm_name, True)(c)
 
+    def target_free(c: TaskContext) -> None:
+        check_target_free(c.scene, obj, place_target(c, obj, at, on, offset))
+
     steps = [
+        SceneAction(f"{name}: target free", location, ctx, target_free),
         MoveToGoal(f"{name}: to pre-place", location, ctx, arm.group, pre_places, options,
                    timing),
         _move(ctx, f"{name}: descend", location, arm_name, descent, timing),

@@ -42,7 +42,7 @@ import math
 import threading
 import weakref
 from collections import OrderedDict
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import cast
 
@@ -53,6 +53,7 @@ from taskrunner.errors import IkFailedError
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.planning.request import Goal, JointGoal, PoseGoal
 from taskrunner.robot.model import RobotModel
+from taskrunner.tree.choice import rounded
 from taskrunner.types import Pose
 
 __all__ = ["Approximation", "Lift", "StagedGoals", "approach_goals", "approximate",
@@ -262,7 +263,17 @@ def staged_approach_goals(model: RobotModel, group: str, link: str, contact: Seq
     # never needed.
     here = _Frames(model, link)(start).translation
     near = any(float(np.linalg.norm(p.translation - here)) <= _AT_TARGET for p in pre)
-    return StagedGoals(model, group, _in_turn(found), 2 * keep, otherwise, whole=near)
+    return StagedGoals(model, group, _in_turn(found), 2 * keep, otherwise, whole=near,
+                       key=_staged_key(group, link, contact, lift, seed, point, grasping, keep))
+
+
+def _staged_key(group: str, link: str, contact: Sequence[pin.SE3], lift: Lift, seed: int,
+                point: np.ndarray | None, grasping: bool, keep: int) -> tuple[Hashable, ...]:
+    """What a staged goal list is computed from, but the start state (see
+    :attr:`StagedGoals.key`): the lift by its offsets at the contact poses themselves."""
+    return ("staged", group, link, tuple(rounded(p.homogeneous) for p in contact),
+            tuple(rounded(lift(i, p)) for i, p in enumerate(contact)), seed,
+            None if point is None else rounded(point), grasping, keep)
 
 
 class StagedGoals:
@@ -279,7 +290,13 @@ class StagedGoals:
     """
 
     def __init__(self, model: RobotModel, group: str, states: Iterator[np.ndarray], keep: int,
-                 otherwise: Callable[[], tuple[Goal, ...]], whole: bool = False) -> None:
+                 otherwise: Callable[[], tuple[Goal, ...]], whole: bool = False,
+                 key: tuple[Hashable, ...] = ()) -> None:
+        self.key = key
+        """What the list is computed from but the start state (contact poses, the lift's
+        offsets there, seed, options; numbers rounded as :func:`~taskrunner.tree.choice.
+        rounded` rounds them): with the start state and the scene, the key of the goal
+        state the check chose among them (:mod:`taskrunner.tree.choice`)."""
         self._idx = model.group(group).joint_indices
         self._names = model.group(group).joint_names
         self._states, self._keep, self._otherwise = states, keep, otherwise
@@ -472,7 +489,8 @@ def _lifted(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
     near = any(np.linalg.norm(reached.rotation - now.rotation) <= _AT_TARGET
                and np.linalg.norm(away(item, reached).translation - now.translation) <= _AT_TARGET
                for item, reached in candidates)
-    return StagedGoals(model, group, states(), keep, otherwise, whole=near)
+    return StagedGoals(model, group, states(), keep, otherwise, whole=near,
+                       key=_staged_key(group, link, wanted, lift, seed, point, grasping, keep))
 
 
 def approximate(model: RobotModel, group: str, link: str, wanted: Sequence[pin.SE3],
