@@ -432,14 +432,16 @@ class CheckOutcome(TaskLeaf):
 
     def start(self) -> None:
         self.result = None
+        # A miss is an execution failure (exit code 4): the motions were planned and
+        # executed, what they did is not what the task asked.
         try:
             self.result = self.measure(self.ctx)
         except TaskrunnerError as exc:
-            self.outcome = self.fail(str(exc))
+            self.outcome = self.fail(str(exc), kind="execution")
             return
         failure = self.result.failure
         if failure is not None:
-            self.outcome = self.fail(failure)
+            self.outcome = self.fail(failure, kind="execution")
             return
         self.ctx.events.emit("message", f"{self.result.object!r} at its target: "
                              f"{self.result.poses()}", node=self.name, location=self.location)
