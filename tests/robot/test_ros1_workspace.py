@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from taskrunner.errors import RobotDescriptionError
+from taskrunner.errors import InputError, RobotDescriptionError
 from taskrunner.resources import robots_dir
 from taskrunner.robot import load_robot
 from taskrunner.robot.cell import load_cell
@@ -133,3 +133,22 @@ def test_the_package_path_flag_still_finds_a_description_elsewhere(tmp_path):
         capture_output=True, text=True, timeout=300, check=False)
     assert result.returncode == 0, result.stderr
     assert "right_arm: 7 joints, tip right_hand" in result.stdout
+
+
+def test_a_ros2_package_finds_its_description_in_a_sibling_repository(tmp_path):
+    """The same rule for a Setup Assistant (ROS 2) package whose .setup_assistant names the
+    description package: the mini arm's two packages in two repositories' clones."""
+    mini = Path(__file__).parent / "fixtures" / "ws" / "src"
+    src = tmp_path / "ws" / "src"
+    shutil.copytree(mini / "mini_moveit_config", src / "mini_config" / "mini_moveit_config")
+    shutil.copytree(mini / "mini_description", src / "mini_robot" / "mini_description")
+    model = load_robot(src / "mini_config" / "mini_moveit_config")
+    assert model.joint_names == ("j1", "j2", "j3")
+    assert dict(model.instances[0].files)["urdf"] == (
+        src / "mini_robot" / "mini_description" / "urdf" / "mini.urdf.xacro")
+    shutil.rmtree(src / "mini_robot")
+    with pytest.raises(InputError) as info:
+        load_robot(src / "mini_config" / "mini_moveit_config")
+    assert info.value.reason.startswith("'URDF': package 'mini_description' not found "
+                                        f"(searched: {src / 'mini_config'}; ")
+    assert f"{src} (the workspace around the robot, 4 folders deep)" in info.value.reason
