@@ -25,7 +25,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import Backend
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -38,6 +38,7 @@ from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import check_task_end
+from taskrunner.tree.start import start_mismatch, task_start
 from taskrunner.tree.timeout import TaskTimeout
 
 __all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
@@ -104,6 +105,10 @@ class Runner:
                                planner_times=self.options.planner_times,
                                materials=spec.object_materials())
         self.ctx.sync_from_backend()
+        # The check started from the scene file's robot_state: the run starts there or not at all.
+        self._start_problem = start_mismatch(
+            task_start(spec, cell), self.scene.state, cell,
+            "move the robot there first (run-task starts mock, sim and mujoco there)")
         self.tree = compile_task(spec, self.ctx)
         self._cancel = threading.Event()
         self._cancel_reason = ("cancelled", EXIT_CODES["cancelled"])
@@ -155,7 +160,14 @@ class Runner:
         return py_trees.display.unicode_tree(self.tree, show_status=True)
 
     def run(self) -> RunRecord:
-        """Tick the tree to the end; returns the finished record."""
+        """Tick the tree to the end; returns the finished record.
+
+        Raises:
+            InputError: the backend is not where the task's scene file puts the robot
+                (nothing moved).
+        """
+        if self._start_problem is not None:
+            raise InputError(self._start_problem, self.spec.scene)
         self.events.emit("run_started", f"task {self.spec.name!r} on cell {self.cell.name!r}",
                          status="running", task=self.spec.name, cell=self.cell.name,
                          backend=self.options.backend_name,

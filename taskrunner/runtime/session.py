@@ -41,8 +41,11 @@ from taskrunner.runtime.preflight import check_before_run
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks.loader import load_task
+from taskrunner.tree.start import task_start
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.planning.worker import PlanningWorker
     from taskrunner.runtime.prestart import EarlyWorker
@@ -58,11 +61,12 @@ _FRAME_PERIOD = 0.1  # s between frames of the live tree
 
 def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
                  url: str | None = None, firmware_speedup: float = 1.0,
-                 home: bool = False) -> Backend:
+                 home: bool = False, start: np.ndarray | None = None) -> Backend:
     """A backend driving every joint of the cell.
 
     mock, sim and mujoco (physics, :mod:`taskrunner.backends.physics`; ``speed`` None:
-    as fast as it steps) start at the cell's start state; serial (``port``, default the one in
+    as fast as it steps) start at ``start`` (every joint of the cell; None: the cell's
+    start state; a task's: :func:`taskrunner.tree.start.task_start`); serial (``port``, default the one in
     hardware.yaml) and http (``url``) drive the servos through the calibration and start
     where the servos are: a cell with one robot without a prefix uses the robot's
     hardware.yaml; a cell with several robots on one servo board (``servo_arm_pair``) uses
@@ -80,13 +84,17 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if speed is not None and not (isinstance(speed, (int, float)) and 0 < speed < math.inf):
         raise InputError(f"'speed' must be a positive number (got {speed!r})")
     names = cell.model.joint_names
-    start = dict(zip(names, cell.start_state()))
+    start_q = cell.start_state() if start is None else start
+    if len(start_q) != len(names):
+        raise ValueError(f"'start' must have {len(names)} values, one per joint of the cell "
+                         f"(got {len(start_q)})")
+    initial = dict(zip(names, (float(v) for v in start_q)))
     if kind == "mock":
-        return MockBackend(names, start, MockOptions(speed=speed))
+        return MockBackend(names, initial, MockOptions(speed=speed))
     if kind == "sim":
-        return SimBackend(names, start, SimOptions(speed=1.0 if speed is None else speed))
+        return SimBackend(names, initial, SimOptions(speed=1.0 if speed is None else speed))
     if kind == "mujoco":
-        return _mujoco_backend(cell, speed, start)
+        return _mujoco_backend(cell, speed, initial)
     if kind not in BACKENDS:
         raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
@@ -229,7 +237,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                 from taskrunner.planning.service import InProcessPlanner
 
                 planner_service = InProcessPlanner()
-            machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home)
+            machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home,
+                                   start=task_start(spec, cell).q)
         except BaseException:
             planner_service.close()
             raise

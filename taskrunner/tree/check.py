@@ -224,9 +224,11 @@ def _start_scene(spec: TaskSpec, cell: Cell, marked: set[Any]
     if spec.scene is not None:
         from taskrunner.errors import InputError
         from taskrunner.moveit import apply_scene_file
+        from taskrunner.tree.start import task_start
 
         try:
             apply_scene_file(scene, spec.scene)
+            scene.set_state(task_start(spec, cell).q)  # the run's start too
         except InputError as exc:
             problems.append(Problem(exc.path, exc.line, exc.reason))
     for obj in spec.objects:
