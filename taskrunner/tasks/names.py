@@ -289,6 +289,8 @@ class _Checker:
             self.arm(step, "arm", step.arm)
         if step.link is not None:
             self.link(step, "link", step.link)
+        for link in step.touch_links:
+            self.link(step, "touch_links", link)
 
     def check_detach(self, step: DetachStep) -> None:
         self.object(step, "object", step.object)

@@ -48,7 +48,7 @@ from taskrunner.validation import MAX_METRES
 
 __all__ = [
     "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "ExpectStep", "FallbackStep",
-    "GoStep",
+    "GoStep", "GraspPose",
     "GripperStep", "HandoffStep", "IncludeBody", "IncludeStep", "MOTION_OPTIONS",
     "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "OutcomeTolerance",
     "ParallelStep",
@@ -211,8 +211,17 @@ class GripperStep(MotionStep):
         return self
 
 
+class GraspPose(Transform):
+    """An explicit grasp: the pose of a link of the arm's hand in the object's frame."""
+
+    link: str | None = None
+    """The link (or frame) whose pose this is, e.g. the flange; it must move with the arm's
+    tool frame (no joint between them). Default: the arm's tool frame (z out of the hand,
+    y the axis the fingers close along)."""
+
+
 Grasp = Annotated[
-    Annotated[Literal["top", "side"], Tag("<name>")] | Annotated[Transform, Tag("<pose>")],
+    Annotated[Literal["top", "side"], Tag("<name>")] | Annotated[GraspPose, Tag("<pose>")],
     Discriminator(_named_or_mapping),
 ]
 PlaceAt = Annotated[
@@ -234,7 +243,8 @@ class PickStep(MotionStep):
     """The object to pick."""
     grasp: Grasp = "top"
     """'top', 'side', or the grasp pose of the tool in the object's frame (the arm's tool
-    frame: z out of the hand, y the axis the fingers close along)."""
+    frame: z out of the hand, y the axis the fingers close along; with 'link', the pose of
+    that link instead)."""
     approach: Distance = 0.05
     """Distance of the straight approach to the grasp (m)."""
     retreat: Distance = 0.05
@@ -320,9 +330,13 @@ class AttachStep(StepNode):
     object: str
     """The object to attach."""
     arm: str | None = None
-    """Attach to this arm's tip link."""
+    """Attach to this arm's tool (the link its grasped objects hang from); its fingers and
+    palm may touch the object."""
     link: str | None = None
-    """Attach to this link."""
+    """Attach to this link (a suction cup, a magnet); it may touch the object."""
+    touch_links: tuple[str, ...] = ()
+    """Other links allowed to touch the object while it is attached (MoveIt's
+    ``touch_links``), besides the holding link (and an arm's hand)."""
 
     @model_validator(mode="after")
     def _one_holder(self) -> AttachStep:

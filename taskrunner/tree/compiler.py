@@ -51,6 +51,7 @@ from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import CheckExpectation, StepTimer
+from taskrunner.tree.grasps import allow_lift_off, end_lift_off, tool_grasp
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
@@ -159,7 +160,7 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return _gripper(step, ctx)
         case PickStep():
             arm = _arm(step, ctx, step.arm)
-            grasp = _grasp(step.grasp)
+            grasp = _grasp(step.grasp, step, ctx, arm)
             _gripper_poses(step, ctx, arm)
             assert grasp is not None
             return idioms.pick(ctx, name, where, arm, step.object, grasp, step.approach,
@@ -171,7 +172,7 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return idioms.place(ctx, name, where, arm, step.object, at, step.on,
                                 step.offset or (0.0, 0.0), step.approach, step.retreat,
                                 planner_options(step), timing_options(step, ctx),
-                                *_outcome_options(step), grasp=_grasp(step.grasp))
+                                *_outcome_options(step), grasp=_grasp(step.grasp, step, ctx, arm))
         case HandoffStep():
             giver, receiver = _arm(step, ctx, step.from_arm), _arm(step, ctx, step.to_arm)
             meet = step.at if isinstance(step.at, str) else step.at.to_pose()
@@ -182,12 +183,13 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return idioms.handoff(ctx, name, where, step.object, giver, receiver, meet,
                                   step.approach, step.retreat, planner_options(step),
                                   timing_options(step, ctx), *_outcome_options(step),
-                                  grasp=_grasp(step.grasp))
+                                  grasp=_grasp(step.grasp, step, ctx, receiver))
         case AttachStep():
             return SceneAction(name, where, ctx, _attach(step, ctx))
         case DetachStep():
             obj = step.object
-            return SceneAction(name, where, ctx, lambda c: c.scene.detach_object(obj))
+            return SceneAction(name, where, ctx, lambda c: (c.scene.detach_object(obj),
+                                                            end_lift_off(c.scene, obj)))
         case AddObjectStep():
             spec = step.object
             shape = object_shape(spec)
@@ -233,9 +235,16 @@ def _arm(step: StepNode, ctx: TaskContext, name: str) -> str:
     return name
 
 
-def _grasp(grasp) -> str | Pose | None:  # type: ignore[no-untyped-def]
-    """A step's ``grasp`` as the idioms take it (a name, a Pose, or None)."""
-    return grasp if grasp is None or isinstance(grasp, str) else Pose.from_se3(grasp.se3())
+def _grasp(grasp, step: StepNode, ctx: TaskContext,  # type: ignore[no-untyped-def]
+           arm: str) -> str | Pose | None:
+    """A step's ``grasp`` as the idioms take it (a name, the arm's tool frame's Pose, or
+    None)."""
+    if grasp is None or isinstance(grasp, str):
+        return grasp
+    try:
+        return tool_grasp(ctx, arm, Pose.from_se3(grasp.se3()), grasp.link)
+    except TaskSpecError as exc:
+        raise _error(step, exc.reason) from None
 
 
 def _gripper_poses(step: StepNode, ctx: TaskContext, arm: str) -> tuple[str, str]:
@@ -344,8 +353,18 @@ def _attach(step: AttachStep, ctx: TaskContext) -> Callable[[TaskContext], objec
         assert step.link is not None
         if not ctx.scene.robot.has_link(step.link):
             raise _error(step, f"'link': {step.link!r} is not a link of cell {ctx.cell.name!r}")
-        link, touch = step.link, ()
-    return lambda c: c.scene.attach_object(obj, link, touch_links=touch)
+        link, touch = step.link, (step.link,)
+    for other in step.touch_links:
+        if not ctx.scene.robot.has_link(other):
+            raise _error(step, f"'touch_links': {other!r} is not a link of cell "
+                               f"{ctx.cell.name!r}")
+    touch = tuple(dict.fromkeys((*touch, *step.touch_links)))
+
+    def attach(c: TaskContext) -> None:
+        c.scene.attach_object(obj, link, touch_links=touch)
+        allow_lift_off(c.scene, obj)  # as a pick does: it may leave what it rests on
+
+    return attach
 
 
 def _parallel(step: ParallelStep, ctx: TaskContext) -> Behaviour:

@@ -36,13 +36,16 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import SceneError, TaskSpecError
+from taskrunner.scene import Scene
 from taskrunner.shapes import Box, Cylinder, Sphere
 from taskrunner.tree.context import TaskContext
 from taskrunner.types import Pose
 
 __all__ = [
-    "GRASP_DEPTH", "GRASP_DEPTH_FRACTION", "PLACE_CLEARANCE", "backed_off", "grasp_candidates",
+    "GRASP_DEPTH", "GRASP_DEPTH_FRACTION", "LIFT_OFF", "PLACE_CLEARANCE", "allow_lift_off",
+    "backed_off", "end_lift_off", "grasp_candidates",
     "half_height", "hand_links", "handover_grasps", "nearest", "object_extent", "place_target",
+    "tool_grasp",
     "release_poses", "releases_with_grasp", "side_grasps", "symmetries", "top_grasps",
 ]
 
@@ -50,6 +53,8 @@ GRASP_DEPTH = 0.02
 GRASP_DEPTH_FRACTION = 0.6
 PLACE_CLEARANCE = 0.001
 """Placed objects stop this far above the surface they are put on (m)."""
+LIFT_OFF = "lift-off"
+"""The reason of the allowances between a just-taken object and what it rested on."""
 ROUND_STEPS = 8
 """Directions tried around a round object's axis (every 45°)."""
 
@@ -342,3 +347,45 @@ def nearest(poses: Sequence[pin.SE3], pose: pin.SE3) -> int:
         turn = float(np.linalg.norm(pin.log3(p.rotation.T @ pose.rotation)))
         return float(np.linalg.norm(p.translation - pose.translation)) + 1e-3 * turn
     return min(range(len(poses)), key=lambda i: cost(poses[i]))
+
+
+def allow_lift_off(scene: Scene, obj: str) -> list[tuple[str, str]]:
+    """Let object ``obj``, just attached, touch what it is found touching (what it rests
+    on), so that it can be lifted off; the pairs allowed. (MoveIt Task Constructor's pick
+    allows the object and its support in its lift stage the same way.)"""
+    pairs = [(k.a, k.b) for k in scene.collisions() if obj in (k.a, k.b)]
+    for a, b in pairs:
+        scene.allow_collision(a, b, reason=LIFT_OFF)
+    return pairs
+
+
+def end_lift_off(scene: Scene, obj: str) -> None:
+    """Take back the lift-off allowances of object ``obj`` (see :func:`allow_lift_off`)."""
+    for pair, reason in list(scene.allowed_collisions().items()):
+        if reason == LIFT_OFF and obj in pair:
+            a, b = sorted(pair)
+            scene.disallow_collision(a, b)
+
+
+def tool_grasp(ctx: TaskContext, arm_name: str, pose: Pose, link: str | None) -> Pose:
+    """An explicit grasp written for ``link`` (its pose in the object's frame) as the pose
+    of the arm's tool frame, which the idioms place; ``link`` None: ``pose`` already is.
+
+    Raises:
+        TaskSpecError: ``link`` is not a frame of the cell, or a joint lies between it and
+            the tool frame (their offset would depend on the joint).
+    """
+    arm = ctx.arm(arm_name)
+    if link is None or link == arm.grasp_frame:
+        return pose
+    model = ctx.scene.robot
+    if not model.model.existFrame(link):
+        raise TaskSpecError(f"'grasp.link': {link!r} is not a link or frame of cell "
+                            f"{ctx.cell.name!r}")
+    frames = model.model.frames
+    here, tool = frames[model.frame_id(link)], frames[model.frame_id(arm.grasp_frame)]
+    if here.parentJoint != tool.parentJoint:
+        raise TaskSpecError(f"'grasp.link': {link!r} does not move with arm {arm_name!r}'s "
+                            f"tool frame {arm.grasp_frame!r} (a joint lies between them)")
+    link_to_tool = here.placement.actInv(tool.placement)
+    return Pose.from_se3(pose.se3 * link_to_tool)

@@ -48,7 +48,9 @@ from taskrunner.tree.behaviours import (
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.grasp_contact import touching_grasps
 from taskrunner.tree.grasps import (
+    allow_lift_off,
     backed_off,
+    end_lift_off,
     grasp_candidates,
     half_height,
     hand_links,
@@ -174,7 +176,6 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
     """The pick subtree (see the module docstring)."""
     arm = ctx.arm(arm_name)
     grasps: list[pin.SE3] = []
-    resting: list[tuple[str, str]] = []
 
     def pre_grasps(c: TaskContext) -> StagedGoals:
         grasps[:] = grasp_candidates(c, obj, grasp)
@@ -190,16 +191,10 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
 
     def attach(c: TaskContext) -> None:
         c.scene.attach_object(obj, c.arm(arm_name).holder, touch_links=hand_links(c, arm_name))
-        # What the object rests on may touch it while it is lifted off.
-        resting[:] = [(k.a, k.b) for k in c.scene.collisions() if obj in (k.a, k.b)]
-        for a, b in resting:
-            c.scene.allow_collision(a, b, reason="lift-off")
+        allow_lift_off(c.scene, obj)  # what it rests on may touch it while it is lifted off
 
     def lifted(c: TaskContext) -> None:
-        allowed = c.scene.allowed_collisions()
-        for a, b in resting:
-            if allowed.get(frozenset((a, b))) == "lift-off":
-                c.scene.disallow_collision(a, b)
+        end_lift_off(c.scene, obj)
 
     steps = [
         _open(ctx, f"{name}: open", location, arm_name, timing),

@@ -79,8 +79,9 @@ def test_a_cube_too_heavy_to_hold_slips_out_at_the_pick_with_file_and_line(tmp_p
     assert poses["cube"].xyz[2] < 0.78  # still on the table
 
 
-def test_a_gripper_closed_to_the_wrong_width_slips_at_the_lift(tmp_path):
-    # Fingers that stop 1 cm short of the cube on each side never hold it.
+def test_a_gripper_closed_to_the_wrong_width_fails_its_pick_before_moving(tmp_path):
+    # Fingers that stop 1 cm short of the cube on each side never hold it: the pick
+    # refuses the grasp before the arm moves to it (as check does), not at the lift.
     options = MujocoOptions(cache_dir=str(tmp_path),
                             objects={"cube": ObjectPhysics(mass=0.05)})
     spec = load_task(resolve_task("pick_place_panda"), {})
@@ -95,7 +96,8 @@ def test_a_gripper_closed_to_the_wrong_width_slips_at_the_lift(tmp_path):
         backend.close()
     assert record.status == "failed"
     assert "pick_place_panda.yaml:14" in record.error
-    assert "slipped out of the gripper" in record.error
+    assert "the fingers close to 60 mm" in record.error
+    assert "stays 10.0 mm from 'cube' at closed width" in record.error
 
 
 def test_the_same_run_gives_the_same_physics(tmp_path):

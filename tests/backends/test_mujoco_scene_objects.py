@@ -50,3 +50,30 @@ def test_a_scene_files_shelf_stays_put_and_check_mock_and_mujoco_agree(tmp_path)
     assert report.ok, report.problems
     assert (mock.status, record.status) == ("succeeded", "succeeded"), record.error
     assert abs(cube.xyz[2] - 0.771) < 5e-3
+
+
+def test_an_object_attached_without_a_touch_was_never_touched_not_slipped(tmp_path):
+    # 'attach' carries the cube in the scene though the hand is far from it: physics
+    # sees it stay on the table, and says that no finger ever touched it.
+    path = tmp_path / "attach.yaml"
+    path.write_text(
+        f"task: attach\ncell: {load_task(TASK).cell}\n"
+        "objects:\n"
+        "  - {name: cube, shape: box, size: [0.04, 0.04, 0.04], pose: {xyz: [0.5, 0.15, 0.77]}}\n"
+        "steps:\n"
+        "  - go: {group: arm, to: ready}\n"
+        "  - attach: {arm: arm, object: cube}\n"
+        "  - move: {group: arm, by: {xyz: [0, 0, 0.05]}}\n", encoding="utf-8")
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state()))
+    backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                            MujocoOptions(cache_dir=str(tmp_path / "cache")))
+    try:
+        record = Runner(spec, cell, backend, InProcessPlanner(),
+                        RunOptions(backend_name="mujoco")).run()
+    finally:
+        backend.close()
+    assert record.status == "failed"
+    assert f"{path}:8" in record.error  # the move
+    assert "'cube' was never touched by the gripper" in record.error

@@ -17,7 +17,9 @@ What the physics did is checked as it happens, and a motion fails (its handle's
 file:line) when:
 
 - an object that the task's scene holds in a gripper moves away from that gripper by
-  more than ``slip_distance`` or ``slip_angle`` (it slipped, or was never held);
+  more than ``slip_distance`` or ``slip_angle``: it "slipped" when a hand touched it
+  since it was last let go (while the fingers closed, say), else it "was never
+  touched";
 - a joint lags its trajectory by more than ``tracking_tolerance`` (finger joints are
   exempt: a finger blocked by what it grasps is the point of closing);
 - a contact on the robot, other than a hand on a free object, pushes harder than
@@ -337,6 +339,10 @@ class MujocoBackend(BaseBackend):
         self._objects = {o.name: mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, o.name)
                          for o in cell.objects if o.movable}
         self._free_names = frozenset(self._objects)
+        self._object_of = {body: name for name, body in self._objects.items()}
+        # Free objects a hand has touched since they were last let go (never touched or
+        # slipped, when a held one comes loose).
+        self._touched: set[str] = set()
         self._robot_bodies = {int(b) for b in range(1, model.nbody)
                               if model.body(b).name not in self._objects}
         self._hand_bodies = {mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
@@ -491,6 +497,8 @@ class MujocoBackend(BaseBackend):
         for name, entry in self._held.items():
             if entry.weld is not None and (name not in held or held[name] is not entry):
                 self._weld_changes.append((name, entry, False))
+            if name not in held:
+                self._touched.discard(name)
         self._held = held
 
     def _apply_welds(self) -> None:
@@ -594,7 +602,8 @@ class MujocoBackend(BaseBackend):
             other = b2 if robot1 else b1
             link = b1 if robot1 else b2
             other_geom = contact.geom2 if robot1 else contact.geom1
-            if link in self._hand_bodies and other in self._objects.values():
+            if link in self._hand_bodies and other in self._object_of:
+                self._touched.add(self._object_of[other])
                 continue  # a grasp
             mujoco.mj_contactForce(model, data, i, force)
             if abs(force[0]) > limit and not self.failures:
@@ -656,7 +665,10 @@ class MujocoBackend(BaseBackend):
             turned = _angle(rel_quat, held.rel_quat)
             if moved > self._options.slip_distance or turned > self._options.slip_angle:
                 del self._held[name]
-                return (f"object {name!r} slipped out of the gripper: it moved "
+                how = ("slipped out of the gripper" if name in self._touched else
+                       "was never touched by the gripper (no contact between the hand and "
+                       "it since it was grasped)")
+                return (f"object {name!r} {how}: it moved "
                         f"{1e3 * moved:.0f} mm and turned {math.degrees(turned):.0f} deg "
                         f"relative to {held.link!r} (limits "
                         f"{1e3 * self._options.slip_distance:.0f} mm, "
