@@ -180,6 +180,7 @@ def _preview(body: TaskRequest, settings: Settings, cells: CellRegistry,
              work: RequestWork) -> JSONResponse:
     from taskrunner.backends.mock import MockBackend
     from taskrunner.runtime.runner import Runner, RunOptions
+    from taskrunner.tree.start import task_start
 
     spec, _, _ = work.call(load_request, settings.folder_policy(), settings.tasks_dir,
                            body.task, body.yaml, body.parameters)
@@ -188,7 +189,8 @@ def _preview(body: TaskRequest, settings: Settings, cells: CellRegistry,
     names = cell.model.joint_names
     planner = session.take_planner()
     try:
-        runner = Runner(spec, cell, MockBackend(names, dict(zip(names, cell.start_state()))),
+        start = task_start(spec, cell).q  # the check's start: a scene file's robot_state
+        runner = Runner(spec, cell, MockBackend(names, dict(zip(names, start))),
                         planner, RunOptions(seed=body.seed, backend_name="preview",
                                             planner_times=True))
         timer = threading.Timer(settings.plan_timeout_s, runner.cancel,
