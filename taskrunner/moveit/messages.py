@@ -146,7 +146,9 @@ def read_collision_object(msg: Msg, names: NameMap, attach_to: str | None = None
 
 
 def read_robot_state(msg: Msg | None, names: NameMap) -> RobotStateData:
-    """A ``moveit_msgs/RobotState`` (joint names mapped to the model)."""
+    """A ``moveit_msgs/RobotState`` (joint names mapped to the model; the joint state as
+    :func:`_joint_values` reads it: fixed joints ignored, unknown names one warning, an
+    error in strict mode)."""
     if msg is None:
         return RobotStateData({})
     values: dict[str, float] = {}

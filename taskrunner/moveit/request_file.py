@@ -5,10 +5,18 @@ Read (fields at the top level, or under one key ``request`` / ``motion_plan_requ
 - ``group_name`` (names mapped as :mod:`taskrunner.moveit.names` says; a name the model
   lacks maps, with a warning, to the one group whose joints are the joint goal's);
 - ``start_state`` (a RobotState: joint values, attached objects; joints left out keep
-  the scene's values);
+  the scene's values; names read as :func:`taskrunner.moveit.messages.read_robot_state`
+  says). Planning moves a start joint outside its bounds by at most
+  ``start_state_max_bounds_error`` onto the bound, with a warning, as MoveIt's
+  ``FixStartStateBounds`` adapter does (:mod:`taskrunner.moveit.start_bounds`);
+- ``start_state_max_bounds_error`` (not a field of the message: MoveIt reads it as a
+  parameter of its planning pipeline; here, at the top level of the request file, for
+  this request; else the caller's setting, else 0.05);
 - ``goal_constraints[]``: each Constraints is one goal, any of them will do. Joint
   constraints → a joint goal (the exact ``position`` is aimed at; it lies within any
-  tolerance). A position constraint (``link_name``, ``target_point_offset``,
+  tolerance; a position just outside the joint's bounds aims at the bound when the
+  tolerance reaches it). A goal on a joint the model lacks or has fixed is an error.
+  A position constraint (``link_name``, ``target_point_offset``,
   ``constraint_region`` primitives + poses, ``header.frame_id``), with or without an
   orientation constraint on the same link (``orientation``, ``absolute_x/y/z_axis_tolerance``)
   → a pose goal: the link's ``target_point_offset`` aims at the centre of the region's

@@ -8,7 +8,9 @@ Read (ROS 1 and ROS 2 dumps; the message's fields at the top level or under one 
   poses are then relative to it), ``operation`` ADD (0) / REMOVE (1) / APPEND (2) /
   MOVE (3). An object of several shapes becomes scene objects ``id``, ``id/1``, ``id/2``
   …; REMOVE, MOVE and ACM entries naming ``id`` apply to all of them.
-- ``robot_state``: ``joint_state`` (``name``, ``position``), ``multi_dof_joint_state``
+- ``robot_state``: ``joint_state`` (``name``, ``position``; joints the model has fixed are
+  ignored, names it lacks are one warning, mimic joints follow their source: see
+  :func:`taskrunner.moveit.messages.read_robot_state`), ``multi_dof_joint_state``
   (identity transforms only: a cell's robots have fixed bases), ``attached_collision_objects``
   (``link_name``, ``object``, ``touch_links``).
 - ``allowed_collision_matrix``: ``entry_names`` × ``entry_values[].enabled``, and
