@@ -1,10 +1,16 @@
-"""The time budget of one IK call: CPU time of the searching thread, capped in wall time.
+"""The time limit of one IK call, when it has one: CPU time of the searching thread, capped
+in wall time.
 
-A search's timeout (``kinematics_solver_timeout``, 5 ms by default) is meant to bound the
-work it does. Measured on the wall clock, it also counts the time the process waits for
-a CPU: on a loaded machine (2 cores, 6 busy processes: each gets a third of a core, in
-slices of several ms), about 4 % of 0.2 ms searches were cut at 5 ms having searched for
-a fraction of that, and whether a target was solved depended on the load. A
+An IK call is bounded by its attempts and iterations; a time limit is an explicit option
+(:attr:`~taskrunner.kinematics.IkOptions.timeout`), for callers that prefer an answer
+by a time to the same answer on every machine. Without one the search runs with
+:meth:`Deadline.never`, which never passes.
+
+A search's time limit is meant to bound the work it does. Measured on the wall clock, it
+also counts the time the process waits for a CPU: on a loaded machine (2 cores, 6 busy
+processes: each gets a third of a core, in slices of several ms), about 4 % of 0.2 ms
+searches were cut at 5 ms having searched for a fraction of that, and whether a target
+was solved depended on the load. A
 :class:`Deadline` lets the search run while the thread's own CPU time is within the
 timeout, and never longer than ``WALL_CAP`` × timeout on the wall clock.
 
@@ -15,6 +21,7 @@ only when that wall time has passed, to move it on by the CPU time left.
 
 from __future__ import annotations
 
+import math
 import time
 
 __all__ = ["WALL_CAP", "Deadline"]
@@ -42,6 +49,11 @@ class Deadline:
         self._cap = now + WALL_CAP * timeout
         self._cpu_start = time.thread_time()
         self._timeout = timeout
+
+    @classmethod
+    def never(cls) -> Deadline:
+        """A deadline that never passes: the call is bounded by its attempts alone."""
+        return cls(math.inf)
 
     def passed(self) -> bool:
         """Whether the budget is used up (CPU time, or the wall-clock cap)."""

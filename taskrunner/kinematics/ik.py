@@ -7,9 +7,11 @@ attempts of damped least squares (:mod:`taskrunner.kinematics.damped_least_squar
 the first from the seed state, the next from the stored configurations whose frame pose
 is nearest the target (:class:`~taskrunner.kinematics.seed_table.SeedTable`), then from
 random configurations within the limits (seeded ``np.random.default_rng``), until a
-solution is found, the attempts are used up or the timeout passes (the timeout is the
-searching thread's CPU time, capped at 4 × timeout of wall time: see
-:mod:`taskrunner.kinematics.deadline`).
+solution is found or the attempts are used up. The budget is a count, not a time, so that
+the same request gives the same answer on an idle and on a busy machine: the attempts of
+the call's options, else the group's kinematics.yaml budget (:func:`default_attempts`).
+A time limit is an explicit option (``IkOptions.timeout``: the searching thread's CPU
+time, capped at 4 × timeout of wall time; see :mod:`taskrunner.kinematics.deadline`).
 
 Only the group's joints that move the aimed frame change; every other joint keeps its
 value from the seed state, and mimic joints follow their source joints. A solution is
@@ -42,11 +44,17 @@ from taskrunner.robot.model import Group, RobotModel
 from taskrunner.robot.moveit_yaml import KinematicsSettings
 from taskrunner.types import JointState, Pose
 
-__all__ = ["IkSolver", "IkTarget", "is_reachable", "solve_ik"]
+__all__ = ["ATTEMPT_SECONDS", "IkSolver", "IkTarget", "default_attempts", "is_reachable",
+           "solve_ik"]
 
 IkTarget: TypeAlias = pin.SE3 | Pose | np.ndarray
 """A world pose (SE3, 4x4 matrix, or :class:`Pose`), or a world position (3,) in m."""
 
+ATTEMPT_SECONDS = 0.0002
+"""The time one attempt stands for when a kinematics.yaml timeout is read as a budget of
+attempts (s): a failing attempt of the Panda, the UR5, the Sawyer and the servo arm
+takes 0.12-0.2 ms here (it stops when it no longer makes progress), a successful one
+less. ``kinematics_solver_timeout: 0.005`` is thus 25 attempts."""
 NEAREST_SEEDS = 25  # restarts from the seed table before random ones (6: 10-15 % more
 # iterations on the hardest 1 % of Panda and UR5 targets; beyond 25 no better)
 TABLE_SIZE = 2000  # configurations in the seed table (~10 ms to build)
@@ -139,8 +147,7 @@ class IkSolver:
         """
         start = time.perf_counter()
         options = options or self.options
-        timeout = options.timeout if options.timeout is not None else self.settings.timeout
-        deadline = Deadline(timeout)
+        deadline = Deadline.never() if options.timeout is None else Deadline(options.timeout)
         joints = self._joints
         q = self.seed_state(seed_q)
         position_only, se3, position = self._target(target, q, options.position_only)
@@ -221,9 +228,9 @@ class IkSolver:
     def _search(self, target: IkTarget, seed_q: np.ndarray | None, options: IkOptions,
                 wanted: int) -> list[IkSolution]:
         start = time.perf_counter()
-        timeout = options.timeout if options.timeout is not None else self.settings.timeout
-        attempts = options.attempts if options.attempts is not None else self.settings.attempts
-        deadline = Deadline(timeout)
+        attempts = (options.attempts if options.attempts is not None
+                    else default_attempts(self.settings))
+        deadline = Deadline.never() if options.timeout is None else Deadline(options.timeout)
         joints, descent = self._joints, self._descent
         q_seed = self.seed_state(seed_q)
         position_only, se3, position = self._target(target, q_seed, options.position_only)
@@ -395,6 +402,15 @@ class IkSolver:
             f"attempt(s), {iterations} iterations, {elapsed * 1e3:.1f} ms",
             best_error=residual,
         )
+
+
+def default_attempts(settings: KinematicsSettings) -> int:
+    """The attempts of a call whose options give none, from a group's kinematics.yaml:
+    ``kinematics_solver_attempts``, but no more than ``kinematics_solver_timeout`` stands
+    for at :data:`ATTEMPT_SECONDS` an attempt (MoveIt's solvers restart until the timeout
+    passes; counting the attempts instead gives the same answer on every machine). The
+    defaults (0.005 s, 10 attempts) give 10."""
+    return max(1, min(settings.attempts, math.ceil(settings.timeout / ATTEMPT_SECONDS - 1e-9)))
 
 
 def solve_ik(model: RobotModel, group: Group | str, target: IkTarget, frame: str | None = None,

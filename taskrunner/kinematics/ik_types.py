@@ -36,19 +36,24 @@ class IkOptions:
             are checked separately, not as one norm. Default: ``tolerance``.
         max_iterations: Levenberg-Marquardt iterations per attempt (an attempt that stops
             making progress is abandoned earlier).
-        timeout: seconds for the whole call (``kinematics_solver_timeout``; 5 ms when the
-            group has no entry), counted in the searching thread's CPU time so that a
-            call is not cut short while its process waits for a CPU; a call never runs
-            longer than 4 × timeout of wall time. No attempt starts after it; an attempt
-            converging close to the target when it passes may finish (at most 5 more
-            iterations, ~0.1 ms).
+        timeout: an optional time limit of the whole call (s), on top of its attempts.
+            None (the default): none; the call is bounded by its attempts and iterations
+            alone, so the same request gives the same answer on an idle and on a busy
+            machine. Given, it is counted in the searching thread's CPU time (a call is
+            not cut short while its process waits for a CPU) and a call never runs
+            longer than 4 × timeout of wall time; no attempt starts after it, and an
+            attempt converging close to the target when it passes may finish (at most 5
+            more iterations, ~0.1 ms). A time limit makes the answer depend on the
+            machine's speed and load.
         attempts: starts allowed: the seed state, then up to 25 stored configurations
-            whose frame pose is nearest the target, then random configurations
-            (``kinematics_solver_attempts``; 10 when the group has no entry).
+            whose frame pose is nearest the target, then random configurations. None:
+            the group's kinematics.yaml budget (:func:`~taskrunner.kinematics.ik.
+            default_attempts`: ``kinematics_solver_attempts``, at most one attempt per
+            0.2 ms of ``kinematics_solver_timeout``; 10 when the group has no entry).
         seed: seed of the ``np.random.default_rng`` that draws the random restarts (the
             ones after the solver's stored configurations nearest the target); the same
-            seed, seed state and target give the same solutions unless the timeout cuts
-            the search.
+            seed, seed state and target give the same solutions (unless a ``timeout``
+            cuts the search).
         position_only: aim the frame's origin only (3 constraints; for arms with fewer
             than 6 joints). None: the group's ``position_only_ik`` setting, or True when
             the target is a bare position.

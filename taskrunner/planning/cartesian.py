@@ -59,8 +59,6 @@ a robot link's frame (taken at the start state) or a scene object's frame."""
 
 _largest, _absolute = np.maximum.reduce, np.absolute  # the ufuncs, without np.max's wrapper
 MIN_STEPS_FOR_JUMP_TEST = 10  # MoveIt's MIN_STEPS_FOR_JUMP_THRESH: fewer steps, no mean
-_IK_TIMEOUT = 1.0  # s; never reached in practice (iterations run out first), so the
-# timeout cannot make the result depend on the machine's load
 
 
 @dataclass(frozen=True)
@@ -212,7 +210,7 @@ class CartesianPlanner:
         poses += [self._world_pose(w, q) for w in _as_list(waypoints)]
         ik_options = IkOptions(tolerance=options.tolerance,
                                rotation_tolerance=options.rotation_tolerance,
-                               timeout=_IK_TIMEOUT, attempts=1, position_only=position_only)
+                               attempts=1, position_only=position_only)
         idx = group.joint_indices
         to_pin = model.to_pin
         rows, fractions, states = [q[idx]], [0.0], [q]

@@ -806,8 +806,8 @@ def pose_goal_states(solver: IkSolver, group: Group, goal: PoseGoal, target: pin
     ik_options = IkOptions(
         tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
         num_solutions=options.goal_samples,
-        # Several distinct solutions need more restarts than one does.
-        timeout=max(settings.timeout if settings else 0.0, 0.05),
+        # Several distinct solutions need more restarts than one does. A budget of
+        # attempts, no time: the same goal states on an idle and on a busy machine.
         attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
     )
     if goal.position_only is False and group.position_only_ik:

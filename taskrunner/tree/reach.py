@@ -71,9 +71,8 @@ LINE_STEP = 0.005  # m between the points a straight line is checked at (eef_ste
 LINE_TURN = 0.05  # rad of turn between two such points (max_rotation_step)
 MAX_JOINT_STEP = 0.2  # rad a joint may move between two points of a line (max_joint_step)
 FULL_POSE_SOLUTIONS = 6  # IK solutions tried per pre-pose of a full-pose arm
-_IK_TIMEOUT = 1.0  # s; attempts run out long before, so results do not depend on load
-_EXACT = IkOptions(position_only=False, attempts=1, timeout=_IK_TIMEOUT, tolerance=1e-5)
-_LOCAL = IkOptions(position_only=True, attempts=1, timeout=_IK_TIMEOUT)
+_EXACT = IkOptions(position_only=False, attempts=1, tolerance=1e-5)
+_LOCAL = IkOptions(position_only=True, attempts=1)
 _largest, _absolute = np.maximum.reduce, np.absolute  # the ufuncs, without the wrappers
 # m (and Frobenius norm of a rotation difference): a goal state equal to the start state
 # puts the frame within the IK tolerance (1e-5) of its target; this is a hundred times that.
@@ -234,7 +233,7 @@ def staged_approach_goals(model: RobotModel, group: str, link: str, contact: Seq
         return _lifted(model, group, link, contact, start, seed, point, lift, grasping, keep)
     solver = _solver(model, group, link)
     options = IkOptions(position_only=False, num_solutions=FULL_POSE_SOLUTIONS, seed=seed,
-                        timeout=_IK_TIMEOUT, attempts=20 * FULL_POSE_SOLUTIONS)
+                        attempts=20 * FULL_POSE_SOLUTIONS)
     pre = [pin.SE3(p.rotation, p.translation + np.asarray(lift(i, p), dtype=float))
            for i, p in enumerate(contact)]
     found: list[Iterator[np.ndarray]] = []
@@ -542,7 +541,7 @@ def _compute_approximations(model: RobotModel, group: str, link: str,
         return Approximation(q, i, orientation_error(reached, wanted[i], grasping)), reached
 
     sample = IkOptions(position_only=True, num_solutions=SAMPLES, seed=seed,
-                       timeout=_IK_TIMEOUT, attempts=20 * SAMPLES)
+                       attempts=20 * SAMPLES)
     local, exact = _LOCAL, _EXACT
     out: list[tuple[Approximation, pin.SE3]] = []
     failure: IkFailedError | None = None
