@@ -188,8 +188,11 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
             return SceneAction(name, where, ctx, _attach(step, ctx))
         case DetachStep():
             obj = step.object
-            return SceneAction(name, where, ctx, lambda c: (c.scene.detach_object(obj),
-                                                            end_lift_off(c.scene, obj)))
+            def detach(c: TaskContext) -> None:
+                c.scene.detach_object(obj)
+                end_lift_off(c.scene, obj)
+
+            return SceneAction(name, where, ctx, detach)
         case AddObjectStep():
             spec = step.object
             shape = object_shape(spec)

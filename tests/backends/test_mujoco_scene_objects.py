@@ -77,3 +77,37 @@ def test_an_object_attached_without_a_touch_was_never_touched_not_slipped(tmp_pa
     assert record.status == "failed"
     assert f"{path}:8" in record.error  # the move
     assert "'cube' was never touched by the gripper" in record.error
+
+
+def test_an_object_attached_to_a_link_is_welded_and_lifts_off_the_table(tmp_path):
+    # A suction-like hold: the open hand around the cube, the cube attached to the hand
+    # link (no arm's grasp frame): it lifts off its table in the plan and in physics.
+    path = tmp_path / "suction.yaml"
+    path.write_text(
+        f"task: suction\ncell: {load_task(TASK).cell}\n"
+        "objects:\n"
+        "  - {name: cube, shape: box, size: [0.04, 0.04, 0.04], pose: {xyz: [0.5, 0.15, 0.77]}}\n"
+        "steps:\n"
+        "  - gripper: {arm: arm, action: open}\n"
+        "  - go: {group: arm, to: ready}\n"
+        "  - move: {group: arm, link: panda_hand_tcp,\n"
+        "           pose: {xyz: [0.5, 0.15, 0.78], rpy: [3.141592653589793, 0, 0]}}\n"
+        "  - attach: {link: panda_hand, object: cube,\n"
+        "             touch_links: [panda_hand_tcp, panda_leftfinger, panda_rightfinger]}\n"
+        "  - move: {group: arm, by: {xyz: [0, 0, 0.1], frame: world}}\n", encoding="utf-8")
+    assert check_task(path).ok, check_task(path).problems
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state()))
+    backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                            MujocoOptions(cache_dir=str(tmp_path / "cache")))
+    try:
+        record = Runner(spec, cell, backend, InProcessPlanner(),
+                        RunOptions(backend_name="mujoco")).run()
+        cube = backend.object_poses()["cube"]
+        notes = list(backend.notes)
+    finally:
+        backend.close()
+    assert record.status == "succeeded", record.error
+    assert cube.xyz[2] > 0.77 + 0.09  # lifted with the hand
+    assert any("'cube' welded to 'panda_hand'" in n for n in notes)

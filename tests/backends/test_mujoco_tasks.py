@@ -26,6 +26,7 @@ mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip ins
 from taskrunner.backends.physics import (  # noqa: E402
     MujocoBackend,
     MujocoOptions,
+    ObjectPhysics,
     PhysicsObject,
     physics_cell,
 )
@@ -127,13 +128,15 @@ def wrong_width(cell):
 
 
 def test_a_gripper_that_cannot_hold_carries_the_cube_with_grasp_mode_weld(tmp_path):
-    # Without the weld this run slips at the pick (test_mujoco.py); with it, the cube is
-    # welded at the grasp, carried, released at the place and left on its target.
+    # A cube as slippery as ice (friction 0.001: 0.04 N of grip for 0.4 N of weight)
+    # slips at the pick; with the weld the cube is welded at the grasp, carried, released at the place and
+    # left on its target. (A gripper too wide to touch it is refused before it moves.)
     def weld(cell):
-        wrong_width(cell)
         cell.grasp_modes["arm"] = "weld"
 
-    record, poses, backend = run("pick_place_panda", tmp_path, cell_edit=weld)
+    record, poses, backend = run("pick_place_panda", tmp_path, cell_edit=weld,
+                                 options={"objects": {"cube": ObjectPhysics(
+                                     friction=(0.001, 0.005, 0.0001))}})
     assert record.status == "succeeded", record.error
     assert_near(poses["cube"], (0.45, -0.2, 0.771), (0, 0, 0), CUBE, "cube")
     physics = [e for e in record.events if e.kind == "physics"]

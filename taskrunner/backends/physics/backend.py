@@ -31,7 +31,9 @@ is held at each ``execute``, and reports where objects really are with
 :meth:`object_poses`. ``grasp_mode`` weld for an arm (the cell's ``grasp_mode``, or
 :class:`MujocoOptions`) welds a held object to the arm's grasp frame while the scene holds
 it, for grippers that cannot hold by friction in the simulation; :attr:`notes` and
-:meth:`physics_report` say when a weld was made and released. Units: m, kg, rad, s, N.
+:meth:`physics_report` say when a weld was made and released. An object attached to a
+link that is no arm's grasp frame (``attach: {link: …}``: a suction cup, a magnet) is
+welded to that link the same way while it is attached. Units: m, kg, rad, s, N.
 """
 
 from __future__ import annotations
@@ -189,6 +191,9 @@ class MujocoBackend(BaseBackend):
         self._materials: dict[str, ObjectPhysics] = {}
         self._cell_physics = {o.name: o.physics for o in cell.objects if o.physics is not None}
         self._cell_static = frozenset(o.name for o in cell.objects if not o.movable)
+        # Links (not an arm's grasp frame) that objects were attached to: a suction cup or
+        # magnet holds by a weld, there being nothing to hold by friction.
+        self._suction: frozenset[str] = frozenset()
         self._named: frozenset[str] | None = None  # objects the task handles (bind_scene)
         modes = {**cell.grasp_modes, **self._options.grasp_mode}
         unknown = sorted(set(modes) - set(cell.grasp_frames))
@@ -245,6 +250,7 @@ class MujocoBackend(BaseBackend):
         with self._lock:
             if (scene is self._scene and names == self._scene_names
                     and attached <= self._free_names
+                    and self._suction_links(scene) <= self._suction
                     and (materials is None or (physics == self._materials
                                                and named == self._named))):
                 return
@@ -310,8 +316,9 @@ class MujocoBackend(BaseBackend):
     def _build(self, cell: PhysicsCell) -> None:
         started = time.perf_counter()
         o = self._options
+        welds = frozenset(self._weld_arms) | self._suction
         xml = cell_mjcf(cell, MjcfOptions(o.timestep, o.objects, o.default_object,
-                                          weld_links=frozenset(self._weld_arms)), self._cache)
+                                          weld_links=welds), self._cache)
         model, self.cache_hit = compiled_model(xml, self._cache)
         old = getattr(self, "_data", None)
         data = mujoco.MjData(model)
@@ -405,8 +412,9 @@ class MujocoBackend(BaseBackend):
             model.actuator_forcerange[act] = (-effort, effort)
             self.gains[name] = (kp, kv, effort)
 
-    def _sync_objects(self) -> None:
-        """Rebuild the world if the bound scene has free objects it lacks (under the lock)."""
+    def _sync_objects(self, beginning: TrajectoryExecution | None = None) -> None:
+        """Rebuild the world if the bound scene has free objects it lacks (under the lock;
+        ``beginning``: a motion accepted but not yet stepped, which a rebuild spares)."""
         scene = self._scene
         if scene is None:
             return
@@ -428,10 +436,12 @@ class MujocoBackend(BaseBackend):
         built = {o.name: o.physics for o in self._cell.objects if o.movable}
         built_fixed = {o.name for o in self._cell.objects
                        if not o.movable and o.name not in static}
+        suction = self._suction_links(scene)
         if ({o.name: o.physics for o in wanted} == built
-                and {o.name for o in fixed} == built_fixed):
+                and {o.name for o in fixed} == built_fixed and suction <= self._suction):
             return
-        if self._executions:
+        self._suction |= suction
+        if any(e is not beginning for e in self._executions):
             raise BackendError("objects were added to the scene while a motion runs; the "
                                "mujoco backend adds objects between motions")
         kept = [o for o in self._cell.objects if not o.movable and o.name in static] + fixed
@@ -439,6 +449,13 @@ class MujocoBackend(BaseBackend):
         self._build(self._cell.with_objects([*kept, *wanted]))
         self._object_poses.update({k: v for k, v in poses.items() if k in self._objects})
         self._restore_objects(poses)
+
+    def _suction_links(self, scene: Any) -> frozenset[str]:
+        """Links the scene attaches objects to that are no arm's grasp frame."""
+        grasping = set(self._cell.grasp_frames.values())
+        links = (self._cell.frame_links.get(o.attached_to, o.attached_to)
+                 for o in scene.objects if o.attached_to is not None)
+        return frozenset(link for link in links if link not in grasping)
 
     def _restore_objects(self, poses: Mapping[str, Pose]) -> None:
         model, data = self._model, self._data
@@ -456,7 +473,7 @@ class MujocoBackend(BaseBackend):
     # -- BaseBackend -------------------------------------------------------------------
 
     def _begin(self, execution: TrajectoryExecution) -> None:
-        self._sync_objects()
+        self._sync_objects(execution)
         self._bind_held()
         # The world is paused between motions (each ends settled), so one motion after
         # another starts at the same physics time on every run.
@@ -487,7 +504,7 @@ class MujocoBackend(BaseBackend):
                 continue
             rel_pos, rel_quat = _relative(data, link_body, self._objects[obj.name])
             entry = _Held(link_body, link, rel_pos, rel_quat)
-            if link in weld_links:
+            if link in weld_links or link in self._suction:
                 weld = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_EQUALITY,
                                          weld_name(link, obj.name))
                 if weld >= 0:
@@ -515,7 +532,7 @@ class MujocoBackend(BaseBackend):
                 model.eq_data[entry.weld, 6:10] = rel_quat
                 model.eq_data[entry.weld, 10] = 1.0  # torquescale
             data.eq_active[entry.weld] = 1 if make else 0
-            arm = self._weld_arms.get(entry.link)
+            arm = self._weld_arms.get(entry.link)  # None: attached to a link (suction)
             action = "welded" if make else "released"
             self._grasp_log.append({"time": round(float(data.time), 4), "action": action,
                                     "object": name, "link": entry.link, "arm": arm})

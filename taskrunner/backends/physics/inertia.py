@@ -136,8 +136,8 @@ def shape_inertia(shape: Shape) -> tuple[float, np.ndarray, np.ndarray, bool]:
 def _combine(parts: list[tuple[float, np.ndarray, np.ndarray]]
              ) -> tuple[float, np.ndarray, np.ndarray]:
     """Volume, centre and inertia about it of several bodies (parallel-axis theorem)."""
-    volume = sum(v for v, _, _ in parts)
-    centre = sum(v * c for v, c, _ in parts) / volume
+    volume = float(sum(v for v, _, _ in parts))
+    centre = np.sum([v * c for v, c, _ in parts], axis=0) / volume
     inertia = np.zeros((3, 3))
     for v, c, tensor in parts:
         d = c - centre
@@ -152,24 +152,25 @@ def _moving_links(root: ET.Element) -> tuple[set[str], set[str]]:
     parents: set[str] = set()
     kids: set[str] = set()
     for joint in root.findall("joint"):
-        parent, child = joint.find("parent"), joint.find("child")
-        if parent is None or child is None:
+        parent_el, child_el = joint.find("parent"), joint.find("child")
+        if parent_el is None or child_el is None:
             continue
         moves = joint.get("type", "fixed") not in ("fixed",)
-        children.setdefault(parent.get("link", ""), []).append((child.get("link", ""), moves))
-        parents.add(parent.get("link", ""))
-        kids.add(child.get("link", ""))
+        parent, child = parent_el.get("link", ""), child_el.get("link", "")
+        children.setdefault(parent, []).append((child, moves))
+        parents.add(parent)
+        kids.add(child)
     moving: set[str] = set()
     jointed: set[str] = set()
     todo = [(name, False) for name in parents - kids]
     while todo:
         name, below = todo.pop()
-        for child, moves in children.get(name, []):
+        for kid, moves in children.get(name, []):
             if below or moves:
-                moving.add(child)
+                moving.add(kid)
             if moves:
-                jointed.add(child)
-            todo.append((child, below or moves))
+                jointed.add(kid)
+            todo.append((kid, below or moves))
     return moving, jointed
 
 

@@ -203,10 +203,10 @@ def physics_cell(cell: Cell, link_density: float = DEFAULT_LINK_DENSITY) -> Phys
         shown = (f"{link} {inertias[link].mass:.3g} kg" if link in inertias
                  else f"{link} (no geometry: {1e3 * _MIN_MASS:g} g)")
         by_robot.setdefault(robot, []).append(shown)
-    for robot, shown in by_robot.items():
+    for robot, names in by_robot.items():
         log.warning("robot %r: %d link(s) without <inertial> weighed from their collision "
-                    "geometry at %g kg/m³ (mujoco backend): %s", robot, len(shown),
-                    link_density, ", ".join(shown))
+                    "geometry at %g kg/m³ (mujoco backend): %s", robot, len(names),
+                    link_density, ", ".join(names))
     return PhysicsCell(cell.name, model.urdf_xml, tuple(objects), frozenset(hands),
                        frozenset(fingers), frames, mimic, modes, aliases, inertias)
 
