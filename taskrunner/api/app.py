@@ -14,6 +14,7 @@ from contextlib import asynccontextmanager
 from fastapi import FastAPI
 
 from taskrunner.api.admission import Admission, ControlExecutor
+from taskrunner.api.auth import AuthGate
 from taskrunner.api.cells import CellRegistry, settle_heap
 from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
@@ -97,10 +98,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.checking = Admission("task loads and checks", settings.check_workers,
                                    settings.work_queue, settings.check_timeout_s,
                                    setting="check_workers")
-    for module in (health, runs, tasks, cells, plan, viewer):
-        app.include_router(module.router)
+    routers = [module.router for module in (health, runs, tasks, cells, plan, viewer)]
+    for router in routers:
+        app.include_router(router)
     add_error_handlers(app)
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    # Before the body is read: a 401 costs no parsing.
+    app.add_middleware(AuthGate, routes=[route for router in routers for route in router.routes])
     app.add_middleware(RunDetailFastPath)  # outermost: polls skip the rest
     return app
 
