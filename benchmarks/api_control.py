@@ -1,7 +1,7 @@
 """A cancel's latency while clients flood every other endpoint (issue 29's target).
 
     python benchmarks/api_control.py [--clients 100] [--cancels 20] [--open-reads]
-                                     [--seed 0] [--json]
+                                     [--control-port] [--seed 0] [--json]
 
 Starts ``run-task serve`` (planning in worker processes, sim at real speed) on a free
 loopback port. ``--clients`` threads then send, back to back, a seeded mix of every other
@@ -17,6 +17,10 @@ is timed from the request's write to the answer's last byte. A cancel is *effect
 when the run then ends ``cancelled`` within 2 s. The server's processes (itself and its
 planning workers) and their memory are sampled at the end.
 
+With ``--control-port`` the server also listens on a control port (``run-task serve
+--control-port``: cancel and run state only, on a listener and event loop of their own)
+and the cancels and state polls go there; the flood stays on the main port.
+
 Target (issue 29): p99 of a cancel <= 100 ms, every cancel effective. Prints a table and,
 with ``--json``, one JSON line at the end.
 """
@@ -26,6 +30,7 @@ from __future__ import annotations
 import argparse
 import http.client
 import json
+import multiprocessing
 import os
 import random
 import socket
@@ -36,6 +41,7 @@ import threading
 import time
 from collections import Counter
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -80,12 +86,14 @@ def _call(port: int, method: str, path: str, body: object = None, token: str | N
         conn.close()
 
 
-def _start_server(port: int, state: str, open_reads: bool) -> subprocess.Popen:
+def _start_server(port: int, state: str, open_reads: bool,
+                  control_port: int | None) -> subprocess.Popen:
     env = {**os.environ, "PYTHONPATH": str(REPO_ROOT), "TASKRUNNER_SIM_SPEED": "1",
            "TASKRUNNER_OPEN_READS": "1" if open_reads else "0"}
     server = subprocess.Popen(
         [sys.executable, "-m", "taskrunner.cli", "serve", "--port", str(port), "--token",
-         TOKEN, "--data-dir", state, "--log-level", "critical"],
+         TOKEN, "--data-dir", state, "--log-level", "critical",
+         *(["--control-port", str(control_port)] if control_port else [])],
         cwd=REPO_ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 90
     while True:
@@ -124,44 +132,55 @@ def _tree_memory(pid: int) -> tuple[int, float]:
 
 
 class Flood:
-    """``clients`` threads sending the FLOOD mix back to back until stopped."""
+    """``clients`` threads sending the FLOOD mix back to back until stopped, in a process
+    of their own (in this one, their hold on the GIL would be timed with the cancels)."""
 
     def __init__(self, port: int, clients: int, recorded: str, seed: int) -> None:
-        self.port, self.recorded = port, recorded
+        context = multiprocessing.get_context("spawn")
+        self._stop = context.Event()
+        self._codes = context.Queue()
+        self._process = context.Process(target=_flood, daemon=True,
+                                        args=(port, clients, recorded, seed, self._stop,
+                                              self._codes))
         self.codes: Counter[int] = Counter()
-        self.stop = threading.Event()
-        self._lock = threading.Lock()
-        self.threads = [threading.Thread(target=self._client, args=(k, seed), daemon=True)
-                        for k in range(clients)]
-
-    def _client(self, k: int, seed: int) -> None:
-        rng = random.Random(seed * 1000 + k)
-        token = TOKEN if k % 2 == 0 else None
-        while not self.stop.is_set():
-            method, path, body = FLOOD[rng.randrange(len(FLOOD))]
-            if rng.random() < 0.05:
-                token_used: str | None = "wrong-token-000000"
-            else:
-                token_used = token
-            try:
-                code, _, _ = _call(self.port, method, path.format(recorded=self.recorded),
-                                   body, token_used)
-            except OSError:
-                code = 0
-            with self._lock:
-                self.codes[code] += 1
 
     def start(self) -> None:
-        for thread in self.threads:
-            thread.start()
+        self._process.start()
 
     def end(self) -> None:
-        self.stop.set()
-        for thread in self.threads:
-            thread.join(150)
+        self._stop.set()
+        self.codes = Counter(self._codes.get(timeout=300))
+        self._process.join(30)
 
 
-def _moving_run(port: int) -> tuple[str, int]:
+def _flood(port: int, clients: int, recorded: str, seed: int, stop: Any, out: Any) -> None:
+    codes: Counter[int] = Counter()
+    lock = threading.Lock()
+
+    def client(k: int) -> None:
+        rng = random.Random(seed * 1000 + k)
+        token = TOKEN if k % 2 == 0 else None
+        while not stop.is_set():
+            method, path, body = FLOOD[rng.randrange(len(FLOOD))]
+            token_used = "wrong-token-000000" if rng.random() < 0.05 else token
+            try:
+                code, _, _ = _call(port, method, path.format(recorded=recorded), body,
+                                   token_used)
+            except OSError:
+                code = 0
+            with lock:
+                codes[code] += 1
+
+    threads = [threading.Thread(target=client, args=(k,), daemon=True)
+               for k in range(clients)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    out.put(dict(codes))
+
+
+def _moving_run(port: int, control: int) -> tuple[str, int]:
     """A sim run started (retried on 503) and its first motion sent; (id, 503s met)."""
     busy = 0
     while True:
@@ -176,7 +195,7 @@ def _moving_run(port: int) -> tuple[str, int]:
         time.sleep(0.2)
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
-        run = json.loads(_call(port, "GET", f"/runs/{run_id}")[1])
+        run = json.loads(_call(control, "GET", f"/runs/{run_id}")[1])
         if any(e["kind"] == "motion" or e["kind"] == "planned" for e in run["events"]):
             return run_id, busy
         time.sleep(0.05)
@@ -188,13 +207,16 @@ def main() -> int:
     parser.add_argument("--clients", type=int, default=100)
     parser.add_argument("--cancels", type=int, default=20)
     parser.add_argument("--open-reads", action="store_true")
+    parser.add_argument("--control-port", action="store_true")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
 
     port = _port()
+    control = _port() if args.control_port else port
     with tempfile.TemporaryDirectory() as state:
-        server = _start_server(port, state, args.open_reads)
+        server = _start_server(port, state, args.open_reads,
+                               control if args.control_port else None)
         try:
             recorded = json.loads(_call(port, "POST", "/runs", {"task": "pick_place",
                                                                 "backend": "mock"})[1])["run_id"]
@@ -205,16 +227,17 @@ def main() -> int:
             time.sleep(3.0)  # the flood is on (planning workers started, queues full)
             latencies, effective, busy_starts = [], 0, 0
             for _ in range(args.cancels):
-                run_id, busy = _moving_run(port)
+                run_id, busy = _moving_run(port, control)
                 busy_starts += busy
                 time.sleep(0.3)
-                code, data, seconds = _call(port, "POST", f"/runs/{run_id}/cancel")
+                code, data, seconds = _call(control, "POST", f"/runs/{run_id}/cancel")
                 if code != 202:
                     raise SystemExit(f"cancel answered {code}: {data[:300]!r}")
                 latencies.append(seconds * 1000.0)
                 deadline = time.monotonic() + 2.0
                 while time.monotonic() < deadline:
-                    status = json.loads(_call(port, "GET", f"/runs/{run_id}")[1])["status"]
+                    status = json.loads(_call(control, "GET",
+                                              f"/runs/{run_id}")[1])["status"]
                     if status != "running":
                         effective += status == "cancelled"
                         break
@@ -228,6 +251,7 @@ def main() -> int:
     ms = np.array(latencies)
     result = {
         "benchmark": "api_control", "clients": args.clients, "open_reads": args.open_reads,
+        "cancels_on": "control port" if args.control_port else "main port",
         "cancels": len(latencies), "effective": effective,
         "cancel_ms": {"p50": round(float(np.percentile(ms, 50)), 1),
                       "p99": round(float(np.percentile(ms, 99)), 1),
@@ -239,9 +263,10 @@ def main() -> int:
         "server_processes": processes, "server_rss_mib": round(rss),
         "cpus": os.cpu_count(), "load": [round(v, 2) for v in os.getloadavg()],
     }
-    print(f"{'clients':>8} {'open reads':>10} {'cancels':>8} {'effective':>9} "
+    print(f"{'clients':>8} {'open reads':>10} {'cancel on':>12} {'cancels':>8} {'effective':>9} "
           f"{'p50 ms':>7} {'p99 ms':>7} {'max ms':>7} {'procs':>6} {'RSS MiB':>8}")
-    print(f"{args.clients:>8} {str(args.open_reads):>10} {len(latencies):>8} {effective:>9} "
+    print(f"{args.clients:>8} {str(args.open_reads):>10} {result['cancels_on']:>12} "
+          f"{len(latencies):>8} {effective:>9} "
           f"{result['cancel_ms']['p50']:>7} {result['cancel_ms']['p99']:>7} "
           f"{result['cancel_ms']['max']:>7} {processes:>6} {round(rss):>8}")
     print(f"flood answers by status: {result['flood_answers']}")

@@ -537,7 +537,10 @@ def cmd_serve(args: argparse.Namespace) -> int:
         print(f"taskrunner API at {base} (docs: {base}/docs)\n"
               f"  token{made}; {reads}; for curl, paste:\n"
               f"export TASKRUNNER_TOKEN={shlex.quote(app.state.token)}", flush=True)
-    serve(app, settings, args.host, args.port, args.log_level)
+    if args.control_port is not None:
+        print(f"  control port: http://{args.host}:{args.control_port} (cancel and run state "
+              "only, on a listener of its own)", flush=True)
+    serve(app, settings, args.host, args.port, args.log_level, control_port=args.control_port)
     return EXIT_OK
 
 
@@ -758,6 +761,9 @@ def _parser() -> argparse.ArgumentParser:
     serve = sub.add_parser("serve", help="serve the REST API with uvicorn")
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
     serve.add_argument("--port", type=int, default=8000, help="port (8000)")
+    serve.add_argument("--control-port", type=int, default=None,
+                       help="also serve cancel and run state (only) on this port, on a "
+                            "listener of its own that no load on --port can delay")
     serve.add_argument("--token", default=None,
                        help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
     serve.add_argument("--no-auth", action="store_true",

@@ -1,4 +1,5 @@
-"""Serving the app with uvicorn, with a time limit on request headers.
+"""Serving the app with uvicorn, with a time limit on request headers, and optionally a
+control listener of its own.
 
 uvicorn times out a connection only while it is idle between requests
 (``timeout_keep_alive``); a client that opens a connection and trickles its request
@@ -6,18 +7,28 @@ headers a byte at a time holds the connection (and its slot) forever. The protoc
 here, uvicorn's httptools protocol with one timer more, closes a connection whose
 request headers are not complete within ``header_timeout_s`` of the connection's start
 or of the request's first byte (with ``408 Request Timeout``).
+
+A server can also listen on a **control port** (``control_port``): a second uvicorn on
+its own thread and event loop that answers only ``POST /runs/{id}/cancel``,
+``GET /runs/{id}`` and ``GET /health`` (:class:`ControlOnly`). Requests on the main port,
+however many, share the main event loop with each other but never with this one, so an
+operator's stop is answered in milliseconds even while clients flood the main port (the
+benchmark ``benchmarks/api_control.py`` measures both).
 """
 
 from __future__ import annotations
 
 import asyncio
+import json
+import re
+import threading
 from typing import Any
 
 from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
 
 from taskrunner.api.settings import Settings
 
-__all__ = ["header_timeout_protocol", "serve"]
+__all__ = ["ControlOnly", "header_timeout_protocol", "serve"]
 
 _TIMEOUT_BODY = b"request headers not received in time\n"
 _TIMEOUT_ANSWER = (b"HTTP/1.1 408 Request Timeout\r\ncontent-type: text/plain\r\n"
@@ -68,11 +79,64 @@ def header_timeout_protocol(header_timeout_s: float) -> type[asyncio.Protocol]:
     return HeaderTimeoutProtocol
 
 
-def serve(app: Any, settings: Settings, host: str, port: int, log_level: str = "info") -> None:
-    """Run ``app`` with uvicorn on ``host:port`` until it is stopped (Ctrl-C)."""
+_CANCEL = re.compile(r"^/runs/[^/]+/cancel$")
+_RUN = re.compile(r"^/runs/[^/]+$")
+_ELSEWHERE = json.dumps({"detail": "the control port serves only POST /runs/{id}/cancel, "
+                                   "GET /runs/{id} and GET /health; the rest of the API is "
+                                   "on the main port"}).encode()
+_STARTING = json.dumps({"detail": "the server is starting"}).encode()
+
+
+class ControlOnly:
+    """ASGI: pass ``app`` only the control requests (a run's cancel and state, and
+    ``/health``); anything else is 404 here. The app's own rules (token, errors) apply."""
+
+    def __init__(self, app: Any) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        if scope["type"] != "http":  # no lifespan here: the main server runs it
+            return
+        method, path = scope["method"], scope["path"]
+        allowed = ((method == "POST" and _CANCEL.match(path)) or
+                   (method == "GET" and (_RUN.match(path) or path == "/health")))
+        if not allowed:
+            await _answer(send, 404, _ELSEWHERE)
+            return
+        if getattr(self.app.state, "manager", None) is None:
+            await _answer(send, 503, _STARTING)
+            return
+        await self.app(scope, receive, send)
+
+
+async def _answer(send: Any, code: int, body: bytes) -> None:
+    await send({"type": "http.response.start", "status": code,
+                "headers": [(b"content-type", b"application/json"),
+                            (b"content-length", str(len(body)).encode())]})
+    await send({"type": "http.response.body", "body": body})
+
+
+def serve(app: Any, settings: Settings, host: str, port: int, log_level: str = "info",
+          control_port: int | None = None) -> None:
+    """Run ``app`` with uvicorn on ``host:port`` until it is stopped (Ctrl-C), and, with
+    ``control_port``, its control listener on ``host:control_port`` (see the module)."""
     import uvicorn
 
-    uvicorn.run(app, host=host, port=port, log_level=log_level,
-                http=header_timeout_protocol(settings.header_timeout_s),
-                timeout_keep_alive=5, timeout_graceful_shutdown=int(
-                    settings.shutdown_timeout_s) + 1)
+    protocol = header_timeout_protocol(settings.header_timeout_s)
+    main = uvicorn.Server(uvicorn.Config(
+        app, host=host, port=port, log_level=log_level, http=protocol, timeout_keep_alive=5,
+        timeout_graceful_shutdown=int(settings.shutdown_timeout_s) + 1))
+    if control_port is None:
+        main.run()
+        return
+    control = uvicorn.Server(uvicorn.Config(
+        ControlOnly(app), host=host, port=control_port, log_level=log_level, http=protocol,
+        lifespan="off", timeout_keep_alive=5, timeout_graceful_shutdown=1))
+    thread = threading.Thread(target=control.run, name="taskrunner-control-listener",
+                              daemon=True)
+    thread.start()
+    try:
+        main.run()
+    finally:
+        control.should_exit = True
+        thread.join(5.0)

@@ -178,3 +178,33 @@ def test_a_cancel_gets_through_a_burst_of_slow_requests_and_stops_the_motion(tmp
     assert all(int(headers["retry-after"]) >= 1 and "busy" in body["detail"]
                for headers, body in busy)
     assert app.state.work.calls <= 10, app.state.work.calls
+
+
+# ----------------------------------------------------------------- the control port
+def test_the_control_port_serves_cancel_and_run_state_only(tmp_path: Path):
+    from taskrunner.api.serving import ControlOnly
+
+    settings = make_settings(tmp_path / "state", sim_speed=0.5)
+    app = create_app(settings)
+    with served(app) as port, served(ControlOnly(app), lifespan="off") as control:
+        status, _, started, _ = _request(port, "POST", "/runs",
+                                         {"yaml": GO_CANDLE, "backend": "sim",
+                                          "check": False})
+        run_id = started["run_id"]
+        assert _request(control, "GET", "/health")[0] == 200
+        refused = _request(control, "GET", "/cells")
+        assert refused[0] == 404 and "main port" in refused[2]["detail"]
+        assert _request(control, "POST", "/runs", {"task": "pick_place"})[0] == 404
+        conn = http.client.HTTPConnection("127.0.0.1", control, timeout=10)
+        conn.request("POST", f"/runs/{run_id}/cancel")  # no token: the app's rule holds
+        assert conn.getresponse().status == 401
+        conn.close()
+        status, _, cancelled, _ = _request(control, "POST", f"/runs/{run_id}/cancel")
+        assert status == 202, cancelled
+        deadline = time.monotonic() + 20
+        while (state := _request(control, "GET", f"/runs/{run_id}")[2])["status"] == "running":
+            assert time.monotonic() < deadline
+            time.sleep(0.05)
+        assert state["status"] == "cancelled"
+        assert _request(control, "POST", f"/runs/{run_id}/cancel")[0] == 409
+        assert _request(control, "GET", "/runs/no-such-run")[0] == 404
