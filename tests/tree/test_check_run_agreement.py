@@ -51,9 +51,9 @@ _CELLS = (
     _Cell("servo_arm_pair", (("left_arm", -0.25, 1.0), ("right_arm", 0.25, -1.0)),
           ("Candle", "home", "ready"), 0.75, (-0.45, 0.45), (-0.22, 0.22), 0.025, 0.26),
     _Cell("panda_table", (("arm", 0.0, 1.0),), ("ready", "extended"),
-          0.75, (0.15, 0.95), (-0.38, 0.38), 0.04, 0.8),
+          0.75, (0.15, 0.95), (-0.38, 0.38), 0.04, 0.7),
     _Cell("panda_pair", (("left_arm", -0.6, 1.0), ("right_arm", 0.6, -1.0)),
-          ("ready", "handoff"), 0.75, (-0.95, 0.95), (-0.38, 0.38), 0.04, 0.8),
+          ("ready", "handoff"), 0.75, (-0.95, 0.95), (-0.38, 0.38), 0.04, 0.7),
     _Cell("sawyer_table", (("right_arm", 0.0, 1.0),), ("neutral",),
           0.75, (0.4, 1.1), (-0.5, 0.5), 0.04, 1.0),
 )
@@ -85,9 +85,13 @@ def generated_task(seed: int, folder: Path) -> Path:
     objects: list[dict] = []
     steps: list[dict] = []
     names = [f"cube_{k}" for k in range(1 + int(rng.integers(0, 2)))]
+    taken: list[list[float]] = []
     for name in names:
         arm = arms[int(rng.integers(len(arms)))]
-        xy = _spot(rng, cell, arm, reachable=rng.random() < 0.85)
+        xy = _spot(rng, cell, arm, reachable=rng.random() < 0.9)
+        while any(math.dist(xy, other) < 2 * h for other in taken):  # cubes apart
+            xy = _spot(rng, cell, arm, reachable=True)
+        taken.append(xy)
         yaw = round(float(rng.uniform(-math.pi / 2, math.pi / 2)), 3)
         objects.append({"name": name, "shape": "box", "size": [h, h, h],
                         "pose": {"xyz": [*xy, z], "rpy": [0, 0, yaw]}})
@@ -107,11 +111,11 @@ def generated_task(seed: int, folder: Path) -> Path:
         ox = obj["pose"]["xyz"][0]
         arm = min(arms, key=lambda a: abs(a[1] - ox))  # the nearer arm picks
         group = arm[0]
-        grasp = "top" if rng.random() < 0.75 else "side"
+        grasp = "top" if rng.random() < 0.85 else "side"
         steps.append({"pick": {"arm": group, "object": name, "grasp": grasp,
                                "approach": round(float(rng.uniform(0.02, 0.08)), 3),
                                "retreat": round(float(rng.uniform(0.03, 0.08)), 3)}})
-        if len(arms) == 2 and rng.random() < 0.35:
+        if len(arms) == 2 and rng.random() < 0.25:
             other = arms[1] if group == arms[0][0] else arms[0]
             at = "HandOff" if cell.file.startswith("servo") else "handoff"
             steps.append({"handoff": {"object": name, "from": group, "to": other[0], "at": at,
@@ -191,3 +195,18 @@ def test_check_and_mock_run_agree_on_many_generated_tasks(tmp_path: Path) -> Non
     accepted, refused = _agree_on_generated(range(DEFAULT_COUNT, DEFAULT_COUNT + FULL_COUNT),
                                             tmp_path)
     assert accepted >= FULL_COUNT // 5 and refused >= FULL_COUNT // 10, (accepted, refused)
+
+
+def test_the_run_reaches_the_goal_state_the_check_chose(tmp_path: Path, monkeypatch) -> None:
+    # Generated task 7 (a Panda pick and place): from the pre-place state the planner
+    # reaches first, the place's retreat cannot be followed (a joint would jump); the
+    # check found another pre-place state that works. The run plans to the check's
+    # choice and succeeds; left to its planner's own choice, it fails.
+    import taskrunner.tree.behaviours as behaviours
+
+    path = generated_task(7, tmp_path)
+    ok, code, problems, log = _check_then_run(path, tmp_path / "runs")
+    assert ok and code == 0, (problems, log[-2000:])
+    monkeypatch.setattr(behaviours, "chosen", lambda model, key: None)
+    ok, code, _, log = _check_then_run(path, tmp_path / "runs")
+    assert ok and code != 0, log[-2000:]
