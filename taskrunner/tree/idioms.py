@@ -5,7 +5,8 @@ manner of MoveIt Task Constructor's stages:
 
 - pick = open the gripper, plan to a pre-grasp ``approach`` back from the grasp, approach
   it in a straight line, close, attach, retreat straight up;
-- place = plan to a pre-place ``approach`` above the release pose, descend in a straight
+- place = check the target is free (:mod:`taskrunner.tree.occupancy`), plan to a
+  pre-place ``approach`` above the release pose, descend in a straight
   line, open, detach, retreat (back along the tool, or straight up);
 - hand-over = the giver carries the object to the hand-over pose, the receiver opens,
   plans to a pre-grasp at the free end of the object, approaches and closes; the object
