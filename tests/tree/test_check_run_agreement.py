@@ -210,3 +210,20 @@ def test_the_run_reaches_the_goal_state_the_check_chose(tmp_path: Path, monkeypa
     monkeypatch.setattr(behaviours, "chosen", lambda model, key: None)
     ok, code, _, log = _check_then_run(path, tmp_path / "runs")
     assert ok and code != 0, log[-2000:]
+
+
+def test_a_cell_loaded_again_finds_the_checks_choices() -> None:
+    # run-task given a relative path, and the REST API's session, run on a cell loaded
+    # apart from the check's: choices are keyed by the model's content, not its identity.
+    from taskrunner.robot.cell import load_cell
+    from taskrunner.tree.choice import chosen, model_key, remember
+
+    first = load_cell(CELLS / "panda_table.yaml").model
+    again = load_cell(CELLS / "panda_table.yaml").model
+    other = load_cell(CELLS / "servo_arm_table.yaml").model
+    assert first is not again and model_key(first) == model_key(again) != model_key(other)
+    key = ("arm", "a leaf", (), 1, (0.0,), (), ())
+    remember(first, key, np.arange(first.nq, dtype=float))
+    found = chosen(again, key)
+    assert found is not None and found.tolist() == list(range(first.nq))
+    assert chosen(other, key) is None
