@@ -644,7 +644,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
 
 def _add_test_sweep_parsers(sub) -> None:  # type: ignore[no-untyped-def]
     ray_help = ("run on Ray: a cluster address (ray://host:10001), 'auto', or 'local' "
-                "(default when given alone: start one here); pip install 'taskrunner[ray]'")
+                "(default when given alone: start one here); pip install 'ray[default]>=2.40,<3'")
     test = sub.add_parser("test", help="run task files with their expectations (and "
                                        "scenarios) in parallel; a table and JUnit XML")
     test.add_argument("paths", nargs="*", help="task files or folders (default: the shipped "
@@ -681,7 +681,7 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("file", help="task file (YAML), or a shipped example's name (pick_place)")
     run.add_argument("--backend", choices=("mock", "sim", "mujoco", "serial", "http"),
                      default="mock", help="where the motion goes (mock); mujoco: physics, "
-                     "pip install 'taskrunner[mujoco]'")
+                     "pip install 'mujoco>=3.2,<4' 'trimesh>=4.0,<6'")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
                                     "the robot's hardware.yaml)")
     run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")

@@ -24,7 +24,7 @@ def _ray():  # type: ignore[no-untyped-def]
     try:
         import ray
     except ImportError:
-        raise InputError("--ray needs Ray: pip install 'taskrunner[ray]'") from None
+        raise InputError("--ray needs Ray: pip install 'ray[default]>=2.40,<3'") from None
     return ray
 
 

@@ -129,7 +129,8 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     return HttpBackend(names, calibration, url, options)
 
 
-MUJOCO_MISSING = "the mujoco backend needs: pip install 'taskrunner[mujoco]'"
+MUJOCO_MISSING = ("the mujoco backend needs mujoco and trimesh: pip install 'mujoco>=3.2,<4' "
+                  "'trimesh>=4.0,<6' (from a checkout: pip install -e '.[mujoco]')")
 
 
 def _mujoco_backend(cell: Cell, speed: float | None, start: dict[str, float]) -> Backend:

@@ -13,7 +13,7 @@ import pytest
 from taskrunner.robot.cell import load_cell_or_robot
 
 mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
-                             "'taskrunner[mujoco]'")
+                             "-e '.[mujoco]'")
 
 from taskrunner.backends.physics import physics_cell  # noqa: E402
 from taskrunner.backends.physics.inertia import (  # noqa: E402

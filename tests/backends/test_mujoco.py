@@ -1,6 +1,6 @@
 """The mujoco (physics) backend: objects really grasped, carried and released.
 
-Skipped where mujoco is not installed (``pip install 'taskrunner[mujoco]'``), except the
+Skipped where mujoco is not installed (``pip install -e '.[mujoco]'``), except the
 test that taskrunner says how to get it.
 """
 
@@ -16,7 +16,7 @@ from taskrunner.robot.cell import load_cell
 from taskrunner.tasks.loader import load_task
 
 mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
-                             "'taskrunner[mujoco]'")
+                             "-e '.[mujoco]'")
 
 from taskrunner.backends.physics import (  # noqa: E402
     MujocoBackend,

@@ -18,5 +18,5 @@ def test_make_backend_without_mujoco_says_how_to_install_it(monkeypatch):
     for name in [m for m in sys.modules if m.startswith("taskrunner.backends.physics")]:
         monkeypatch.delitem(sys.modules, name)
     cell = load_cell(load_task(resolve_task("pick_place"), {}).cell)
-    with pytest.raises(InputError, match=r"pip install 'taskrunner\[mujoco\]'"):
+    with pytest.raises(InputError, match=r"pip install 'mujoco>=3.2,<4' 'trimesh"):
         make_backend("mujoco", cell, None)

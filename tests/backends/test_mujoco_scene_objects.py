@@ -1,7 +1,7 @@
 """A MoveIt PlanningScene's world objects on the mujoco backend: fixed, as in MoveIt,
 unless the task takes hold of them.
 
-Skipped where mujoco is not installed (``pip install 'taskrunner[mujoco]'``).
+Skipped where mujoco is not installed (``pip install -e '.[mujoco]'``).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from taskrunner.tasks.loader import load_task
 from taskrunner.tree.check import check_task
 
 mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
-                             "'taskrunner[mujoco]'")
+                             "-e '.[mujoco]'")
 
 from taskrunner.backends.mock import MockBackend  # noqa: E402
 from taskrunner.backends.physics import MujocoBackend, MujocoOptions, physics_cell  # noqa: E402

@@ -1,7 +1,7 @@
 """The shipped tasks on the mujoco backend, grasp_mode weld, what physics reports, and
 the failures physics finds (each naming the step's file:line).
 
-Skipped where mujoco is not installed (``pip install 'taskrunner[mujoco]'``).
+Skipped where mujoco is not installed (``pip install -e '.[mujoco]'``).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from taskrunner.shapes import Box
 from taskrunner.tasks.loader import load_task
 
 mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
-                             "'taskrunner[mujoco]'")
+                             "-e '.[mujoco]'")
 
 from taskrunner.backends.physics import (  # noqa: E402
     MujocoBackend,

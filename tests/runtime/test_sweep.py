@@ -147,7 +147,7 @@ def test_a_sweep_reports_success_per_value_and_writes_its_files(tmp_path: Path, 
 
 def test_a_sweep_on_ray_gives_the_process_pools_results():
     ray = pytest.importorskip("ray", reason="ray is not installed (pip install "
-                                            "'taskrunner[ray]')")
+                                            "-e '.[ray]')")
     path = resources.resolve_task("pick_place")
     axis = parse_axis("place_y=-0.15:0.15:25", {"place_y": "float"})
     cases = sweep_cases(path, "pick_place", [axis], 2, ["mock"], None)

@@ -1,6 +1,6 @@
 """The physics backend (MuJoCo): objects are really grasped, carried and released.
 
-Importing this package needs ``mujoco`` (``pip install 'taskrunner[mujoco]'``); the rest
+Importing this package needs ``mujoco`` (``pip install -e '.[mujoco]'`` from a checkout); the rest
 of taskrunner does not. :func:`make_mujoco_backend` builds the backend for a cell.
 """
 
