@@ -75,7 +75,18 @@ class EventLog:
         self._start = clock()
         self._events: list[RunEvent] = []
         self._subscribers: list[Callable[[RunEvent], None]] = []
+        self._journal: Callable[[RunEvent], None] | None = None
         self._lock = threading.Lock()
+
+    def set_journal(self, journal: Callable[[RunEvent], None] | None) -> list[RunEvent]:
+        """Call ``journal`` with every event appended from now on, before the event is
+        kept (before :meth:`events` returns it or any subscriber gets it), in the appending
+        thread and in seq order: a durable journal then holds every event anyone saw.
+        Returns the events appended before (for the caller to journal). An exception
+        from ``journal`` propagates from :meth:`emit`, the event not kept."""
+        with self._lock:
+            self._journal = journal
+            return list(self._events)
 
     def subscribe(self, callback: Callable[[RunEvent], None]) -> None:
         """Call ``callback`` with every event appended from now on (in the appending thread)."""
@@ -97,6 +108,8 @@ class EventLog:
         with self._lock:
             event = RunEvent(len(self._events) + 1, self._clock() - self._start, kind, node,
                              location, status, message, data)
+            if self._journal is not None:
+                self._journal(event)
             self._events.append(event)
             subscribers = list(self._subscribers)
         for callback in subscribers:
