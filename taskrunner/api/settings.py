@@ -152,20 +152,14 @@ class Settings(BaseSettings):
         return tuple(Path(p).resolve() for p in value)
 
     @field_validator("max_body_bytes", "check_memory_mb", "check_workers", "max_planners",
-                     mode="before")
+                     "work_queue", mode="before")
     @classmethod
-    def _positive_int(cls, value: Any, info: Any) -> Any:
+    def _int_at_least(cls, value: Any, info: Any) -> Any:
+        least = 0 if info.field_name == "work_queue" else 1  # a queue may be empty
         number = _integer(value)
-        if number is None or number < 1:
-            raise ValueError(f"'{info.field_name}' must be a positive integer (got {value!r})")
-        return number
-
-    @field_validator("work_queue", mode="before")
-    @classmethod
-    def _count(cls, value: Any, info: Any) -> Any:
-        number = _integer(value)
-        if number is None or number < 0:
-            raise ValueError(f"'{info.field_name}' must be an integer >= 0 (got {value!r})")
+        if number is None or number < least:
+            what = "a positive integer" if least == 1 else "an integer >= 0"
+            raise ValueError(f"'{info.field_name}' must be {what} (got {value!r})")
         return number
 
     @field_validator("planner_nice", mode="before")
