@@ -7,7 +7,7 @@ paths); a package imported from a zip archive is refused with a clear error.
 Layout of ``taskrunner/data/``::
 
     robots/<robot>/robot.yaml     robots (servo_arm, panda, ur5)
-    robots/cells/<cell>.yaml      cells
+    robots/cells/<cell>.yaml      cells (a <cell>.hardware.yaml beside one is its servo board)
     tasks/<task>.yaml             example tasks (each also a scenario test)
     tasks/task.schema.json        the task language's JSON Schema
     firmware/                     the ESP32 firmware sources and its host build
@@ -15,17 +15,22 @@ Layout of ``taskrunner/data/``::
 
 from __future__ import annotations
 
+import difflib
 import importlib.resources
 import os
+from collections.abc import Sequence
 from pathlib import Path
 
 from taskrunner.errors import InputError
 
 __all__ = [
     "DATA_ROOT",
+    "cell_files",
     "cells_dir",
+    "cells_folders",
     "example_tasks",
     "firmware_dir",
+    "is_bare_name",
     "resolve_cell",
     "resolve_task",
     "robots_dir",
@@ -100,25 +105,77 @@ def resolve_task(name_or_path: str | os.PathLike[str]) -> Path:
     raise InputError(f"task '{text}': no such file{hint}")
 
 
-def resolve_cell(name_or_path: str | os.PathLike[str]) -> Path:
-    """A cell or robot path, or the bare name of a shipped cell (``servo_arm_pair``) or
-    robot (``panda``).
+def cell_files(folder: str | os.PathLike[str]) -> dict[str, Path]:
+    """The cell files of ``folder`` by name, sorted: each ``<name>.yaml`` whose name holds
+    no dot. A file ``<cell>.<what>.yaml`` belongs to a cell and is not one
+    (``servo_arm_pair.hardware.yaml``: the servo board of ``servo_arm_pair``)."""
+    return {p.stem: p for p in sorted(Path(folder).glob("*.yaml"))
+            if "." not in p.stem and p.is_file()}
+
+
+def cells_folders() -> tuple[Path, ...]:
+    """Where a cell's bare name is looked up, in order: the cells folder
+    ``TASKRUNNER_CELLS_DIR`` (the one ``run-task serve`` serves), if set, then the
+    shipped cells."""
+    folders = [cells_dir()]
+    if os.environ.get("TASKRUNNER_CELLS_DIR"):
+        folders.insert(0, Path(os.environ["TASKRUNNER_CELLS_DIR"]))
+    return tuple(folders)
+
+
+def is_bare_name(text: str) -> bool:
+    """Whether ``text`` is a name (``servo_arm_table``), not a path: no separator, not
+    ``.`` or ``..``."""
+    return bool(text) and os.sep not in text and "/" not in text and text not in (".", "..")
+
+
+def resolve_cell(name_or_path: str | os.PathLike[str], *, relative_to: Path | None = None,
+                 folders: Sequence[Path] | None = None, robots: bool = True) -> Path:
+    """A cell or robot path, or the bare name of a cell (``servo_arm_pair``) or of a
+    shipped robot (``panda``).
+
+    The one resolution of cell names: the command line (``run-task info``),
+    :func:`~taskrunner.workcell.load_workcell`, task files' ``cell:`` and the REST API's
+    tasks use it. A path (relative to ``relative_to``, if given) that exists wins; a bare
+    name is then a cell file ``<name>.yaml`` of ``folders`` (see :func:`cell_files`),
+    first folder first, then (``robots``) a shipped robot's folder.
+
+    Args:
+        name_or_path: what the user wrote.
+        relative_to: the folder a relative path is taken from (a task file's folder;
+            default: the working directory).
+        folders: where names are looked up (default: :func:`cells_folders`).
+        robots: whether a shipped robot's name is accepted too.
 
     Raises:
-        InputError: neither a file or folder nor a shipped cell's or robot's name.
+        InputError: neither a file or folder nor a known name; the message lists the
+            known cells (and says which is close, if one is).
     """
     text = os.fspath(name_or_path)
-    path = Path(text)
-    if path.exists():
+    path = Path(text) if relative_to is None else Path(relative_to) / text
+    try:  # a link that leads nowhere is there too: its reader says what is wrong
+        exists = os.path.lexists(path)
+    except (OSError, ValueError):  # a NUL character: no such file
+        exists = False
+    if exists:
         return path
-    if os.sep not in text and "/" not in text:
-        name = text[:-5] if text.endswith(".yaml") else text
-        if (cells_dir() / f"{name}.yaml").is_file():
-            return cells_dir() / f"{name}.yaml"
-        if (robots_dir() / name / "robot.yaml").is_file():
-            return robots_dir() / name
-        cells = sorted(p.stem for p in cells_dir().glob("*.yaml"))
-        robots = sorted(p.parent.name for p in robots_dir().glob("*/robot.yaml"))
-        raise InputError(f"'{text}': no such file, cell or robot (shipped cells: "
-                         f"{', '.join(cells)}; robots: {', '.join(robots)})")
-    raise InputError(f"'{text}': no such file or folder")
+    if not is_bare_name(text):
+        raise InputError(f"'{text}': no such file or folder")
+    name = text[:-5] if text.endswith(".yaml") else text
+    cells: dict[str, Path] = {}
+    for folder in cells_folders() if folders is None else folders:
+        for cell, file in cell_files(folder).items():
+            cells.setdefault(cell, file)
+    if name in cells:
+        return cells[name]
+    shipped_robots = (sorted(p.parent.name for p in robots_dir().glob("*/robot.yaml"))
+                      if robots else [])
+    if name in shipped_robots:
+        return robots_dir() / name
+    close = difflib.get_close_matches(name, [*cells, *shipped_robots], n=1, cutoff=0.6)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    known = f"known cells: {', '.join(cells) or 'none'}"
+    if robots:
+        known += f"; robots: {', '.join(shipped_robots)}"
+    where = "no such file, cell or robot" if robots else "no such file or cell"
+    raise InputError(f"'{text}': {where} ({known}){hint}")

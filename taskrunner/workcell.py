@@ -111,8 +111,9 @@ def load_workcell(source: str | os.PathLike[str], *,
     """Load a cell or a robot as a :class:`Workcell`.
 
     Args:
-        source: a shipped cell's or robot's name (``"servo_arm_table"``,
-            ``"servo_arm_pair"``, ``"panda"``), a cell file, a robot manifest
+        source: a cell's name (``"servo_arm_table"``, ``"servo_arm_pair"``: a file of
+            the cells folder ``TASKRUNNER_CELLS_DIR``, else a shipped cell, as a task
+            file's ``cell:`` names it), a shipped robot's (``"panda"``), a cell file, a robot manifest
             (``robot.yaml``) or its folder, a MoveIt config package (a folder with
             ``.setup_assistant``), or a ``.urdf`` / ``.xacro`` file. A robot becomes a
             one-robot cell with no objects, at the world origin.

@@ -21,6 +21,7 @@ from taskrunner.backends.base import Backend
 from taskrunner.backends.sim import SimBackend, SimOptions
 from taskrunner.errors import InputError
 from taskrunner.folders import FileKind, FolderPolicy
+from taskrunner.resources import cell_files
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
@@ -193,10 +194,11 @@ class CellRegistry:
         self._lock = threading.Lock()
 
     def ids(self) -> list[str]:
-        """The ids of the cell files, sorted (a symlink out of the folders the policy
-        allows is not a cell)."""
-        return sorted(p.stem for p in self.cells_dir.glob("*.yaml")
-                      if self.policy is None or self.policy.allows(p, FileKind.CELL))
+        """The ids of the cell files, sorted: the cells a task names by name too
+        (:func:`~taskrunner.resources.cell_files`: ``servo_arm_pair.hardware.yaml`` is
+        not one); a symlink out of the folders the policy allows is not a cell."""
+        return [name for name, p in cell_files(self.cells_dir).items()
+                if self.policy is None or self.policy.allows(p, FileKind.CELL)]
 
     def path_of(self, cell_id: str) -> Path:
         """The file of cell ``cell_id``.

@@ -23,8 +23,9 @@ from typing import Any, cast
 
 from pydantic import BaseModel, ValidationError
 
-from taskrunner.errors import TaskSpecError, YamlError
+from taskrunner.errors import InputError, TaskSpecError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
+from taskrunner.resources import is_bare_name, resolve_cell
 from taskrunner.tasks.expect import Scenario, TaskExpectation
 from taskrunner.tasks.nodes import Location, ObjectSpec, location_of
 from taskrunner.tasks.parameters import Binding, bind_parameters, declare_parameters, substitute
@@ -266,8 +267,21 @@ class _Loader:
             if root and "cell" not in tree:
                 self.add(path, tree.line, "a task file needs 'cell' (the cell file it runs in)")
             return None
+        if is_bare_name(value):
+            # A name (servo_arm_table): a file next to the task first, else a cell of the
+            # cells folder by name (the server's: its policy's; else TASKRUNNER_CELLS_DIR,
+            # then the shipped cells), as run-task info and load_workcell resolve it.
+            folders = self.policy.folders(FileKind.CELL) if self.policy is not None else None
+            try:
+                target = resolve_cell(value, relative_to=path.parent, folders=folders,
+                                      robots=False)
+            except InputError as exc:
+                self.add(path, line_of(tree, "cell"), f"cell {exc.reason}")
+                return None
+        else:
+            target = path.parent / value
         try:
-            cell = resolve_path(path.parent / value, TaskSpecError, path, line_of(tree, "cell"))
+            cell = resolve_path(target, TaskSpecError, path, line_of(tree, "cell"))
         except TaskSpecError as exc:
             self.add(exc.path, exc.line, exc.reason)
             return None
