@@ -126,7 +126,7 @@ class FolderPolicy:
             shown = written if written is not None else str(path)
             raise PathNotAllowedError(
                 f"{kind.value} {shown!r} is outside the folders this server loads "
-                f"{kind.value}s from")
+                f"{'meshes' if kind is FileKind.MESH else kind.value + 's'} from")
         resolved = _resolved(Path(path))
         assert resolved is not None
         return resolved

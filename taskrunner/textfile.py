@@ -7,7 +7,8 @@ garbage before any parser sees it:
 - anything that is not a regular file: a FIFO (opened with ``O_NONBLOCK``, so opening it
   never blocks), a device (``/dev/zero``), a directory, a socket, or a pseudo-file of
   ``/proc`` or ``/sys`` (regular by ``stat`` but of unbounded, generated content);
-- a symlink loop, a path that is too long or holds a NUL character;
+- a symlink loop, a path that is too long or holds a NUL character or a lone surrogate
+  (:func:`path_problem`, checked before any file system call);
 - a file over the size limit (read up to the limit, never further);
 - text that is not UTF-8: binary files (NUL bytes), UTF-16/32, invalid byte sequences.
 
@@ -24,7 +25,8 @@ from pathlib import Path
 
 from taskrunner.errors import InputError
 
-__all__ = ["DEFAULT_MAX_BYTES", "file_problem", "read_text_file", "resolve_path"]
+__all__ = ["DEFAULT_MAX_BYTES", "MAX_NAME_BYTES", "MAX_PATH_BYTES", "file_problem",
+           "path_problem", "read_text_file", "resolve_path"]
 
 DEFAULT_MAX_BYTES = 4 * 1024 * 1024
 """Default size limit of a user's text file (bytes): far above any real task, cell or
@@ -55,40 +57,80 @@ def _os_reason(exc: OSError) -> str:
     return f"cannot read file: {exc.strerror or exc}"
 
 
+MAX_NAME_BYTES = 255
+"""Longest file or folder name (bytes, UTF-8): every Linux and macOS file system's."""
+MAX_PATH_BYTES = 4095
+"""Longest path (bytes, UTF-8): Linux's ``PATH_MAX`` less its terminating NUL."""
+
+
+def path_problem(path: str | Path) -> str | None:
+    """What makes ``path`` unusable as a file name before any file system call sees it
+    (a NUL character, text that is no file name, a name over :data:`MAX_NAME_BYTES` or
+    a path over :data:`MAX_PATH_BYTES`), as the end of a message; None if nothing does.
+    Never touches the file system, never raises."""
+    text = str(path)
+    if "\0" in text:
+        return "it holds a NUL character"
+    try:
+        encoded = os.fsencode(text)
+    except UnicodeError:
+        return "it holds a lone surrogate character (no file name can)"
+    if len(encoded) > MAX_PATH_BYTES:
+        return f"{len(encoded)} bytes long (paths end at {MAX_PATH_BYTES} bytes)"
+    longest = max(len(part) for part in encoded.split(b"/"))
+    if longest > MAX_NAME_BYTES:
+        return (f"a name of {longest} bytes (file and folder names end at {MAX_NAME_BYTES} "
+                "bytes)")
+    return None
+
+
 def resolve_path(path: str | Path, error: type[InputError] = InputError,
-                 where: str | Path | None = None, line: int | None = None) -> Path:
-    """``path`` made absolute with symlinks followed, refusing symlink loops and NUL
-    characters (``Path.resolve`` raises ``RuntimeError`` or ``ValueError`` for those).
+                 where: str | Path | None = None, line: int | None = None,
+                 written: str | None = None) -> Path:
+    """``path`` made absolute with symlinks followed, refusing what :func:`path_problem`
+    refuses and symlink loops (``Path.resolve`` raises ``RuntimeError``, ``OSError`` or
+    ``ValueError`` for those, depending on the Python version and the cause).
+
+    The one gate between a name from a file or a request and the file system: every
+    loader resolves the paths it is given here.
 
     Args:
         path: the path to resolve.
         error: the error class to raise.
         where: the file to name in the error (default: ``path`` itself).
         line: the line of ``where`` that names ``path``.
+        written: ``path`` as the file or request wrote it: the message names it so
+            (default: ``path``), never its resolution.
     """
+    shown = written if written is not None else str(path)
+    problem = path_problem(path)
+    if problem is not None:
+        if where is None:
+            raise error(f"invalid path: {problem}", repr(shown)[1:-1], line)
+        raise error(f"invalid path {shown!r}: {problem}", where, line)
     try:
         return Path(path).resolve()
     except ValueError:
-        raise error(f"invalid path {str(path)!r} (it holds a NUL character)",
-                    where, line) from None
+        reason = "invalid path"
     except RuntimeError:  # Python 3.11 reports a symlink loop so
-        raise error(f"{str(path)!r}: symlink loop (too many levels of symbolic links)"
-                    if where is not None else "symlink loop (too many levels of symbolic links)",
-                    where if where is not None else path, line) from None
+        reason = "symlink loop (too many levels of symbolic links)"
     except OSError as exc:
         reason = _os_reason(exc)
-        raise error(f"{str(path)!r}: {reason}" if where is not None else reason,
-                    where if where is not None else path, line) from None
+    raise error(f"{shown!r}: {reason}" if where is not None else reason,
+                where if where is not None else shown, line)
 
 
 def file_problem(path: str | Path) -> str | None:
     """Why ``path`` cannot be read as a regular file ("file not found", "not a regular
     file (a FIFO (named pipe))", "symlink loop …", "path too long"), or None if it can.
     Never opens the file, never raises."""
+    problem = path_problem(path)
+    if problem is not None:
+        return f"invalid path: {problem}"
     try:
         info = os.stat(path)
     except ValueError:
-        return "invalid path (it holds a NUL character)"
+        return "invalid path"
     except OSError as exc:
         return _os_reason(exc)
     if not stat.S_ISREG(info.st_mode):
@@ -116,8 +158,9 @@ def read_text_file(path: str | Path, error: type[InputError] = InputError,
         absolute = os.path.realpath(path)
     except (ValueError, OSError):
         absolute = str(path)
-    if "\0" in str(path):
-        raise error("invalid path (it holds a NUL character)", repr(str(path))[1:-1])
+    problem = path_problem(path)
+    if problem is not None:
+        raise error(f"invalid path: {problem}", repr(str(path))[1:-1])
     for root in _PSEUDO_ROOTS:
         if absolute == root or absolute.startswith(root + "/"):
             raise error(f"not a regular file (a pseudo-file under {root})", path)

@@ -61,8 +61,17 @@ def task_cell(task: Path) -> Path | None:
     value = tree.get("cell") if isinstance(tree, dict) else None
     if not isinstance(value, str) or not value or "${" in value:
         return None
-    cell = (task.parent / value).resolve()
-    return cell if cell.is_file() else None
+    # A name the file system refuses (NUL, too long, a symlink loop) is the loader's to
+    # report, at its line: the early worker is simply not started.
+    from taskrunner.textfile import file_problem, path_problem
+
+    cell = task.parent / value
+    if path_problem(cell) is not None or file_problem(cell) is not None:
+        return None
+    try:
+        return cell.resolve()
+    except (OSError, RuntimeError, ValueError):
+        return None
 
 
 def _serve(source: str, conn: Connection, cancel: Any, timing: bool,
@@ -255,7 +264,11 @@ class EarlyWorker:
         ``cell`` is the file this process loads; otherwise stop it and return None."""
         if self._taken:
             return None
-        if Path(cell).resolve() != self.source or not self.process.is_alive():
+        try:
+            same = Path(cell).resolve() == self.source
+        except (OSError, RuntimeError, ValueError):  # a symlink loop, a NUL, a name too long
+            same = False
+        if not same or not self.process.is_alive():
             self.close()
             return None
         self._taken = True

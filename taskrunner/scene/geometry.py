@@ -25,6 +25,7 @@ from taskrunner.scene.hullfit import convex_hull
 from taskrunner.scene.linkgeometry import DEFAULT_HULL_TOLERANCE, HULL, link_hull, plan_link_geometry
 from taskrunner.scene.objects import SceneObject
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.textfile import file_problem, resolve_path
 
 __all__ = [
     "LinkGeometry",
@@ -50,12 +51,15 @@ class MeshCache:
             MissingMeshError: the file does not exist.
             SceneError: the file exists but coal cannot read it.
         """
-        path = mesh.path.expanduser().resolve()
+        path = resolve_path(mesh.path.expanduser(), MissingMeshError)
         key = (path, mesh.scale)
         if key in self._meshes:
             return self._meshes[key]
-        if not path.is_file():
+        problem = file_problem(path)  # a FIFO or /proc file would hang or flood coal
+        if problem == "file not found":
             raise MissingMeshError("mesh file of a scene object not found", path)
+        if problem is not None:
+            raise MissingMeshError(f"mesh file of a scene object: {problem}", path)
         try:
             geometry = coal.MeshLoader().load(str(path), np.array(mesh.scale, dtype=float))
         except Exception as exc:  # coal raises ValueError with assimp's text

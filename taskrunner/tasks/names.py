@@ -34,6 +34,7 @@ from taskrunner.tasks.steps import (
     RemoveObjectStep,
     StepNode,
 )
+from taskrunner.textfile import file_problem
 
 __all__ = ["arm_groups", "check_names", "gripper_group_of", "load_and_check", "moved_groups"]
 
@@ -198,8 +199,12 @@ class _Checker:
         self.frame(obj.pose, exclude=obj.name)
         for link in obj.touch_links:
             self.link(obj, "touch_links", link)
-        if obj.file is not None and "://" not in obj.file and not Path(obj.file).is_file():
-            self.add(obj, "file", f"mesh file not found: {obj.file}")
+        if obj.file is not None and "://" not in obj.file:
+            problem = file_problem(obj.file)
+            if problem is not None:
+                self.add(obj, "file", f"mesh file not found: {obj.file_as_written}"
+                         if problem == "file not found"
+                         else f"mesh file {obj.file_as_written!r}: {problem}")
         first = self.objects.get(obj.name)
         if first is not None:
             self.add(obj, "name", f"object {obj.name!r} is already in the scene "

@@ -35,6 +35,7 @@ from pydantic import (
 )
 
 from taskrunner.materials import Density, Friction, Kilograms, check_material
+from taskrunner.textfile import path_problem
 from taskrunner.types import Pose
 from taskrunner.validation import Metres, PositiveMetres, Radians, Scale
 from taskrunner.yamlfile import LineDict
@@ -299,13 +300,39 @@ class ObjectSpec(Node):
     friction: Friction | None = None
     """Friction for the mujoco backend: sliding, or [sliding, torsional, rolling] (default 1)."""
 
+    _file_as_written: str | None = PrivateAttr(default=None)
+
     @field_validator("file")
     @classmethod
-    def _resolve_file(cls, value: str | None, info: ValidationInfo) -> str | None:
-        context = info.context if isinstance(info.context, dict) else {}
-        if value is None or "://" in value or context.get("file") is None:
+    def _absolute_file(cls, value: str | None, info: ValidationInfo) -> str | None:
+        """A relative mesh path joined to the task file's folder. Not resolved: the
+        name is checked here and never meets the file system (a symlink loop, a name
+        too long is reported where the file is looked for, with this field's line)."""
+        if value is None or "://" in value:
             return value
-        return str((Path(context["file"]).parent / value).resolve())
+        problem = path_problem(value)
+        if problem is not None:
+            shown = value if len(value) <= 80 else value[:80] + "…"
+            raise ValueError(f"must be a path the file system accepts ({problem}; got "
+                             f"{shown!r})")
+        context = info.context if isinstance(info.context, dict) else {}
+        if context.get("file") is None:
+            return value
+        return str(Path(context["file"]).parent / value)
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _keep_file_as_written(cls, data: Any, handler: Any) -> Any:
+        node = handler(data)
+        if isinstance(data, dict) and isinstance(data.get("file"), str) \
+                and isinstance(node, ObjectSpec):
+            node._file_as_written = data["file"]
+        return node
+
+    @property
+    def file_as_written(self) -> str | None:
+        """``file`` as the task file wrote it (for messages: never its resolution)."""
+        return self._file_as_written if self._file_as_written is not None else self.file
 
     @model_validator(mode="after")
     def _fields_match_shape(self) -> ObjectSpec:
