@@ -159,8 +159,7 @@ def _stats(problem: planning_scenes.Problem, planner: str, runs: list[dict]) -> 
 
 
 def run(quick: bool, seed: int = 0, planners: Sequence[str] | None = None,
-        problems: Sequence[str] | None = None, queries: int | None = None,
-        fast_check: bool = False) -> dict:
+        problems: Sequence[str] | None = None, queries: int | None = None) -> dict:
     """Plan every query of every problem with every planner chosen.
 
     Args:
@@ -187,7 +186,7 @@ def run(quick: bool, seed: int = 0, planners: Sequence[str] | None = None,
         chosen = _planners_for(problem, planners)
         skipped += [f"{p} on {problem.name}" for p in (planners or DEFAULT_PLANNERS)
                     if p not in chosen and (planners or problem.name != "panda_table_pick_pose")]
-        planner = MotionPlanner(problem.scene, fast_check=fast_check)
+        planner = MotionPlanner(problem.scene)
         _run_query(problem, planner, problem.queries[0], "RRTConnect", seed + 999_983)  # warm-up
         for name in chosen:
             runs = [_run_query(problem, planner, query, name, seed * 1000 + i)
@@ -416,14 +415,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--profile", action="store_true",
                         help="also break down RRTConnect's time on the shelf, the cage and "
                         "the pose-goal pick")
-    parser.add_argument("--fast-check", action="store_true",
-                        help="search with the sphere model (MotionPlanner(fast_check=True))")
     args = parser.parse_args(argv)
 
     started = time.perf_counter()
     calibration = ik_bench._calibration_us()
-    result = run(args.quick, args.seed, _split(args.planners), _split(args.problems), args.queries,
-                 args.fast_check)
+    result = run(args.quick, args.seed, _split(args.planners), _split(args.problems), args.queries)
     for name, (description, cap) in result["descriptions"].items():
         print(f"{name}: {description} (cap {cap:g} s)")
     print()

@@ -4,7 +4,7 @@ independent exact-mesh validator.
 
     python benchmarks/planning_compare.py [--per-class 100] [--classes table_pick,cage]
                                           [--seed 0] [--problem-seed 0] [--problems DIR]
-                                          [--cap 5] [--fast-check] [--roboplan-shortcut]
+                                          [--cap 5] [--roboplan-shortcut]
                                           [--roboplan-max-nodes N] [--json]
     python benchmarks/planning.py --compare ...   # the same
 
@@ -444,14 +444,14 @@ class Roboplan:
 
 # ------------------------------------------------------------------- ours
 def plan_ours(model: RobotModel, base: Scene, folder: Path, stem: str, seed: int,
-              fast_check: bool | None, warm_scene: bool = True
+              warm_scene: bool = True
               ) -> tuple[bool, float, list[str], np.ndarray | None, str]:
     scene = base.copy()
     load_planning_scene(folder / f"{stem}_scene.yaml", model).apply(scene)
     request_file = load_motion_plan_request(folder / f"{stem}_request.yaml", model)
     request_file.apply_start(scene)
     request = request_file.plan_request(scene, seed=seed, timing=False)
-    planner = MotionPlanner(scene) if fast_check is None else MotionPlanner(scene, fast_check)
+    planner = MotionPlanner(scene)
     if warm_scene:  # the scene's collision model, verifier and state screen (bounding
         scene.checker  # noqa: B018 - volumes per object), as roboplan's scene is built
         scene.state_screen()  # before its timed call (0.1-0.2 ms per scene here)
@@ -516,7 +516,7 @@ def _load() -> str:
 
 
 def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem_seed: int = 0,
-        problems: Path | None = None, cap: float = 5.0, fast_check: bool | None = None,
+        problems: Path | None = None, cap: float = 5.0,
         roboplan: bool = True, roboplan_shortcut: bool = False,
         roboplan_max_nodes: int = ROBOPLAN_MAX_NODES, progress: bool = False,
         cold_scene: bool = False,
@@ -557,7 +557,7 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
 
             def run_side(side: str) -> tuple[bool, float, list[str], np.ndarray | None, str]:
                 if side == "ours":
-                    return plan_ours(model, base, where, stem, problem_seed_i, fast_check,
+                    return plan_ours(model, base, where, stem, problem_seed_i,
                                      warm_scene=not cold_scene)
                 assert other is not None
                 return other.plan(rp_scene, start, goal, problem_seed_i)
@@ -598,7 +598,7 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
             "shortcut": roboplan_shortcut, "max_nodes": roboplan_max_nodes,
             "geometry": "URDF collision meshes (BVH)"},
         "ours": {"planner": "MotionPlanner (request's planner: RRTConnect)",
-                 "fast_check": fast_check, "geometry": "collision: auto (hull or mesh per link)",
+                 "geometry": "collision: auto (hull or mesh per link)",
                  "scene_setup_timed": cold_scene},
         "validator": {"resolution_mm": RESOLUTION * 1000, "geometry": "URDF collision meshes (BVH)",
                       "seconds": round(validate_s, 1)},
@@ -663,8 +663,6 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help="read the problems from this folder as they are (default: "
                              "regenerate them into benchmarks/problems)")
     parser.add_argument("--cap", type=float, default=5.0, help="time cap per plan call, s (5)")
-    parser.add_argument("--fast-check", action="store_true",
-                        help="ours: MotionPlanner(fast_check=True) (default: its own default)")
     parser.add_argument("--roboplan-shortcut", action="store_true",
                         help="roboplan: shortcut its path (PathShortcutter, default options) "
                              "inside the timed call")
@@ -681,7 +679,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error("roboplan is not installed (pip install 'taskrunner[bench]'), "
                      "or run --ours-only")
     result = run(args.per_class, [c for c in args.classes.split(",") if c], args.seed,
-                 args.problem_seed, args.problems, args.cap, True if args.fast_check else None,
+                 args.problem_seed, args.problems, args.cap,
                  not args.ours_only, args.roboplan_shortcut, args.roboplan_max_nodes,
                  progress=sys.stderr.isatty(), cold_scene=args.cold_scene)
     print(f"{result['date']}; {result['machine']}; load {result['load_before']} -> "

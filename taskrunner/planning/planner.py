@@ -4,10 +4,8 @@
 several goals. The group's joints form an OMPL real-vector space bounded by the joint
 limits; every other joint stays where the start state has it. States are checked by the
 scene's collision checker (self, world and attached objects), every
-``longest_valid_segment`` along each edge; with ``fast_check``, the search checks a
-conservative sphere model first (:mod:`taskrunner.planning.fastcheck`: spheres apart
-proves the exact geometry apart; each edge is checked whole, continuously, in one
-compiled call) and asks the exact checker only where spheres touch. The path found is
+``longest_valid_segment`` along each edge (compiled bounding volumes first, coal only on
+the pairs they cannot clear: :mod:`taskrunner.scene.screen`). The path found is
 shortcut, then verified exactly by conservative advancement (per-joint lever arms bound
 how far any point of any body moves between checks, coal distances against the scene's
 geometry: :mod:`taskrunner.scene.sweep`); with timing, the sampled trajectory that is
@@ -67,18 +65,6 @@ if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verif
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
 
 _REFINEMENTS = 3
-# The sphere model's edge walk: spheres closer than this (m) hand the rest of the edge to
-# the exact checker, as does a walk that needs more than _EDGE_CHECKS states.
-_EDGE_EPS = 0.002
-_EDGE_CHECKS = 200
-# After _WALK_TRIAL edges, a search stops walking edges when fewer than _WALK_SUCCESS of
-# its walks have cleared their edge.
-_WALK_TRIAL = 30
-_WALK_SUCCESS = 0.25
-# After _SCAN_TRIAL states, a search checks with coal alone when the spheres touched in
-# more than _SCAN_TOUCHING of them.
-_SCAN_TRIAL = 200
-_SCAN_TOUCHING = 0.5
 # A random shortcut is checked only when it would shorten the path by this share (the
 # others cost a full edge check for little: 20 % fewer states checked on the bookshelves,
 # paths as short, fewer waypoints).
@@ -127,18 +113,11 @@ class MotionPlanner:
 
     Args:
         scene: the planning scene.
-        fast_check: search with the sphere model first (see the module docstring). Off
-            by default: on the benchmark problems it is slower than the exact checker
-            (``benchmarks/fastcheck_bench.py``). The returned path is verified exactly
-            either way.
     """
 
-    def __init__(self, scene: Scene, fast_check: bool = False) -> None:
+    def __init__(self, scene: Scene) -> None:
         self.scene = scene
-        self.fast_check = fast_check
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
-        self._spheres: tuple[object, object] | None = None  # (checker, SphereModel)
-        self._groups: dict[str, object] = {}
         self._group_columns: dict[str, tuple[slice | np.ndarray, bool]] = {}
 
     # ------------------------------------------------------------------ public
@@ -389,29 +368,6 @@ class MotionPlanner:
         out.checks = count[0]
         return out
 
-    def _fast_checker(self, group: Group):  # type: ignore[no-untyped-def]
-        """The sphere-model checker of ``group`` for the scene as it is, or None (fast
-        checks off, or a robot the compiled kinematics does not handle)."""
-        if not self.fast_check:
-            return None
-        from taskrunner.planning import fastcheck
-
-        checker = self.scene.checker
-        if self._spheres is None or self._spheres[0] is not checker:
-            try:
-                self._spheres = (checker, fastcheck.SphereModel(self.scene.robot, checker))
-            except fastcheck.UnsupportedModelError:
-                self.fast_check = False
-                return None
-            self._groups = {}
-        if group.name not in self._groups:
-            model = self._spheres[1]
-            assert isinstance(model, fastcheck.SphereModel)
-            fast = model.group(group.joint_indices)
-            fast.warm_up(self.scene.state)
-            self._groups[group.name] = fast
-        return self._groups[group.name]
-
     def _checks(self, group: Group, start: np.ndarray, resolution: float,
                 known: set[bytes] | None = None, margin: float = VERIFY_MARGIN
                 ) -> tuple[Callable[[np.ndarray], bool],
@@ -421,66 +377,23 @@ class MotionPlanner:
         see :meth:`_edge_validity` (the exact checks only; states found valid by the
         state check are added). ``margin``: the request's verification margin (see
         :meth:`_scan`)."""
-        fast = self._fast_checker(group)
         # One compiled segment scan for both (a state is a segment of one step).
-        segment = self._segment_scan(group, start, resolution, margin) if fast is None else None
+        segment = self._segment_scan(group, start, resolution, margin)
         exact, count = self._validity(group, start, margin, segment)
-        if fast is None:
-            exact_edge = self._edge_validity(group, start, resolution, count, known, margin,
-                                             segment)
-            if known is None:
-                return exact, exact_edge, count
+        exact_edge = self._edge_validity(group, start, resolution, count, known, margin, segment)
+        if known is None:
+            return exact, exact_edge, count
 
-            def remembered(values: np.ndarray) -> bool:
-                key = values.tobytes()
-                if key in known:
-                    return True
-                if exact(values):
-                    known.add(key)
-                    return True
-                return False
+        def remembered(values: np.ndarray) -> bool:
+            key = values.tobytes()
+            if key in known:
+                return True
+            if exact(values):
+                known.add(key)
+                return True
+            return False
 
-            return remembered, exact_edge, count
-        base = start.copy()
-        # walks tried, walks that cleared their edge, states scanned, states whose spheres
-        # touched (where spheres touch most states, the exact check alone is cheaper)
-        seen = [0, 0, 0, 0]
-
-        def spheres_pay() -> bool:
-            return seen[2] < _SCAN_TRIAL or seen[3] <= _SCAN_TOUCHING * seen[2]
-
-        def is_valid(values: np.ndarray) -> bool:
-            if spheres_pay():
-                seen[2] += 1
-                if fast.state_free(base, values):
-                    count[0] += 1
-                    return True
-                seen[3] += 1
-            return exact(values)
-
-        def edge_valid(a: np.ndarray, b: np.ndarray) -> bool:
-            if not spheres_pay():
-                return _segment_valid(exact, a, b, resolution)
-            s = 0.0
-            # Where the spheres rarely clear a whole edge (a narrow passage, an object in
-            # the hand), the walk costs more than it saves: go straight to the states.
-            if seen[0] < _WALK_TRIAL or seen[1] >= _WALK_SUCCESS * seen[0]:
-                s, checked = fast.edge(base, a, b, _EDGE_EPS, _EDGE_CHECKS)
-                count[0] += checked
-                seen[0] += 1
-                if s >= 1.0:
-                    seen[1] += 1
-                    return True
-            # The rest of the edge, state by state as the exact search checks it; coal
-            # only where the spheres touch.
-            steps = max(1, int(np.ceil(np.max(np.abs(b - a)) * (1.0 - s) / resolution)))
-            touching = fast.touching(base, a, b, s, steps)
-            seen[2] += steps + 1
-            seen[3] += len(touching)
-            count[0] += steps + 1 - len(touching)  # exact() counts its own
-            return all(exact(a + t * (b - a)) for t in touching)
-
-        return is_valid, edge_valid, count
+        return remembered, exact_edge, count
 
     def _state_screen(self, margin: float) -> StateScreen:
         """The scene's state screen (:meth:`Scene.state_screen`: the checker's verdicts,
@@ -880,15 +793,6 @@ def _bisection_order(steps: int) -> np.ndarray:
     out = np.array(order, dtype=int)
     out.flags.writeable = False  # shared between callers
     return out
-
-
-def _segment_valid(is_valid: Callable[[np.ndarray], bool], a: np.ndarray, b: np.ndarray,
-                   resolution: float) -> bool:
-    steps = max(1, int(np.ceil(np.max(np.abs(b - a)) / resolution)))
-    for i in _bisection_order(steps):
-        if not is_valid(a + i / steps * (b - a)):
-            return False
-    return True
 
 
 def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: np.ndarray,
