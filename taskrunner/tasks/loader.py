@@ -152,7 +152,7 @@ class _Loader:
                                  "has one")
             return
         try:
-            scene = resolve_path(path.parent / value, TaskSpecError, path, line)
+            scene = resolve_path(path.parent / value, TaskSpecError, path, line, written=value)
         except TaskSpecError as exc:
             self.add(exc.path, exc.line, exc.reason)
             return
@@ -189,7 +189,8 @@ class _Loader:
                          "its meshes by path, not by URI")
                 refused = True
             else:
-                refused |= self.refused(Path(obj.file), FileKind.MESH, obj.file, file, line)
+                refused |= self.refused(Path(obj.file), FileKind.MESH, obj.file_as_written or "",
+                                        file, line)
         return refused
 
     # ------------------------------------------------------------------------- files
@@ -281,7 +282,7 @@ class _Loader:
         else:
             target = path.parent / value
         try:
-            cell = resolve_path(target, TaskSpecError, path, line_of(tree, "cell"))
+            cell = resolve_path(target, TaskSpecError, path, line_of(tree, "cell"), written=value)
         except TaskSpecError as exc:
             self.add(exc.path, exc.line, exc.reason)
             return None
@@ -396,7 +397,8 @@ class _Loader:
             return None
         file_line = line_of(body, "file")
         try:
-            target = resolve_path(file.parent / include.file, TaskSpecError, file, file_line)
+            target = resolve_path(file.parent / include.file, TaskSpecError, file, file_line,
+                                  written=include.file)
         except TaskSpecError as exc:
             self.add(exc.path, exc.line, exc.reason)
             return None

@@ -90,7 +90,8 @@ def test_an_include_and_a_cell_that_are_symlink_loops_are_refused(tmp_path, cell
     path = tmp_path / "task.yaml"
     path.write_text("task: t\ncell: loop.yaml\nsteps:\n  - include: {file: loop.yaml}\n")
     problems = problems_of(path)
-    expected = "'" + str(tmp_path / "loop.yaml") + "': symlink loop (too many levels of symbolic links)"
+    # Named as the file wrote them, not resolved.
+    expected = "'loop.yaml': symlink loop (too many levels of symbolic links)"
     assert problems == [(path, 2, expected), (path, 4, expected)]
 
 
