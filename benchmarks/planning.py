@@ -12,7 +12,8 @@ servo arm on its table; two servo arms swapping sides. Every query is one
 at the problem's ``planning_time`` (1 s, 2 s for the cage), one attempt, seeded.
 
 Per problem and planner: success rate; median and p95 of the wall time of ``plan`` (the
-whole request: start and goal checks, IK goal sampling, search, shortcut, fine re-check;
+whole request: start and goal checks, IK goal sampling, the straight line tried first,
+search, shortcut, exact verification;
 failures count with the time they took); search-only time (``PlanResult.planning_time``,
 solved queries); joint-space path length (rad, Euclidean); trajectory duration (s) and
 toppra time per path (``parameterize_path``, 100 Hz). Every returned path is re-checked
@@ -21,9 +22,10 @@ here every 0.01 rad (not timed); ``bad_paths`` counts any that collide.
 Default planners: RRTConnect on every problem; RRTstar, PRM, BITstar and KPIECE1 on the
 joint-goal problems (PRM is never run with several goal states: OMPL's PRM then calls the
 Python validity checker from its second thread and deadlocks). --quick runs 5 queries,
-RRTConnect only. --profile adds a breakdown of where ``plan`` spends its time on the shelf,
-the cage and the pose-goal pick (manual timers around the planner's phases and every
-collision check). Times on a shared machine drift (up to 2x over minutes; see
+RRTConnect only. --profile adds a breakdown of where ``plan`` (with toppra timing) spends
+its time on the shelf, the cage and the pose-goal pick (timers around the planner's
+phases: start, goals, straight line, search, shortcut, exact verification, timing; see
+:func:`run_profile`). Times on a shared machine drift (up to 2x over minutes; see
 ``calibration_us``); the collision-check counts are the same on every run of a seed.
 
 Targets on the 2-core reference machine: RRTConnect solves every Panda table, under-table,
@@ -172,8 +174,8 @@ def run(quick: bool, seed: int = 0, planners: Sequence[str] | None = None,
     Returns:
         ``{"problems": [row, ...], "toppra_median_ms", "toppra_p95_ms", "skipped"}``; a
         row holds ``name, planner, queries, success`` (fraction), ``median_ms, p95_ms``
-        (wall time of ``plan``), ``search_median_ms, search_p95_ms``, ``simplify_median_ms`` (shortcut and
-        fine re-check: ``PlanResult.simplify_time``),
+        (wall time of ``plan``), ``search_median_ms, search_p95_ms``, ``simplify_median_ms`` (shortcut:
+        ``PlanResult.simplify_time``, the exact verification excluded),
         ``checks_median``, ``path_length_rad``, ``bad_paths``, ``duration_s``,
         ``toppra_median_ms, toppra_p95_ms``, ``errors`` (failure class → count).
     """
@@ -264,101 +266,107 @@ def _target_lines(targets: list[dict]) -> list[str]:
 
 # ---------------------------------------------------------------------- profile
 PROFILED = ("panda_table_pick_pose", "panda_shelf", "panda_cage")
-PHASES = ("start", "goals", "search", "shortcut", "recheck")
+# phase -> (owner in taskrunner.planning.planner, function): the planner's own steps.
+PHASES = {
+    "start": ("MotionPlanner", "_start_state"),      # start state: limits, collision
+    "goals": ("MotionPlanner", "_goal_states"),      # goal states: IK sampling, checks
+    "direct": ("MotionPlanner", "_direct"),          # the straight line tried first
+    "search": ("MotionPlanner", "_search"),          # OMPL: problem setup and solve
+    "shortcut": ("module", "_shortcut"),             # shortcutting the path found
+    "verify": ("MotionPlanner", "verify_states"),    # exact verification (path, trajectory)
+    "timing": ("module", "parameterize_path"),       # toppra, with the request's timing
+}
 
 
 def run_profile(seed: int = 0, count: int = FULL_QUERIES,
                 problems: Sequence[str] = PROFILED) -> dict:
     """Where RRTConnect's ``plan`` spends its time, from timers wrapped around its phases.
 
-    Default problems: the shelf, the cage, and the pose-goal pick (IK goal sampling).
+    Default problems: the shelf, the cage, and the pose-goal pick (IK goal sampling). Each
+    query is planned and timed (``PlanRequest.timing``: toppra at 100 Hz), as ``run-task``
+    asks for a motion.
 
-    The phases are the planner's own functions: ``start`` (start-state checks), ``goals``
-    (goal states: IK sampling, checks), ``search`` (``_search``: OMPL setup and solve;
-    ``solve`` alone is ``PlanResult.planning_time``), ``shortcut`` and ``recheck`` (the
-    fine re-check of the shortened path). Every ``CollisionChecker.in_collision`` call is
-    timed and counted in the phase it happens in. The wrappers are removed afterwards.
+    The phases (:data:`PHASES`) are the planner's own functions. Times are exclusive: a
+    phase called inside another (the exact verification inside the straight-line try,
+    toppra inside the timing step) counts in the inner one only; ``other`` is the rest of
+    the wall time of ``plan`` (building the checks, the OMPL import on the first call,
+    bookkeeping). The wrappers are removed afterwards. The counts come from the
+    ``PlanResult``: states checked by the search and the straight line (``checks``),
+    distances computed by the exact verification (``verify_queries``), searches run.
 
     Returns:
-        ``{problem: {"queries", "solved", "wall_ms": [...], "solve_ms": [...], phase:
-        {"ms": [per query], "checks": [per query], "calls": [per query], "check_us": mean
-        µs per check}}}`` over the solved queries.
+        ``{problem: {"queries", "solved", "wall_ms": [...], "solve_ms": [...], "checks":
+        [...], "verify_queries": [...], "searches": [...], "straight": [...], phase:
+        {"ms": [per query], "calls": [per query]}}}`` over the solved queries (phases
+        :data:`PHASES` and ``other``).
     """
     import taskrunner.planning.planner as planner_module
-    from taskrunner.scene.collision import CollisionChecker
+    from taskrunner.planning.timing import TimingOptions
 
     clock = time.perf_counter_ns
-    overhead = min(-clock() + clock() for _ in range(1000))  # ns of one timer pair
-    current = ["other"]
-    # phase -> [ns in the phase, checks, ns in the checks, calls]
-    tally: dict[str, list[float]] = {p: [0.0, 0, 0.0, 0] for p in (*PHASES, "other")}
+    # phase -> [exclusive ns, calls]; the stack holds [phase, ns spent in nested phases]
+    tally: dict[str, list[int]] = {p: [0, 0] for p in PHASES}
+    stack: list[list] = []
 
-    def wrapped(owner: object, name: str, phase: str):  # type: ignore[no-untyped-def]
-        original = getattr(owner, name)
-
+    def wrapped(original, phase: str):  # type: ignore[no-untyped-def]
         def timed(*args, **kwargs):  # type: ignore[no-untyped-def]
-            outer, current[0] = current[0], phase
+            frame = [phase, 0]
+            stack.append(frame)
             t0 = clock()
             try:
                 return original(*args, **kwargs)
             finally:
-                tally[phase][0] += clock() - t0
-                tally[phase][3] += 1
-                current[0] = outer
+                elapsed = clock() - t0
+                stack.pop()
+                tally[phase][0] += elapsed - frame[1]
+                tally[phase][1] += 1
+                if stack:
+                    stack[-1][1] += elapsed
 
-        return original, timed
+        return timed
 
-    check = CollisionChecker.in_collision
-
-    def timed_check(self, q_pin):  # type: ignore[no-untyped-def]
-        t0 = clock()
-        verdict = check(self, q_pin)
-        entry = tally[current[0]]
-        entry[1] += 1
-        entry[2] += clock() - t0 - overhead
-        return verdict
-
-    patches = [(planner_module.MotionPlanner, "_start_state", "start"),
-               (planner_module.MotionPlanner, "_goal_states", "goals"),
-               (planner_module.MotionPlanner, "_search", "search"),
-               (planner_module, "_shortcut", "shortcut"),
-               (planner_module, "first_invalid_state", "recheck")]
+    owners = {"MotionPlanner": planner_module.MotionPlanner, "module": planner_module}
     originals = []
     out: dict = {}
     try:
-        for owner, name, phase in patches:
-            original, timed = wrapped(owner, name, phase)
+        for phase, (owner_name, name) in PHASES.items():
+            owner = owners[owner_name]
+            original = getattr(owner, name)
             originals.append((owner, name, original))
-            setattr(owner, name, timed)
-        CollisionChecker.in_collision = timed_check  # type: ignore[method-assign]
+            setattr(owner, name, wrapped(original, phase))
         for problem in planning_scenes.build_problems(count, seed, problems):
             planner = MotionPlanner(problem.scene)
             _run_query(problem, planner, problem.queries[0], "RRTConnect", seed + 999_983)
             record: dict = {"queries": count, "solved": 0, "wall_ms": [], "solve_ms": [],
-                            **{p: {"ms": [], "checks": [], "calls": [], "check_ns": 0.0} for p in PHASES}}
+                            "checks": [], "verify_queries": [], "searches": [], "straight": [],
+                            **{p: {"ms": [], "calls": []} for p in (*PHASES, "other")}}
             for i, query in enumerate(problem.queries):
                 tally.clear()
-                tally.update({p: [0.0, 0, 0.0, 0] for p in (*PHASES, "other")})
-                options = PlannerOptions(planning_time=problem.planning_time, seed=seed * 1000 + i)
-                t0 = time.perf_counter()
+                tally.update({p: [0, 0] for p in PHASES})
+                options = PlannerOptions(planner="RRTConnect", planning_time=problem.planning_time,
+                                         seed=seed * 1000 + i)
+                request = PlanRequest(problem.group, query.goal, query.start, options,
+                                      timing=TimingOptions())
+                t0 = clock()
                 try:
-                    result = planner.plan(PlanRequest(problem.group, query.goal, query.start, options))
+                    result = planner.plan(request)
                 except PlanningError:
                     continue
-                record["wall_ms"].append((time.perf_counter() - t0) * 1000)
+                wall = clock() - t0
+                record["wall_ms"].append(wall / 1e6)
                 record["solve_ms"].append(result.planning_time * 1000)
+                record["checks"].append(result.checks)
+                record["verify_queries"].append(result.verify_queries)
+                record["searches"].append(result.searches)
+                record["straight"].append(result.direct)
                 record["solved"] += 1
                 for p in PHASES:
                     record[p]["ms"].append(tally[p][0] / 1e6)
-                    record[p]["checks"].append(tally[p][1])
-                    record[p]["calls"].append(tally[p][3])
-                    record[p]["check_ns"] += tally[p][2]
-            for p in PHASES:
-                checks = sum(record[p]["checks"])
-                record[p]["check_us"] = record[p].pop("check_ns") / checks / 1000 if checks else None
+                    record[p]["calls"].append(tally[p][1])
+                record["other"]["ms"].append((wall - sum(t[0] for t in tally.values())) / 1e6)
+                record["other"]["calls"].append(1)
             out[problem.name] = record
     finally:
-        CollisionChecker.in_collision = check  # type: ignore[method-assign]
         for owner, name, original in originals:
             setattr(owner, name, original)
     return out
@@ -371,26 +379,21 @@ def describe_profile(profile: dict) -> list[str]:
         if not rec["solved"]:
             lines.append(f"profile {name}: no query solved")
             continue
-        wall = float(np.median(rec["wall_ms"]))
         total = sum(rec["wall_ms"])
-        lines.append(f"profile {name} (RRTConnect, {rec['solved']}/{rec['queries']} solved): "
-                     f"plan median {wall:.1f} ms; shares of the summed wall time:")
-        for p in PHASES:
-            ms, checks = rec[p]["ms"], rec[p]["checks"]
-            per_check = rec[p]["check_us"]
-            check_ms = (per_check or 0.0) * sum(checks) / 1000
-            lines.append(
-                f"  {p:<9} {100 * sum(ms) / total:5.1f} %  median {np.median(ms):7.2f} ms, "
-                f"{np.median(checks):7.0f} checks ({'-' if per_check is None else f'{per_check:.1f}'}"
-                f" µs each, {100 * check_ms / max(sum(ms), 1e-9):.0f} % of the phase)")
-        search_checks = sum(rec["search"]["checks"])
-        solve = sum(rec["solve_ms"])
-        check_ms = (rec["search"]["check_us"] or 0.0) * search_checks / 1000
-        lines.append(f"  OMPL solve {np.median(rec['solve_ms']):.2f} ms median; outside the "
-                     f"checks it costs {1000 * (solve - check_ms) / max(search_checks, 1):.1f} µs "
-                     f"per check (OMPL + Python callback); searches per plan: "
-                     f"{np.mean(rec['search']['calls']):.2f} (more than 1: the fine re-check "
-                     f"failed and the search ran again with a finer segment)")
+        lines.append(f"profile {name} (RRTConnect + toppra, {rec['solved']}/{rec['queries']} "
+                     f"solved, {sum(rec['straight'])} by the straight line): plan median "
+                     f"{np.median(rec['wall_ms']):.1f} ms; exclusive time per phase:")
+        for p in (*PHASES, "other"):
+            ms, calls = rec[p]["ms"], rec[p]["calls"]
+            lines.append(f"  {p:<9} {100 * sum(ms) / total:5.1f} % of the summed wall time, "
+                         f"median {np.median(ms):7.2f} ms, mean {np.mean(calls):5.2f} calls")
+        searched = [s for s, d in zip(rec["solve_ms"], rec["straight"]) if not d]
+        solve = f"{np.median(searched):.2f} ms median" if searched else "none (all straight)"
+        lines.append(f"  OMPL solve (PlanResult.planning_time, searched queries): {solve}; "
+                     f"states checked {np.median(rec['checks']):.0f} median; exact "
+                     f"verification {np.median(rec['verify_queries']):.0f} distances median; "
+                     f"searches per plan {np.mean(rec['searches']):.2f} (more than 1: the "
+                     f"exact verification turned a path down and a finer search ran)")
     return lines
 
 
@@ -413,8 +416,8 @@ def main(argv: list[str] | None = None) -> int:
                         + ", ".join(planning_scenes.PROBLEM_NAMES))
     parser.add_argument("--queries", type=int, help="queries per problem")
     parser.add_argument("--profile", action="store_true",
-                        help="also break down RRTConnect's time on the shelf, the cage and "
-                        "the pose-goal pick")
+                        help="also break down RRTConnect's time (with toppra timing) into the "
+                        "planner's phases on the shelf, the cage and the pose-goal pick")
     args = parser.parse_args(argv)
 
     started = time.perf_counter()
