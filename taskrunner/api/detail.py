@@ -14,6 +14,12 @@ made polling cost O(events) per request. Instead:
   each valid for as long as its database row (record and final tree) is unchanged.
 * :class:`RunListCache` keeps ``GET /runs`` bodies per query until the store is written.
 
+A body holds a page of the run's events: those with ``seq > since``, at most ``limit``
+(``DEFAULT_LIMIT`` unless asked), and says in ``events_more`` whether more follow. So a
+body's cost is bounded whatever the run's length: the default body of a live run stops
+changing with its events once it holds ``DEFAULT_LIMIT`` of them, and a page is sliced
+from the events encoded once each (live) or read by primary key (recorded).
+
 The bytes are exactly what FastAPI would produce from the response model (pydantic's
 compact JSON of :class:`~api.schemas.RunDetail` / ``list[RunSummary]``).
 """
@@ -36,7 +42,11 @@ if TYPE_CHECKING:
     from taskrunner.api.runs import LiveRun
     from taskrunner.api.store import RunStore
 
-__all__ = ["RunDetailCache", "RunListCache", "StoredDetails", "detail_body"]
+__all__ = ["DEFAULT_LIMIT", "MAX_LIMIT", "RunDetailCache", "RunListCache", "StoredDetails",
+           "detail_body"]
+
+DEFAULT_LIMIT = 1000  # events in a GET /runs/{id} body unless ?limit= asks otherwise
+MAX_LIMIT = 10000
 
 _DETAIL = TypeAdapter(RunDetail)
 _EVENT = TypeAdapter(EventOut)
@@ -50,7 +60,7 @@ def _event_json(event_dict: dict[str, Any]) -> bytes:
 
 
 def _head(record: RunRecord, current: tuple[str, str | None] | None,
-          tree: str | None) -> bytes:
+          tree: str | None, more: bool = False) -> bytes:
     """The body without its events: ends with ``"events":[`` ready for them."""
     model = RunDetail(
         run_id=record.run_id, status=record.status, task=record.task,  # type: ignore[arg-type]
@@ -59,7 +69,7 @@ def _head(record: RunRecord, current: tuple[str, str | None] | None,
         task_file=record.task_file, parameters=dict(record.parameters),
         current=None if current is None else {"node": current[0],  # type: ignore[arg-type]
                                               "location": current[1]},
-        tree=tree, events=[])
+        tree=tree, events_more=more, events=[])
     text = _DETAIL.dump_json(model)
     if not text.endswith(_NO_EVENTS):  # events is the model's last field
         raise AssertionError("RunDetail must end with its events")
@@ -67,19 +77,28 @@ def _head(record: RunRecord, current: tuple[str, str | None] | None,
 
 
 def detail_body(record: RunRecord, current: tuple[str, str | None] | None = None,
-                tree: str | None = None, events: list[bytes] | None = None) -> bytes:
+                tree: str | None = None, events: list[bytes] | None = None,
+                more: bool = False) -> bytes:
     """The JSON body of ``GET /runs/{id}`` for ``record``.
 
     Args:
         record: the run.
         current: the node running now and its ``file:line``, if any.
         tree: the behaviour tree as text (live runs only).
-        events: the record's events already encoded (one JSON object each); encoded
+        events: the events to show, already encoded (one JSON object each); encoded
             here from ``record.events`` if not given.
+        more: whether more events follow the last one shown (``events_more``).
     """
     if events is None:
         events = [_event_json(e.as_dict()) for e in list(record.events)]
-    return b"".join((_head(record, current, tree), b",".join(events), b"]}"))
+    return b"".join((_head(record, current, tree, more), b",".join(events), b"]}"))
+
+
+def _check_page(since: int, limit: int) -> None:
+    if since < 0:
+        raise ValueError(f"'since' must be >= 0 (got {since})")
+    if not 1 <= limit <= MAX_LIMIT:
+        raise ValueError(f"'limit' must be 1..{MAX_LIMIT} (got {limit})")
 
 
 class RunDetailCache:
@@ -120,8 +139,10 @@ class RunDetailCache:
         """What the body shows, besides the tree, in a cheap comparable form."""
         live, record = self.live, self.live.record
         done = live.done.is_set()
-        return (len(record.events), record.status, record.exit_code, record.error,
-                record.finished, done, None if done else live.current())
+        # Past DEFAULT_LIMIT events the default body shows the same events: its count
+        # stops there (one more: to say that more follow).
+        return (min(len(record.events), DEFAULT_LIMIT + 1), record.status, record.exit_code,
+                record.error, record.finished, done, None if done else live.current())
 
     def _tree_stale(self, state: tuple[Any, ...]) -> bool:
         return (self._tree_key != (state[1], state[5])
@@ -162,15 +183,33 @@ class RunDetailCache:
             key = (*state, self._tree)
             if self._cached is not None and self._cached[0] == key:
                 return self._cached[1]
-            record = self.live.record
             count = state[0]
-            if count > len(self._events):  # events only ever get appended
-                self._events += [_event_json(e.as_dict())
-                                 for e in record.events[len(self._events):count]]
-            body = detail_body(record, state[6], self._tree, self._events[:count])
+            shown = self._encoded(0, min(count, DEFAULT_LIMIT))
+            body = detail_body(self.live.record, state[6], self._tree, shown,
+                               more=count > DEFAULT_LIMIT)
             self._cached = (key, body)
             self.builds += 1
             return body
+
+    def page(self, since: int, limit: int) -> bytes:
+        """The body with the events of ``seq > since``, at most ``limit`` of them (not
+        cached: its cost is that of ``limit`` events, whatever the run's length)."""
+        _check_page(since, limit)
+        self.body()  # the tree and the head as they are now
+        with self._lock:
+            record = self.live.record
+            count = len(record.events)  # appended only: a length read once is consistent
+            shown = self._encoded(since, min(count, since + limit))
+            current = None if self.live.done.is_set() else self.live.current()
+            return detail_body(record, current, self._tree, shown, more=count > since + limit)
+
+    def _encoded(self, start: int, stop: int) -> list[bytes]:
+        """Events ``start`` to ``stop`` (0-based, as in the record) as JSON, each encoded
+        once (events only ever get appended). Call with the lock held."""
+        if stop > len(self._events):
+            self._events += [_event_json(e.as_dict())
+                             for e in self.live.record.events[len(self._events):stop]]
+        return self._events[start:stop]
 
     def refresh(self) -> None:
         """Render the tree again and rebuild the body if it changed (what a caller told to
@@ -183,7 +222,8 @@ class StoredDetails:
 
     Args:
         store: the run database.
-        size: how many runs to keep (least recently asked for dropped first).
+        size: how many bodies (a run's page each) to keep, least recently asked for
+            dropped first.
     """
 
     def __init__(self, store: RunStore, size: int = 64) -> None:
@@ -192,23 +232,30 @@ class StoredDetails:
         self.store = store
         self.size = size
         self._lock = threading.Lock()
-        self._cache: OrderedDict[str, tuple[tuple[str, str | None], bytes]] = OrderedDict()
+        self._cache: OrderedDict[tuple[str, int, int],
+                                 tuple[tuple[str, str | None, int], bytes]] = OrderedDict()
 
-    def body(self, run_id: str) -> bytes | None:
-        """The body of recorded run ``run_id``, or None if there is no such run."""
+    def body(self, run_id: str, since: int = 0, limit: int = DEFAULT_LIMIT) -> bytes | None:
+        """The body of recorded run ``run_id`` with its events of ``seq > since`` (at most
+        ``limit``), or None if there is no such run."""
+        _check_page(since, limit)
         row = self.store.load_row(run_id)
         if row is None:
             return None
+        version = (*row, self.store.last_seq(run_id))
+        page = (run_id, since, limit)
         with self._lock:
-            hit = self._cache.get(run_id)
-            if hit is not None and hit[0] == row:
-                self._cache.move_to_end(run_id)
+            hit = self._cache.get(page)
+            if hit is not None and hit[0] == version:
+                self._cache.move_to_end(page)
                 return hit[1]
         text, tree = row
-        body = detail_body(RunRecord.from_dict(json.loads(text)), tree=tree)
+        events, more = self.store.events(run_id, since, limit)
+        body = detail_body(RunRecord.from_dict(json.loads(text)), tree=tree,
+                           events=[_event_json(e.as_dict()) for e in events], more=more)
         with self._lock:
-            self._cache[run_id] = (row, body)
-            self._cache.move_to_end(run_id)
+            self._cache[page] = (version, body)
+            self._cache.move_to_end(page)
             while len(self._cache) > self.size:
                 self._cache.popitem(last=False)
         return body

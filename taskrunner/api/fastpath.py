@@ -11,6 +11,7 @@ the event loop for all the polls that came meanwhile, instead of one per poll in
 thread pool. Every other request goes, unchanged, to the app:
 
 * another method or path, or a trailing slash;
+* a query string (a page of events, ``?since=`` / ``?limit=``: not the cached body);
 * a run not live on this server (recorded runs are read from the database off the loop);
 * a token the app must check and answer 401 for (missing or wrong).
 
@@ -51,7 +52,8 @@ class RunDetailFastPath:
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] == "http" and scope["method"] == "GET":
             path: str = scope["path"]
-            if path.startswith(_PREFIX) and "/" not in path[len(_PREFIX):]:
+            if path.startswith(_PREFIX) and "/" not in path[len(_PREFIX):] \
+                    and not scope.get("query_string"):
                 run_id = path[len(_PREFIX):]
                 if run_id and await self._answer(scope, run_id, send):
                     return

@@ -20,20 +20,19 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
-from taskrunner.api.detail import RunDetailCache, RunListCache, StoredDetails
-from taskrunner.api.store import RunStore
+from taskrunner.api.detail import DEFAULT_LIMIT, RunDetailCache, RunListCache, StoredDetails
+from taskrunner.api.store import RunStore, StoreJournal
 from taskrunner.errors import TaskrunnerError
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
-from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks import check_names, raise_for_problems
 from taskrunner.tasks.names import moved_groups
 from taskrunner.tasks.spec import TaskSpec
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
 
-# Progress is written to the database at these events (besides the start and the end).
-_SAVE_AT = ("run_started", "node_finished")
+_STOPPED = "the server stopped while the run was in flight"
 
 
 class RunNotFoundError(LookupError):
@@ -71,6 +70,7 @@ class LiveRun:
     thread: threading.Thread | None = None
     final_tree: str | None = None
     planner: Any = None
+    journal: StoreJournal | None = None
     done: threading.Event = field(default_factory=threading.Event)
     detail: RunDetailCache = field(init=False, repr=False, compare=False)
 
@@ -176,8 +176,19 @@ class RunManager:
             self._claims.pop(id(claim), None)
             self._claims[id(live)] = (session, joints, live.run_id)
             self._runs[live.run_id] = live
-        self.store.save(live.record)
-        runner.events.subscribe(lambda event: self._progress(live, event))
+        # Every event is appended to the database before anyone can see it (a server
+        # killed mid-run keeps all a client was shown); the run's row is written now and
+        # at its end, never in between.
+        live.journal = StoreJournal(self.store, live.run_id)
+        earlier = runner.events.set_journal(live.journal)
+        try:
+            self.store.save(live.record, events=earlier)
+        except BaseException:
+            with self._lock:
+                self._claims.pop(id(live), None)
+                self._runs.pop(live.run_id, None)
+            session.give_planner(planner)
+            raise
         live.thread = threading.Thread(target=self._run, args=(live,), daemon=True,
                                        name=f"run-{live.run_id}")
         live.thread.start()
@@ -196,13 +207,6 @@ class RunManager:
             if shared:
                 raise ArmBusyError(holder, shared)
 
-    def _progress(self, live: LiveRun, event: RunEvent) -> None:
-        if event.kind in _SAVE_AT:
-            try:
-                self.store.save(live.record)
-            except Exception:  # a failed progress write must not kill the run
-                pass
-
     def _run(self, live: LiveRun) -> None:
         try:
             live.runner.run()
@@ -211,11 +215,14 @@ class RunManager:
         finally:
             if self._stopping and live.record.status in ("cancelled", "running"):
                 live.record.status = "interrupted"
-                live.record.error = "the server stopped while the run was in flight"
+                live.record.error = _STOPPED
             live.final_tree = live.runner.snapshot()
             live.session.last_scene = live.runner.scene
             live.session.give_planner(live.planner)
-            self.store.save(live.record, tree=live.final_tree)
+            # The row once more; events again only if an append failed on the way.
+            failed = live.journal is not None and live.journal.failed > 0
+            self.store.save(live.record, tree=live.final_tree,
+                            events=None if failed else ())
             with self._lock:
                 self._claims.pop(id(live), None)
             live.done.set()
@@ -257,17 +264,21 @@ class RunManager:
             raise RunNotFoundError(run_id)
         return record
 
-    def detail(self, run_id: str) -> bytes:
-        """The ``GET /runs/{id}`` body (JSON of :class:`~api.schemas.RunDetail`), rebuilt
+    def detail(self, run_id: str, since: int = 0, limit: int = DEFAULT_LIMIT) -> bytes:
+        """The ``GET /runs/{id}`` body (JSON of :class:`~api.schemas.RunDetail`) with the
+        events of ``seq > since``, at most ``limit`` of them; the default page is rebuilt
         only if the run changed since it was last built. May block (database, rendering).
 
         Raises:
             RunNotFoundError: no such run.
+            ValueError: ``since`` or ``limit`` out of range.
         """
         live = self.live(run_id)
         if live is not None:
-            return live.detail.body()
-        body = self._stored.body(run_id)
+            if (since, limit) == (0, DEFAULT_LIMIT):
+                return live.detail.body()
+            return live.detail.page(since, limit)
+        body = self._stored.body(run_id, since, limit)
         if body is None:
             raise RunNotFoundError(run_id)
         return body
@@ -278,7 +289,9 @@ class RunManager:
         if live is not None:
             finished = live.done.is_set()
             return live.events.events(after), not finished
-        return [e for e in self.record(run_id).events if e.seq > after], False
+        if self.store.load_row(run_id) is None:
+            raise RunNotFoundError(run_id)
+        return self.store.events(run_id, after)[0], False
 
     # ----------------------------------------------------------------- control
     def cancel_live(self, run_id: str) -> LiveRun | None:
@@ -307,17 +320,21 @@ class RunManager:
         return live
 
     def shutdown(self, timeout: float) -> None:
-        """Cancel every run in flight and record each as interrupted."""
+        """Cancel every run in flight and record each as interrupted, with exit code 143
+        (terminated, 128 + SIGTERM: the server was told to stop, as a service manager
+        stops it; the lifespan is not told which signal it was, so Ctrl-C at a server in
+        a terminal is recorded the same)."""
         with self._lock:
             self._stopping = True
             runs = [r for r in self._runs.values() if not r.done.is_set()]
         for live in runs:
-            live.runner.cancel()
+            live.runner.cancel(_STOPPED, EXIT_CODES["terminated"])
         for live in runs:
             if live.thread is not None:
                 live.thread.join(timeout)
             if not live.done.is_set():  # stuck: record it all the same
                 live.record.status = "interrupted"
-                live.record.error = "the server stopped while the run was in flight"
+                live.record.error = _STOPPED
+                live.record.exit_code = EXIT_CODES["terminated"]
                 self.store.save(live.record, tree=live.runner.snapshot())
 

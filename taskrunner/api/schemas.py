@@ -96,6 +96,9 @@ class RunDetail(RunSummary):
     current: CurrentNode | None = None
     tree: str | None = Field(default=None, description="the behaviour tree with each node's "
                                                        "status (runs of this server only)")
+    events_more: bool = Field(default=False, description="more events are recorded after the "
+                                                         "last one shown: ask again with "
+                                                         "?since=<its seq>")
     events: list[EventOut]
 
 

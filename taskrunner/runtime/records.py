@@ -41,8 +41,8 @@ from typing import Any
 
 from taskrunner.runtime.events import RunEvent
 
-__all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "new_run_id",
-           "save_record"]
+__all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "needs_sync",
+           "new_run_id", "save_record"]
 
 STATUSES = ("running", "succeeded", "failed", "cancelled", "interrupted")
 
@@ -124,6 +124,13 @@ def journal_path(record_path: str | Path) -> Path:
 SYNC_KINDS = frozenset({"planned", "run_finished"})
 
 
+def needs_sync(event: RunEvent) -> bool:
+    """Whether a journal fsyncs when it appends ``event``: before a motion is sent (a
+    ``planned`` event, unless its duration is 0: nothing is sent) and at the run's end."""
+    return event.kind in SYNC_KINDS and not (event.kind == "planned"
+                                             and event.data.get("duration") == 0)
+
+
 class RecordFile:
     """A run's record on disk while it runs: the JSON plus an event journal.
 
@@ -154,8 +161,7 @@ class RecordFile:
         with self._lock:
             if not self._out.closed:
                 self._write(event.as_dict())
-                if event.kind in SYNC_KINDS and not (event.kind == "planned"
-                                                     and event.data.get("duration") == 0):
+                if needs_sync(event):
                     self._sync()
 
     def sync(self) -> None:

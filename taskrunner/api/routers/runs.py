@@ -23,6 +23,7 @@ from taskrunner.api.dependencies import (
     get_store,
     get_work,
 )
+from taskrunner.api.detail import DEFAULT_LIMIT, MAX_LIMIT
 from taskrunner.api.requestwork import RequestWork, load_request, precheck_request
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
@@ -104,12 +105,19 @@ async def list_runs(manager: Annotated[RunManager, Depends(get_manager)],
 @router.get("/{run_id}", response_model=RunDetail, dependencies=[Depends(require_read)],
             responses=_ERRORS)
 async def get_run(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
-                  control: Annotated[ControlExecutor, Depends(get_control)]) -> Response:
-    """A run: status, the node running now (with its file:line), the tree, the events so
-    far and the result."""
-    # Polls of live runs are answered before routing, from their cached bodies
-    # (api.fastpath); what reaches this is a recorded run (database) or a first build.
-    body = await control.run(manager.detail, run_id)
+                  control: Annotated[ControlExecutor, Depends(get_control)],
+                  since: Annotated[int, Query(ge=0, description="show the events with seq "
+                                                                "> since")] = 0,
+                  limit: Annotated[int, Query(ge=1, le=MAX_LIMIT, description="show at most "
+                                              "this many events")] = DEFAULT_LIMIT
+                  ) -> Response:
+    """A run: status, the node running now (with its file:line), the tree, the result and
+    a page of its events: those with seq > ``since``, at most ``limit``; ``events_more``
+    says whether more follow (ask again with ``since`` = the last seq shown)."""
+    # Polls of live runs without a query are answered before routing, from their cached
+    # bodies (api.fastpath); what reaches this is a recorded run (database), a page, or
+    # a first build.
+    body = await control.run(manager.detail, run_id, since, limit)
     return Response(body, media_type="application/json")
 
 
