@@ -75,13 +75,18 @@ class JointLimitsConfig:
 
 
 def _unwrap_ros_parameters(data: Any, inner_key: str) -> Any:
-    """Strip ``/**: ros__parameters: <inner_key>:`` wrappers if present."""
+    """Strip ``/**: ros__parameters: <inner_key>:`` wrappers if present, and a bare
+    ``<inner_key>:`` around the whole file (moveit_resources' Panda writes its
+    joint_limits.yaml under ``robot_description_planning:``, the parameter namespace it
+    is loaded into; read without unwrapping, its limits would be silently ignored)."""
     if isinstance(data, dict) and len(data) == 1:
         (only,) = data.values()
         if isinstance(only, dict) and "ros__parameters" in only:
             data = only["ros__parameters"]
             if isinstance(data, dict) and inner_key in data:
                 data = data[inner_key]
+    if isinstance(data, dict) and list(data) == [inner_key] and isinstance(data[inner_key], dict):
+        data = data[inner_key]
     return data
 
 

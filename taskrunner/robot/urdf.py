@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -121,7 +122,7 @@ def read_urdf(
     """
     path = Path(path)
     packages = packages or PackageMap()
-    if path.name.endswith(".xacro"):
+    if path.name.endswith(".xacro") or _has_substitutions(path):
         text = expand_xacro(path, packages, xacro_args, xacro_options)
         doc = parse_xml(text, path)
         # Lines of the expanded text mean nothing to the user: report elements by name.
@@ -129,6 +130,18 @@ def read_urdf(
     else:
         doc = parse_xml(read_text_file(path, RobotDescriptionError), path)
     return check_urdf(doc, path, packages)
+
+
+# What xacro substitutes: $(find pkg), $(arg name), $(env VAR), ${expression}.
+_SUBSTITUTION = re.compile(r"\$\((?:find|arg|env|optenv|eval|dirname|cwd)\b|\$\{")
+
+
+def _has_substitutions(path: Path) -> bool:
+    """Whether a plain ``.urdf`` holds xacro substitutions (moveit_resources' Panda has
+    ``file://$(find moveit_resources_panda_description)/meshes/...``). MoveIt reads such a
+    file through xacro (ROS 1 ``command="xacro FILE"``, ROS 2 MoveItConfigsBuilder's
+    ``load_xacro`` whatever the extension), so it is expanded here too."""
+    return _SUBSTITUTION.search(read_text_file(path, RobotDescriptionError)) is not None
 
 
 def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDescription:
