@@ -21,7 +21,8 @@ from __future__ import annotations
 import os
 import shutil
 import time
-from collections.abc import Callable
+import uuid
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, TextIO
 
@@ -29,6 +30,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import ExecutionHandle
+from taskrunner.runtime.runner import CANCELLED
 
 if TYPE_CHECKING:
     from taskrunner.runtime.runner import Runner
@@ -36,7 +38,7 @@ if TYPE_CHECKING:
 __all__ = ["LiveTree", "MotionProgress", "NodeView", "TerminalScreen", "layout_frame",
            "layout_tree", "progress_bar", "view_tree"]
 
-_MARKS = {"SUCCESS": "✔", "FAILURE": "✘", "RUNNING": "▶", "INVALID": "·"}
+_MARKS = {"SUCCESS": "✔", "FAILURE": "✘", "RUNNING": "▶", "INVALID": "·", CANCELLED: "■"}
 _INDENT = "  "
 _ELLIPSIS = "…"
 _BAR_CELLS = 10
@@ -62,8 +64,8 @@ class NodeView:
 
     Attributes:
         name: the node's name.
-        status: ``"SUCCESS"``, ``"FAILURE"``, ``"RUNNING"`` or ``"INVALID"`` (not started,
-            or stopped).
+        status: ``"SUCCESS"``, ``"FAILURE"``, ``"RUNNING"``, ``"INVALID"`` (not started)
+            or ``"CANCELLED"`` (running when the run was stopped).
         children: the node's children, in order (none for a leaf).
         seconds: how long a running leaf has been at it (s), if known.
         motion: the motion a running leaf executes, if any.
@@ -81,10 +83,17 @@ class NodeView:
 
 
 def view_tree(root: py_trees.behaviour.Behaviour,
-              clock: Callable[[], float] = time.monotonic) -> NodeView:
+              clock: Callable[[], float] = time.monotonic,
+              stopped: Mapping[uuid.UUID, tuple[str, str]] | None = None) -> NodeView:
     """A :class:`NodeView` of a py_trees tree as it is now (read from another thread:
     a status may be one tick old). A running leaf's motion progress comes from its
-    execution handle (``handle``), its time from ``started_at`` (monotonic s)."""
+    execution handle (``handle``), its time from ``started_at`` (monotonic s).
+    ``stopped``: once the run was stopped, each node's status as it was then (node id:
+    (status, message), :attr:`Runner.stopped`), shown instead of the reset tree's."""
+    if stopped is not None:
+        status = stopped.get(root.id, (root.status.value, ""))[0]
+        return NodeView(root.name, status,
+                        tuple(view_tree(c, clock, stopped) for c in root.children))
     status = root.status.value
     if root.children:
         return NodeView(root.name, status, tuple(view_tree(c, clock) for c in root.children))
@@ -121,7 +130,7 @@ class _Row:
 def _rows(node: NodeView, depth: int, out: list[_Row]) -> None:
     mark = _MARKS.get(node.status, "?")
     running = node.status == "RUNNING"
-    keep = running or node.status == "FAILURE"
+    keep = running or node.status in ("FAILURE", CANCELLED)
     if not node.children:
         out.append(_Row(depth, f"{mark} {node.name}", _leaf_suffixes(node), keep,
                         leaf=True, running=running))
@@ -313,14 +322,15 @@ class LiveTree:
     def update(self, runner: Runner) -> None:
         """Draw the run as it is now."""
         columns, rows = self.screen.size()
-        tree = view_tree(runner.tree, self._clock)
+        tree = view_tree(runner.tree, self._clock, runner.stopped)
         done = _finished_leaves(tree)
         header = (f"{runner.spec.name}  ·  {self._clock() - self._started:.1f} s  ·  "
                   f"{done} of {tree.leaves()} steps")
         leaf = runner.current_leaf()
         if leaf is not None and leaf.location:
             header += f"  ·  {os.path.basename(leaf.location)}"
-        note = self.note or _last_message(runner)
+        # A cancel too late to stop anything says so, not "stopping the motion".
+        note = runner.late_cancel or self.note or _last_message(runner)
         self.screen.show(layout_frame(header, tree, note, columns - 1, rows))
 
     def close(self) -> None:

@@ -5,7 +5,12 @@ plan service, the backend, the event log and the run record. :meth:`Runner.run` 
 tree at ``tick_hz`` until it succeeds, fails or is cancelled (``cancel()`` from another
 thread, or Ctrl-C / SIGTERM in the CLI): cancelling stops the tree, which cancels any plan
 in flight and stops the motion where it is, and records the run as cancelled with the
-reason and its exit code (130 for a cancel or Ctrl-C, 143 for SIGTERM).
+reason and its exit code (130 for a cancel or Ctrl-C, 143 for SIGTERM). What ran keeps its
+status: :attr:`Runner.stopped` holds each node's status as it was when the tree was stopped
+(a node interrupted: ``CANCELLED``), and :meth:`Runner.snapshot` and the terminal's last
+frame show that, not the reset tree. A cancel that arrives once the tree has ended (every
+motion done: during the final expectations check) is too late: the run's outcome stands
+and a ``message`` event says so.
 
 With ``runs_dir`` set, every event is written to the run's journal before the step that
 announced it goes on, so a run killed outright leaves everything it announced; the
@@ -17,6 +22,7 @@ from __future__ import annotations
 
 import threading
 import time
+import uuid
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
@@ -41,11 +47,50 @@ from taskrunner.tree.expect import check_task_end
 from taskrunner.tree.start import start_mismatch, task_start
 from taskrunner.tree.timeout import TaskTimeout
 
-__all__ = ["EXIT_CODES", "RunOptions", "Runner", "task_scene"]
+__all__ = ["CANCELLED", "EXIT_CODES", "RunOptions", "Runner", "task_scene", "tree_text"]
 
 # Exit codes of run-task, by outcome ("terminated": cancelled by SIGTERM, 128 + 15).
 EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130,
               "terminated": 143}
+
+
+CANCELLED = "CANCELLED"
+"""The status of a node that was running when the run was stopped (py_trees has none: its
+``stop`` leaves every node ``INVALID``, as if it never ran)."""
+
+
+def tree_text(root: py_trees.behaviour.Behaviour,
+              statuses: dict[uuid.UUID, tuple[str, str]]) -> str:
+    """The tree as :func:`py_trees.display.unicode_tree` draws it with ``show_status``,
+    each node's status and message taken from ``statuses`` (node id: ``(status,
+    message)``, a status a :class:`~py_trees.common.Status` value or :data:`CANCELLED`,
+    drawn ``[-] -- <message>``)."""
+    symbols = py_trees.display.unicode_symbols
+    marks = {s.value: symbols[s] for s in Status} | {CANCELLED: symbols[Status.INVALID]}
+
+    def kind(node: py_trees.behaviour.Behaviour) -> str:
+        if isinstance(node, py_trees.composites.Parallel):
+            return "parallel"
+        if isinstance(node, py_trees.decorators.Decorator):
+            return "decorator"
+        if isinstance(node, py_trees.composites.Sequence):
+            return "sequence_with_memory" if node.memory else "sequence_without_memory"
+        if isinstance(node, py_trees.composites.Selector):
+            return "selector_with_memory" if node.memory else "selector_without_memory"
+        return "behaviour"
+
+    lines: list[str] = []
+
+    def draw(node: py_trees.behaviour.Behaviour, depth: int) -> None:
+        status, message = statuses.get(node.id, (node.status.value, node.feedback_message))
+        name = node.name.replace("\n", " ")
+        lines.append(f"{'    ' * depth}{symbols[kind(node)]} {name} [{marks[status]}]"
+                     + (f" -- {message}" if message else ""))
+        for child in node.children:
+            draw(child, depth + 1)
+
+    draw(root, 0)
+    return "".join(line + "\n" for line in lines)
 
 
 @dataclass(frozen=True)
@@ -112,6 +157,9 @@ class Runner:
         self.tree = compile_task(spec, self.ctx)
         self._cancel = threading.Event()
         self._cancel_reason = ("cancelled", EXIT_CODES["cancelled"])
+        self._ended = threading.Event()  # the tree has ended: nothing more moves
+        self.stopped: dict[uuid.UUID, tuple[str, str]] | None = None
+        self.late_cancel: str | None = None
         self._file: RecordFile | None = None
         self.record = RunRecord(
             run_id=new_run_id(), task=spec.name, task_file=str(spec.path or ""),
@@ -122,13 +170,20 @@ class Runner:
         self.failure_kind: str | None = None
         self.expectations_met: bool | None = None
 
-    def cancel(self, reason: str = "cancelled", exit_code: int = EXIT_CODES["cancelled"]) -> None:
+    def cancel(self, reason: str = "cancelled", exit_code: int = EXIT_CODES["cancelled"]) -> bool:
         """Stop the run (safe from any thread, and from a signal handler): the motion stops
         where it is and the run ends ``cancelled`` with ``reason`` as its error and
-        ``exit_code``. The first cancel's reason is kept."""
+        ``exit_code``. The first cancel's reason is kept.
+
+        Returns:
+            False when it is too late: the tree has ended (every motion done), the run
+            ends as it would have and says the cancel came too late (see
+            :attr:`late_cancel`).
+        """
         if not self._cancel.is_set():
             self._cancel_reason = (reason, exit_code)
         self._cancel.set()
+        return not self._ended.is_set()
 
     @property
     def cancelled(self) -> bool:
@@ -156,8 +211,24 @@ class Runner:
         return tip if isinstance(tip, TaskLeaf) else None
 
     def snapshot(self) -> str:
-        """The tree as text, with each node's status."""
+        """The tree as text, with each node's status (once stopped: as it was when the
+        run was stopped, see :attr:`stopped`)."""
+        stopped = self.stopped
+        if stopped is not None:
+            return tree_text(self.tree, stopped)
         return py_trees.display.unicode_tree(self.tree, show_status=True)
+
+    def _stop_tree(self, interrupted: str, message: str) -> None:
+        """Stop the tree (its motion stops where it is, a plan in flight is dropped),
+        first keeping each node's status in :attr:`stopped`: a node running now becomes
+        ``interrupted`` with ``message``."""
+        statuses = {}
+        for node in self.tree.iterate():
+            running = node.status == Status.RUNNING
+            statuses[node.id] = ((interrupted, message) if running
+                                 else (node.status.value, node.feedback_message))
+        self.stopped = statuses  # before the stop: a frame drawn meanwhile shows these
+        self.tree.stop(Status.INVALID)
 
     def run(self) -> RunRecord:
         """Tick the tree to the end; returns the finished record.
@@ -180,18 +251,19 @@ class Runner:
             while True:
                 started = time.monotonic()
                 if self._cancel.is_set():
-                    self.tree.stop(Status.INVALID)
+                    self._stop_tree(CANCELLED, self._cancel_reason[0])
                     break
                 self.tree.tick_once()
                 status = self.tree.status
                 if status in (Status.SUCCESS, Status.FAILURE):
+                    self._ended.set()
                     break
                 self._pause(period - (time.monotonic() - started))
         except TaskrunnerError as exc:  # a leaf let one of ours escape: fail, don't crash
-            self.tree.stop(Status.INVALID)
+            self._stop_tree(Status.FAILURE.value, str(exc))
             return self._finish("failed", 3, str(exc))
         except Exception as exc:  # a bug: stop the motion and record it, then let it show
-            self.tree.stop(Status.INVALID)
+            self._stop_tree(Status.FAILURE.value, f"internal error: {type(exc).__name__}")
             self._finish("failed", EXIT_CODES["planning"],
                          f"internal error: {type(exc).__name__}: {exc}")
             raise
@@ -240,6 +312,12 @@ class Runner:
         return None
 
     def _finish(self, status: str, code: int, error: str | None) -> RunRecord:
+        self._ended.set()
+        if status != "cancelled" and self._cancel.is_set():
+            # Asked after the tree's last tick: every motion was done. One outcome.
+            self.late_cancel = (f"{self._cancel_reason[0]} too late: every step had ended; "
+                                f"the run {status}")
+            self.events.emit("message", self.late_cancel, late_cancel=True)
         self.record.status = status
         self.record.exit_code = code
         self.record.error = error

@@ -319,16 +319,19 @@ class _StopSignals:
     def _handle(self, signum: int, frame: FrameType | None) -> None:
         self.count += 1
         reason, code = self._REASONS[signal.Signals(signum)]
-        if self.count == 1:
-            self.say(f"{reason}: stopping the motion where it is …")
-        elif signum == signal.SIGINT and self.count >= 3:
+        if signum == signal.SIGINT and self.count >= 3:
             raise KeyboardInterrupt  # the user insists: stop waiting for the motion to stop
-        else:
-            self.say("still stopping the motion (Ctrl-C twice more to stop waiting) …")
+        in_time = True
         if self.runner is not None:
-            self.runner.cancel(reason, code)
+            in_time = self.runner.cancel(reason, code)
         elif self.pending is None:
             self.pending = (reason, code)
+        if not in_time:  # the tree has ended: nothing left to stop, the run ends as it ended
+            self.say(f"{reason} too late: every step has ended")
+        elif self.count == 1:
+            self.say(f"{reason}: stopping the motion where it is …")
+        else:
+            self.say("still stopping the motion (Ctrl-C twice more to stop waiting) …")
 
 
 def _run_with_display(runner: Runner, live: bool, out: TextIO,
@@ -379,5 +382,7 @@ def _summary(record: RunRecord, runner: Runner, runs_dir: Path | None, out: Text
           f"{motion_s:.1f} s of motion", file=out)
     if record.error:
         print(f"  {record.error}", file=out)
+    if runner.late_cancel:
+        print(f"  {runner.late_cancel}", file=out)
     if runs_dir is not None:
         print(f"  record: {runs_dir / (record.run_id + '.json')}", file=out)
