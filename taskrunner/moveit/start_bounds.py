@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from taskrunner.errors import InputError, InvalidStateError
-from taskrunner.robot.model import RobotModel
+from taskrunner.robot.model import RobotModel, describe_excess
 
 __all__ = ["BOUNDS_TOLERANCE", "START_STATE_MAX_BOUNDS_ERROR", "BoundsFix", "check_allowance",
            "describe_excess", "fix_start_bounds"]
@@ -55,14 +55,6 @@ class BoundsFix:
 
     def __str__(self) -> str:
         return f"{describe_excess(self.joint, self.value, self.bound, self.unit)}: moved to the bound"
-
-
-def describe_excess(joint: str, value: float, bound: float, unit: str = "rad") -> str:
-    """``joint 'j' = -3.1416 is below its lower bound -3.14159265 by 7.3e-06 rad``, with
-    enough digits to see the excess."""
-    side = "above its upper" if value > bound else "below its lower"
-    return (f"joint {joint!r} = {value:.10g} is {side} bound {bound:.10g} by "
-            f"{abs(value - bound):.2g} {unit}")
 
 
 def check_allowance(value: float, where: str = "start_state_max_bounds_error") -> float:

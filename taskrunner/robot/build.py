@@ -23,7 +23,15 @@ import pinocchio as pin
 from taskrunner.errors import RobotDescriptionError, YamlError
 from taskrunner.robot.description import RobotDescription
 from taskrunner.robot.missing_meshes import check_robot_geometry, resolve_allow_missing_meshes
-from taskrunner.robot.model import EndEffector, Group, JointInfo, Mimic, RobotInstance, RobotModel
+from taskrunner.robot.model import (
+    EndEffector,
+    Group,
+    JointInfo,
+    Mimic,
+    RobotInstance,
+    RobotModel,
+    describe_excess,
+)
 from taskrunner.robot.notes import LoadWarning, raise_if_strict
 from taskrunner.robot.selfcollision import self_collision_warnings
 from taskrunner.robot.srdf import Srdf, SrdfEndEffector, SrdfGroupState
@@ -631,8 +639,13 @@ def _add_gripper_aliases(end_effectors: Mapping[str, EndEffector],
 
 def _check_in_limits(joint: JointInfo, value: float, error, what: str) -> None:  # type: ignore[no-untyped-def]
     if value < joint.lower - POSE_LIMIT_TOLERANCE or value > joint.upper + POSE_LIMIT_TOLERANCE:
-        raise error(f"{what}: joint {joint.name!r} = {value} is outside its limits "
-                    f"[{joint.lower}, {joint.upper}]")
+        bound = joint.lower if value < joint.lower else joint.upper
+        raise error(f"{what}: {_excess(joint, value, bound)} (limits [{joint.lower:.10g}, "
+                    f"{joint.upper:.10g}])")
+
+
+def _excess(joint: JointInfo, value: float, bound: float) -> str:
+    return describe_excess(joint.name, value, bound, "m" if joint.type == "prismatic" else "rad")
 
 
 def _model_order(joints: dict[str, JointInfo], names: list[str]) -> list[str]:
@@ -697,8 +710,9 @@ def _add_initial_positions(p: Placement, joints: dict[str, JointInfo],
             continue  # it follows its source
         elif not (joint.lower - POSE_LIMIT_TOLERANCE <= value
                   <= joint.upper + POSE_LIMIT_TOLERANCE):
-            problem = (f"joint {joint_name!r} = {value} is outside its limits "
-                       f"[{joint.lower}, {joint.upper}]")
+            bound = joint.lower if value < joint.lower else joint.upper
+            problem = (f"{_excess(joint, value, bound)} (limits [{joint.lower:.10g}, "
+                       f"{joint.upper:.10g}])")
         if problem is not None:
             warnings.append(LoadWarning(f"initial_positions: {problem}; skipped",
                                         description.initial_positions_path, line))

@@ -26,7 +26,22 @@ from taskrunner.errors import UnknownNameError
 from taskrunner.robot.moveit_yaml import CartesianLimits, KinematicsSettings, OmplGroupSettings
 from taskrunner.types import JointState
 
-__all__ = ["EndEffector", "Group", "JointInfo", "Mimic", "RobotInstance", "RobotModel"]
+__all__ = ["LIMIT_TOLERANCE", "EndEffector", "Group", "JointInfo", "Mimic", "RobotInstance",
+           "RobotModel", "describe_excess"]
+
+LIMIT_TOLERANCE = 1e-9
+"""rad or m: a joint this close outside a bound is within it, everywhere limits are checked
+(a planned, interpolated or solved state lands on a bound up to floating-point round-off;
+MoveIt's ``satisfiesPositionBounds`` likewise takes a margin). Larger excesses in input
+files are MoveIt's ``start_state_max_bounds_error`` matter (:mod:`taskrunner.moveit.start_bounds`)."""
+
+
+def describe_excess(joint: str, value: float, bound: float, unit: str = "rad") -> str:
+    """``joint 'j' = -3.141595 is below its lower bound -3.14159265 by 2.6e-06 rad``: the
+    value and the bound with enough digits to see the excess, and the excess itself."""
+    side = "above its upper" if value > bound else "below its lower"
+    return (f"joint {joint!r} = {value:.10g} is {side} bound {bound:.10g} by "
+            f"{abs(value - bound):.2g} {unit}")
 
 
 @dataclass(frozen=True)
@@ -292,16 +307,21 @@ class RobotModel:
             q[..., index] = multiplier * q[..., source] + offset
         return q
 
-    def within_limits(self, q: np.ndarray, tolerance: float = 1e-9) -> bool:
+    def within_limits(self, q: np.ndarray, tolerance: float = LIMIT_TOLERANCE) -> bool:
+        """Whether every joint of ``q`` is within its limits, up to ``tolerance``."""
         return bool(np.all(q >= self.lower - tolerance) and np.all(q <= self.upper + tolerance))
 
-    def limit_violations(self, q: np.ndarray, tolerance: float = 1e-9) -> list[str]:
-        """Human-readable list of joints outside their limits."""
+    def limit_violations(self, q: np.ndarray, tolerance: float = LIMIT_TOLERANCE) -> list[str]:
+        """One line per joint of ``q`` outside its limits by more than ``tolerance`` (the
+        same test as :meth:`within_limits`), with the value, the bound and the excess
+        (:func:`describe_excess`)."""
         out = []
         for j in self.joints:
-            v = q[j.index]
+            v = float(q[j.index])
             if v < j.lower - tolerance or v > j.upper + tolerance:
-                out.append(f"{j.name!r} = {v:.4f} outside [{j.lower:.4f}, {j.upper:.4f}]")
+                bound = j.lower if v < j.lower else j.upper
+                out.append(describe_excess(j.name, v, bound, "m" if j.type == "prismatic"
+                                           else "rad"))
         return out
 
     def random_state(self, rng: np.random.Generator, group: str | None = None,

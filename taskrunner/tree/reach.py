@@ -52,8 +52,8 @@ import pinocchio as pin
 from taskrunner.errors import IkFailedError
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.planning.request import Goal, JointGoal, PoseGoal
-from taskrunner.robot.model import RobotModel
-from taskrunner.tree.choice import rounded
+from taskrunner.robot.model import LIMIT_TOLERANCE, RobotModel
+from taskrunner.tree.choice import model_key, rounded
 from taskrunner.types import Pose
 
 __all__ = ["Approximation", "Lift", "StagedGoals", "approach_goals", "approximate",
@@ -145,29 +145,36 @@ def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
 
 
 _MEMO_SIZE = 512
-_MEMO: OrderedDict[tuple[object, ...], tuple[weakref.ref, object]] = OrderedDict()
+_MEMO: OrderedDict[tuple[object, ...], object] = OrderedDict()
 _MEMO_LOCK = threading.Lock()
 
 
 def _remembered(model: RobotModel, key: tuple[object, ...], make: Callable[[], object]) -> object:
-    """``make()``, remembered for ``model`` and ``key`` (the last :data:`_MEMO_SIZE` kept).
+    """``make()``, remembered for ``model``'s content and ``key`` (the last
+    :data:`_MEMO_SIZE` kept).
 
     The goal choice is a function of its inputs (the model, the poses, the start state,
     the seed; solvers' answers do not depend on their earlier calls), and a task is
     chosen for twice with the same ones: by ``run-task check``'s dry run and by the run
-    that follows in the same process. Values are kept read-only and shared."""
-    full = (id(model), *key)
+    that follows, in the same process or on a cell loaded again (a task given by a
+    relative path, the REST API's session cell). The model counts by its content digest
+    (:func:`~taskrunner.tree.choice.model_key`, as the check's goal choices do), not by
+    its identity. Values are kept read-only and shared."""
+    full = (model_key(model), *key)
     with _MEMO_LOCK:
-        hit = _MEMO.get(full)
-        if hit is not None and hit[0]() is model:
+        hit = _MEMO.get(full, _MISSING)
+        if hit is not _MISSING:
             _MEMO.move_to_end(full)
-            return hit[1]
+            return hit
     value = make()
     with _MEMO_LOCK:
-        _MEMO[full] = (weakref.ref(model), value)
+        _MEMO[full] = value
         while len(_MEMO) > _MEMO_SIZE:
             _MEMO.popitem(last=False)
     return value
+
+
+_MISSING = object()
 
 
 def forget() -> None:
@@ -656,7 +663,7 @@ def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
     relative = rotation.T @ now  # the wanted orientation to the present one
     for extra in (0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi):
         value = at + sense * (turn + extra)
-        if not lower - 1e-9 <= value <= upper + 1e-9:
+        if not lower - LIMIT_TOLERANCE <= value <= upper + LIMIT_TOLERANCE:
             continue
         flipped = int(round(extra / math.pi)) % 2  # same orientation as extra = 0 or pi
         found = errors.get(flipped)

@@ -304,13 +304,15 @@ SRDF_CASES = [
     pytest.param(
         ('<joint name="j2" value="-0.5"/>', '<joint name="j2" value="-1.2"/>'),
         '<joint name="j2" value=',
-        "group_state 'home': joint 'j2' = -1.2 is outside its limits [-1.0, 1.0]; named pose skipped",
+        "group_state 'home': joint 'j2' = -1.2 is below its lower bound -1 by 0.2 rad (limits "
+        "[-1, 1]); named pose skipped",
         id="pose-outside-yaml-limits",
     ),
     pytest.param(
         ('<joint name="j3" value="0.1"/>', '<joint name="j3" value="0.25"/>'),
         '<joint name="j3" value="0.25"/>',
-        "group_state 'up': joint 'j3' = 0.25 is outside its limits [0.0, 0.1]; named pose skipped",
+        "group_state 'up': joint 'j3' = 0.25 is above its upper bound 0.1 by 0.15 m (limits "
+        "[0, 0.1]); named pose skipped",
         id="pose-outside-urdf-limits",
     ),
     pytest.param(

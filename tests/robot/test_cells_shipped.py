@@ -142,7 +142,7 @@ def test_cell_pose_outside_the_limits_names_the_line(tmp_path):
         load_cell(path)
     message = str(err.value)
     assert message.startswith(f"{path}:7:")
-    assert "'Revolute 2' = 0.5 is outside its limits" in message
+    assert "joint 'Revolute 2' = 0.5 is above its upper bound" in message
 
 
 def test_cell_object_needs_the_fields_of_its_shape(tmp_path):

@@ -235,8 +235,22 @@ def test_folder_that_is_no_robot_is_refused(tmp_path):
 def test_limit_violations_name_the_joint_value_and_limits(mini_model):
     q = np.array([10.0, 1.2, 0.05])  # j1 is continuous: 10 rad is fine
     assert not mini_model.within_limits(q)
-    assert mini_model.limit_violations(q) == ["'j2' = 1.2000 outside [-1.0000, 1.0000]"]
+    assert mini_model.limit_violations(q) == [
+        "joint 'j2' = 1.2 is above its upper bound 1 by 0.2 rad"]
     assert mini_model.within_limits(mini_model.state_with(q, {"j2": 0.9}))
+
+
+def test_a_tiny_excess_is_shown_with_enough_digits_and_round_off_is_within(mini_model):
+    """Fetch's wrist at -3.1416 against a bound of -pi: 7.3e-06 rad out, and the message
+    says so (at 4 decimals value and bound looked equal); round-off passes both checks."""
+    lower = mini_model.joint("j2").lower
+    q = mini_model.state_with(mini_model.default_state(), {"j2": lower - 2.6e-6})
+    assert not mini_model.within_limits(q)
+    (line,) = mini_model.limit_violations(q)
+    assert line == f"joint 'j2' = {lower - 2.6e-6:.10g} is below its lower bound {lower:.10g} " \
+                   "by 2.6e-06 rad"
+    q = mini_model.state_with(q, {"j2": lower - 1e-12})
+    assert mini_model.within_limits(q) and mini_model.limit_violations(q) == []
 
 
 def test_missing_xacro_include_names_the_including_file_and_the_missing_one(ws_copy):

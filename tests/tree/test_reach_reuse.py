@@ -139,3 +139,22 @@ def test_the_wrist_roll_chosen_is_the_one_forward_kinematics_finds_nearest(servo
             best[0], abs=1e-9)
         compared += 1
     assert compared > 40
+
+
+def test_a_cell_loaded_again_reuses_the_remembered_goal_choices(servo_arm_model, robots_dir):
+    """The memo is keyed by the model's content digest, as the check's goal choices are:
+    a second load of the same files (a run after ``run-task check`` on a cell loaded
+    again) finds every choice the first load made, and gets the same goals."""
+    from taskrunner.robot import load_robot
+
+    model, again = servo_arm_model, load_robot(robots_dir / "servo_arm")
+    assert again is not model
+    start = model.default_state()
+    contacts = _contacts(model, "tool0", _state(model, "arm", 3))
+    reach.forget()
+    first = reach.approach_goals(model, "arm", "tool0", contacts, _back, start, seed=5)
+    remembered = len(reach._MEMO)
+    assert remembered > 0
+    second = reach.approach_goals(again, "arm", "tool0", contacts, _back, start, seed=5)
+    assert len(reach._MEMO) == remembered  # every choice found, none made anew
+    assert _values(second) == _values(first)
