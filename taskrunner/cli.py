@@ -54,6 +54,7 @@ if TYPE_CHECKING:
 
     from taskrunner.kinematics import IkSolver
     from taskrunner.runtime.prestart import EarlyWorker
+    from taskrunner.runtime.records import RunRecord
     from taskrunner.scene import Scene
     from taskrunner.tree.check import CheckReport
 
@@ -544,11 +545,26 @@ def cmd_serve(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _records_in(folder: Path) -> list[RunRecord]:
+    """The run records of ``folder`` (``*.json``); one that cannot be read is named on
+    stderr and left out."""
+    from taskrunner.runtime.records import load_record
+
+    records = []
+    for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
+        try:
+            records.append(load_record(path))
+        except (OSError, ValueError, TypeError, KeyError, TaskrunnerError) as exc:
+            print(f"warning: {path}: not shown: {exc}", file=sys.stderr)
+    return records
+
+
 def cmd_view(args: argparse.Namespace) -> int:
     """Serve the web view on 127.0.0.1 and print its URL: a run record (``.json``) opens
     for replay, a task (file or shipped name) for its check and plan-only preview, nothing
-    the cells. The server keeps its data in a temporary folder (a record is copied into
-    it); it needs a token like ``serve`` (printed, typed into the page, never in a URL)."""
+    the runs of ``./runs`` (``TASKRUNNER_RUNS_DIR``; the cells when there are none). The
+    server keeps its data in a temporary folder (records are copied into it); it needs a
+    token like ``serve`` (printed, typed into the page, never in a URL)."""
     import shlex
     import socket
     import tempfile
@@ -579,8 +595,16 @@ def cmd_view(args: argparse.Namespace) -> int:
         settings = Settings.from_env(data_dir=data_dir, token=token, tasks_dir=tasks_dir,
                                      cells_dir=cells_dir)
         if args.target and args.target.endswith(".json"):
+            records = [record]
+        elif args.target:
+            records = []
+        else:
+            records = _records_in(Path(os.environ.get("TASKRUNNER_RUNS_DIR") or "runs"))
+            fragment = "#/runs" if records else fragment
+        if records:
             store = RunStore(settings.db_path)
-            store.save(record)
+            for each in records:
+                store.save(each)
             store.close()
     except (OSError, ValueError, TaskrunnerError) as exc:
         print(f"error: {exc}", file=sys.stderr)
@@ -781,7 +805,8 @@ def _parser() -> argparse.ArgumentParser:
     view = sub.add_parser("view", help="serve the web view on 127.0.0.1: replay a run "
                                        "record, check and preview a task, or see the cells")
     view.add_argument("target", nargs="?", default=None,
-                      help="a run record (runs/<id>.json), a task file or shipped task name")
+                      help="a run record (runs/<id>.json), a task file or shipped task name "
+                           "(none: the runs of ./runs, TASKRUNNER_RUNS_DIR)")
     view.add_argument("--port", type=int, default=0, help="port (default: a free one)")
     view.add_argument("--token", default=None,
                       help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
