@@ -23,6 +23,7 @@ from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
+from taskrunner.api.streams import RunStreams, StreamOptions
 
 __all__ = ["create_app", "new_token"]
 
@@ -98,6 +99,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.checking = Admission("task loads and checks", settings.check_workers,
                                    settings.work_queue, settings.check_timeout_s,
                                    setting="check_workers")
+    # One feed per run followed, its streams bounded (see api.streams).
+    app.state.streams = RunStreams(StreamOptions(
+        max_lag=settings.stream_max_lag, send_timeout_s=settings.stream_send_timeout_s))
     routers = [module.router for module in (health, runs, tasks, cells, plan, viewer)]
     for router in routers:
         app.include_router(router)

@@ -14,6 +14,7 @@ from taskrunner.api.requestwork import RequestWork
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
+from taskrunner.api.streams import RunStreams
 
 __all__ = ["get_cells", "get_checking", "get_control", "get_manager", "get_planning",
            "get_settings", "get_store", "get_work"]
@@ -47,6 +48,11 @@ async def get_planning(request: Request) -> Admission:
 async def get_checking(request: Request) -> Admission:
     """The admission of task loads and checks (``check_workers`` at once)."""
     return request.app.state.checking  # type: ignore[no-any-return]
+
+
+async def get_streams(request: Request) -> RunStreams:
+    """The runs' event feeds (one per run followed, shared by its streams)."""
+    return request.app.state.streams  # type: ignore[no-any-return]
 
 
 async def get_control(request: Request) -> ControlExecutor:

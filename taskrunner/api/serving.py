@@ -27,6 +27,7 @@ from typing import Any
 from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
 
 from taskrunner.api.settings import Settings
+from taskrunner.api.streams import ABORT_EXTENSION
 
 __all__ = ["ControlOnly", "header_timeout_protocol", "serve"]
 
@@ -75,6 +76,10 @@ def header_timeout_protocol(header_timeout_s: float) -> type[asyncio.Protocol]:
         def on_headers_complete(self) -> None:
             self._disarm_header_timer()
             super().on_headers_complete()
+            # The app may drop a connection whose client stopped reading (api.streams):
+            # a close would wait for the unread bytes to be sent, forever.
+            self.scope.setdefault("extensions", {})[ABORT_EXTENSION] = {  # type: ignore[typeddict-item]
+                "abort": self.transport.abort}
 
     return HeaderTimeoutProtocol
 

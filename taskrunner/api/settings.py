@@ -68,6 +68,10 @@ class Settings(BaseSettings):
             than its time limit (``plan_timeout_s``, ``check_timeout_s``).
         planner_idle_s: a planning process idle this long is closed (s).
         header_timeout_s: a connection must send its request headers within this (s).
+        stream_max_lag: events an event stream's client may fall behind the run before
+            it is dropped (told the ``Last-Event-ID`` to resume from).
+        stream_send_timeout_s: an event stream whose client takes no bytes for this
+            long is disconnected (s).
         servo_port: the serial port of the ``serial`` backend (default: the one in the
             robot's hardware.yaml).
         servo_url: the ESP32's ``/api/command`` URL for the ``http`` backend (none: the
@@ -102,6 +106,8 @@ class Settings(BaseSettings):
     work_queue: int = 8
     planner_idle_s: float = 120.0
     header_timeout_s: float = 10.0
+    stream_max_lag: int = 1000
+    stream_send_timeout_s: float = 10.0
     servo_port: str | None = None
     servo_url: str | None = None
     firmware_speedup: float = 1.0
@@ -152,7 +158,7 @@ class Settings(BaseSettings):
         return tuple(Path(p).resolve() for p in value)
 
     @field_validator("max_body_bytes", "check_memory_mb", "check_workers", "max_planners",
-                     "work_queue", mode="before")
+                     "work_queue", "stream_max_lag", mode="before")
     @classmethod
     def _int_at_least(cls, value: Any, info: Any) -> Any:
         least = 0 if info.field_name == "work_queue" else 1  # a queue may be empty
@@ -172,7 +178,7 @@ class Settings(BaseSettings):
 
     @field_validator("sim_speed", "tick_hz", "shutdown_timeout_s", "check_timeout_s",
                      "plan_timeout_s", "header_timeout_s", "firmware_speedup",
-                     "planner_idle_s", mode="before")
+                     "planner_idle_s", "stream_send_timeout_s", mode="before")
     @classmethod
     def _positive(cls, value: Any, info: Any) -> Any:
         number = _number(value)

@@ -89,7 +89,9 @@ class EventLog:
             return list(self._events)
 
     def subscribe(self, callback: Callable[[RunEvent], None]) -> None:
-        """Call ``callback`` with every event appended from now on (in the appending thread)."""
+        """Call ``callback`` with every event appended from now on (in the appending thread:
+        the run's, which it must not hold up; the API's streams subscribe one waker per
+        run, not one callback per client)."""
         with self._lock:
             self._subscribers.append(callback)
 
@@ -117,9 +119,13 @@ class EventLog:
         return event
 
     def events(self, after: int = 0) -> list[RunEvent]:
-        """The events with ``seq > after``."""
-        with self._lock:
-            return self._events[after:]
+        """The events with ``seq > after``.
+
+        Never waits for an ``emit`` in progress (its journal write may take a disk's
+        flush): the list is only appended to, and a slice of it is taken whole (CPython's
+        GIL), so the answer is the events kept so far, in order, without gaps.
+        """
+        return self._events[after:]
 
     def __len__(self) -> int:
         return len(self._events)

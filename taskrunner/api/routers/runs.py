@@ -2,13 +2,9 @@
 
 from __future__ import annotations
 
-import asyncio
-import json
-from collections.abc import AsyncIterator
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, status
-from fastapi.sse import EventSourceResponse, ServerSentEvent
 from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.admission import Admission, ControlExecutor
@@ -21,6 +17,7 @@ from taskrunner.api.dependencies import (
     get_manager,
     get_settings,
     get_store,
+    get_streams,
     get_work,
 )
 from taskrunner.api.detail import DEFAULT_LIMIT, MAX_LIMIT
@@ -36,7 +33,7 @@ from taskrunner.api.schemas import (
 )
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
-from taskrunner.runtime.events import RunEvent
+from taskrunner.api.streams import EventStream, RunStreams
 from taskrunner.tasks.problem import raise_for_problems
 
 __all__ = ["router"]
@@ -157,52 +154,21 @@ async def _events_start(run_id: str, manager: Annotated[RunManager, Depends(get_
     return start
 
 
-@router.get("/{run_id}/events", response_class=EventSourceResponse,
+@router.get("/{run_id}/events", response_class=EventStream,
             dependencies=[Depends(require_read)],
             responses={**_ERRORS, 200: {"description": "the run's events, as Server-Sent "
                                                        "Events, to the end of the run"}})
 async def run_events(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],
-                     start: Annotated[int, Depends(_events_start)]
-                     ) -> AsyncIterator[ServerSentEvent]:
+                     streams: Annotated[RunStreams, Depends(get_streams)],
+                     start: Annotated[int, Depends(_events_start)]) -> EventStream:
     """The run's events as Server-Sent Events (``id`` = the event's seq, ``event`` = its
     kind, ``data`` = the event as JSON), from the first one or from after
     ``Last-Event-ID`` (or ``?after=N``); the stream ends after ``run_finished``. An idle
-    stream sends a comment now and then, so that proxies keep it open."""
-    async for event in _follow(manager, run_id, start):
-        yield ServerSentEvent(raw_data=json.dumps(event.as_dict()), id=str(event.seq),
-                              event=event.kind)
+    stream sends a comment now and then, so that proxies keep it open.
 
-
-async def _follow(manager: RunManager, run_id: str, after: int) -> AsyncIterator[RunEvent]:
-    """The events after ``after``, to ``run_finished``. It sleeps until the run emits an
-    event (the runner's thread wakes it), so an idle stream costs nothing; a client that
-    goes away cancels it."""
-    loop = asyncio.get_running_loop()
-    wake = asyncio.Event()
-
-    def arrived(_: RunEvent) -> None:  # in the runner's thread
-        try:
-            loop.call_soon_threadsafe(wake.set)
-        except RuntimeError:  # the loop has closed: the stream is gone
-            pass
-
-    live = manager.live(run_id)
-    if live is not None:
-        live.events.subscribe(arrived)
-    try:
-        while True:
-            wake.clear()  # before reading: an event from now on wakes the wait below
-            events, more = manager.events_after(run_id, after)
-            for event in events:
-                after = event.seq
-                yield event
-                if event.kind == "run_finished":
-                    return
-            if not more:
-                if not events:
-                    return
-                continue  # events may have arrived between the read and the end
-            await wake.wait()
-    finally:
-        if live is not None:
-            live.events.unsubscribe(arrived)
+    A client that falls more than ``stream_max_lag`` events behind is sent a last
+    ``dropped`` event naming the ``Last-Event-ID`` to resume from, and the stream ends;
+    one that takes no bytes for ``stream_send_timeout_s`` is disconnected. Neither slows
+    the run or the other clients (see ``api.streams``).
+    """
+    return EventStream(streams, manager, run_id, start)
