@@ -31,7 +31,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import Backend
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import BackendError, InputError, PlanningError, TaskrunnerError
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -52,6 +52,17 @@ __all__ = ["CANCELLED", "EXIT_CODES", "RunOptions", "Runner", "task_scene", "tre
 # Exit codes of run-task, by outcome ("terminated": cancelled by SIGTERM, 128 + 15).
 EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130,
               "terminated": 143}
+
+
+def error_kind(exc: TaskrunnerError) -> str:
+    """The outcome (a key of :data:`EXIT_CODES`) of one of our errors, as ``run-task``
+    maps it: a planning failure (``PlanningError``), an execution one (``BackendError``),
+    else invalid input (``InputError``, ``UnknownNameError``, ``SceneError``, …)."""
+    if isinstance(exc, PlanningError):
+        return "planning"
+    if isinstance(exc, BackendError):
+        return "execution"
+    return "invalid"
 
 
 CANCELLED = "CANCELLED"
@@ -261,7 +272,8 @@ class Runner:
                 self._pause(period - (time.monotonic() - started))
         except TaskrunnerError as exc:  # a leaf let one of ours escape: fail, don't crash
             self._stop_tree(Status.FAILURE.value, str(exc))
-            return self._finish("failed", 3, str(exc))
+            self.failure_kind = error_kind(exc)
+            return self._finish("failed", EXIT_CODES[self.failure_kind], str(exc))
         except Exception as exc:  # a bug: stop the motion and record it, then let it show
             self._stop_tree(Status.FAILURE.value, f"internal error: {type(exc).__name__}")
             self._finish("failed", EXIT_CODES["planning"],
