@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 from pydantic import AfterValidator, BeforeValidator, Field, WithJsonSchema
 
-from taskrunner.validation import check_number
+from taskrunner.validation import NUMBER, check_number
 
 __all__ = ["Density", "Friction", "Kilograms", "Material", "check_material", "material_of"]
 
@@ -32,13 +32,13 @@ def _bounded(low: float, high: float, unit: str, low_open: bool) -> Any:
     return AfterValidator(check)
 
 
-Kilograms = Annotated[float, _bounded(0.0, MAX_KILOGRAMS, "kg", True),
+Kilograms = Annotated[float, NUMBER, _bounded(0.0, MAX_KILOGRAMS, "kg", True),
                       Field(json_schema_extra={"exclusiveMinimum": 0, "maximum": MAX_KILOGRAMS})]
 """A mass (kg): finite, > 0."""
-Density = Annotated[float, _bounded(0.0, MAX_DENSITY, "kg/m³", True),
+Density = Annotated[float, NUMBER, _bounded(0.0, MAX_DENSITY, "kg/m³", True),
                     Field(json_schema_extra={"exclusiveMinimum": 0, "maximum": MAX_DENSITY})]
 """A density (kg/m³): finite, > 0."""
-Coefficient = Annotated[float, _bounded(0.0, MAX_FRICTION, "", False),
+Coefficient = Annotated[float, NUMBER, _bounded(0.0, MAX_FRICTION, "", False),
                         Field(json_schema_extra={"minimum": 0, "maximum": MAX_FRICTION})]
 _COEFFICIENT_SCHEMA = {"type": "number", "minimum": 0, "maximum": MAX_FRICTION}
 Friction = Annotated[

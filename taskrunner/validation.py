@@ -13,13 +13,14 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
-from pydantic import AfterValidator, BaseModel, Field, ValidationError
+from pydantic import AfterValidator, BaseModel, Field, Strict, ValidationError
 
 from taskrunner.errors import YamlError
 from taskrunner.yamlfile import line_of
 
-__all__ = ["MAX_METRES", "MAX_RADIANS", "Metres", "NonNegativeMetres", "PositiveMetres",
-           "Radians", "Scale", "check_number", "locate", "validate_node"]
+__all__ = ["MAX_METRES", "MAX_RADIANS", "NUMBER", "Integer", "Metres", "NonNegativeMetres",
+           "Number", "PositiveMetres", "Radians", "Scale", "check_number", "locate",
+           "validate_node"]
 
 M = TypeVar("M", bound=BaseModel)
 
@@ -56,21 +57,30 @@ def _bounded(low: float, high: float, unit: str, low_open: bool = False) -> Call
     return check
 
 
+NUMBER = Strict()
+"""Numbers as numbers: pydantic's lax mode reads ``true`` as 1 and ``"0.5"`` as 0.5; a
+strict float takes an int or a float only (never a boolean or text), a strict int an
+int only. Put it first in ``Annotated``; bounds (``Field(gt=…)``) still apply."""
+Number = Annotated[float, NUMBER, Field(allow_inf_nan=False)]
+"""A finite number; not a boolean, not text."""
+Integer = Annotated[int, NUMBER]
+"""An integer; not a boolean, a float or text."""
+
 # The JSON-schema bounds tell editors; the validators give the messages.
-Metres = Annotated[float, AfterValidator(_bounded(-MAX_METRES, MAX_METRES, "m")),
+Metres = Annotated[float, NUMBER, AfterValidator(_bounded(-MAX_METRES, MAX_METRES, "m")),
                    Field(json_schema_extra={"minimum": -MAX_METRES, "maximum": MAX_METRES})]
 """A coordinate (m): finite, within ±:data:`MAX_METRES`."""
-Radians = Annotated[float, AfterValidator(_bounded(-MAX_RADIANS, MAX_RADIANS, "rad")),
+Radians = Annotated[float, NUMBER, AfterValidator(_bounded(-MAX_RADIANS, MAX_RADIANS, "rad")),
                     Field(json_schema_extra={"minimum": -MAX_RADIANS, "maximum": MAX_RADIANS})]
 """An angle (rad): finite, within ±:data:`MAX_RADIANS`."""
-PositiveMetres = Annotated[float, AfterValidator(_bounded(0.0, MAX_METRES, "m", low_open=True)),
+PositiveMetres = Annotated[float, NUMBER, AfterValidator(_bounded(0.0, MAX_METRES, "m", low_open=True)),
                            Field(json_schema_extra={"exclusiveMinimum": 0,
                                                     "maximum": MAX_METRES})]
 """A size, radius or length (m): finite, > 0, at most :data:`MAX_METRES`."""
-NonNegativeMetres = Annotated[float, AfterValidator(_bounded(0.0, MAX_METRES, "m")),
+NonNegativeMetres = Annotated[float, NUMBER, AfterValidator(_bounded(0.0, MAX_METRES, "m")),
                               Field(json_schema_extra={"minimum": 0, "maximum": MAX_METRES})]
 """A distance (m): finite, ≥ 0, at most :data:`MAX_METRES`."""
-Scale = Annotated[float, AfterValidator(_bounded(0.0, 1e6, "", low_open=True)),
+Scale = Annotated[float, NUMBER, AfterValidator(_bounded(0.0, 1e6, "", low_open=True)),
                   Field(json_schema_extra={"exclusiveMinimum": 0, "maximum": 1e6})]
 """A mesh scale factor: finite, > 0."""
 

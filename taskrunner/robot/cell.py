@@ -59,7 +59,7 @@ from taskrunner.robot.tools import (
 )
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.taught import apply_taught
-from taskrunner.textfile import resolve_path
+from taskrunner.textfile import file_problem, path_problem, resolve_path
 from taskrunner.validation import (
     Metres,
     PositiveMetres,
@@ -232,7 +232,9 @@ def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:
     candidates = [expanded] if expanded.is_absolute() else [cell_dir / value,
                                                            cell_dir.parent / value]
     for candidate in candidates:
-        if candidate.exists():
+        # A name the file system refuses (NUL, too long) is no robot; exists() is False
+        # for a symlink loop.
+        if path_problem(candidate) is None and candidate.exists():
             return candidate.resolve()
     raise FileNotFoundError(", ".join(str(c) for c in candidates))
 
@@ -338,8 +340,11 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             shape = _shape(obj, path.parent, packages)
         except (RobotDescriptionError, ValueError) as exc:
             raise YamlError(f"objects[{i}]: {exc}", path, line_of(item)) from None
-        if isinstance(shape, Mesh) and not shape.path.is_file():
-            raise YamlError(f"objects[{i}].file: mesh not found: {shape.path}", path,
+        problem = file_problem(shape.path) if isinstance(shape, Mesh) else None
+        if problem is not None:
+            raise YamlError(f"objects[{i}].file: mesh not found: {obj.file}"
+                            if problem == "file not found"
+                            else f"objects[{i}].file: mesh {obj.file!r}: {problem}", path,
                             line_of(item, "file"))
         for link in obj.touch_links:
             if not model.has_link(link):

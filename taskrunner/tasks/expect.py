@@ -31,6 +31,7 @@ from typing import Annotated, Any, Literal
 from pydantic import Field, model_validator
 
 from taskrunner.tasks.nodes import Node, PoseSpec
+from taskrunner.validation import Integer, Number
 
 __all__ = ["DurationBounds", "Expectation", "GroupExpectation", "ObjectExpectation",
            "OutcomeTolerance", "Scenario", "TaskExpectation"]
@@ -39,10 +40,10 @@ __all__ = ["DurationBounds", "Expectation", "GroupExpectation", "ObjectExpectati
 class OutcomeTolerance(Node):
     """How far an object may end from its target (a place, a hand-over, an expectation)."""
 
-    position: float = Field(default=0.005, gt=0, le=1)
+    position: Number = Field(default=0.005, gt=0, le=1)
     """Largest distance between the object's centre and its target's (m, default 0.005);
     for a place, also the largest gap between the object and what it rests on."""
-    angle_deg: float = Field(default=5.0, gt=0, le=180)
+    angle_deg: Number = Field(default=5.0, gt=0, le=180)
     """Largest orientation error, as 'orientation' measures it (degrees, not radians;
     default 5)."""
 
@@ -92,9 +93,9 @@ class GroupExpectation(Node):
 
     at: str | None = None
     """A named pose of the group."""
-    joints: dict[str, float] | None = Field(default=None, min_length=1)
+    joints: dict[str, Number] | None = Field(default=None, min_length=1)
     """Joint values {joint: rad or m} (the group's other joints are not checked)."""
-    tolerance: float = Field(default=0.01, gt=0, le=3.2)
+    tolerance: Number = Field(default=0.01, gt=0, le=3.2)
     """Largest difference of any joint (rad or m, default 0.01)."""
 
     @model_validator(mode="after")
@@ -108,9 +109,9 @@ class DurationBounds(Node):
     """Bounds of a duration in task time (s): motions at their trajectory time, the rest
     at wall time (see :mod:`taskrunner.tree.clock`)."""
 
-    min: float | None = Field(default=None, ge=0)
+    min: Number | None = Field(default=None, ge=0)
     """At least this long (s)."""
-    max: float | None = Field(default=None, gt=0)
+    max: Number | None = Field(default=None, gt=0)
     """At most this long (s)."""
 
     @model_validator(mode="after")
@@ -180,9 +181,9 @@ class Scenario(Node):
     """Shown in the test report."""
     parameters: dict[str, Annotated[Any, Field()]] = {}
     """Values for the task's parameters."""
-    seed: int = Field(default=0, ge=0)
+    seed: Integer = Field(default=0, ge=0, le=2**32 - 1)
     """Seeds every planner call."""
     backend: Backend = "mock"
     """Where it runs: mock, sim or mujoco (never real servos)."""
-    speed: float | None = Field(default=None, gt=0)
+    speed: Number | None = Field(default=None, gt=0, le=1000)
     """Speed of sim or mujoco, a multiple of real time."""

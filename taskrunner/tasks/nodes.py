@@ -37,7 +37,7 @@ from pydantic import (
 from taskrunner.materials import Density, Friction, Kilograms, check_material
 from taskrunner.textfile import path_problem
 from taskrunner.types import Pose
-from taskrunner.validation import Metres, PositiveMetres, Radians, Scale
+from taskrunner.validation import Metres, Number, PositiveMetres, Radians, Scale
 from taskrunner.yamlfile import LineDict
 
 __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transform", "Vec2",
@@ -46,8 +46,8 @@ __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transfor
 WORLD = "world"
 
 Vec2 = Annotated[tuple[Metres, ...], Field(min_length=2, max_length=2)]
-Vec3 = Annotated[tuple[float, ...], Field(min_length=3, max_length=3)]
-Vec4 = Annotated[tuple[float, ...], Field(min_length=4, max_length=4)]
+Vec3 = Annotated[tuple[Number, ...], Field(min_length=3, max_length=3)]
+Vec4 = Annotated[tuple[Number, ...], Field(min_length=4, max_length=4)]
 Position = Annotated[tuple[Metres, ...], Field(min_length=3, max_length=3)]
 Angles = Annotated[tuple[Radians, ...], Field(min_length=3, max_length=3)]
 Size = Annotated[tuple[PositiveMetres, ...], Field(min_length=3, max_length=3)]

@@ -208,6 +208,8 @@ def _message(err: Any, loc: tuple[Any, ...], where: Sequence[Any],
     if kind == "value_error":
         reason = str(ctx.get("error", err["msg"]))
         return f"{text} {reason}"
+    if kind in ("float_type", "int_type") and isinstance(value, bool):
+        return f"{text} must be {_EXPECTED[kind]}, not a boolean (got {str(value).lower()})"
     if kind in _EXPECTED:
         return f"{text} must be {_EXPECTED[kind]} (got {_shown(value)})"
     if kind in _BOUNDS:

@@ -39,6 +39,7 @@ from taskrunner.tasks.steps import (
     _ListComposite,
     walk_steps,
 )
+from taskrunner.validation import Number
 
 __all__ = ["ParamType", "Parameter", "ParameterDecl", "TaskFile", "TaskSpec", "step_document"]
 
@@ -54,9 +55,9 @@ class ParameterDecl(Node):
     """Value when not overridden (none: the parameter must be given)."""
     type: ParamType | None = None
     """float, int, bool or str (default: the type of 'default')."""
-    min: float | None = None
+    min: Number | None = None
     """Smallest allowed value (numbers only)."""
-    max: float | None = None
+    max: Number | None = None
     """Largest allowed value (numbers only)."""
     description: str = ""
     """What the parameter means, with its unit."""
@@ -68,8 +69,8 @@ class Parameter(Node):
     name: str
     type: ParamType
     default: Any = None
-    min: float | None = None
-    max: float | None = None
+    min: Number | None = None
+    max: Number | None = None
     description: str = ""
     value: Any = None
 

@@ -44,7 +44,7 @@ from taskrunner.tasks.nodes import (
     Vec2,
     describe_fields,
 )
-from taskrunner.validation import MAX_METRES
+from taskrunner.validation import MAX_METRES, Integer, Number
 
 __all__ = [
     "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "ExpectStep", "FallbackStep",
@@ -58,8 +58,15 @@ __all__ = [
 
 STEP_LIST_SCHEMA = {"type": "array", "items": {"$ref": "#/$defs/Step"}, "minItems": 1}
 StepList = Annotated[tuple["Step", ...], WithJsonSchema(STEP_LIST_SCHEMA)]
-Scaling = Annotated[float, Field(gt=0, le=1)]
-Distance = Annotated[float, Field(ge=0, le=MAX_METRES)]
+Scaling = Annotated[Number, Field(gt=0, le=1)]
+Distance = Annotated[Number, Field(ge=0, le=MAX_METRES)]
+MAX_TIMES = 1_000_000
+"""Most runs of a ``repeat`` and attempts of a ``retry``: a bound, so that a typo (or
+``2**63``) is refused rather than run until the machine stops."""
+MAX_SECONDS = 86_400.0
+"""Longest ``wait`` or ``timeout`` (s): a day."""
+MAX_PLANNING_TIME = 600.0
+"""Longest ``planning_time`` of one motion (s)."""
 
 
 def _exactly_one(node: Node, *names: str) -> None:
@@ -114,7 +121,7 @@ class MotionOptions(Node):
     """Fraction of the joints' maximum velocities, in (0, 1]."""
     acceleration_scaling: Scaling | None = None
     """Fraction of the joints' maximum accelerations, in (0, 1]."""
-    planning_time: float | None = Field(default=None, gt=0)
+    planning_time: Number | None = Field(default=None, gt=0, le=MAX_PLANNING_TIME)
     """Time allowed to plan (s)."""
 
 
@@ -137,7 +144,7 @@ class GoStep(MotionStep):
     """The group to move."""
     to: str | None = None
     """A named pose of the group."""
-    joints: dict[str, float] | None = Field(default=None, min_length=1)
+    joints: dict[str, Number] | None = Field(default=None, min_length=1)
     """Joint values {joint: rad or m}; the group's other joints keep their values."""
     pose: TargetPose | None = None
     """A pose for the group's tip (or 'link')."""
@@ -391,8 +398,8 @@ class WaitStep(StepNode):
     verb: ClassVar[str] = "wait"
     name: str | None = None
     """Label for displays."""
-    seconds: float = Field(ge=0)
-    """Duration (s)."""
+    seconds: Number = Field(ge=0, le=MAX_SECONDS)
+    """Duration (s), at most a day."""
 
 
 class ExpectStep(StepNode, Expectation):
@@ -453,24 +460,24 @@ class RetryStep(_DoComposite):
     """Run ``do`` until it succeeds, at most ``times`` attempts in all."""
 
     verb: ClassVar[str] = "retry"
-    times: int = Field(ge=1)
-    """Attempts in all (1: no retry)."""
+    times: Integer = Field(ge=1, le=MAX_TIMES)
+    """Attempts in all (1: no retry), at most 1,000,000."""
 
 
 class TimeoutStep(_DoComposite):
     """Run ``do``; fail if it takes longer than ``seconds``."""
 
     verb: ClassVar[str] = "timeout"
-    seconds: float = Field(gt=0)
-    """Time limit (s)."""
+    seconds: Number = Field(gt=0, le=MAX_SECONDS)
+    """Time limit (s), at most a day."""
 
 
 class RepeatStep(_DoComposite):
     """Run ``do`` ``times`` times; fail at the first failure."""
 
     verb: ClassVar[str] = "repeat"
-    times: int = Field(ge=1)
-    """Number of runs."""
+    times: Integer = Field(ge=1, le=MAX_TIMES)
+    """Number of runs, at most 1,000,000."""
 
 
 ScalarSchema = WithJsonSchema({"type": ["number", "boolean", "string"]})
