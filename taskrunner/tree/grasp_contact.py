@@ -8,6 +8,12 @@ distance at most :data:`GRASP_CONTACT_TOLERANCE`; overlap counts as meeting, as 
 finger stops on the surface). A grasp far above the object, one beside it, or an object
 narrower than the gap the closed fingers leave, fails, with the distances.
 
+The open hand must clear the object too: at the gripper's ``open`` pose, placed by the
+grasp pose, no finger may overlap it by more than :data:`OPEN_OVERLAP_TOLERANCE` (the
+fingers and palm are allowed to touch the object from the approach on, so the collision
+checks would not catch an object wider than the open gripper: the fingers would come down
+on top of it).
+
 Fingers are the subtrees of the gripper group's joints (and of joints mimicking them)
 that no other such joint moves: a parallel gripper has two, each with its pads. A gripper
 without finger geometry is not checked (nothing to measure). Units: m.
@@ -26,10 +32,15 @@ from taskrunner.errors import SceneError
 from taskrunner.scene.geometry import MeshCache, shape_geometry
 from taskrunner.tree.context import TaskContext
 
-__all__ = ["GRASP_CONTACT_TOLERANCE", "FingerGap", "finger_gaps", "touching_grasps"]
+__all__ = ["GRASP_CONTACT_TOLERANCE", "OPEN_OVERLAP_TOLERANCE", "FingerGap", "finger_gaps",
+           "touching_grasps"]
 
 GRASP_CONTACT_TOLERANCE = 0.003
 """How far (m) a closed finger may stay from the object and still be said to hold it."""
+
+OPEN_OVERLAP_TOLERANCE = 0.0005
+"""How deep (m) an open finger, at the grasp pose, may overlap the object (round-off and
+mesh facets; a finger coming down further into it would hit it)."""
 
 _MESHES = MeshCache()  # loaded meshes of objects, shared and never edited
 
@@ -62,8 +73,9 @@ class FingerGap:
         return self.worst <= tolerance
 
 
-def _fingers(ctx: TaskContext, arm_name: str) -> list[_Finger]:
-    """The arm's fingers at its gripper's closed pose (empty: no gripper, no geometry)."""
+def _fingers(ctx: TaskContext, arm_name: str, which: str = "closed") -> list[_Finger]:
+    """The arm's fingers at its gripper's ``closed`` (or ``open``) pose (empty: no
+    gripper, no geometry)."""
     arm = ctx.arm(arm_name)
     if arm.gripper is None:
         return []
@@ -76,7 +88,8 @@ def _fingers(ctx: TaskContext, arm_name: str) -> list[_Finger]:
     ids = {j.name: pmodel.getJointId(j.name) for j in joints}
     tops = [j for j in joints
             if not any(ids[j.name] in subtrees[o.name] for o in joints if o.name != j.name)]
-    q = model.state_with(ctx.scene.state, model.named_state(arm.gripper, arm.closed_pose))
+    pose = arm.closed_pose if which == "closed" else arm.open_pose
+    q = model.state_with(ctx.scene.state, model.named_state(arm.gripper, pose))
     data = pmodel.createData()
     geometry = model.collision_model
     gdata = pin.GeometryData(geometry)
@@ -114,11 +127,12 @@ def _width(fingers: Sequence[_Finger]) -> float:
                         for ga, pa in f.parts for gb, pb in g.parts))
 
 
-def finger_gaps(ctx: TaskContext, arm_name: str, obj: str, grasps: Sequence[pin.SE3]
-                ) -> list[FingerGap] | None:
-    """For each grasp (world pose of the arm's tool frame), how its fingers, closed, meet
-    object ``obj`` as the scene has it; None when the gripper has no finger geometry."""
-    fingers = _fingers(ctx, arm_name)
+def finger_gaps(ctx: TaskContext, arm_name: str, obj: str, grasps: Sequence[pin.SE3],
+                which: str = "closed") -> list[FingerGap] | None:
+    """For each grasp (world pose of the arm's tool frame), how its fingers, ``closed``
+    (or ``open``), meet object ``obj`` as the scene has it; None when the gripper has no
+    finger geometry."""
+    fingers = _fingers(ctx, arm_name, which)
     if not fingers:
         return None
     target = shape_geometry(ctx.scene.object(obj).shape, _MESHES)
@@ -131,24 +145,37 @@ def finger_gaps(ctx: TaskContext, arm_name: str, obj: str, grasps: Sequence[pin.
 
 def touching_grasps(ctx: TaskContext, arm_name: str, obj: str, grasps: Sequence[pin.SE3],
                     tolerance: float = GRASP_CONTACT_TOLERANCE) -> list[pin.SE3]:
-    """The grasps of ``grasps`` whose closed fingers all meet ``obj`` (see the module
-    docstring).
+    """The grasps of ``grasps`` whose closed fingers all meet ``obj`` and whose open
+    fingers all clear it (see the module docstring).
 
     Raises:
-        SceneError: none does; the message gives the closed width and the distance of
-            the best grasp's farthest finger.
+        SceneError: none does; the message gives the width of the fingers and the
+            distance (or overlap) of the best grasp's worst finger.
     """
     gaps = finger_gaps(ctx, arm_name, obj, grasps)
     if gaps is None or not grasps:
         return list(grasps)
-    kept = [g for g, gap in zip(grasps, gaps) if gap.touches(tolerance)]
-    if kept:
-        return kept
-    best = min(gaps, key=lambda gap: gap.worst)
-    finger = max(best.gaps, key=lambda name: best.gaps[name])
-    width = ("" if np.isnan(best.width)
-             else f"the fingers close to {1e3 * best.width:.0f} mm and ")
     where = "" if len(grasps) == 1 else f" (best of {len(grasps)} grasps)"
+    kept = [g for g, gap in zip(grasps, gaps, strict=True) if gap.touches(tolerance)]
+    if not kept:
+        best = min(gaps, key=lambda gap: gap.worst)
+        finger = max(best.gaps, key=lambda name: best.gaps[name])
+        width = ("" if np.isnan(best.width)
+                 else f"the fingers close to {1e3 * best.width:.0f} mm and ")
+        raise SceneError(
+            f"grasp does not reach {obj!r}: {width}{finger!r} stays {1e3 * best.worst:.1f} "
+            f"mm from {obj!r} at closed width{where} (allowed: {1e3 * tolerance:.0f} mm)")
+    opened = finger_gaps(ctx, arm_name, obj, kept, "open")
+    assert opened is not None  # the same fingers
+    clear = [g for g, gap in zip(kept, opened, strict=True)
+             if min(gap.gaps.values()) >= -OPEN_OVERLAP_TOLERANCE]
+    if clear:
+        return clear
+    best = max(opened, key=lambda gap: min(gap.gaps.values()))
+    finger = min(best.gaps, key=lambda name: best.gaps[name])
+    width = "" if np.isnan(best.width) else f"the fingers open to {1e3 * best.width:.0f} mm and "
+    where = "" if len(kept) == 1 else f" (best of {len(kept)} grasps)"
     raise SceneError(
-        f"grasp does not reach {obj!r}: {width}{finger!r} stays {1e3 * best.worst:.1f} mm "
-        f"from {obj!r} at closed width{where} (allowed: {1e3 * tolerance:.0f} mm)")
+        f"grasp does not fit {obj!r}: {width}{finger!r} overlaps {obj!r} by "
+        f"{-1e3 * best.gaps[finger]:.1f} mm at open width{where} (the object is wider than "
+        f"the open gripper there; allowed: {1e3 * OPEN_OVERLAP_TOLERANCE:.1f} mm)")

@@ -323,6 +323,8 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
         base = c.scene.link_pose(c.scene.robot.group(take.group).base_link).se3.translation
         grasps[:] = (handover_grasps(c.scene.object_pose(obj).se3, held.shape, held_at, base)
                      if grasp is None else grasp_candidates(c, obj, grasp))
+        # As a pick's: only grasps whose fingers meet the object closed and clear it open.
+        grasps[:] = touching_grasps(c, receiver, obj, grasps)
         return _goals(c, receiver, grasps, lambda i, p: -grasps[i].rotation[:, 2] * approach,
                       grasping=True)
 

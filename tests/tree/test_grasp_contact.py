@@ -121,3 +121,58 @@ def test_a_grasp_link_that_a_joint_separates_from_the_tool_is_refused(tmp_path):
     assert len(report.problems) == 1
     assert report.problems[0].line == 7
     assert "'grasp.link': 'panda_link5' does not move with arm 'arm'" in report.problems[0].message
+
+
+def test_a_box_wider_than_the_open_hand_is_refused_at_open_width(tmp_path):
+    """The Panda opens to 8 cm (2 x 0.04 m); a top grasp of a 9 cm box would bring the
+    fingers down on it. Check and run refuse it at the pick's line before the arm moves."""
+    path = tmp_path / "wide.yaml"
+    path.write_text(
+        f"task: wide\ncell: {CELL}\n"
+        "objects:\n"
+        "  - {name: crate, shape: box, size: [0.09, 0.09, 0.04], pose: {xyz: [0.5, 0.15, 0.77]}}\n"
+        "steps:\n"
+        "  - go: {group: arm, to: ready}\n"
+        "  - pick: {arm: arm, object: crate, grasp: top}\n", encoding="utf-8")
+    report = check_task(path)
+    assert len(report.problems) == 1
+    problem = report.problems[0]
+    assert (problem.path, problem.line) == (path, 7)
+    assert "grasp does not fit 'crate': the fingers open to" in problem.message
+    overlap = float(problem.message.split(" by ")[1].split(" mm")[0])
+    assert 3.0 < overlap < 10.0  # 9 cm box, pads about 8 cm apart: ~5 mm into each side
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state(), strict=True))
+    record = Runner(spec, cell, MockBackend(cell.model.joint_names, start), InProcessPlanner(),
+                    RunOptions(backend_name="mock")).run()
+    assert record.status == "failed"
+    assert f"{path}:7" in record.error and "grasp does not fit 'crate'" in record.error
+
+
+def test_the_receivers_grasp_in_a_handoff_must_touch_too(tmp_path):
+    """A hand-over whose receiver grasp (explicit, 8 cm above the bar's centre, pointing
+    down) closes on air is refused at the handoff's line by check and run alike."""
+    source = Path(resolve_task("handoff_panda"))
+    text = source.read_text(encoding="utf-8").replace(
+        "cell: ../robots/cells/panda_pair.yaml",
+        f"cell: {source.parent.parent / 'robots' / 'cells' / 'panda_pair.yaml'}")
+    line = "  - handoff: {object: bar, from: left_arm, to: right_arm, at: handoff, approach: 0.06, retreat: 0.08}"
+    assert line in text
+    text = text.replace(line, line[:-1] + ", grasp: {xyz: [0, 0, 0.08], rpy: [3.141592653589793, 0, 0]}}")
+    path = tmp_path / "handoff_air.yaml"
+    path.write_text(text, encoding="utf-8")
+    handoff_line = text.splitlines().index(line[:-1] + ", grasp: {xyz: [0, 0, 0.08], rpy: "
+                                           "[3.141592653589793, 0, 0]}}") + 1
+    report = check_task(path)
+    messages = [(p.line, p.message) for p in report.problems]
+    assert any(n == handoff_line and "grasp does not reach 'bar'" in m for n, m in messages), \
+        messages
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state(), strict=True))
+    record = Runner(spec, cell, MockBackend(cell.model.joint_names, start), InProcessPlanner(),
+                    RunOptions(backend_name="mock")).run()
+    assert record.status == "failed"
+    assert f"{path}:{handoff_line}" in record.error
+    assert "grasp does not reach 'bar'" in record.error
