@@ -1,14 +1,16 @@
 """Run records: what was run, with which parameters, every event, and how it ended.
 
-A record is a JSON file (``<runs_dir>/<run_id>.json``) written when the run starts and
-again when it ends; writes are atomic (temporary file, fsync, rename). While the run
-goes, a :class:`RecordFile` also appends every event to ``<run_id>.events.jsonl`` beside
-it (one JSON object a line, after a header line naming the process that writes it). What
-survives what:
+A record is a JSON file (``<runs_dir>/<run_id>.json``) written once, when the run ends,
+atomically (temporary file, fsync, rename): a record file always tells how its run
+ended, never that it is ``running``. While the run goes, a :class:`RecordFile` appends
+every event to ``<run_id>.events.jsonl`` instead (one JSON object a line, after a header
+line naming the process that writes it and holding the record's head: task, cell,
+parameters, task text), the live truth of the run. What survives what:
 
 * the process killed at any point (SIGKILL, a crash, out of memory): every event it
-  announced. Each event is written to the file (handed to the operating system) before
-  it is passed on, and the operating system keeps what a dead process wrote.
+  announced, in the journal. Each event is written to the file (handed to the operating
+  system) before it is passed on, and the operating system keeps what a dead process
+  wrote. No record JSON is left claiming the run goes on: there is none.
 * the machine losing power or its operating system crashing: every event up to the last
   motion sent to the backend. The journal is fsync'd when a ``planned`` event of a
   motion is appended (the event just before its trajectory goes to the backend: nothing
@@ -21,9 +23,11 @@ Fsyncing at those points rather than after every event keeps a run's start from
 waiting for a dozen disk flushes before its first motion (each one 0.1-10 ms, more on
 a busy disk). The journal is removed once the final JSON is on disk.
 
-:func:`load_record` merges a journal left behind into the record, and reports a record
-still ``running`` whose writing process is gone as ``interrupted`` (the file itself still
-says ``running``: nobody was left to rewrite it).
+:func:`load_record` reads a run in flight or killed from its journal (given the record's
+path or the journal's): ``running`` while its writing process lives, else
+``interrupted``. Records written by earlier versions (a JSON at the start saying
+``running``, beside a journal) are read as before: the journal merged in, the status
+corrected the same way.
 """
 
 from __future__ import annotations
@@ -119,6 +123,9 @@ def journal_path(record_path: str | Path) -> Path:
     return record_path.with_name(record_path.stem + ".events.jsonl")
 
 
+# A record's fields that say how its run went (not in a journal's head).
+_OUTCOME = frozenset({"status", "exit_code", "error", "finished", "events"})
+
 # Appending one of these fsyncs the journal (a ``planned`` one with duration 0 does not:
 # nothing is sent; see the module docstring).
 SYNC_KINDS = frozenset({"planned", "run_finished"})
@@ -143,15 +150,20 @@ class RecordFile:
 
     def __init__(self, record: RunRecord, runs_dir: str | Path) -> None:
         self.record = record
-        # The folder is fsync'd with the journal's first sync: one flush for both entries.
-        self.path = save_record(record, runs_dir, sync_folder=False)
+        runs_dir = Path(runs_dir)
+        runs_dir.mkdir(parents=True, exist_ok=True)
+        self.path = runs_dir / f"{record.run_id}.json"  # written by finish(), not before
         self.journal = journal_path(self.path)
         self._lock = threading.Lock()
         self._out = open(self.journal, "a", encoding="utf-8")  # held open: one line an event
+        # The folder is fsync'd with the journal's first sync (its entry).
         self._folder_synced = False
         self.syncs = 0  # fsyncs of the journal so far
+        # What the run is, not how it went: a journal never says "running" either.
+        head = {k: v for k, v in record.as_dict().items() if k not in _OUTCOME}
         header = {"journal": 1, "run_id": record.run_id, "host": socket.gethostname(),
-                  "pid": os.getpid(), "process_start": _process_start(os.getpid())}
+                  "pid": os.getpid(), "process_start": _process_start(os.getpid()),
+                  "record": head}
         self._write(header)
         for event in record.events:
             self._write(event.as_dict())
@@ -193,16 +205,40 @@ class RecordFile:
 def load_record(path: str | Path) -> RunRecord:
     """Read a record written by :func:`save_record` or a :class:`RecordFile`.
 
-    Events in a journal left beside the record (the run was killed, or is still going)
-    are merged in; a record still ``running`` whose writer process is gone is returned
-    as ``interrupted``, with the reason in ``error``.
+    ``path`` is the record's JSON or its journal (``<run_id>.events.jsonl``). A run
+    without a JSON (in flight, or its process killed) is read from its journal:
+    ``running`` while the process writing it lives, else ``interrupted`` with the reason
+    in ``error``. Events of a journal left beside a JSON are merged in.
+
+    Raises:
+        FileNotFoundError: neither the record nor its journal exists.
+        ValueError: the journal has no record head (not written by a RecordFile).
     """
+    path = Path(path)
+    if path.name.endswith(".events.jsonl"):
+        journal = path
+        path = path.with_name(path.name[:-len(".events.jsonl")] + ".json")
+    else:
+        journal = journal_path(path)
+    if not path.is_file() and journal.is_file():
+        header, events = _read_journal(journal)
+        if not isinstance(header.get("record"), dict):
+            raise ValueError(f"{journal}: no record head in its first line (not a run's "
+                             f"journal, or one from before heads were kept)")
+        record = RunRecord.from_dict({**header["record"], "events": []})
+        record.status = "running"
+        return _merged(record, header, events)
     with open(path, encoding="utf-8") as f:
         record = RunRecord.from_dict(json.load(f))
-    journal = journal_path(path)
     if not journal.is_file():
         return record
     header, events = _read_journal(journal)
+    return _merged(record, header, events)
+
+
+def _merged(record: RunRecord, header: dict[str, Any], events: list[RunEvent]) -> RunRecord:
+    """``record`` with a journal's events merged in; ``interrupted`` if it says
+    ``running`` and the journal's writer is gone."""
     known = {e.seq for e in record.events}
     record.events = sorted([*record.events, *(e for e in events if e.seq not in known)],
                            key=lambda e: e.seq)

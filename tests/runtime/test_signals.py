@@ -127,10 +127,16 @@ def test_a_run_killed_outright_leaves_every_event_it_announced(tmp_path):
     os.killpg(run.process.pid, signal.SIGKILL)
     run.process.wait(30)
     announced = [line for line in run.out if "▶" in line or "✔" in line or "planned" in line]
-    path = only_record(tmp_path / "runs")
-    on_disk = json.loads(path.read_text())
-    assert on_disk["status"] == "running"  # nobody was left to rewrite it
-    assert journal_path(path).exists()
+    runs = tmp_path / "runs"
+    # no record file claims the run goes on: the JSON is written only at a run's end;
+    # the journal, with the record's head, is all there is
+    assert list(runs.glob("*.json")) == []
+    [journal] = runs.glob("*.events.jsonl")
+    header = json.loads(journal.read_text().splitlines()[0])
+    assert "status" not in header["record"] and header["record"]["task"] == "pick_place"
+    path = journal.with_name(journal.name.replace(".events.jsonl", ".json"))
+    assert journal_path(path) == journal
+    assert load_record(journal).as_dict() == load_record(path).as_dict()
     record = load_record(path)
     shown = [e for e in record.events if e.kind in ("node_started", "planned")
              or (e.kind == "node_finished" and e.status == "SUCCESS")]
