@@ -14,7 +14,13 @@ CellNotFoundError       404
 ServerBusyError         503   ``detail``: what is running and waiting; ``Retry-After``
 other TaskrunnerError   422
 body too large          413
+invalid request body    422   FastAPI's ``detail`` list of errors
 ======================  ====  ==========================================================
+
+An answer's size is bounded whatever the request: at most :data:`MAX_PROBLEMS` problems
+(or request errors), then one saying how many more; a ``detail`` text of at most
+:data:`MAX_DETAIL_CHARS` characters (a 1 MB body of 60,000 bad parameters used to get a
+17-25 MB answer).
 """
 
 from __future__ import annotations
@@ -24,6 +30,8 @@ from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
 from fastapi import FastAPI, Request
+from fastapi.encoders import jsonable_encoder
+from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 
 from taskrunner.api.admission import ServerBusyError
@@ -31,7 +39,13 @@ from taskrunner.api.cells import CellNotFoundError, PoseConflictError
 from taskrunner.api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
 from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
 
-__all__ = ["BodyLimit", "add_error_handlers", "problems_of"]
+__all__ = ["BodyLimit", "MAX_DETAIL_CHARS", "MAX_PROBLEMS", "add_error_handlers", "problems_of"]
+
+MAX_PROBLEMS = 100
+"""Most problems (or request errors) one error answer lists; one more entry says how many
+were left out."""
+MAX_DETAIL_CHARS = 20_000
+"""Longest ``detail`` text of an error answer (characters)."""
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -44,7 +58,18 @@ def problems_of(exc: InputError) -> list[dict[str, Any]]:
     from taskrunner.tasks.problem import Problem
 
     found = getattr(exc, "problems", None) or [Problem(exc.path, exc.line, exc.reason)]
-    return [problem_out(p) for p in found]
+    shown = [problem_out(p) for p in found[:MAX_PROBLEMS]]
+    if len(found) > MAX_PROBLEMS:
+        more = f"and {len(found) - MAX_PROBLEMS} more problems"
+        shown.append({"file": None, "line": None, "message": more, "text": more})
+    return shown
+
+
+def _capped(text: str) -> str:
+    """``text`` cut to :data:`MAX_DETAIL_CHARS`, saying how much was left out."""
+    if len(text) <= MAX_DETAIL_CHARS:
+        return text
+    return f"{text[:MAX_DETAIL_CHARS]}… (and {len(text) - MAX_DETAIL_CHARS} more characters)"
 
 
 def problem_out(problem: Any) -> dict[str, Any]:
@@ -53,6 +78,8 @@ def problem_out(problem: Any) -> dict[str, Any]:
 
 
 def _answer(code: int, detail: Any, **extra: Any) -> JSONResponse:
+    if isinstance(detail, str):
+        detail = _capped(detail)
     return JSONResponse({"detail": detail, **extra}, status_code=code)
 
 
@@ -95,6 +122,40 @@ async def _value_error(request: Request, exc: Exception) -> JSONResponse:
     return _answer(422, str(exc))
 
 
+async def _invalid_request(request: Request, exc: Exception) -> JSONResponse:
+    """FastAPI's answer to a body its schema refuses, with at most :data:`MAX_PROBLEMS`
+    errors, each echoing at most a short piece of its input."""
+    assert isinstance(exc, RequestValidationError)
+    errors = list(exc.errors())
+    shown: list[Any] = []
+    for error in errors[:MAX_PROBLEMS]:
+        error = dict(error)
+        if error.get("type") in ("float_type", "int_type") and isinstance(error.get("input"), bool):
+            what = "a number" if error["type"] == "float_type" else "an integer"
+            error["msg"] = f"must be {what}, not a boolean"
+        error["input"] = _echo(error.get("input"))
+        if "ctx" in error:
+            error["ctx"] = _echo(error["ctx"])
+        shown.append(error)
+    if len(errors) > MAX_PROBLEMS:
+        shown.append({"type": "too_many_errors", "loc": [],
+                      "msg": f"and {len(errors) - MAX_PROBLEMS} more errors"})
+    return JSONResponse({"detail": shown}, status_code=422)
+
+
+def _echo(value: Any) -> Any:
+    """``value`` as an error answer may echo it: JSON as it is when short, the text of a
+    number JSON cannot hold (NaN, Infinity), a note in place of anything long."""
+    try:
+        encoded = jsonable_encoder(value)
+        text = json.dumps(encoded, allow_nan=False)
+    except ValueError:  # NaN or Infinity (JSON has neither)
+        return repr(value) if isinstance(value, float) else "(left out: not JSON)"
+    except TypeError:
+        return "(left out: not JSON)"
+    return encoded if len(text) <= 1_000 else "(left out: too large to show)"
+
+
 def add_error_handlers(app: FastAPI) -> None:
     """One handler per domain error class (the most specific class wins)."""
     app.add_exception_handler(InputError, _input_error)
@@ -108,6 +169,7 @@ def add_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(PoseConflictError, _not_finished)
     app.add_exception_handler(ServerBusyError, _server_busy)
     app.add_exception_handler(ValueError, _value_error)
+    app.add_exception_handler(RequestValidationError, _invalid_request)
 
 
 class BodyLimit:

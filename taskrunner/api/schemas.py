@@ -6,6 +6,8 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from taskrunner.validation import Integer, Number
+
 __all__ = [
     "CellDetail", "CellState", "CellSummary", "CheckRequest", "CheckResponse", "ErrorBody",
     "EventOut", "GroupOut", "Health", "ObjectOut", "PlanBody", "PlanResponse", "ProblemOut",
@@ -14,21 +16,32 @@ __all__ = [
 
 RunStatus = Literal["running", "succeeded", "failed", "cancelled", "interrupted"]
 MAX_YAML_CHARS = 200_000
+MAX_PARAMETERS = 1_000
+"""Most parameter overrides one request may give (a task declares a handful)."""
+MAX_JOINTS = 256
+"""Most joint values one request may give."""
 
 
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
 
-class _TaskSource(_Strict):
+class _Request(_Strict):
+    # Numbers of a request are finite (JSON's NaN and Infinity refused); Number and
+    # Integer also refuse booleans and text where a number belongs.
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+class _TaskSource(_Request):
     task: str | None = Field(default=None, max_length=255,
                              description="a task file name in the tasks folder")
     yaml: str | None = Field(default=None, max_length=MAX_YAML_CHARS,
                              description="the task as inline YAML; relative paths start "
                                          "from the tasks folder")
-    parameters: dict[str, Any] = Field(default_factory=dict,
-                                       description="overrides of the task's parameters")
-    seed: int = Field(default=0, ge=0, le=2**31 - 1)
+    parameters: dict[str, Any] = Field(default_factory=dict, max_length=MAX_PARAMETERS,
+                                       description="overrides of the task's parameters "
+                                                   f"(at most {MAX_PARAMETERS})")
+    seed: Integer = Field(default=0, ge=0, le=2**31 - 1)
 
     @model_validator(mode="after")
     def _one_source(self) -> _TaskSource:
@@ -44,7 +57,7 @@ class RunCreate(_TaskSource):
     backend: Backend = Field(default="sim", description="sim, mock, mujoco (physics; the "
                              "mujoco extra), or the cell's servos over serial or http (the "
                              "port and URL the server is set up with)")
-    speed: float | None = Field(default=None, gt=0, le=1000,
+    speed: Number | None = Field(default=None, gt=0, le=1000,
                                 description="time scale of the sim backend (2: twice real "
                                             "time); default: the server's")
     cell: str | None = Field(default=None, max_length=255,
@@ -171,29 +184,30 @@ class CellState(_Strict):
     running: list[str] = Field(description="ids of the runs in flight on this cell")
 
 
-class PoseTarget(_Strict):
-    xyz: list[float] = Field(min_length=3, max_length=3)
-    rpy: list[float] = Field(default=[0.0, 0.0, 0.0], min_length=3, max_length=3)
+class PoseTarget(_Request):
+    xyz: list[Number] = Field(min_length=3, max_length=3)
+    rpy: list[Number] = Field(default=[0.0, 0.0, 0.0], min_length=3, max_length=3)
     frame: str = "world"
     link: str | None = None
     position_only: bool | None = None
 
 
-class PlanBody(_Strict):
+class PlanBody(_Request):
     """Plan one motion of a group from the cell's current state; nothing moves."""
 
     cell: str
     group: str
     to: str | None = Field(default=None, description="a named pose of the group (go)")
-    joints: dict[str, float] | None = Field(default=None, description="joint values (go)")
+    joints: dict[str, Number] | None = Field(default=None, max_length=MAX_JOINTS,
+                                             description="joint values (go)")
     pose: PoseTarget | None = Field(default=None, description="a link pose (move)")
     backend: Backend = "sim"
-    planning_time: float = Field(default=5.0, gt=0, le=30,
+    planning_time: Number = Field(default=5.0, gt=0, le=30,
                                  description="seconds allowed to search, a cap and not a "
                                              "target: planning stops at the first path")
-    seed: int = Field(default=0, ge=0, le=2**31 - 1)
-    velocity_scaling: float | None = Field(default=None, gt=0, le=1)
-    sample_rate_hz: float = Field(default=100.0, ge=1, le=1000,
+    seed: Integer = Field(default=0, ge=0, le=2**31 - 1)
+    velocity_scaling: Number | None = Field(default=None, gt=0, le=1)
+    sample_rate_hz: Number = Field(default=100.0, ge=1, le=1000,
                                   description="samples per second of the trajectory")
 
     @model_validator(mode="after")
@@ -216,7 +230,7 @@ class PlanResponse(_Strict):
     waypoints: int
 
 
-class TeachBody(_Strict):
+class TeachBody(_Request):
     group: str
     backend: Backend = "sim"
 
@@ -234,7 +248,7 @@ class Health(_Strict):
     auth: bool
 
 
-class TeachRequest(_Strict):
+class TeachRequest(_Request):
     group: str = Field(description="the group whose joints the pose sets")
     backend: Backend = Field(default="sim", description="whose joint state to store")
 
