@@ -7,6 +7,7 @@ names it uses against the URDF happens when the model is assembled
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -248,5 +249,11 @@ def _group_state(doc: XmlDocument, element: ET.Element,
                 f"group_state {state_name!r}: joint {joint_name!r} value must be a number "
                 f"(got {raw!r}); value skipped", doc.path, doc.line(joint)))
             continue
+        if not math.isfinite(values[joint_name]):
+            # A named pose of nan or inf is no pose: refused, not skipped (it would reach
+            # the planner as a goal, or crash the check).
+            raise RobotDescriptionError(
+                f"group_state {state_name!r}: joint {joint_name!r} value must be a finite "
+                f"number (got {raw!r})", doc.path, doc.line(joint))
         value_lines[joint_name] = doc.line(joint)
     return SrdfGroupState(state_name, group_name, values, doc.line(element), value_lines)
