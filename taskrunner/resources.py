@@ -92,10 +92,15 @@ def resolve_task(name_or_path: str | os.PathLike[str]) -> Path:
     Raises:
         InputError: neither a file nor an example's name.
     """
+    from taskrunner.textfile import file_problem
+
     text = os.fspath(name_or_path)
     path = Path(text)
-    if path.exists():
-        return path
+    problem = file_problem(path)  # never raises: a NUL, a name too long, a loop are problems
+    if problem is None or problem.startswith("not a regular file"):
+        return path  # the loader says what else it is (a folder, a FIFO)
+    if problem != "file not found":
+        raise InputError(f"task {text!r}: {problem}")
     examples = example_tasks()
     name = text[:-5] if text.endswith(".yaml") else text
     if os.sep not in text and "/" not in text and name in examples:
