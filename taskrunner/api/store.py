@@ -18,8 +18,8 @@ operating system the WAL is fsync'd, as the CLI's journal is
 (:data:`~taskrunner.runtime.records.SYNC_KINDS`), when a ``planned`` event of a motion is
 appended (nothing moves before what led to it is on disk) and with the run's final row
 (committed with ``synchronous=FULL``); events since the last of those may be lost then.
-An fsync per event cost 118 µs median and 4 ms at p99 on a busy shared disk
-(``benchmarks/api_record_cost.py``), against 9 µs and 66 µs without.
+An fsync per event would cost over 10x more on a busy shared disk (a bare ``INSERT``: 118 µs
+median, 4 ms p99, against 9 µs and 66 µs; ``benchmarks/api_record_cost.py``).
 
 :meth:`RunStore.mark_interrupted` (at a server's start) marks rows still ``running`` from a
 previous server as ``interrupted``: no run is lost, and none claims to run when nothing
