@@ -164,3 +164,41 @@ def test_a_run_is_paged_live_and_recorded_and_a_query_goes_past_the_fast_path(
         stored = client.get(f"/runs/{run_id}?since=2&limit=3").json()
         assert stored["events"] == page["events"] and stored["events_more"]
         assert client.get(f"/runs/{run_id}").json()["events"] == whole["events"]
+
+
+def test_a_long_live_runs_default_body_stops_changing_with_its_events_and_pages_slice():
+    from test_detail_cache import FakeClock, FakeRun
+
+    from taskrunner.api.detail import RunDetailCache
+
+    run = FakeRun()
+    cache = RunDetailCache(run, tree_period_s=3600.0, clock=FakeClock())  # type: ignore[arg-type]
+    for k in range(DEFAULT_LIMIT + 1):
+        run.events.emit("message", f"m{k}")
+    full = json.loads(cache.body())
+    assert len(full["events"]) == DEFAULT_LIMIT and full["events_more"] is True
+    builds = cache.builds
+    for k in range(2000):  # the default body shows none of these: nothing to rebuild
+        run.events.emit("message", f"later {k}")
+    assert cache.fresh()[0] is not None and cache.body() and cache.builds == builds
+    page = json.loads(cache.page(2990, 100))
+    assert [e["seq"] for e in page["events"]] == list(range(2991, 3002))
+    assert page["events_more"] is False and page["status"] == "running"
+    assert len(cache._events) == 3001  # each event encoded once, for the pages that showed it
+
+
+def test_a_server_stopping_records_its_runs_interrupted_with_exit_143(tmp_path: Path):
+    from apitest import wait_for_event
+
+    settings = make_settings(tmp_path / "state")
+    loop = GO_TWICE.replace("steps:\n", "steps:\n  - repeat:\n      times: 50\n      do:\n") \
+        .replace("  - go:", "        - go:")
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
+        run_id = client.post("/runs", json={"yaml": loop, "backend": "sim"},
+                             headers=AUTH).json()["run_id"]
+        wait_for_event(client, run_id, "planned")
+    with TestClient(headers=AUTH, app=create_app(settings)) as client:
+        run = client.get(f"/runs/{run_id}").json()
+    assert (run["status"], run["exit_code"]) == ("interrupted", 143)
+    assert run["events"][-1]["kind"] == "run_finished"
+    assert run["events"][-1]["data"]["exit_code"] == 143
