@@ -80,7 +80,7 @@ def problem_out(problem: Any) -> dict[str, Any]:
 def _answer(code: int, detail: Any, **extra: Any) -> JSONResponse:
     if isinstance(detail, str):
         detail = _capped(detail)
-    return JSONResponse({"detail": detail, **extra}, status_code=code)
+    return JSONResponse(_encodable({"detail": detail, **extra}), status_code=code)
 
 
 async def _input_error(request: Request, exc: Exception) -> JSONResponse:
@@ -140,7 +140,19 @@ async def _invalid_request(request: Request, exc: Exception) -> JSONResponse:
     if len(errors) > MAX_PROBLEMS:
         shown.append({"type": "too_many_errors", "loc": [],
                       "msg": f"and {len(errors) - MAX_PROBLEMS} more errors"})
-    return JSONResponse({"detail": shown}, status_code=422)
+    return JSONResponse(_encodable({"detail": shown}), status_code=422)
+
+
+def _encodable(value: Any) -> Any:
+    """``value`` with every lone surrogate of its text (a JSON request may hold one:
+    ``"\\ud800"``) written as its escape, so that the answer encodes as UTF-8."""
+    if isinstance(value, str):
+        return value.encode("utf-8", "backslashreplace").decode("utf-8")
+    if isinstance(value, dict):
+        return {_encodable(k): _encodable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_encodable(v) for v in value]
+    return value
 
 
 def _echo(value: Any) -> Any:
