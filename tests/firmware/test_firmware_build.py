@@ -30,6 +30,7 @@ import pytest
 import yaml
 
 from taskrunner.backends.host_firmware import firmware_source_hash
+from taskrunner.backends.servo_protocol import strip_checksum, with_checksum
 from taskrunner.resources import DATA_ROOT, user_cache_dir
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -341,7 +342,9 @@ def test_streamed_trajectory_is_followed_tick_by_tick(host_binary: Path, tmp_pat
         while sent < points:
             assert time.monotonic() < deadline, "streaming took too long"
             angles = ",".join(f"{a:.2f}" for a in angles_at((sent + 1) * TICK_MS))
-            reply = fw.command(f"TRAJ:{TICK_MS}:{angles}")
+            raw = fw.command(with_checksum(f"TRAJ:{TICK_MS}:{angles}"))
+            reply = strip_checksum(raw)
+            assert reply is not None, raw
             match = re.fullmatch(r"ok (\d+) (\d+)", reply)
             assert match, reply
             queued = int(match.group(1))
@@ -382,8 +385,12 @@ def test_http_status_move_and_shared_state(firmware: HostFirmware) -> None:
 
 def test_http_errors(firmware: HostFirmware) -> None:
     assert firmware.http_command("FOO").startswith("err 1 unknown command 'FOO'")
-    assert firmware.http_command("TRAJ:0:1,1,1,1,1,1") == (
+    assert strip_checksum(firmware.http_command(with_checksum("TRAJ:0:1,1,1,1,1,1"))) == (
         "err 2 dt_ms out of range 1..60000 (got 0)")
+    # A TRAJ point without its checksum never runs, over HTTP as over serial.
+    assert firmware.http_command("TRAJ:80:1,1,1,1,1,1").startswith("err 8 TRAJ needs a checksum")
+    assert firmware.command("TRAJ:80:1,1,1,1,1,1").startswith("err 8 TRAJ needs a checksum")
+    assert firmware.status()["queued"] == 0
 
     code, answer = firmware.post(b'{"command": "PING"}')
     assert code == 400

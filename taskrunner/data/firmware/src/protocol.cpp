@@ -79,9 +79,20 @@ std::string Protocol::handle(std::string_view line) {
   uint8_t received = 0;
   uint8_t computed = 0;
   switch (check_checksum(line, &body, &received, &computed)) {
-    case ChecksumResult::kNone:
+    case ChecksumResult::kNone: {
+      // A plain line is one typed in a terminal, except a TRAJ point: hosts stream those,
+      // always with a checksum, so a TRAJ without one lost its '*XX' on the way (a
+      // corrupted '*', a cut line) and is never run unchecked.
+      const std::string_view name = trim(line.substr(0, line.find(':')));
+      if (iequals(name, "TRAJ")) {
+        ++crc_errors_;
+        return error_reply(ErrorCode::kChecksum,
+                           "TRAJ needs a checksum: 'TRAJ:dt_ms:a1,...,a6*XX' (line refused, " +
+                               std::to_string(crc_errors_) + " so far)");
+      }
       silent_ms_ = 0;
       return run(line);
+    }
     case ChecksumResult::kOk: {
       silent_ms_ = 0;
       body = trim(body);

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../src/checksum.h"
 #include "../src/config.h"
 #include "../src/protocol.h"
 
@@ -20,12 +21,28 @@ inline std::vector<std::string> send(trs::Protocol& protocol, std::string_view b
   return replies;
 }
 
-// The single reply to one command line ("" and a test failure otherwise is up to the
-// caller: returns "<N replies>" when there is not exactly one).
-inline std::string ask(trs::Protocol& protocol, std::string_view line) {
+// The single reply to one command line, sent as written ("" and a test failure
+// otherwise is up to the caller: returns "<N replies>" when there is not exactly one).
+inline std::string ask_plain(trs::Protocol& protocol, std::string_view line) {
   std::vector<std::string> replies = send(protocol, std::string(line) + "\n");
   if (replies.size() != 1) return "<" + std::to_string(replies.size()) + " replies>";
   return replies[0];
+}
+
+// As ask_plain, except that a TRAJ line without a '*' goes out with its checksum, as
+// hosts send it (the firmware refuses a TRAJ without one), and the reply comes back with
+// its checksum checked and removed ("<bad checksum: ...>" when it is not right).
+inline std::string ask(trs::Protocol& protocol, std::string_view line) {
+  const std::string_view name = line.substr(0, line.find(':'));
+  const bool traj = name.size() == 4 && (name[0] | 0x20) == 't' && (name[1] | 0x20) == 'r' &&
+                    (name[2] | 0x20) == 'a' && (name[3] | 0x20) == 'j';
+  if (!traj || line.find('*') != std::string_view::npos) return ask_plain(protocol, line);
+  const std::string reply = ask_plain(protocol, trs::with_checksum(line));
+  const std::size_t star = reply.rfind('*');
+  if (star == std::string::npos || trs::with_checksum(reply.substr(0, star)) != reply) {
+    return "<bad checksum: " + reply + ">";
+  }
+  return reply.substr(0, star);
 }
 
 inline void tick(trs::Protocol& protocol, int n) {

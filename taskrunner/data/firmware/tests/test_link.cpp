@@ -113,6 +113,29 @@ TEST(corrupted_line_is_refused_with_err_8_and_counted) {
   CHECK(th::well_formed_reply(checked(ask(p, "PING*0"))));
 }
 
+TEST(a_traj_line_without_its_checksum_is_refused_and_nothing_moves) {
+  // Hosts stream TRAJ points with a checksum; one without it lost its '*XX' (a '*'
+  // corrupted into another byte, a cut line) and must not run unchecked.
+  Protocol p = make(0);
+  const std::string stripped = "TRAJ:80:100,90,90,90,90,90";
+  const std::string reply = th::ask_plain(p, stripped);
+  CHECK_EQ(reply, "err 8 TRAJ needs a checksum: 'TRAJ:dt_ms:a1,...,a6*XX' (line refused, 1 so far)");
+  CHECK(th::well_formed_reply(reply));
+  CHECK_EQ(th::ask_plain(p, " traj : 80:100,90,90,90,90,90").substr(0, 6), "err 8 ");
+  CHECK_EQ(th::ask_plain(p, "TRAJ").substr(0, 6), "err 8 ");
+  std::string status = th::ask_plain(p, "STATUS");
+  CHECK(contains(status, "\"mode\":\"idle\""));  // nothing was queued
+  CHECK(contains(status, "\"queued\":0"));
+  CHECK(contains(status, "\"crc_errors\":3"));
+  // The same point with its checksum runs; over HTTP the rule is the same.
+  CHECK_EQ(checked(th::ask_plain(p, trs::with_checksum(stripped))), "ok 1 80");
+  const trs::HttpResponse http = p.http_command("{\"cmd\": \"" + stripped + "\"}");
+  CHECK(contains(http.body, "err 8 TRAJ needs a checksum"));
+  status = th::ask_plain(p, "STATUS");
+  CHECK(contains(status, "\"queued\":1"));  // the checked point only (no tick since)
+  CHECK(contains(status, "\"crc_errors\":4"));
+}
+
 TEST(checksums_work_over_http_too) {
   Protocol p = make(0);
   const trs::HttpResponse ok = p.http_command("{\"cmd\": \"" + trs::with_checksum("PING") + "\"}");
