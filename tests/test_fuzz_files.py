@@ -313,6 +313,29 @@ def _path_task(target: str) -> Maker:
     return lambda root: (["check", target], Path(target))
 
 
+def _mesh_object(file: str) -> Callable[[Path], str]:
+    """The shipped task with a mesh object whose ``file:`` is ``file``."""
+    return _task_with("objects:\n", "objects:\n  - {name: part, shape: mesh, file: "
+                      f"{file}, pose: {{xyz: [0.1, 0.1, 0.8]}}}}\n")
+
+
+def _mesh_loop(root: Path) -> str:
+    """A mesh path through a loop of two symlinks in the tasks folder."""
+    os.symlink(root / "tasks" / "la", root / "tasks" / "lb")
+    os.symlink(root / "tasks" / "lb", root / "tasks" / "la")
+    return _mesh_object("la/part.stl")(root)
+
+
+def _srdf_case(old: str, new: str) -> Maker:
+    def make(root: Path) -> tuple[list[str], Path]:
+        srdf = root / "robots" / "servo_arm" / "config" / "servo_arm.srdf"
+        text = srdf.read_text()
+        assert old in text, old
+        srdf.write_text(text.replace(old, new, 1))
+        return ["check", str(root / TASK)], srdf
+    return make
+
+
 def _manifest_case(urdf_maker: Callable[[Path], Path]) -> Maker:
     def make(root: Path) -> tuple[list[str], Path]:
         folder = root / "robots" / "servo_arm"
@@ -412,6 +435,36 @@ HOSTILE: dict[str, Maker] = {
     "task: the task is a symlink loop": _loop_task,
     "task: the task is /proc/self/environ": _path_task("/proc/self/environ"),
     "task: the task is /dev/zero": _path_task("/dev/zero"),
+    # ---- names and numbers from a task file (issue 29)
+    "task: mesh name of 300 bytes": task_case(_mesh_object("m" * 300 + ".stl")),
+    "task: mesh path of 5000 bytes": task_case(_mesh_object("d/" * 2500 + "m.stl")),
+    "task: mesh path is a symlink loop": task_case(_mesh_loop),
+    "task: mesh path with NUL": task_case(_mesh_object('"a\\0b.stl"')),
+    "task: mesh path with a lone surrogate": task_case(_mesh_object('"a\\udcffb.stl"')),
+    "task: cell path with NUL": task_case(_task_with(
+        "../robots/cells/servo_arm_table.yaml", '"../robots/cells/servo\\0arm_table.yaml"')),
+    "task: cell name of 300 bytes": task_case(_task_with(
+        "../robots/cells/servo_arm_table.yaml", "c" * 300 + ".yaml")),
+    "task: boolean in a pose": task_case(_pose_task("{xyz: [0.19, 0.04, true]}")),
+    "task: boolean size": task_case(_task_with("size: [0.025, 0.025, 0.025]",
+                                               "size: [0.025, false, 0.025]")),
+    "task: boolean joint value": task_case(_task_with(
+        "  - go: {group: arm, to: home}", '  - go: {group: arm, joints: {"Revolute 1": true}}')),
+    "task: NaN joint value": task_case(_task_with(
+        "  - go: {group: arm, to: home}", '  - go: {group: arm, joints: {"Revolute 1": .nan}}')),
+    "task: repeat 2**63 times": task_case(_task_with(
+        "  - go: {group: arm, to: home}",
+        "  - repeat: {times: 9223372036854775808, do: [{go: {group: arm, to: home}}]}")),
+    "task: wait true seconds": task_case(_task_with(
+        "  - go: {group: arm, to: home}", "  - wait: {seconds: true}")),
+    "task: wait 1e300 seconds": task_case(_task_with(
+        "  - go: {group: arm, to: home}", "  - wait: {seconds: 1e300}")),
+    "task: velocity scaling true": task_case(_task_with(
+        "  - go: {group: arm, to: home}", "  - go: {group: arm, to: home, velocity_scaling: true}")),
+    "srdf: group_state of nan": _srdf_case('<joint name="Revolute 1" value="0.8"/>',
+                                           '<joint name="Revolute 1" value="nan"/>'),
+    "srdf: group_state of -inf": _srdf_case('<joint name="Revolute 1" value="0.8"/>',
+                                            '<joint name="Revolute 1" value="-inf"/>'),
     # ---- cell files (run-task info)
     "cell: alias bomb": cell_case(alias_bomb()),
     "cell: UTF-16": cell_case(lambda root: utf16(shipped(root, CELL))),
@@ -424,6 +477,12 @@ HOSTILE: dict[str, Maker] = {
     "cell: robot is a symlink loop": cell_case(
         lambda root: (os.symlink(root / "robots" / "cells" / "l", root / "robots" / "cells" / "l")
                       or _cell_with("robot: servo_arm", "robot: l")(root))),
+    "cell: mesh name of 300 bytes": cell_case(_cell_with(
+        "    shape: box\n    size: [0.10, 0.10, 0.01]",
+        "    shape: mesh\n    file: " + "m" * 300 + ".stl")),
+    "cell: boolean base": cell_case(_cell_with("xyz: [0.0, 0.0, 0.75]", "xyz: [0, true, 0.75]")),
+    "cell: boolean named pose value": cell_case(_cell_with('"Revolute 1": 1.5708',
+                                                           '"Revolute 1": true')),
     # ---- robot files (run-task info)
     "urdf: negative box size": urdf_case('<collision><geometry><box size="0.1 -0.1 0.1"/>'
                                          "</geometry></collision>"),
@@ -465,6 +524,24 @@ def test_hostile_file_is_refused_cleanly(data, tmp_path, case):
     argv, named = HOSTILE[case](root)
     outcome = run_cli(argv, root)
     assert_clean(outcome, named, named.name)
+
+
+# The same names through `run-task run`, whose early worker reads the task's cell before
+# the loader does (runtime/prestart.py): refused as `check` refuses them, nothing moves.
+RUN_CASES = ("task: cell path with NUL", "task: cell is a symlink loop",
+             "task: cell name of 300 bytes", "task: mesh name of 300 bytes",
+             "task: mesh path is a symlink loop", "task: boolean in a pose",
+             "task: repeat 2**63 times", "srdf: group_state of nan")
+
+
+@pytest.mark.parametrize("case", RUN_CASES, ids=RUN_CASES)
+def test_hostile_file_is_refused_cleanly_by_run(data, tmp_path, case):
+    root = fresh_copy(data, tmp_path / "data")
+    argv, named = HOSTILE[case](root)
+    task = argv[1]
+    outcome = run_cli(["run", task, "--backend", "mock"], root)
+    assert_clean(outcome, named, named.name)
+    assert "nothing moved" in outcome.output, outcome.describe()
 
 
 # ------------------------------------------------------------------------- mutations

@@ -62,6 +62,7 @@ from taskrunner.taught import apply_taught
 from taskrunner.textfile import file_problem, path_problem, resolve_path
 from taskrunner.validation import (
     Metres,
+    Number,
     PositiveMetres,
     Radians,
     Scale,
@@ -101,7 +102,7 @@ class RobotSpec(_Strict):
     robot: str = Field(min_length=1)
     prefix: str = ""
     base: PoseSpec = PoseSpec()
-    poses: dict[str, dict[str, dict[str, float]]] = {}
+    poses: dict[str, dict[str, dict[str, Number]]] = {}
     collision: Literal["exact", "convex", "auto"] | None = None
     # How the mujoco backend holds a grasped object: one mode for the robot's arms, or
     # per arm group / end effector (the robot's own names).
