@@ -51,7 +51,7 @@ from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import CheckExpectation, StepTimer
-from taskrunner.tree.grasps import allow_lift_off, end_lift_off, tool_grasp
+from taskrunner.tree.grasps import allow_lift_off, end_lift_off, end_lift_offs_left, tool_grasp
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
@@ -280,7 +280,12 @@ def _go_goal(step: GoStep):  # type: ignore[no-untyped-def]
         target = step.pose
         assert target is not None
         goal = PoseGoal(target.to_pose(), link=target.link, position_only=_position_only(target))
-    return lambda ctx: goal
+
+    def go(ctx: TaskContext) -> Goal:
+        end_lift_offs_left(ctx.scene)  # an attached object clear of its support: no allowance
+        return goal
+
+    return go
 
 
 def _move(step: MoveStep, ctx: TaskContext) -> Behaviour:
@@ -291,6 +296,7 @@ def _move(step: MoveStep, ctx: TaskContext) -> Behaviour:
     name, where = step.label, _where(step)
 
     def target(c: TaskContext) -> Pose:
+        end_lift_offs_left(c.scene)  # as a go's goal does
         if step.pose is not None:
             return step.pose.to_pose()
         assert step.by is not None

@@ -43,7 +43,7 @@ from taskrunner.types import Pose
 
 __all__ = [
     "GRASP_DEPTH", "GRASP_DEPTH_FRACTION", "LIFT_OFF", "PLACE_CLEARANCE", "allow_lift_off",
-    "backed_off", "end_lift_off", "grasp_candidates",
+    "backed_off", "end_lift_off", "end_lift_offs_left", "grasp_candidates",
     "half_height", "hand_links", "handover_grasps", "nearest", "object_extent", "place_target",
     "tool_grasp",
     "release_poses", "releases_with_grasp", "side_grasps", "symmetries", "top_grasps",
@@ -365,6 +365,30 @@ def end_lift_off(scene: Scene, obj: str) -> None:
         if reason == LIFT_OFF and obj in pair:
             a, b = sorted(pair)
             scene.disallow_collision(a, b)
+
+
+def end_lift_offs_left(scene: Scene) -> list[tuple[str, str]]:
+    """Take back every lift-off allowance (see :func:`allow_lift_off`) whose two bodies no
+    longer touch: the object has left what it rested on, and from now on touching it again
+    is a collision. The pairs ended.
+
+    Called at the start of every motion (a ``go``'s or ``move``'s goal, the first goal of
+    ``pick``, ``place`` and ``handoff``), in ``run-task check`` and in the run alike, so
+    that an ``attach`` step's allowance lasts while the object still touches its support
+    (the motion that lifts it starts touching) and ends with the first motion that starts
+    clear of it, as a ``pick``'s ends after its retreat."""
+    pending = [tuple(sorted(pair)) for pair, reason in scene.allowed_collisions().items()
+               if reason == LIFT_OFF]
+    if not pending:
+        return []
+    probe = scene.copy()  # the pairs asked without the allowance, the scene left as it is
+    for a, b in pending:
+        probe.disallow_collision(a, b)
+    touching = {frozenset((k.a, k.b)) for k in probe.collisions()}
+    ended = [(a, b) for a, b in pending if frozenset((a, b)) not in touching]
+    for a, b in ended:
+        scene.disallow_collision(a, b)
+    return ended
 
 
 def tool_grasp(ctx: TaskContext, arm_name: str, pose: Pose, link: str | None) -> Pose:

@@ -24,7 +24,9 @@ are chosen so that the straight move from them can be followed
 
 Contacts allowed, and only while they are real: the fingers and palm with the object from
 the approach until the fingers have backed off it; the object with what it rests on while
-it is lifted off (the pairs found touching when it is attached).
+it is lifted off (the pairs found touching when it is attached: a pick ends them after its
+retreat; an ``attach`` step's end at the first motion that starts with the object clear,
+:func:`~taskrunner.tree.grasps.end_lift_offs_left`).
 """
 
 from __future__ import annotations
@@ -52,6 +54,7 @@ from taskrunner.tree.grasps import (
     allow_lift_off,
     backed_off,
     end_lift_off,
+    end_lift_offs_left,
     grasp_candidates,
     half_height,
     hand_links,
@@ -179,6 +182,7 @@ def pick(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj: 
     grasps: list[pin.SE3] = []
 
     def pre_grasps(c: TaskContext) -> StagedGoals:
+        end_lift_offs_left(c.scene)  # an object attached before and lifted off since
         grasps[:] = grasp_candidates(c, obj, grasp)
         # Only grasps whose closed fingers meet the object (before the arm moves).
         grasps[:] = touching_grasps(c, arm_name, obj, grasps)
@@ -245,6 +249,7 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
         return max(0.0, lowest - bottom) if short else 0.0
 
     def pre_places(c: TaskContext) -> StagedGoals:
+        end_lift_offs_left(c.scene)
         held = c.scene.object(obj)
         if held.attached_to != arm.holder:
             raise SceneError(f"object {obj!r} is not held by arm {arm_name!r}")
@@ -265,6 +270,7 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
 
     def detach(c: TaskContext) -> None:
         c.scene.detach_object(obj)
+        end_lift_off(c.scene, obj)  # as the detach step does: set down, it rests anew
         _allow_hand(obj, arm_name, True)(c)
 
     def target_free(c: TaskContext) -> None:
@@ -304,6 +310,7 @@ def handoff(ctx: TaskContext, name: str, location: str | None, obj: str, giver: 
     meeting: list[pin.SE3] = []  # the object's requested world pose at the hand-over
 
     def presentation(c: TaskContext) -> Goal:
+        end_lift_offs_left(c.scene)
         held = c.scene.object(obj)
         if isinstance(at, str):
             model = c.scene.robot
