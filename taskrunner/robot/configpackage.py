@@ -165,7 +165,7 @@ def _ros2(folder: Path, packages: PackageMap) -> ConfigFiles:
     urdf_args: dict[str, str] = {}
     srdf: Path | None = None
     layout = "ROS 2 config package without .setup_assistant"
-    modified = folder / "config" / f"{name}.urdf.xacro"
+    modified = _modified_urdf(folder, name)
     if modified.is_file():
         urdf = modified
     if marker.is_file():
@@ -204,6 +204,22 @@ def _ros2(folder: Path, packages: PackageMap) -> ConfigFiles:
     if srdf is None:
         srdf = _pick(_srdf_candidates(folder), name, "SRDF", notes)
     return ConfigFiles(name, layout, urdf, srdf, urdf_args, dict(urdf_args), notes=notes)
+
+
+def _modified_urdf(folder: Path, name: str) -> Path:
+    """The Setup Assistant's ``config/<robot>.urdf.xacro`` (the URDF with its
+    ``ros2_control`` tags), which MoveItConfigsBuilder prefers to the ``.setup_assistant``
+    URDF entry. ``<robot>`` is the URDF's robot name: the package's name without
+    ``_moveit_config`` where that file exists, else the stem of the one ``config/*.srdf``
+    that has a ``config/<stem>.urdf.xacro`` beside it (moveit_resources names its package
+    ``moveit_resources_panda_moveit_config`` and its files ``config/panda.*``)."""
+    modified = folder / "config" / f"{name}.urdf.xacro"
+    if modified.is_file():
+        return modified
+    paired = [folder / "config" / f"{srdf.name.removesuffix('.srdf')}.urdf.xacro"
+              for srdf in _globs(folder, ("config/*.srdf",))]
+    paired = [p for p in paired if p.is_file()]
+    return paired[0] if len(paired) == 1 else modified
 
 
 def _entry_path(entry: dict[str, object], key: str, marker: Path, folder: Path,

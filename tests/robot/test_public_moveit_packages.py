@@ -26,9 +26,13 @@ assert _SHARE is not None, "example-robot-data (a dependency) is not installed"
 MESHES = _SHARE / "robots" / "panda_description" / "meshes"
 ARM = tuple(f"panda_joint{i}" for i in range(1, 8))
 READY = dict(zip(ARM, (0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785), strict=True))
-LAYOUTS = {"ros2": ("ros2_ws", "ROS 2 config package (.setup_assistant)", "panda.urdf"),
+# The URDF read: ROS 2, the Setup Assistant's config/panda.urdf.xacro (what the package's
+# launch files and MoveItConfigsBuilder read; it includes the description's
+# urdf/panda.urdf.xacro); ROS 1, what planning_context.launch runs xacro on.
+LAYOUTS = {"ros2": ("ros2_ws", "ROS 2 config package (.setup_assistant)",
+                    "panda_moveit_config/config/panda.urdf.xacro"),
            "ros1": ("ros1_ws", "ROS 1 config package (launch/planning_context.launch)",
-                    "panda_arm_hand.urdf.xacro")}
+                    "panda_description/urdf/panda_arm_hand.urdf.xacro")}
 
 
 @pytest.fixture(autouse=True)
@@ -74,7 +78,7 @@ def test_run_task_info_loads_the_clone_with_no_manifest_and_no_flag(tmp_path, ca
     out = capsys.readouterr().out
     _, loaded_as, urdf = LAYOUTS[layout]
     assert f"loaded as: {loaded_as}" in out
-    assert f"urdf: {config.parent / 'panda_description' / 'urdf' / urdf}" in out
+    assert f"urdf: {config.parent / urdf}" in out
     assert "panda_arm: 7 joints, tip panda_link8; poses: extended, ready, transport" in out
     assert "hand: group hand on panda_link8 (arm panda_arm)" in out
 
@@ -107,3 +111,16 @@ def test_a_clone_without_its_meshes_is_refused_naming_the_folders_searched(tmp_p
     assert "mesh file(s) of robot 'moveit_resources_panda' cannot be found" in message
     assert f"looked at {description / 'meshes' / 'collision' / 'link0.stl'}" in message
     assert "--allow-missing-meshes" in message
+
+
+def test_the_setup_assistant_urdf_entry_is_read_through_xacro_as_moveit_reads_it(tmp_path):
+    """Without config/panda.urdf.xacro, MoveItConfigsBuilder reads the .setup_assistant's
+    URDF entry, urdf/panda.urdf, through xacro whatever its extension: its meshes are
+    'file://$(find moveit_resources_panda_description)/meshes/...', found here too."""
+    config = clone(tmp_path, "ros2")
+    (config / "config" / "panda.urdf.xacro").unlink()
+    model = load_robot(config)
+    files = dict(model.instances[0].files)
+    assert files["urdf"] == config.parent / "panda_description" / "urdf" / "panda.urdf"
+    assert model.collision_model.ngeoms == 11
+    assert model.group("panda_arm").joint_names == ARM
