@@ -4,8 +4,8 @@ A run's events fan out from one buffer per run, a :class:`RunFeed`, on the event
 
 * The run's thread does O(1) work per event whatever the number of streams: the feed is
   the run's only stream subscriber, and it schedules one wake-up on the loop per burst
-  of events (one ``call_soon_threadsafe``, none while one is pending). It never waits
-  on a client.
+  of events (one ``call_soon_threadsafe``, none while one is pending; the streams are
+  woken at most every ``batch_s``). It never waits on a client.
 * The loop encodes each event once (SSE bytes), into the feed's list; every stream of
   the run sends from that list by index (no copy of an event per client).
 * A stream sends what it has not sent in one write. If more than ``max_lag`` events
@@ -61,11 +61,15 @@ class StreamOptions:
             disconnected.
         keepalive_s: an idle stream sends a comment this often (s), so that proxies
             keep it open.
+        batch_s: streams are woken at most this often (s); events that come faster
+            reach each client together, in one write (a run of fast motions emits
+            hundreds a second). 0: at every event.
     """
 
     max_lag: int = 1000
     send_timeout_s: float = 10.0
     keepalive_s: float = 15.0
+    batch_s: float = 0.025
 
     def __post_init__(self) -> None:
         if isinstance(self.max_lag, bool) or not isinstance(self.max_lag, int) \
@@ -73,9 +77,13 @@ class StreamOptions:
             raise ValueError(f"'max_lag' must be an integer >= 1 (got {self.max_lag!r})")
         for name in ("send_timeout_s", "keepalive_s"):
             value = getattr(self, name)
-            if not isinstance(value, int | float) or not value > 0:
+            if isinstance(value, bool) or not isinstance(value, int | float) or not value > 0:
                 raise ValueError(f"'{name}' must be a positive number of seconds "
                                  f"(got {value!r})")
+        if isinstance(self.batch_s, bool) or not isinstance(self.batch_s, int | float) \
+                or not self.batch_s >= 0:
+            raise ValueError(f"'batch_s' must be a number of seconds >= 0 "
+                             f"(got {self.batch_s!r})")
 
 
 def encode_event(event: RunEvent) -> bytes:
@@ -124,6 +132,7 @@ class RunFeed:
         self._events, self._done, self._options, self._loop = events, done, options, loop
         self._streams: set[_Stream] = set()
         self._pending = False
+        self._woken = -float("inf")
         self._tick: asyncio.TimerHandle | None = None
 
     # ----------------------------------------------------------------- run's thread
@@ -134,13 +143,24 @@ class RunFeed:
         self._pending = True
         self.wakes += 1
         try:
-            self._loop.call_soon_threadsafe(self._wake)
+            self._loop.call_soon_threadsafe(self._wake_soon)
         except RuntimeError:  # the loop has closed: no stream is left to wake
             pass
 
     # ----------------------------------------------------------------- loop
+    def _wake_soon(self) -> None:
+        """Wake the streams now, or at ``batch_s`` after the last wake-up: events that
+        come faster go out together (one write per stream for all of them)."""
+        due = self._woken + self._options.batch_s
+        now = self._loop.time()
+        if now >= due:
+            self._wake()
+        else:
+            self._loop.call_at(due, self._wake)
+
     def _wake(self) -> None:
         self._pending = False  # before reading: an event appended after it wakes again
+        self._woken = self._loop.time()
         self._catch_up()
         changed, self.changed = self.changed, asyncio.Event()
         changed.set()
