@@ -1,7 +1,8 @@
 """Load cached numba kernels without numba's whole compiler set-up (planning workers).
 
 A planning worker verifies every path it returns with compiled kernels
-(:mod:`taskrunner.scene.sweep`, :mod:`taskrunner.scene.screen`) that numba keeps in its
+(:mod:`taskrunner.scene.sweep`, :mod:`taskrunner.scene.screen`, on the forward kinematics
+of :mod:`taskrunner.collision.frames`) that numba keeps in its
 on-disk cache. Before numba loads the first cached kernel of a process it refreshes its
 CPU target: it imports and registers the typing and lowering implementations of
 everything numba can compile (about 60 modules: unicode strings, typed containers,

@@ -39,10 +39,12 @@ import coal
 import numba
 import numpy as np
 
+from taskrunner.collision import frames as collision_frames
+from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, compose, inline, jit, joint_frames
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
-from taskrunner.scene.sweep import PathVerifier, _inline, _jit, _joint_frames
+from taskrunner.scene.sweep import PathVerifier
 
 __all__ = ["CLEAR", "StateScreen", "warm_kernels"]
 
@@ -62,13 +64,9 @@ _G_COLUMNS = 23
 # Per-geometry int rows (``gi``): the joint, whether it has a box, whether the box is the
 # geometry itself (a box shape).
 _I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
-# Work rows: the joints' world frames (rotation, origin), then per geometry its sphere
-# centre (columns 0-2) and the state its box was last placed at (column 3), then per
-# geometry its box in the world (rotation, centre).
-_W_ROT, _W_ORIGIN = 0, 9
-_W_COLUMNS = 15  # the joints' rows also hold their axes in the world (columns 12-14)
-# The joints' rows are the verifier's (its kinematics writes them: :func:`_joint_frames`).
-assert sweep._FR_ROT == _W_ROT and sweep._FR_ORIGIN == _W_ORIGIN and sweep._FR_AXIS + 3 <= _W_COLUMNS
+# Work rows: the joints' frame rows (:func:`taskrunner.collision.frames.joint_frames`), then
+# per geometry its sphere centre (columns 0-2) and the state its box was last placed at
+# (column 3), then per geometry its box in the world (a frame row: rotation, centre).
 
 
 _INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
@@ -142,7 +140,7 @@ class StateScreen:
         self.checker: CollisionChecker = verifier._checker
         self.supported = bool(verifier._tree.supported)
         kin = verifier._kinematics
-        self._tree_i, self._tree_f = kin.tree_i, kin.tree_f
+        self._joints = kin.joints
         geo_i, geo_f = verifier._geo_i, verifier._geo_f
         n = len(geo_i)
         objects = verifier._geometry.geometryObjects
@@ -172,13 +170,13 @@ class StateScreen:
         self._moving = np.ascontiguousarray(np.flatnonzero(self._gi[:, 0] != 0), dtype=np.int64)
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
-        nj, ng = len(self._tree_i), len(self._gi)
-        work = np.zeros((nj + 2 * ng, _W_COLUMNS))
+        nj, ng = len(self._joints), len(self._gi)
+        work = np.zeros((nj + 2 * ng, FRAME_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
 
     def _tail(self, work: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, ...]:
         """The kernels' arguments after the states: this screen's arrays and the work ones."""
-        return (self._tree_i, self._tree_f, self._gi, self._geo, self._pairs, self._reach2,
+        return (self._joints, self._gi, self._geo, self._pairs, self._reach2,
                 self._moving, work, found)
 
     def scanner(self) -> Callable[[np.ndarray], int]:
@@ -365,7 +363,8 @@ def _scan_both(screen: StateScreen, states: np.ndarray) -> None:
 def _warm_mark() -> Path:
     """The file that marks the kernels of these sources as compiled on this machine."""
     digest = hashlib.sha256()
-    for module in (__file__, sweep.__file__):  # numba caches per source file and content
+    # numba caches per source file and content
+    for module in (__file__, sweep.__file__, collision_frames.__file__):
         digest.update(str(Path(module).resolve()).encode())
         digest.update(Path(module).read_bytes())
     digest.update(f"{numba.__version__} {sys.version}".encode())
@@ -386,7 +385,7 @@ def _compile_alone() -> None:
     _scan_both(scene.state_screen(), states)
 
 
-@_inline
+@inline
 def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s box in the world at the current state (``s``: its stamp)."""
     ng = (work.shape[0] - nj) // 2
@@ -394,25 +393,16 @@ def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
     if placed == s or (jid == 0 and placed >= 0.0):  # fixed: placed once per scan
         return
     work[nj + g, 3] = s
-    row = nj + ng + g
-    for a in range(3):
-        origin = work[jid, _W_ORIGIN + a]
-        for b in range(3):
-            origin += work[jid, 3 * a + b] * geo[g, _G_BOX + b]
-            total = 0.0
-            for c in range(3):
-                total += work[jid, 3 * a + c] * geo[g, _G_ROT + 3 * c + b]
-            work[row, 3 * a + b] = total
-        work[row, _W_ORIGIN + a] = origin
+    compose(work, nj + ng + g, jid, geo[g, _G_ROT:_G_ROT + 9], geo[g, _G_BOX:_G_BOX + 3])
 
 
-@_inline
+@inline
 def _sphere_box(cx, cy, cz, radius, g, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     """Distance from a sphere to geometry ``g``'s (placed) box; negative: may overlap."""
     row = nj + ng + g
-    dx = cx - work[row, _W_ORIGIN]
-    dy = cy - work[row, _W_ORIGIN + 1]
-    dz = cz - work[row, _W_ORIGIN + 2]
+    dx = cx - work[row, ORIGIN]
+    dy = cy - work[row, ORIGIN + 1]
+    dz = cz - work[row, ORIGIN + 2]
     outside = 0.0
     for b in range(3):
         local = work[row, b] * dx + work[row, 3 + b] * dy + work[row, 6 + b] * dz
@@ -422,7 +412,7 @@ def _sphere_box(cx, cy, cz, radius, g, nj, ng, geo, work):  # type: ignore[no-un
     return math.sqrt(outside) - radius
 
 
-@_inline
+@inline
 def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     """The largest gap between the (placed) boxes' projections on their face normals."""
     ra, rb = nj + ng + a, nj + ng + b
@@ -433,9 +423,9 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
             ux = work[owner, axis]
             uy = work[owner, 3 + axis]
             uz = work[owner, 6 + axis]
-            gap = abs((work[rb, _W_ORIGIN] - work[ra, _W_ORIGIN]) * ux
-                      + (work[rb, _W_ORIGIN + 1] - work[ra, _W_ORIGIN + 1]) * uy
-                      + (work[rb, _W_ORIGIN + 2] - work[ra, _W_ORIGIN + 2]) * uz)
+            gap = abs((work[rb, ORIGIN] - work[ra, ORIGIN]) * ux
+                      + (work[rb, ORIGIN + 1] - work[ra, ORIGIN + 1]) * uy
+                      + (work[rb, ORIGIN + 2] - work[ra, ORIGIN + 2]) * uz)
             for j in range(3):
                 gap -= geo[a, _G_HALF + j] * abs(work[ra, j] * ux + work[ra, 3 + j] * uy
                                                  + work[ra, 6 + j] * uz)
@@ -446,7 +436,7 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     return best
 
 
-@_inline
+@inline
 def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     """No geometry box placed yet; the fixed geometries' sphere centres placed."""
     for g in range(ng):
@@ -456,16 +446,16 @@ def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
                 work[nj + g, a] = geo[g, a]
 
 
-@_inline
+@inline
 def _inner_centre(g, jid, geo, work):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed)."""
     x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
-    return (work[jid, _W_ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
-            work[jid, _W_ORIGIN + 1] + work[jid, 3] * x + work[jid, 4] * y + work[jid, 5] * z,
-            work[jid, _W_ORIGIN + 2] + work[jid, 6] * x + work[jid, 7] * y + work[jid, 8] * z)
+    return (work[jid, ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
+            work[jid, ORIGIN + 1] + work[jid, 3] * x + work[jid, 4] * y + work[jid, 5] * z,
+            work[jid, ORIGIN + 2] + work[jid, 6] * x + work[jid, 7] * y + work[jid, 8] * z)
 
 
-@_inline
+@inline
 def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     """True when geometries ``a`` and ``b`` surely overlap (by more than
     :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
@@ -489,20 +479,20 @@ def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     return False
 
 
-@_jit
-def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
+@jit
+def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
     since :func:`_reset`. Compiled once, called by both scans (inlined into each, the
     kernels took twice as long to compile: 11 s of CPU on a fresh machine)."""
-    nj = tree_i.shape[0]
+    nj = joints.shape[0]
     ng = gi.shape[0]
-    _joint_frames(q, tree_i, tree_f, work)
+    joint_frames(q, joints, work)
     for m in range(moving.shape[0]):
         g = moving[m]
         jid = gi[g, 0]
         for a in range(3):
-            work[nj + g, a] = (work[jid, _W_ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
+            work[nj + g, a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
                                + work[jid, 3 * a + 1] * geo[g, 1]
                                + work[jid, 3 * a + 2] * geo[g, 2])
     count = 0
@@ -532,22 +522,22 @@ def _uncleared(q, stamp, tree_i, tree_f, gi, geo, pairs, reach2, moving, work, f
     return count
 
 
-@_jit
-def _first_uncleared(states, begin, tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
+@jit
+def _first_uncleared(states, begin, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """From row ``begin`` of ``states`` on, the first state at which some pairs are not
     cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
     every state clears every pair. A state that is not finite clears nothing."""
-    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
+    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, states.shape[0]):
-        count = _uncleared(states[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work, found)
+        count = _uncleared(states[s], float(s), joints, gi, geo, pairs, reach2, moving, work, found)
         if count != 0:
             return s, count
     return -1, 0
 
 
-@_jit
-def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, tree_i, tree_f,  # type: ignore[no-untyped-def]
-                             gi, geo, pairs, reach2, moving, work, found):
+@jit
+def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, joints, gi,  # type: ignore[no-untyped-def]
+                             geo, pairs, reach2, moving, work, found):
     """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
     values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
     row ``s`` (``begin <= s < steps``) is written ``a + f (b - a)`` there, ``f`` the
@@ -569,12 +559,12 @@ def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution,
         if steps >= table.shape[0] or steps > rows.shape[0] or table[steps, 0] != 1.0:
             return -2, 0, steps
         fractions = table[steps]
-    _reset(tree_i.shape[0], gi.shape[0], gi, geo, work)
+    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, steps):
         f = fractions[s]
         for i in range(n):
             rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), tree_i, tree_f, gi, geo, pairs, reach2, moving, work,
+        count = _uncleared(rows[s], float(s), joints, gi, geo, pairs, reach2, moving, work,
                            found)
         if count != 0:
             return s, count, steps

@@ -71,7 +71,6 @@ around a position summed more than the motion between them, the pair cannot touc
 from __future__ import annotations
 
 import math
-import os
 import threading
 import time
 import weakref
@@ -81,21 +80,10 @@ import coal
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.resources import user_cache_dir
+from taskrunner.collision.frames import AXIS, ORIGIN, ROTATION, compose, inline, jit, joint_frames
+from taskrunner.collision.tree import KinematicTree
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
-
-if not os.environ.get("NUMBA_CACHE_DIR"):
-    # Before numba's import: an installed package's own folder may be read-only.
-    os.environ["NUMBA_CACHE_DIR"] = str(user_cache_dir() / "numba")
-# Plain compiler messages: with colorama installed, numba's colour set-up registers an exit
-# handler that writes a terminal reset (ESC[0m) to stdout after the command's own output.
-os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
-
-import numba
-
-if not numba.config.CACHE_DIR:  # type: ignore[attr-defined]  # numba was imported first
-    numba.config.CACHE_DIR = os.environ["NUMBA_CACHE_DIR"]  # type: ignore[attr-defined]
 
 __all__ = ["CHEAP_FROM", "EXACT_FROM", "GAIN", "PathVerification", "PathVerifier", "lever_arms"]
 
@@ -113,7 +101,6 @@ _CLOSE = 0.1  # a step placed within this fraction short of its bound is close e
 # schedule (inf: done).
 _HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _UMIN, _UPENDING = range(8)
 _COLUMNS = 8
-_REVOLUTE, _PRISMATIC = 1, 2
 CHEAP_FROM = 0.01  # m: a pair whose cheap lower bound is at least this takes it, not coal's
 # m: below CHEAP_FROM, a pair of boxes and convex hulls takes the bound from their support
 # functions (:func:`_support_bound`) if it is at least this; coal's distance otherwise.
@@ -267,7 +254,7 @@ class PathVerifier:
         kin = self._kinematics
         frames = kin.frames(states[0])
         _segment_bounds(cumulative, self._geo_f, self._pair_i, self._pair_levers, frames,
-                        kin.tree_i.shape[0], self._tree.supported, out)
+                        kin.joints.shape[0], self._tree.supported, out)
         return out
 
     def lower_bounds(self, q: np.ndarray) -> np.ndarray:
@@ -279,7 +266,7 @@ class PathVerifier:
             return out
         kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
-        _lower_bounds(self._pair_i, self._geo_i, self._geo_f, frames, kin.tree_i.shape[0], out)
+        _lower_bounds(self._pair_i, self._geo_i, self._geo_f, frames, kin.joints.shape[0], out)
         return out
 
     def support_bounds(self, q: np.ndarray) -> np.ndarray:
@@ -293,7 +280,7 @@ class PathVerifier:
         kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
         _support_bounds(self._pair_i, self._geo_i, self._geo_f, frames, self._points,
-                        kin.tree_i.shape[0], out)
+                        kin.joints.shape[0], out)
         return out
 
     def verify(self, states: np.ndarray) -> PathVerification:
@@ -324,7 +311,7 @@ class PathVerifier:
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             kin = self._kinematics
-            walked = (kin.tree_i, kin.tree_f, self._geo_i, self._geo_f, self._points,
+            walked = (kin.joints, self._geo_i, self._geo_f, self._points,
                       self._pair_i, self._unit_i, self._unit_levers, self._members,
                       self._unit_from, self._unit_of, states, cumulative, frames, walk,
                       schedule, picked, selected, distances, q, settings)
@@ -363,8 +350,6 @@ class PathVerifier:
 
 
 # Columns of the packed arrays the kernels read (one row per joint, geometry or pair).
-_TI_PARENT, _TI_KIND, _TI_STATE = range(3)                    # tree_i (n_joints, 3)
-_TF_ROT, _TF_TRANS, _TF_AXIS = 0, 9, 12                       # tree_f (n_joints, 15)
 # geo_i (n_geometries, 5): joint, has a bounding box, shape (_SHAPE_*), its first vertex
 # in the verifier's points and their count (a hull).
 _GI_JOINT, _GI_BOX, _GI_SHAPE, _GI_FROM, _GI_COUNT = range(5)
@@ -376,9 +361,10 @@ _GF_COLUMNS = 23                                              # geo_f (n_geometr
 # pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
 # such joint (deepest first): its state index, code, the geometry it moves, its joint id.
 _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
-# frames (n_joints + n_geometries, 18): a joint's world rotation, origin and axis; a
-# geometry's world rotation, origin, bounding sphere centre and bounding box centre.
-_FR_ROT, _FR_ORIGIN, _FR_AXIS, _FR_CENTRE, _FR_BOX = 0, 9, 12, 12, 15
+# frames (n_joints + n_geometries, 19): a joint's frame row (world rotation, origin and
+# axis: :mod:`taskrunner.collision.frames`); a geometry's world rotation and origin, then
+# its bounding sphere centre and bounding box centre.
+_FR_CENTRE, _FR_BOX = 12, 15
 # The walk places a geometry only when a pair of it is measured: column _FR_PLACED of its
 # row holds the count of compiled states when it was placed (inf: a world object's, fixed).
 _FR_PLACED = 18
@@ -403,86 +389,17 @@ class _Record:
     points: np.ndarray | None = None
 
 
-class _Tree:
-    """The robot's joint tree for the compiled kernels (forward kinematics of revolute,
-    continuous and prismatic joints; anything else leaves ``supported`` False), and the
-    records of its links' geometry objects, kept across scene revisions."""
+class _Tree(KinematicTree):
+    """The robot's kinematic tree (:class:`~taskrunner.collision.tree.KinematicTree`: the
+    compiled forward kinematics covers revolute, continuous and prismatic joints; anything
+    else leaves ``supported`` False), and the records of its links' geometry objects,
+    kept across scene revisions."""
 
     def __init__(self, robot: RobotModel) -> None:
-        model = robot.model
-        n = model.njoints
-        self.model = model
-        self.nq = robot.nq
-        self.links = frozenset(robot.link_names)
-        parent = np.array([int(p) for p in model.parents], dtype=np.int64)
-        kind = np.zeros(n, dtype=np.int64)
-        state_index = np.full(n, -1, dtype=np.int64)
-        self.tree_f = np.zeros((n, 15))
-        self.state_joint = np.full(robot.nq, -1, dtype=np.int64)
-        depth = np.zeros(n, dtype=np.int64)
-        self.prismatic_travel = np.zeros(n)
-        prismatic = set()
-        for joint in robot.joints:
-            jid = int(model.getJointId(joint.name))
-            state_index[jid] = joint.index
-            self.state_joint[joint.index] = jid
-            if joint.type == "prismatic":
-                prismatic.add(jid)
-                self.prismatic_travel[jid] = max(abs(joint.lower), abs(joint.upper))
-        self.prismatic = frozenset(prismatic)
-        data = model.createData()
-        pin.forwardKinematics(model, data, pin.neutral(model))
-        supported = True
-        for jid in range(1, n):
-            placement = model.jointPlacements[jid]
-            self.tree_f[jid, _TF_ROT:_TF_ROT + 9] = np.asarray(placement.rotation).reshape(9)
-            self.tree_f[jid, _TF_TRANS:_TF_TRANS + 3] = placement.translation
-            depth[jid] = depth[parent[jid]] + 1
-            subspace = np.asarray(data.joints[jid].S, dtype=float)
-            if subspace.size != 6 or "Mimic" in model.joints[jid].shortname() \
-                    or state_index[jid] < 0:
-                supported = False
-                continue
-            linear, angular = subspace.reshape(6)[:3], subspace.reshape(6)[3:]
-            if np.linalg.norm(angular) > 0.5 and np.linalg.norm(linear) < 1e-12:
-                kind[jid] = _REVOLUTE
-                self.tree_f[jid, _TF_AXIS:_TF_AXIS + 3] = angular / np.linalg.norm(angular)
-            elif np.linalg.norm(linear) > 0.5 and np.linalg.norm(angular) < 1e-12:
-                kind[jid] = _PRISMATIC
-                self.tree_f[jid, _TF_AXIS:_TF_AXIS + 3] = linear / np.linalg.norm(linear)
-            else:
-                supported = False
-        self.supported = supported
-        self.tree_i = np.ascontiguousarray(np.column_stack([parent, kind, state_index]))
-        self.joint_translation = [float(np.linalg.norm(model.jointPlacements[j].translation))
-                                  for j in range(n)]
-        self.parent = [int(p) for p in parent]
-        state_depth = np.array([depth[j] if j >= 0 else 0 for j in self.state_joint])
-        self.order = np.argsort(-state_depth, kind="stable").astype(np.int64)
-        self.revolute = np.array([j >= 0 and kind[j] == _REVOLUTE for j in self.state_joint],
-                                 dtype=np.int64)
+        super().__init__(robot)
         # By (kind, joint, placement, dimensions) for primitives, (object id, joint,
         # placement) for a link's other geometry.
         self._records: dict[tuple[object, ...], tuple[object, _Record]] = {}
-
-    def levers(self, geometry_object: pin.GeometryObject) -> np.ndarray:
-        """:func:`lever_arms` of one geometry object."""
-        row = np.zeros(self.nq)
-        geometry = geometry_object.geometry
-        geometry.computeLocalAABB()
-        centre = geometry_object.placement.act(np.asarray(geometry.aabb_center, dtype=float))
-        reach = float(np.linalg.norm(centre)) + float(geometry.aabb_radius)
-        jid = int(geometry_object.parentJoint)
-        state_joint = self.state_joint
-        while jid > 0:
-            index = self.tree_i[jid, _TI_STATE]
-            if index >= 0 and state_joint[index] == jid:
-                row[index] = 1.0 if jid in self.prismatic else reach
-            # Reach from the parent joint's origin: this joint's offset and travel added.
-            reach += self.joint_translation[jid]
-            reach += self.prismatic_travel[jid]
-            jid = self.parent[jid]
-        return row
 
     def record(self, geometry_object: pin.GeometryObject) -> _Record:
         """The packed rows of a geometry object. Kept for a robot link's geometry (the
@@ -605,29 +522,29 @@ class _Kinematics:
     """Forward kinematics of one verifier's geometry (compiled)."""
 
     def __init__(self, tree: _Tree, geo_i: np.ndarray, geo_f: np.ndarray) -> None:
-        self.tree_i, self.tree_f = tree.tree_i, tree.tree_f
+        self.joints = tree.joints
         self.geo_i, self.geo_f = geo_i, geo_f
         self.supported = tree.supported
 
     def buffer(self) -> np.ndarray:
         """Work array of the kernels' frames (see ``_FR_*``)."""
-        return np.zeros((self.tree_i.shape[0] + self.geo_i.shape[0], _FR_COLUMNS))
+        return np.zeros((self.joints.shape[0] + self.geo_i.shape[0], _FR_COLUMNS))
 
     def frames(self, q: np.ndarray) -> np.ndarray:
         """The frames at state ``q`` (see :meth:`poses`)."""
         frames = self.buffer()
-        _forward(np.ascontiguousarray(q, dtype=float), self.tree_i, self.tree_f, self.geo_i,
-                 self.geo_f, frames)
+        _forward(np.ascontiguousarray(q, dtype=float), self.joints, self.geo_i, self.geo_f,
+                 frames)
         return frames
 
     def poses(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """World rotations and origins of the joints, then of the geometries, at ``q``."""
         frames = self.frames(q)
-        n = self.tree_i.shape[0]
-        return (frames[:n, _FR_ROT:_FR_ROT + 9].reshape(n, 3, 3),
-                frames[:n, _FR_ORIGIN:_FR_ORIGIN + 3],
-                frames[n:, _FR_ROT:_FR_ROT + 9].reshape(-1, 3, 3),
-                frames[n:, _FR_ORIGIN:_FR_ORIGIN + 3])
+        n = self.joints.shape[0]
+        return (frames[:n, ROTATION:ROTATION + 9].reshape(n, 3, 3),
+                frames[:n, ORIGIN:ORIGIN + 3],
+                frames[n:, ROTATION:ROTATION + 9].reshape(-1, 3, 3),
+                frames[n:, ORIGIN:ORIGIN + 3])
 
 
 def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, float]:
@@ -656,87 +573,26 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 # are inlined into their callers (numba IR inlining: no call or reference-count overhead),
 # except the support bound and its support function (called rarely, and large: each compiled
 # once, then called; inlined they would add seconds to the first compilation).
-_jit = numba.njit(cache=True, nogil=True, error_model="numpy")
-_inline = numba.njit(cache=True, nogil=True, error_model="numpy", inline="always")
-
-
-@_jit
-def _forward(q, tree_i, tree_f, geo_i, geo_f, frames):  # type: ignore[no-untyped-def]
+@jit
+def _forward(q, joints, geo_i, geo_f, frames):  # type: ignore[no-untyped-def]
     """World frames of the joints and the geometries at state ``q`` (into ``frames``,
     columns ``_FR_*``: geometry ``g`` is row ``n_joints + g``)."""
-    _joint_frames(q, tree_i, tree_f, frames)
-    nj = tree_i.shape[0]
+    joint_frames(q, joints, frames)
+    nj = joints.shape[0]
     for g in range(geo_i.shape[0]):
         _geometry_frame(g, geo_i, geo_f, frames, nj)
 
 
-@_inline
-def _joint_frames(q, tree_i, tree_f, frames):  # type: ignore[no-untyped-def]
-    """World frames of the joints at state ``q`` (rows ``0 .. n_joints - 1`` of ``frames``)."""
-    nj = tree_i.shape[0]
-    for a in range(3):
-        for b in range(3):
-            frames[0, 3 * a + b] = 1.0 if a == b else 0.0
-        frames[0, _FR_ORIGIN + a] = 0.0
-        frames[0, _FR_AXIS + a] = 0.0
-    for jid in range(1, nj):
-        p = tree_i[jid, _TI_PARENT]
-        # Parent frame times the joint's placement.
-        for a in range(3):
-            origin = frames[p, _FR_ORIGIN + a]
-            for b in range(3):
-                origin += frames[p, 3 * a + b] * tree_f[jid, _TF_TRANS + b]
-                total = 0.0
-                for c in range(3):
-                    total += frames[p, 3 * a + c] * tree_f[jid, _TF_ROT + 3 * c + b]
-                frames[jid, 3 * a + b] = total
-            frames[jid, _FR_ORIGIN + a] = origin
-        index = tree_i[jid, _TI_STATE]
-        value = q[index] if index >= 0 else 0.0
-        kind = tree_i[jid, _TI_KIND]
-        x, y, z = tree_f[jid, _TF_AXIS], tree_f[jid, _TF_AXIS + 1], tree_f[jid, _TF_AXIS + 2]
-        if kind == _PRISMATIC:
-            for a in range(3):
-                for b in range(3):
-                    frames[jid, _FR_ORIGIN + a] += (frames[jid, 3 * a + b]
-                                                    * tree_f[jid, _TF_AXIS + b] * value)
-        elif kind == _REVOLUTE:
-            # Rodrigues: the joint's rotation about its (local) axis.
-            c, s = math.cos(value), math.sin(value)
-            t = 1.0 - c
-            l00, l01, l02 = c + x * x * t, x * y * t - z * s, x * z * t + y * s
-            l10, l11, l12 = y * x * t + z * s, c + y * y * t, y * z * t - x * s
-            l20, l21, l22 = z * x * t - y * s, z * y * t + x * s, c + z * z * t
-            for a in range(3):
-                r0, r1, r2 = frames[jid, 3 * a], frames[jid, 3 * a + 1], frames[jid, 3 * a + 2]
-                frames[jid, 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
-                frames[jid, 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
-                frames[jid, 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
-        for a in range(3):                               # the axis in the world
-            total = 0.0
-            for b in range(3):
-                total += frames[jid, 3 * a + b] * tree_f[jid, _TF_AXIS + b]
-            frames[jid, _FR_AXIS + a] = total
-
-
-@_inline
+@inline
 def _geometry_frame(g, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s world frame, bounding sphere and box centres (row ``nj + g`` of
     ``frames``) from its joint's frame."""
     jid = geo_i[g, _GI_JOINT]
     row = nj + g
+    compose(frames, row, jid, geo_f[g, _GF_ROT:_GF_ROT + 9], geo_f[g, _GF_TRANS:_GF_TRANS + 3])
     for a in range(3):
-        total = frames[jid, _FR_ORIGIN + a]
-        for b in range(3):
-            total += frames[jid, 3 * a + b] * geo_f[g, _GF_TRANS + b]
-            value = 0.0
-            for c in range(3):
-                value += frames[jid, 3 * a + c] * geo_f[g, _GF_ROT + 3 * c + b]
-            frames[row, 3 * a + b] = value
-        frames[row, _FR_ORIGIN + a] = total
-    for a in range(3):
-        centre = frames[row, _FR_ORIGIN + a]
-        box = frames[row, _FR_ORIGIN + a]
+        centre = frames[row, ORIGIN + a]
+        box = frames[row, ORIGIN + a]
         for b in range(3):
             centre += frames[row, 3 * a + b] * geo_f[g, _GF_CENTRE + b]
             box += frames[row, 3 * a + b] * geo_f[g, _GF_BOX + b]
@@ -744,14 +600,14 @@ def _geometry_frame(g, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
         frames[row, _FR_BOX + a] = box
 
 
-@_inline
+@inline
 def _place(g, geo_i, geo_f, frames, nj, stamp):  # type: ignore[no-untyped-def]
     """Place geometry ``g`` at the state of the joint frames (compiled state ``stamp``)."""
     _geometry_frame(g, geo_i, geo_f, frames, nj)
     frames[nj + g, _FR_PLACED] = np.inf if geo_i[g, _GI_JOINT] == 0 else stamp
 
 
-@_jit
+@jit
 def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyped-def]
     """Badoiu-Clarkson: move ``centre`` (in place) towards the farthest point, with
     shrinking steps; returns the distance from the final centre to the farthest point."""
@@ -770,7 +626,7 @@ def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyp
     return 0.0
 
 
-@_inline
+@inline
 def _sphere_to_box(frames, row, radius, box, geo_f, nj):  # type: ignore[no-untyped-def]
     """Distance from the bounding sphere of frames row ``row`` (radius ``radius``) to
     geometry ``box``'s bounding box (negative: may overlap)."""
@@ -780,14 +636,14 @@ def _sphere_to_box(frames, row, radius, box, geo_f, nj):  # type: ignore[no-unty
         local = -geo_f[box, _GF_BOX + b]
         for a in range(3):
             local += frames[other, 3 * a + b] * (frames[row, _FR_CENTRE + a]
-                                                 - frames[other, _FR_ORIGIN + a])
+                                                 - frames[other, ORIGIN + a])
         excess = abs(local) - geo_f[box, _GF_HALF + b]
         if excess > 0.0:
             outside += excess * excess
     return math.sqrt(outside) - radius
 
 
-@_inline
+@inline
 def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
     boxes on their six face normals: a lower bound on their distance where positive.
@@ -821,7 +677,7 @@ def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     return best
 
 
-@_inline
+@inline
 def _sphere_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """The distance of geometries ``a``'s and ``b``'s bounding spheres (placed): the first
     of :func:`_lower_bound`'s bounds, which is at least this."""
@@ -832,7 +688,7 @@ def _sphere_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     return math.sqrt(gap) - geo_f[a, _GF_RADIUS] - geo_f[b, _GF_RADIUS]
 
 
-@_inline
+@inline
 def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
@@ -857,7 +713,7 @@ def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
     return best
 
 
-@_jit
+@jit
 def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
@@ -889,14 +745,14 @@ def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[n
             if value > best:
                 best = value
                 px, py, pz = points[v, 0], points[v, 1], points[v, 2]
-        ox, oy, oz = (frames[row, _FR_ORIGIN], frames[row, _FR_ORIGIN + 1],
-                      frames[row, _FR_ORIGIN + 2])
+        ox, oy, oz = (frames[row, ORIGIN], frames[row, ORIGIN + 1],
+                      frames[row, ORIGIN + 2])
     return (ox + frames[row, 0] * px + frames[row, 1] * py + frames[row, 2] * pz,
             oy + frames[row, 3] * px + frames[row, 4] * py + frames[row, 5] * pz,
             oz + frames[row, 6] * px + frames[row, 7] * py + frames[row, 8] * pz)
 
 
-@_jit
+@jit
 def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).
@@ -987,7 +843,7 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
     return best - swept
 
 
-@_inline
+@inline
 def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
     """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
     for the joints that count): for a revolute joint, the distance from its axis to the
@@ -1004,8 +860,8 @@ def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, col
             along = 0.0
             length2 = 0.0
             for a in range(3):
-                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, _FR_ORIGIN + a]
-                along += v * frames[jid, _FR_AXIS + a]
+                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, ORIGIN + a]
+                along += v * frames[jid, AXIS + a]
                 length2 += v * v
             off_axis = length2 - along * along
             lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geo_f[g, _GF_RADIUS]
@@ -1014,7 +870,7 @@ def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, col
         walk[k, column + j] = value
 
 
-@_inline
+@inline
 def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
     n = cumulative.shape[0]
     if n == 1:
@@ -1029,7 +885,7 @@ def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
         out[j] = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
 
 
-@_inline
+@inline
 def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # type: ignore[no-untyped-def]
     """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
     is ``c0`` to ``position``, with the lever arms ``walk[k, column + j]`` taken at the
@@ -1072,7 +928,7 @@ def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # t
     return total
 
 
-@_inline
+@inline
 def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end):  # type: ignore[no-untyped-def]
     """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
     arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
@@ -1130,7 +986,7 @@ def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_
     return lo
 
 
-@_inline
+@inline
 def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
     """The next position to evaluate (the earliest due pair's), the pairs measured there
     (written to ``selected``: due there, or due soon and past their early position) and
@@ -1162,7 +1018,7 @@ def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
     return count, s
 
 
-@_jit
+@jit
 def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
              settings):
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
@@ -1223,8 +1079,8 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
     schedule[1, k] = start + (1.0 - early) * (due - start)
 
 
-@_jit
-def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
+@jit
+def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
           unit_from, unit_of, states, cumulative, frames, walk, schedule, picked, selected,
           distances, q, settings):
     """Walk the path through ``states`` until some pairs need an exact distance: returns
@@ -1240,7 +1096,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, mem
     unit_from[u + 1]]``, ``unit_of`` the reverse): a unit's measurement is the least of
     its pairs' lower bounds. Pairs whose cheap lower bound is at least ``settings[4]``
     take it as their measurement."""
-    nj = tree_i.shape[0]
+    nj = joints.shape[0]
     n, nq = states.shape
     if settings[_S_STARTED] == 0.0:
         settings[_S_STARTED] = 1.0
@@ -1294,7 +1150,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, mem
             return 0
         settings[_S_AT] = s
         if per_state:
-            _joint_frames(q, tree_i, tree_f, frames)
+            joint_frames(q, joints, frames)
             settings[_S_STATES] += 1.0
         stamp = settings[_S_STATES]
         exact = 0
@@ -1357,7 +1213,7 @@ def _walk(tree_i, tree_f, geo_i, geo_f, points, pair_i, unit_i, unit_levers, mem
             return exact
 
 
-@_jit
+@jit
 def _segment_bounds(cumulative, geo_f, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
     """Per pair, the motion bound from the first state to the second (``cumulative``:
     their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
@@ -1369,7 +1225,7 @@ def _segment_bounds(cumulative, geo_f, pair_i, pair_levers, frames, nj, per_stat
         out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, _COLUMNS, 1.0)
 
 
-@_jit
+@jit
 def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-untyped-def]
     """Per pair, :func:`_lower_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
@@ -1377,7 +1233,7 @@ def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-unt
                               frames, nj)
 
 
-@_jit
+@jit
 def _support_bounds(pair_i, geo_i, geo_f, frames, points, nj, out):  # type: ignore[no-untyped-def]
     """Per pair, :func:`_support_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
@@ -1385,7 +1241,7 @@ def _support_bounds(pair_i, geo_i, geo_f, frames, points, nj, out):  # type: ign
                                 frames, points, nj)
 
 
-@_jit
+@jit
 def _group_pairs(pair_i, pair_levers, unit_of, representative):  # type: ignore[no-untyped-def]
     """Sort the pairs into units of pairs whose motion bound is the same function (the
     same joints counting, each with the same code, moved geometry and lever arms; the
@@ -1430,7 +1286,7 @@ def _group_pairs(pair_i, pair_levers, unit_of, representative):  # type: ignore[
     return units
 
 
-@_jit
+@jit
 def _pair_rows(first, second, levers, order, revolute, state_joint, supported,  # type: ignore[no-untyped-def]
                pair_levers, pair_i):
     """Per pair, its lever arms (``pair_levers``) and its row of ``pair_i``.

@@ -1,0 +1,15 @@
+"""The compiled collision core: one kinematic description of a robot and one forward
+kinematics, shared by the path verifier (:mod:`taskrunner.scene.sweep`) and the search's
+state screen (:mod:`taskrunner.scene.screen`).
+
+* :mod:`taskrunner.collision.tree`: the kinematic tree as records with named fields
+  (:data:`JOINT`) and the one joint-kind table (:class:`JointKind`); no numba.
+* :mod:`taskrunner.collision.frames`: the compiled transform composition and forward
+  kinematics (imports numba).
+"""
+
+from __future__ import annotations
+
+from taskrunner.collision.tree import JOINT, JointKind, KinematicTree
+
+__all__ = ["JOINT", "JointKind", "KinematicTree"]

@@ -1,0 +1,144 @@
+"""Compiled forward kinematics: world frames of a :class:`~taskrunner.collision.tree.KinematicTree`'s joints.
+
+A *frame row* is a float row holding a rotation (row-major, columns :data:`ROTATION` to
+``ROTATION + 9``), an origin (m, :data:`ORIGIN`) and, for a joint, its axis in the world
+(:data:`AXIS`). :func:`compose` is the one rigid-transform composition of the kernels (a
+placed frame times a local placement); :func:`joint_frames` the one forward kinematics.
+The path verifier (:mod:`taskrunner.scene.sweep`) and the search's state screen
+(:mod:`taskrunner.scene.screen`) write their joint rows with it, and place their
+geometry with :func:`compose`.
+
+The functions are numba kernels compiled on first use and cached on disk
+(``cache=True``, in ``NUMBA_CACHE_DIR``, by default ``user_cache_dir()/numba``);
+:data:`inline` ones are inlined into their callers at numba's IR level. Called from
+Python they take C-contiguous float64 arrays and a :data:`~taskrunner.collision.tree.JOINT`
+record array; :func:`forward_kinematics` is the typed Python entry point.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import numpy as np
+
+from taskrunner.collision.tree import JointKind, KinematicTree
+from taskrunner.resources import user_cache_dir
+
+if not os.environ.get("NUMBA_CACHE_DIR"):
+    # Before numba's import: an installed package's own folder may be read-only.
+    os.environ["NUMBA_CACHE_DIR"] = str(user_cache_dir() / "numba")
+# Plain compiler messages: with colorama installed, numba's colour set-up registers an exit
+# handler that writes a terminal reset (ESC[0m) to stdout after the command's own output.
+os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
+
+# numba after the cache folder is chosen
+import numba
+from numba.core import config as _numba_config
+
+if not getattr(_numba_config, "CACHE_DIR", ""):  # numba was imported first, by someone else:
+    _numba_config.reload_config()  # it reads the environment again (NUMBA_CACHE_DIR above)
+
+__all__ = ["AXIS", "FRAME_COLUMNS", "ORIGIN", "ROTATION", "compose", "forward_kinematics",
+           "inline", "jit", "joint_frames"]
+
+ROTATION, ORIGIN, AXIS = 0, 9, 12
+"""Columns of a frame row: rotation (9, row-major), origin (3, m), a joint's axis (3)."""
+FRAME_COLUMNS = 15
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+_jit: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy")
+_inline: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy",
+                                           inline="always")
+
+
+def jit(function: _F) -> _F:
+    """Compile ``function`` as a kernel called from Python (or called, not inlined, by
+    other kernels), cached on disk."""
+    compiled: _F = _jit(function)
+    return compiled
+
+
+def inline(function: _F) -> _F:
+    """Compile ``function`` as a kernel inlined into the kernels that call it."""
+    compiled: _F = _inline(function)
+    return compiled
+
+
+_REVOLUTE = int(JointKind.REVOLUTE)
+_PRISMATIC = int(JointKind.PRISMATIC)
+
+
+@inline
+def compose(frames: np.ndarray, row: int, parent: int, rotation: np.ndarray,
+            translation: np.ndarray) -> None:
+    """Frame row ``row`` := frame row ``parent`` times the placement (``rotation``,
+    row-major 9-vector; ``translation``, m) given in ``parent``'s frame (rotation and
+    origin; the other columns are left as they are)."""
+    for a in range(3):
+        origin = frames[parent, ORIGIN + a]
+        for b in range(3):
+            origin += frames[parent, ROTATION + 3 * a + b] * translation[b]
+            total = 0.0
+            for c in range(3):
+                total += frames[parent, ROTATION + 3 * a + c] * rotation[3 * c + b]
+            frames[row, ROTATION + 3 * a + b] = total
+        frames[row, ORIGIN + a] = origin
+
+
+@inline
+def joint_frames(q: np.ndarray, joints: np.ndarray, frames: np.ndarray) -> None:
+    """World frames of the joints at state ``q`` (rows ``0 .. len(joints) - 1`` of
+    ``frames``: rotation, origin, axis)."""
+    for a in range(3):
+        for b in range(3):
+            frames[0, ROTATION + 3 * a + b] = 1.0 if a == b else 0.0
+        frames[0, ORIGIN + a] = 0.0
+        frames[0, AXIS + a] = 0.0
+    for jid in range(1, joints.shape[0]):
+        joint = joints[jid]
+        compose(frames, jid, joint.parent, joint.rotation, joint.translation)
+        index = joint.state
+        value = q[index] if index >= 0 else 0.0
+        kind = joint.kind
+        axis = joint.axis
+        x, y, z = axis[0], axis[1], axis[2]
+        if kind == _PRISMATIC:
+            for a in range(3):
+                for b in range(3):
+                    frames[jid, ORIGIN + a] += (frames[jid, ROTATION + 3 * a + b]
+                                                * axis[b] * value)
+        elif kind == _REVOLUTE:
+            # Rodrigues: the joint's rotation about its (local) axis.
+            c, s = math.cos(value), math.sin(value)
+            t = 1.0 - c
+            l00, l01, l02 = c + x * x * t, x * y * t - z * s, x * z * t + y * s
+            l10, l11, l12 = y * x * t + z * s, c + y * y * t, y * z * t - x * s
+            l20, l21, l22 = z * x * t - y * s, z * y * t + x * s, c + z * z * t
+            for a in range(3):
+                r0 = frames[jid, ROTATION + 3 * a]
+                r1 = frames[jid, ROTATION + 3 * a + 1]
+                r2 = frames[jid, ROTATION + 3 * a + 2]
+                frames[jid, ROTATION + 3 * a] = r0 * l00 + r1 * l10 + r2 * l20
+                frames[jid, ROTATION + 3 * a + 1] = r0 * l01 + r1 * l11 + r2 * l21
+                frames[jid, ROTATION + 3 * a + 2] = r0 * l02 + r1 * l12 + r2 * l22
+        for a in range(3):                               # the axis in the world
+            total = 0.0
+            for b in range(3):
+                total += frames[jid, ROTATION + 3 * a + b] * axis[b]
+            frames[jid, AXIS + a] = total
+
+
+@jit
+def _forward(q: np.ndarray, joints: np.ndarray, frames: np.ndarray) -> None:
+    joint_frames(q, joints, frames)
+
+
+def forward_kinematics(tree: KinematicTree, q: np.ndarray) -> np.ndarray:
+    """The joints' world frames at full state ``q`` (rad, m): ``(n_joints, 15)`` frame
+    rows (see the module's text), row ``i`` pinocchio's joint ``i``."""
+    frames = np.zeros((len(tree.joints), FRAME_COLUMNS))
+    _forward(np.ascontiguousarray(q, dtype=float), tree.joints, frames)
+    return frames
