@@ -8,7 +8,8 @@ gives a warning naming both folders):
 1. explicit ``{name: folder}`` entries given in code;
 2. ``--package-path DIR`` on the command line and ``TASKRUNNER_PACKAGE_PATH``
    (``:``-separated folders, searched recursively);
-3. the folders searched for the robot at hand (its folder and the one above);
+3. the folders searched for the robot at hand (its folder, and the one above it at most
+   four folders deep);
 4. ``ROS_PACKAGE_PATH`` (searched recursively, as rospack does);
 5. ``AMENT_PREFIX_PATH`` (each prefix's ``share/<pkg>``, as ament does);
 6. the ``example-robot-data`` wheel, when installed;
@@ -173,6 +174,8 @@ class PackageMap:
                  _ROS: " (ROS_PACKAGE_PATH)",
                  _WORKSPACE: f" (the workspace around the robot, {max_depth} folders deep)",
                  }.get(tier, "")
+        if tier == _ROBOT and max_depth is not None:
+            label = f" ({max_depth} folders deep)"
         self._note_searched(tier, f"{root.resolve() if root.is_dir() else root}{label}"
                                   f"{'' if root.is_dir() else ' (no such folder)'}")
         if not root.is_dir():
@@ -188,17 +191,20 @@ class PackageMap:
             if "package.xml" in filenames and self._add_if_package(Path(dirpath), tier):
                 dirnames[:] = []  # packages do not nest
 
-    def discover(self, root: str | Path) -> None:
-        """Register every package (a folder with a package.xml) found under ``root``,
-        after those found before (search tier 3 of the module docstring)."""
-        self._discover(root, _ROBOT)
+    def discover(self, root: str | Path, max_depth: int | None = None) -> None:
+        """Register every package (a folder with a package.xml) found under ``root``
+        (at most ``max_depth`` folders deep), after those found before (search tier 3 of
+        the module docstring)."""
+        self._discover(root, _ROBOT, max_depth)
 
     def discover_around(self, path: str | Path) -> None:
-        """Register the packages of a robot at ``path``: the folder above its folder,
-        then its folder (a file's folder is its parent)."""
+        """Register the packages of a robot at ``path``: the folder above its folder (at
+        most four folders deep: a robot file in ``/tmp`` or a home folder's subfolder must
+        not pick up a same-named package from anywhere under it), then its folder (a
+        file's folder is its parent)."""
         path = Path(path).resolve()
         folder = path if path.is_dir() else path.parent
-        self.discover(folder.parent)
+        self.discover(folder.parent, _WORKSPACE_DEPTH)
         self.discover(folder)
         for workspace in _workspace_folders(folder.parent):
             if workspace not in self._pending:

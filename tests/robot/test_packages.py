@@ -8,6 +8,7 @@ import pytest
 
 from taskrunner.errors import RobotDescriptionError
 from taskrunner.robot import PackageMap
+from taskrunner.robot.packages import default_package_map
 
 
 def make_package(folder: Path, name: str) -> Path:
@@ -119,3 +120,20 @@ def test_unsupported_uri_scheme_is_refused(tmp_path):
 def test_package_uri_with_unknown_package_names_it(tmp_path):
     with pytest.raises(RobotDescriptionError, match=r"package 'nope' not found"):
         PackageMap().resolve("package://nope/m.stl", tmp_path)
+
+
+def test_the_folder_above_a_robot_is_searched_only_four_folders_deep(tmp_path):
+    """A robot file in a crowded folder (``/tmp``, a home folder's subfolder) does not
+    pick up a same-named package from deep inside an unrelated tree beside it."""
+    robot = tmp_path / "mine" / "arm.urdf"
+    robot.parent.mkdir()
+    robot.write_text("<robot name='arm'/>")
+    near = tmp_path / "ws" / "src" / "near_pkg"
+    far = tmp_path / "other" / "checkout" / "tests" / "fixtures" / "src" / "far_pkg"
+    for folder, name in ((near, "near_pkg"), (far, "far_pkg")):
+        folder.mkdir(parents=True)
+        (folder / "package.xml").write_text(f"<package><name>{name}</name></package>")
+    packages = default_package_map(robot)
+    assert packages.find("near_pkg") == near
+    assert not packages.has("far_pkg")
+    assert f"{tmp_path} (4 folders deep)" in packages.searched_folders()

@@ -118,7 +118,7 @@ def test_a_description_package_not_found_is_the_error_with_the_folders_searched(
     src = (tmp_path / "ws" / "src").resolve()
     assert error.reason.startswith(
         f"no usable <param name=\"robot_description\"> loads the URDF: line {URDF_PARAM_LINE}: "
-        f"package 'sawyer_description' not found (searched: {src / 'sawyer_moveit'}; "
+        f"package 'sawyer_description' not found (searched: {src / 'sawyer_moveit'} (4 folders deep); "
         f"{config.resolve()}; ROS_PACKAGE_PATH and AMENT_PREFIX_PATH not set; "
         f"{src} (the workspace around the robot, 4 folders deep); known packages: ")
     assert "--package-path" in error.reason
@@ -150,5 +150,5 @@ def test_a_ros2_package_finds_its_description_in_a_sibling_repository(tmp_path):
     with pytest.raises(InputError) as info:
         load_robot(src / "mini_config" / "mini_moveit_config")
     assert info.value.reason.startswith("'URDF': package 'mini_description' not found "
-                                        f"(searched: {src / 'mini_config'}; ")
+                                        f"(searched: {src / 'mini_config'} (4 folders deep); ")
     assert f"{src} (the workspace around the robot, 4 folders deep)" in info.value.reason
