@@ -229,7 +229,7 @@ def _entry_path(entry: dict[str, object], key: str, marker: Path, folder: Path,
     base = folder
     if entry.get("package"):
         try:
-            base = packages.find(str(entry["package"]))
+            base = packages.find(str(entry["package"]), near=folder)
         except RobotDescriptionError as exc:
             raise YamlError(f"'{key}': {exc.reason}", marker, line_of(entry, "package")) from None
     return base / str(entry["relative_path"])
@@ -257,7 +257,8 @@ class _Launch:
             kind, rest = match.group(1), (match.group(2) or "").strip()
             if kind == "find":
                 try:
-                    return str(self.packages.find(rest))
+                    near = self.doc.path.parent if self.doc.path is not None else None
+                    return str(self.packages.find(rest, near=near))
                 except RobotDescriptionError as exc:
                     raise self.doc.error(element, exc.reason) from None
             if kind == "arg" and rest in self.args:

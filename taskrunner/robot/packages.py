@@ -238,8 +238,14 @@ class PackageMap:
         """Known package names, sorted."""
         return sorted(self._entries)
 
-    def find(self, name: str) -> Path:
+    def find(self, name: str, near: str | Path | None = None) -> Path:
         """Folder of package ``name``.
+
+        When several folders of the first search tier that has the package hold one of
+        that name, the one holding ``near`` (the folder of the file that names the
+        package: a robot's URDF naming its own package) wins, silently; else the nearest
+        to ``near`` (the longest common folder), with a warning naming them all. Without
+        ``near``, the first found wins, with that warning.
 
         Raises:
             RobotDescriptionError: the package is not in the map.
@@ -256,12 +262,20 @@ class PackageMap:
             )
         entries = self._entries[name]
         tier, _, folder = entries[0]
-        others = list(dict.fromkeys(str(f) for _, _, f in entries[1:] if f != folder))
+        if near is not None and tier != _EXPLICIT:
+            here = Path(near).resolve()
+            tied = [f for t, _, f in entries if t == tier]
+            holding = [f for f in tied if here == f or f in here.parents]
+            if holding:  # the file is inside that package: no ambiguity
+                return max(holding, key=lambda f: len(f.parts))
+            folder = max(tied, key=lambda f: _shared_parts(f, here))
+        others = list(dict.fromkeys(str(f) for _, _, f in entries if f != folder))
         if others and tier != _EXPLICIT and name not in self._warned:
             self._warned.add(name)
             self.warnings.append(LoadWarning(
-                f"package {name!r} is in two places: {folder} (used, first in the search "
-                f"order) and {', '.join(others)}"))
+                f"package {name!r} is in two places: {folder} (used, "
+                f"{'nearest to ' + str(near) if near is not None else 'first in the search order'}"
+                f") and {', '.join(others)}"))
         return folder
 
     def resolve(self, uri: str, base_dir: str | Path) -> Path:
@@ -276,7 +290,7 @@ class PackageMap:
         package = package_of(uri)
         if package is not None:
             rel = uri[len("package://"):].lstrip("/").partition("/")[2]
-            return self.find(package) / unquote(rel)
+            return self.find(package, near=base_dir) / unquote(rel)
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         if "://" in uri:
@@ -286,6 +300,16 @@ class PackageMap:
 
     def __repr__(self) -> str:
         return f"PackageMap({self.names})"
+
+
+def _shared_parts(a: Path, b: Path) -> int:
+    """How many leading folders ``a`` and ``b`` share."""
+    count = 0
+    for x, y in zip(a.parts, b.parts):
+        if x != y:
+            break
+        count += 1
+    return count
 
 
 def package_of(uri: str) -> str | None:

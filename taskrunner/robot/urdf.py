@@ -320,7 +320,7 @@ def _resolve_meshes(
                                      f"{exc.reason}") from None
         if not resolved.is_file():
             relative = "://" not in uri and not Path(uri).is_absolute()
-            base = packages.find(package) if package is not None else (
+            base = packages.find(package, near=source.parent) if package is not None else (
                 source.parent if relative else None)
             return MissingMesh(link_name, kind, uri, line, looked_at=resolved, base=base)
         mesh.set("filename", str(resolved))

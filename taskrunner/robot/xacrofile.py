@@ -87,7 +87,8 @@ def expand_xacro(path: str | Path, packages: PackageMap, mappings: dict[str, str
     problem = file_problem(path)
     if problem is not None:
         raise RobotDescriptionError(problem, path)
-    cached = xacro_cache.lookup(path, mappings, lambda package: str(packages.find(package)))
+    cached = xacro_cache.lookup(path, mappings,
+                                lambda package: str(packages.find(package, near=path.parent)))
     if cached is not None:
         return cached
     inputs = xacro_cache.XacroInputs()
@@ -238,7 +239,7 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
 
     def find(pkg: str) -> str:
         try:
-            folder = str(packages.find(pkg))
+            folder = str(packages.find(pkg, near=path.parent))
         except RobotDescriptionError as exc:
             lookup_errors.append(exc)
             raise

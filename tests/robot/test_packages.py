@@ -137,3 +137,25 @@ def test_the_folder_above_a_robot_is_searched_only_four_folders_deep(tmp_path):
     assert packages.find("near_pkg") == near
     assert not packages.has("far_pkg")
     assert f"{tmp_path} (4 folders deep)" in packages.searched_folders()
+
+
+def test_a_robot_in_a_crowded_folder_uses_its_own_package_not_a_copy_beside_it(tmp_path):
+    """A copy of the robot elsewhere under the folder above (another checkout, a test's
+    temporary folder) found first must not stand in for the robot's own package."""
+    copies = [make_package(tmp_path / name / "arm", "arm_description")
+              for name in ("a_old_checkout", "b_tests")]
+    mine = make_package(tmp_path / "mine" / "arm", "arm_description")
+    urdf = mine / "urdf" / "arm.urdf"
+    urdf.parent.mkdir()
+    urdf.write_text("<robot name='arm'/>")
+    packages = default_package_map(tmp_path / "mine" / "cell.yaml")  # the cell beside it
+    packages.discover_around(urdf)
+    assert packages.resolve("package://arm_description/meshes/a.stl", urdf.parent) \
+        == mine / "meshes" / "a.stl"
+    assert packages.warnings == []  # the file is inside the package it names: no doubt
+    # A file outside every copy gets the nearest, with the warning naming them all.
+    elsewhere = tmp_path / "b_tests" / "cells"
+    elsewhere.mkdir()
+    assert packages.find("arm_description", near=elsewhere) == copies[1]
+    assert len(packages.warnings) == 1 and "nearest to" in str(packages.warnings[0])
+    assert all(str(c) in str(packages.warnings[0]) for c in (mine, copies[0]))
