@@ -17,6 +17,7 @@ from __future__ import annotations
 import atexit
 import gc
 import itertools
+import logging
 import multiprocessing as mp
 import os
 import signal
@@ -98,6 +99,9 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
     :meth:`PlanningWorker._launch`), so one arriving while it imports is ignored too.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    # The process that started this one loaded the same cell and reported what its load
+    # warned about (run-task, the API server): said once, not again from here.
+    logging.getLogger("taskrunner.robot").setLevel(logging.ERROR)
     if nice and hasattr(os, "nice"):
         os.nice(nice)
     from taskrunner.planning.planner import MotionPlanner

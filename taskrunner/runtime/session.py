@@ -233,7 +233,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         elif early is not None:
             early.close()
         try:
-            cell = reused[1] if reused is not None else load_cell(spec.cell)
+            cell = reused[1] if reused is not None else _checked_cell(loaded, spec)
+            if cell is None:
+                cell = load_cell(spec.cell)
             if not worker:
                 from taskrunner.planning.service import InProcessPlanner
 
@@ -270,6 +272,18 @@ def _from_check(report: CheckReport | None, path: Path) -> tuple[TaskSpec, Cell]
             or report.task.path != Path(path):
         return None
     return report.task, report.loaded_cell
+
+
+def _checked_cell(report: CheckReport | None, spec: TaskSpec) -> Cell | None:
+    """The cell the check loaded, when the task (loaded again: a relative path) names the
+    same cell file: loaded once, and its warnings said once."""
+    if report is None or report.task is None or report.loaded_cell is None:
+        return None
+    try:
+        same = Path(report.task.cell).resolve() == Path(spec.cell).resolve()
+    except (OSError, RuntimeError, ValueError):
+        return None
+    return report.loaded_cell if same else None
 
 
 class _StopSignals:

@@ -41,3 +41,27 @@ def test_info_refuses_a_missing_mesh_and_loads_it_with_the_flag_warning_once(mak
     assert allowed.returncode == 0, allowed.stderr
     both = allowed.stdout + allowed.stderr
     assert both.count("robot 'mini' loaded WITHOUT 1 mesh file(s)") == 1
+
+
+def test_a_run_prints_its_robots_load_warning_once(tmp_path: Path):
+    """run-task loads the cell in its check, in its run and in its planning worker: the
+    warning is said once (the run takes the check's cell, the worker stays quiet)."""
+    import shutil
+
+    from taskrunner import resources
+
+    robot = tmp_path / "servo_arm"
+    shutil.copytree(resources.robots_dir() / "servo_arm", robot)
+    srdf = robot / "config" / "servo_arm.srdf"
+    srdf.write_text(srdf.read_text().replace(
+        "</robot>", '  <disable_collisions link1="no_such_link" link2="base_link" '
+                    'reason="Never"/>\n</robot>'))
+    (tmp_path / "cell.yaml").write_text("name: mine\nrobots:\n  - name: arm\n"
+                                         "    robot: servo_arm\n")
+    (tmp_path / "task.yaml").write_text("task: t\ncell: cell.yaml\nsteps:\n"
+                                         "  - go: {group: arm, to: home}\n")
+    result = subprocess.run([sys.executable, "-m", "taskrunner.cli", "task.yaml", "--plain"],
+                            cwd=tmp_path, capture_output=True, text=True, timeout=300,
+                            check=False)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert (result.stdout + result.stderr).count("names unknown link(s) ['no_such_link']") == 1
