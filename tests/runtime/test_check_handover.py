@@ -1,5 +1,6 @@
 """run-task starts its run from the task and cell its check loaded: same events, same
-outcome as loading them again; a relative path is loaded again (messages name it as given)."""
+outcome as loading them again; a relative path is loaded again (messages name it as given),
+its cell is the check's."""
 
 from __future__ import annotations
 
@@ -39,6 +40,7 @@ def test_the_run_from_the_checks_task_and_cell_is_the_run_from_a_fresh_load(
     handed = _run(path, tmp_path / "handed", seed)
     assert loads == []  # the check's task and cell were used
     monkeypatch.setattr(session, "_from_check", lambda report, path: None)
+    monkeypatch.setattr(session, "_checked_cell", lambda report, spec: None)
     fresh = _run(path, tmp_path / "fresh", seed)
     assert loads == ["task", "cell"]
     assert handed[0] == fresh[0]
@@ -51,9 +53,10 @@ def test_a_relative_task_path_is_loaded_again(tmp_path, monkeypatch):
     path = resolve_task("go_home")
     monkeypatch.chdir(path.parent)
     loads: list[object] = []
-    real_task = session.load_task
+    real_task, real_cell = session.load_task, session.load_cell
     monkeypatch.setattr(session, "load_task", lambda p, *a: loads.append(p) or real_task(p, *a))
+    monkeypatch.setattr(session, "load_cell", lambda *a: loads.append("cell") or real_cell(*a))
     code, _ = _run(type(path)(path.name), tmp_path / "runs", 0)
     assert code == 0
-    assert [str(p) for p in loads] == [path.name]
+    assert [str(p) for p in loads] == [path.name]  # its cell: the one the check loaded
     assert not os.path.isabs(path.name)
