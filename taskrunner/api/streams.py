@@ -69,7 +69,7 @@ class StreamOptions:
     max_lag: int = 1000
     send_timeout_s: float = 10.0
     keepalive_s: float = 15.0
-    batch_s: float = 0.025
+    batch_s: float = 0.1
 
     def __post_init__(self) -> None:
         if isinstance(self.max_lag, bool) or not isinstance(self.max_lag, int) \
