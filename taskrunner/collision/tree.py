@@ -2,8 +2,9 @@
 
 One record per pinocchio joint (:data:`JOINT`, named fields): its parent, its kind
 (:class:`JointKind`, the one code table of the kernels), the index of its value in the
-robot's state vector, its placement on the parent (rotation, row-major, and translation,
-m) and its axis in its own frame (a unit vector). :class:`KinematicTree` builds the records
+robot's state vector, its placement on the parent (rotation, row-major, then translation,
+m: as :func:`taskrunner.collision.frames.compose` reads a placement) and its axis in its own
+frame (a unit vector). :class:`KinematicTree` builds the records
 of a :class:`~taskrunner.robot.RobotModel` and what bounds on the motion of a body need
 (lever arms: :meth:`KinematicTree.levers`); the forward kinematics that reads them is
 :func:`taskrunner.collision.frames.joint_frames`.
@@ -37,8 +38,8 @@ JOINT = np.dtype([
     ("parent", np.int64),          # the parent joint's row (0: the world)
     ("kind", np.int64),            # a JointKind
     ("state", np.int64),           # index of the joint's value in the state vector, -1: none
-    ("rotation", np.float64, (9,)),    # placement on the parent: rotation, row-major
-    ("translation", np.float64, (3,)),  # ... and translation (m)
+    # placement on the parent: rotation (row-major, 0-8) then translation (m, 9-11)
+    ("placement", np.float64, (12,)),
     ("axis", np.float64, (3,)),    # unit axis in the joint's frame
 ])
 """One joint of a :class:`KinematicTree` (row ``i`` is pinocchio's joint ``i``)."""
@@ -84,8 +85,8 @@ class KinematicTree:
         supported = True
         for jid in range(1, n):
             placement = model.jointPlacements[jid]
-            joints["rotation"][jid] = np.asarray(placement.rotation).reshape(9)
-            joints["translation"][jid] = placement.translation
+            joints["placement"][jid, :9] = np.asarray(placement.rotation).reshape(9)
+            joints["placement"][jid, 9:] = placement.translation
             depth[jid] = depth[joints["parent"][jid]] + 1
             subspace = np.asarray(data.joints[jid].S, dtype=float)
             if subspace.size != 6 or "Mimic" in model.joints[jid].shortname() \

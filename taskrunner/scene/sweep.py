@@ -357,6 +357,7 @@ _GI_JOINT, _GI_BOX, _GI_SHAPE, _GI_FROM, _GI_COUNT = range(5)
 # by the radius _GF_SWEPT.
 _SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL, _SHAPE_CYLINDER, _SHAPE_SPHERE = range(5)
 _GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX, _GF_SWEPT = 0, 9, 12, 15, 16, 19, 22
+assert _GF_TRANS == _GF_ROT + 9  # a placement as compose reads it
 _GF_COLUMNS = 23                                              # geo_f (n_geometries, 23)
 # pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
 # such joint (deepest first): its state index, code, the geometry it moves, its joint id.
@@ -589,7 +590,7 @@ def _geometry_frame(g, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
     ``frames``) from its joint's frame."""
     jid = geo_i[g, _GI_JOINT]
     row = nj + g
-    compose(frames, row, jid, geo_f[g, _GF_ROT:_GF_ROT + 9], geo_f[g, _GF_TRANS:_GF_TRANS + 3])
+    compose(frames, row, jid, geo_f, g, _GF_ROT)  # _GF_TRANS follows the rotation
     for a in range(3):
         centre = frames[row, ORIGIN + a]
         box = frames[row, ORIGIN + a]
