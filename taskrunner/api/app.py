@@ -12,6 +12,8 @@ from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
+from fastapi.openapi.docs import get_swagger_ui_html
+from fastapi.responses import HTMLResponse
 
 from taskrunner.api.admission import Admission, ControlExecutor
 from taskrunner.api.auth import AuthGate
@@ -88,7 +90,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                     "motions. Every endpoint but /health and these docs needs the bearer "
                     "token (reads too, unless the server opens them: TASKRUNNER_OPEN_READS).",
         lifespan=lifespan,
+        docs_url=None,  # served below with Swagger UI's files from the package, not a CDN
+        redoc_url=None,
     )
+    _add_docs_page(app)
     app.state.settings = settings
     app.state.token = (settings.token or new_token()) if settings.auth else None
     # Heavy work bounded (each kind: so many at once, so many more waiting, then 503);
@@ -111,6 +116,22 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.add_middleware(AuthGate, routes=[route for router in routers for route in router.routes])
     app.add_middleware(RunDetailFastPath)  # outermost: polls skip the rest
     return app
+
+
+def _add_docs_page(app: FastAPI) -> None:
+    """``/docs``: Swagger UI for ``/openapi.json``, its script, style sheet and icon served
+    by the view's static route (copied there from swagger-ui-dist by the view's build), so
+    the page works with no network; no validator badge (it would call swagger.io)."""
+    static = "/viewer/static"
+
+    @app.get("/docs", include_in_schema=False)
+    async def docs_page() -> HTMLResponse:
+        return get_swagger_ui_html(
+            openapi_url=app.openapi_url or "/openapi.json", title=f"{app.title} - API",
+            swagger_js_url=f"{static}/swagger-ui-bundle.js",
+            swagger_css_url=f"{static}/swagger-ui.css",
+            swagger_favicon_url=f"{static}/swagger-ui-favicon-32x32.png",
+            swagger_ui_parameters={"validatorUrl": None})
 
 
 async def _reap_planners(registry: CellRegistry, idle_s: float) -> None:
