@@ -128,7 +128,6 @@ class RunFeed:
         self.final: int | None = None
         self.ended = False
         self.changed = asyncio.Event()
-        self.wakes = 0  # wake-ups scheduled by the run's thread (a test counts them)
         self._events, self._done, self._options, self._loop = events, done, options, loop
         self._streams: set[_Stream] = set()
         self._pending = False
@@ -141,7 +140,6 @@ class RunFeed:
         if self._pending:
             return
         self._pending = True
-        self.wakes += 1
         try:
             self._loop.call_soon_threadsafe(self._wake_soon)
         except RuntimeError:  # the loop has closed: no stream is left to wake
