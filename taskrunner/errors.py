@@ -29,6 +29,8 @@ and every error raised from a file starts with ``path:line:``.
 
 from __future__ import annotations
 
+import difflib
+from collections.abc import Iterable
 from pathlib import Path
 
 __all__ = [
@@ -52,7 +54,22 @@ __all__ = [
     "TaskrunnerError",
     "UnknownNameError",
     "YamlError",
+    "did_you_mean",
 ]
+
+
+def did_you_mean(name: str, known: Iterable[str], what: str = "") -> str:
+    """``"; did you mean 'x'?"``, or ``"; <what>: 'a', 'b'"`` when nothing is close (and
+    ``what`` is given): the one suggestion of every "unknown name" message (task files,
+    the CLI, the Python API)."""
+    known = sorted(set(known), key=str)
+    close = difflib.get_close_matches(str(name), known, n=1, cutoff=0.6)
+    if close:
+        return f"; did you mean {close[0]!r}?"
+    if not known or not what:
+        return ""
+    shown = ", ".join(repr(k) for k in known[:12])
+    return f"; {what}: {shown}{', …' if len(known) > 12 else ''}"
 
 
 class TaskrunnerError(Exception):
@@ -122,7 +139,11 @@ class UnknownNameError(TaskrunnerError):
         self.known = tuple(known)
         shown = ", ".join(repr(k) for k in sorted(self.known)[:20])
         more = "" if len(self.known) <= 20 else f", … ({len(self.known)} in all)"
-        hint = f"; known: {shown}{more}" if self.known else ""
+        close = did_you_mean(name, self.known)
+        if close and self.known:
+            hint = f"{close} (known: {shown}{more})"
+        else:
+            hint = f"; known: {shown}{more}" if self.known else ""
         super().__init__(f"unknown {kind} {name!r}{hint}")
 
     def __reduce__(self):  # type: ignore[no-untyped-def]

@@ -15,13 +15,12 @@ Layout of ``taskrunner/data/``::
 
 from __future__ import annotations
 
-import difflib
 import importlib.resources
 import os
 from collections.abc import Sequence
 from pathlib import Path
 
-from taskrunner.errors import InputError
+from taskrunner.errors import InputError, did_you_mean
 
 __all__ = [
     "DATA_ROOT",
@@ -177,8 +176,7 @@ def resolve_cell(name_or_path: str | os.PathLike[str], *, relative_to: Path | No
                       if robots else [])
     if name in shipped_robots:
         return robots_dir() / name
-    close = difflib.get_close_matches(name, [*cells, *shipped_robots], n=1, cutoff=0.6)
-    hint = f"; did you mean {close[0]!r}?" if close else ""
+    hint = did_you_mean(name, [*cells, *shipped_robots])
     known = f"known cells: {', '.join(cells) or 'none'}"
     if robots:
         known += f"; robots: {', '.join(shipped_robots)}"

@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pinocchio as pin
 
+from taskrunner.errors import InputError
+
 __all__ = ["JointState", "JointPath", "JointTrajectory", "Pose", "pose_from_xyz_rpy"]
 
 
@@ -135,12 +137,34 @@ class Pose:
         q = pin.Quaternion(transform.rotation)
         return cls(tuple(transform.translation), (q.x, q.y, q.z, q.w), frame)
 
+    @classmethod
+    def from_rpy(cls, xyz: Sequence[float] = (0.0, 0.0, 0.0),
+                 rpy: Sequence[float] = (0.0, 0.0, 0.0), frame: str = "world") -> Pose:
+        """A pose from a translation (m) and roll, pitch, yaw in **radians** (fixed axes X,
+        then Y, then Z, as in URDF and in task files' ``rpy``)::
+
+            Pose.from_rpy([0.45, 0.1, 1.0], [math.pi, 0, 0])   # the tool pointing down
+
+        Raises:
+            InputError: ``rpy`` is not 3 finite numbers.
+        """
+        try:
+            angles = np.array(rpy, dtype=float)
+        except (TypeError, ValueError):
+            angles = np.array([])
+        if angles.shape != (3,) or not np.all(np.isfinite(angles)):
+            raise InputError(f"'rpy' must be 3 finite numbers roll, pitch, yaw in radians "
+                             f"(got {rpy!r})")
+        rotation = pin.rpy.rpyToMatrix(*(float(a) for a in angles))
+        q = pin.Quaternion(rotation)
+        return cls(tuple(xyz), (q.x, q.y, q.z, q.w), frame)  # type: ignore[arg-type]
+
 
 def pose_from_xyz_rpy(
     xyz: Sequence[float] = (0.0, 0.0, 0.0),
     rpy: Sequence[float] = (0.0, 0.0, 0.0),
     frame: str = "world",
 ) -> Pose:
-    """A pose from a translation (m) and roll-pitch-yaw angles (rad, URDF convention)."""
-    rotation = pin.rpy.rpyToMatrix(*[float(a) for a in rpy])
-    return Pose.from_se3(pin.SE3(rotation, np.array(xyz, dtype=float)), frame)
+    """A pose from a translation (m) and roll-pitch-yaw angles (rad, URDF convention):
+    :meth:`Pose.from_rpy`."""
+    return Pose.from_rpy(xyz, rpy, frame)

@@ -63,6 +63,10 @@ __all__ = ["Plan", "Workcell", "load_workcell", "run_task", "start_task"]
 BackendKind = Literal["mock", "sim", "serial", "http"]
 StateLike = JointState | Mapping[str, float]
 Position = Sequence[float]
+PoseLike = Pose | Mapping[str, Any]
+"""A :class:`~taskrunner.Pose`, or a pose as a task file writes it: ``{"xyz": [...],
+"rpy": [...]}`` or ``{"xyz": [...], "quat": [...]}``, with an optional ``"frame"``
+(m, radians, quaternion x, y, z, w), checked as a task file's pose is."""
 TaskLike = str | os.PathLike[str] | Task
 """A task file, a shipped example's name, or a :class:`~taskrunner.Task`."""
 
@@ -299,7 +303,7 @@ class Workcell:
 
     # ------------------------------------------------------------------ planning
     def plan(self, group: str, *, to: str | None = None,
-             joints: Mapping[str, float] | None = None, pose: Pose | None = None,
+             joints: Mapping[str, float] | None = None, pose: PoseLike | None = None,
              position: Position | None = None, link: str | None = None,
              start: StateLike | None = None, planner: str | None = None,
              planning_time: float = 5.0, seed: int = 0,
@@ -310,9 +314,12 @@ class Workcell:
         Give exactly one target: ``to`` (a named pose, MoveIt's ``set_named_target``),
         ``joints`` (``set_joint_value_target``; joints of the group left out keep their
         start values), ``pose`` (``set_pose_target``: a pose of ``link`` in the world or
-        in ``pose.frame``) or ``position`` (``set_position_target``: x, y, z of
-        ``link`` in the world frame, orientation free; what a 5-DOF arm can reach).
-        A ``pose`` for a group with ``position_only_ik`` is reached in position only.
+        in its ``frame``; a :class:`~taskrunner.Pose`, e.g. ``Pose.from_rpy(xyz, rpy)``,
+        or a task file's mapping ``{"xyz": [...], "rpy": [...]}``) or ``position``
+        (``set_position_target``: x, y, z of ``link`` in the world frame, orientation
+        free; what a 5-DOF arm can reach). A ``pose`` for a group with
+        ``position_only_ik``, or a mapping without ``rpy`` or ``quat`` (as in a task
+        file), is reached in position only.
 
         Args:
             group: the planning group that moves.
@@ -330,7 +337,9 @@ class Workcell:
 
         Raises:
             ValueError: not exactly one target, or an invalid option.
-            UnknownNameError: an unknown group, joint, link or named pose.
+            TaskSpecError: an invalid pose mapping (the message names the field).
+            UnknownNameError: an unknown group, joint, link or named pose (with a
+                "did you mean" when a known name is close).
             PlanningError: no motion (IkFailedError, StartInCollisionError,
                 GoalInCollisionError, PlanningTimeoutError, …: the message says why).
         """
@@ -415,8 +424,8 @@ class Workcell:
         return Plan(request.group, result.path, result.trajectory, self._full(result.start),
                     self._full(result.end), planning_time=result.total_time)
 
-    def plan_cartesian(self, group: str, waypoints: Pose | Position | Sequence[Pose | Position]
-                       | None = None, *, by: Position | None = None,
+    def plan_cartesian(self, group: str, waypoints: PoseLike | Position
+                       | Sequence[PoseLike | Position] | None = None, *, by: Position | None = None,
                        frame: Literal["world", "link"] = "world", link: str | None = None,
                        start: StateLike | None = None, eef_step: float = 0.005,
                        jump_threshold: float = 0.0, avoid_collisions: bool = True,
@@ -433,9 +442,11 @@ class Workcell:
 
         Args:
             group: the planning group that moves.
-            waypoints: a pose or several (world frame, or their ``frame``), or x, y, z
-                positions (world, m): a position keeps the link's start orientation, or
-                leaves it free on a position-only arm.
+            waypoints: a pose or several (world frame, or their ``frame``; a
+                :class:`~taskrunner.Pose` or a task file's mapping), or x, y, z
+                positions (world, m): a position, or a mapping without ``rpy`` or
+                ``quat``, keeps the link's start orientation, or leaves it free on a
+                position-only arm.
             by: instead of waypoints, one straight move by this offset (m), along the
                 world's axes (``frame="world"``) or the link's (``frame="link"``).
             link: the link that follows the lines (default: the group's tip).
@@ -469,7 +480,7 @@ class Workcell:
         else:
             here = self.link_pose(frame_link, JointState(self.joint_names, q))
             assert waypoints is not None
-            targets = [_waypoint(w, here) for w in _waypoint_list(waypoints)]
+            targets = [_waypoint(w, here, i) for i, w in enumerate(_waypoint_list(waypoints))]
         result = self._cartesian.compute(group, targets, link, options, q)
         # Timed by the joint limits, and by pilz_cartesian_limits.yaml's when the robot has it.
         trajectory = time_cartesian_path(self.model, result.path, frame_link, timing)
@@ -608,8 +619,8 @@ class Workcell:
         raise_for_problems(check_names(spec, self._cell))
         return spec
 
-    def _goal(self, to: str | None, joints: Mapping[str, float] | None, pose: Pose | None,
-              position: Position | None, link: str | None) -> Goal:
+    def _goal(self, to: str | None, joints: Mapping[str, float] | None,
+              pose: PoseLike | None, position: Position | None, link: str | None) -> Goal:
         given = [name for name, value in (("to", to), ("joints", joints), ("pose", pose),
                                           ("position", position)) if value is not None]
         if len(given) != 1:
@@ -621,9 +632,9 @@ class Workcell:
         if joints is not None:
             return JointGoal(joints)
         if pose is not None:
-            if not isinstance(pose, Pose):
-                raise ValueError(f"'pose' must be a taskrunner.Pose (got {pose!r})")
-            return PoseGoal(pose, link)
+            target, oriented = as_pose(pose, "pose")
+            # None: the group's position_only_ik decides, as for a task file's pose
+            return PoseGoal(target, link, position_only=None if oriented else True)
         assert position is not None
         return PoseGoal(Pose(_xyz("position", position)), link, position_only=True)
 
@@ -642,8 +653,43 @@ def _xyz(name: str, values: Position) -> tuple[float, float, float]:
     return (x, y, z)
 
 
-def _waypoint_list(waypoints: Pose | Position | Sequence[Pose | Position]) -> list[Pose | Position]:
-    if isinstance(waypoints, Pose):
+def as_pose(value: PoseLike, field: str = "pose") -> tuple[Pose, bool]:
+    """``value`` as a :class:`Pose`, and whether it gives an orientation (a mapping
+    without ``rpy`` or ``quat`` does not: its orientation is the identity).
+
+    A mapping is checked as a task file's pose is (the same model and messages), its
+    errors located at the caller's line.
+
+    Raises:
+        TaskSpecError: an invalid mapping (an unknown key, not 3 values, both ``rpy``
+            and ``quat``, a quaternion that is not a unit one ...).
+        InputError: neither a Pose nor a mapping.
+    """
+    if isinstance(value, Pose):
+        return value, True
+    if not isinstance(value, Mapping):
+        raise InputError(f"'{field}' must be a taskrunner.Pose or a mapping "
+                         f"{{xyz, rpy | quat, frame}} (got {value!r})")
+    from pydantic import ValidationError
+
+    from taskrunner.builder import _caller as caller_location  # the user's file:line
+    from taskrunner.tasks.nodes import PoseSpec
+    from taskrunner.tasks.problem import problems_error, problems_from_validation
+
+    data = dict(value)
+    try:
+        spec = PoseSpec.model_validate(data)
+    except ValidationError as exc:
+        where = caller_location()
+        raise problems_error(problems_from_validation(
+            exc, data, where.file if where else None, (field,), PoseSpec,
+            where.line if where else None)) from None
+    return spec.to_pose(), spec.has_orientation
+
+
+def _waypoint_list(waypoints: PoseLike | Position | Sequence[PoseLike | Position]
+                   ) -> list[PoseLike | Position]:
+    if isinstance(waypoints, (Pose, Mapping)):
         return [waypoints]
     items: list[Any] = list(waypoints)
     if items and all(isinstance(v, (int, float)) for v in items):
@@ -651,10 +697,18 @@ def _waypoint_list(waypoints: Pose | Position | Sequence[Pose | Position]) -> li
     return items
 
 
-def _waypoint(value: Pose | Position, here: Pose) -> Pose:
-    """A waypoint pose: a Pose as given; a position with the link's start orientation."""
-    if isinstance(value, Pose):
-        return value
+def _waypoint(value: PoseLike | Position, here: Pose, index: int) -> Pose:
+    """A waypoint pose: a Pose as given; a position, or a mapping without an
+    orientation, with the link's start orientation."""
+    if isinstance(value, (Pose, Mapping)):
+        pose, oriented = as_pose(value, f"waypoints[{index}]")
+        if oriented:
+            return pose
+        if pose.frame != "world":
+            raise InputError(f"'waypoints[{index}]' without 'rpy' or 'quat' keeps the "
+                             f"link's orientation in the world frame: it must have "
+                             f"frame 'world' (got {pose.frame!r})")
+        return Pose(pose.xyz, here.quat)
     return Pose(_xyz("waypoints", value), here.quat)
 
 

@@ -36,4 +36,6 @@ def test_errors_survive_pickling(error):
 def test_input_errors_start_with_their_location():
     assert str(errors.YamlError("duplicate key 'a'", "cell.yaml", 3)) == "cell.yaml:3: duplicate key 'a'"
     assert str(errors.YamlError("file not found", "cell.yaml")) == "cell.yaml: file not found"
-    assert str(errors.UnknownNameError("group", "amr", ["arm"])) == "unknown group 'amr'; known: 'arm'"
+    assert str(errors.UnknownNameError("group", "amr", ["arm"])) \
+        == "unknown group 'amr'; did you mean 'arm'? (known: 'arm')"
+    assert str(errors.UnknownNameError("group", "xyz", ["arm"])) == "unknown group 'xyz'; known: 'arm'"

@@ -8,9 +8,8 @@ them without raising.
 
 from __future__ import annotations
 
-import difflib
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, get_args
@@ -18,7 +17,7 @@ from typing import Any, get_args
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
-from taskrunner.errors import TaskSpecError
+from taskrunner.errors import TaskSpecError, did_you_mean
 from taskrunner.validation import locate
 
 __all__ = ["Problem", "did_you_mean", "problems_error", "problems_from_validation",
@@ -44,18 +43,6 @@ class Problem:
             return self.message
         where = f"{self.path}:{self.line}" if self.line is not None else str(self.path)
         return f"{where}: {self.message}"
-
-
-def did_you_mean(name: str, known: Iterable[str], what: str = "") -> str:
-    """``"; did you mean 'x'?"``, or ``"; <what>: 'a', 'b'"`` when nothing is close."""
-    known = sorted(set(known), key=str)
-    close = difflib.get_close_matches(str(name), known, n=1, cutoff=0.6)
-    if close:
-        return f"; did you mean {close[0]!r}?"
-    if not known or not what:
-        return ""
-    shown = ", ".join(repr(k) for k in known[:12])
-    return f"; {what}: {shown}{', …' if len(known) > 12 else ''}"
 
 
 def problems_error(problems: Sequence[Problem]) -> TaskSpecError:
