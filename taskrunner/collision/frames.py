@@ -72,19 +72,20 @@ _PRISMATIC = int(JointKind.PRISMATIC)
 
 
 @inline
-def compose(frames: np.ndarray, row: int, parent: int, placements: np.ndarray, at: int,
-            column: int) -> None:
-    """Frame row ``row`` := frame row ``parent`` times a placement given in ``parent``'s
-    frame: row ``at`` of ``placements`` holds its rotation (row-major) in columns
-    ``column`` to ``column + 8`` and its translation (m) in the next three. Only the
-    rotation and origin of ``row`` are written."""
+def compose(frames: np.ndarray, row: int, parent: int, placement: np.ndarray) -> None:
+    """Frame row ``row`` := frame row ``parent`` times ``placement``, given in ``parent``'s
+    frame: its rotation (row-major, elements 0-8) then its translation (m, 9-11); the
+    ``placement`` field of a :data:`~taskrunner.collision.tree.JOINT` or a
+    :data:`~taskrunner.collision.geometry.GEOMETRY` record (a record's field: no array of
+    its own to count references to, which an inlined call inside a branch would pay for).
+    Only the rotation and origin of ``row`` are written."""
     for a in range(3):
         origin = frames[parent, ORIGIN + a]
         for b in range(3):
-            origin += frames[parent, ROTATION + 3 * a + b] * placements[at, column + 9 + b]
+            origin += frames[parent, ROTATION + 3 * a + b] * placement[9 + b]
             total = 0.0
             for c in range(3):
-                total += frames[parent, ROTATION + 3 * a + c] * placements[at, column + 3 * c + b]
+                total += frames[parent, ROTATION + 3 * a + c] * placement[3 * c + b]
             frames[row, ROTATION + 3 * a + b] = total
         frames[row, ORIGIN + a] = origin
 
@@ -98,10 +99,9 @@ def joint_frames(q: np.ndarray, joints: np.ndarray, frames: np.ndarray) -> None:
             frames[0, ROTATION + 3 * a + b] = 1.0 if a == b else 0.0
         frames[0, ORIGIN + a] = 0.0
         frames[0, AXIS + a] = 0.0
-    placements = joints["placement"]
     for jid in range(1, joints.shape[0]):
         joint = joints[jid]
-        compose(frames, jid, joint.parent, placements, jid, 0)
+        compose(frames, jid, joint.parent, joint.placement)
         index = joint.state
         value = q[index] if index >= 0 else 0.0
         kind = joint.kind

@@ -81,6 +81,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.collision.frames import AXIS, ORIGIN, ROTATION, compose, inline, jit, joint_frames
+from taskrunner.collision.geometry import GEOMETRY, ShapeKind
 from taskrunner.collision.tree import KinematicTree
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
@@ -186,17 +187,17 @@ class PathVerifier:
         count = len(records)
         self._geometry_names = [r.name for r in records]
         levers = np.array([r.levers for r in records]).reshape(count, nq)
-        geo_i = np.zeros((count, 5), dtype=np.int64)
+        geometries = np.zeros(count, dtype=GEOMETRY)
         hulls = [r.points for r in records if r.points is not None]
         self._points = np.ascontiguousarray(np.vstack(hulls)) if hulls else np.zeros((0, 3))
         start = 0
         for g, r in enumerate(records):
-            geo_i[g, :3] = r.ints
+            geometries[g] = r.geometry
             if r.points is not None:
-                geo_i[g, _GI_FROM], geo_i[g, _GI_COUNT] = start, len(r.points)
+                geometries["first_point"][g] = start
+                geometries["point_count"][g] = len(r.points)
                 start += len(r.points)
-        self._geo_i = geo_i
-        self._geo_f = np.array([r.floats for r in records]).reshape(count, _GF_COLUMNS)
+        self._geometries = geometries
         self._levers = levers
         pairs = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
                          dtype=np.int64).reshape(-1, 2)
@@ -217,7 +218,7 @@ class PathVerifier:
         np.cumsum(np.bincount(unit_of, minlength=units), out=self._unit_from[1:])
         self._unit_i = self._pair_i[representative[:units]].copy()
         self._unit_levers = self._pair_levers[representative[:units]].copy()
-        self._kinematics = _Kinematics(tree, self._geo_i, self._geo_f)
+        self._kinematics = _Kinematics(tree, self._geometries)
         self._settings = np.zeros(_S_COUNT)
         self._settings[:5] = (margin, _DISTANCE_SLACK, GAIN, _EARLY,
                               CHEAP_FROM if tree.supported else np.inf)
@@ -253,7 +254,7 @@ class PathVerifier:
         out = np.zeros(len(self._first))
         kin = self._kinematics
         frames = kin.frames(states[0])
-        _segment_bounds(cumulative, self._geo_f, self._pair_i, self._pair_levers, frames,
+        _segment_bounds(cumulative, self._geometries, self._pair_i, self._pair_levers, frames,
                         kin.joints.shape[0], self._tree.supported, out)
         return out
 
@@ -266,7 +267,7 @@ class PathVerifier:
             return out
         kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
-        _lower_bounds(self._pair_i, self._geo_i, self._geo_f, frames, kin.joints.shape[0], out)
+        _lower_bounds(self._pair_i, self._geometries, frames, kin.joints.shape[0], out)
         return out
 
     def support_bounds(self, q: np.ndarray) -> np.ndarray:
@@ -279,7 +280,7 @@ class PathVerifier:
             return out
         kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
-        _support_bounds(self._pair_i, self._geo_i, self._geo_f, frames, self._points,
+        _support_bounds(self._pair_i, self._geometries, frames, self._points,
                         kin.joints.shape[0], out)
         return out
 
@@ -311,7 +312,7 @@ class PathVerifier:
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             kin = self._kinematics
-            walked = (kin.joints, self._geo_i, self._geo_f, self._points,
+            walked = (kin.joints, self._geometries, self._points,
                       self._pair_i, self._unit_i, self._unit_levers, self._members,
                       self._unit_from, self._unit_of, states, cumulative, frames, walk,
                       schedule, picked, selected, distances, q, settings)
@@ -350,15 +351,9 @@ class PathVerifier:
 
 
 # Columns of the packed arrays the kernels read (one row per joint, geometry or pair).
-# geo_i (n_geometries, 5): joint, has a bounding box, shape (_SHAPE_*), its first vertex
-# in the verifier's points and their count (a hull).
-_GI_JOINT, _GI_BOX, _GI_SHAPE, _GI_FROM, _GI_COUNT = range(5)
-# A shape is its core (a box, a convex hull, a cylinder about z, a point for a sphere) grown
-# by the radius _GF_SWEPT.
-_SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL, _SHAPE_CYLINDER, _SHAPE_SPHERE = range(5)
-_GF_ROT, _GF_TRANS, _GF_CENTRE, _GF_RADIUS, _GF_HALF, _GF_BOX, _GF_SWEPT = 0, 9, 12, 15, 16, 19, 22
-assert _GF_TRANS == _GF_ROT + 9  # a placement as compose reads it
-_GF_COLUMNS = 23                                              # geo_f (n_geometries, 23)
+# The geometries' records (taskrunner.collision.geometry.GEOMETRY): their core shapes.
+_SHAPE_NONE, _SHAPE_BOX, _SHAPE_HULL = int(ShapeKind.NONE), int(ShapeKind.BOX), int(ShapeKind.HULL)
+_SHAPE_CYLINDER, _SHAPE_SPHERE = int(ShapeKind.CYLINDER), int(ShapeKind.SPHERE)
 # pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
 # such joint (deepest first): its state index, code, the geometry it moves, its joint id.
 _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
@@ -385,8 +380,7 @@ class _Record:
 
     name: str
     levers: np.ndarray
-    ints: tuple[int, int, int]
-    floats: np.ndarray
+    geometry: np.ndarray  # a GEOMETRY record (0-d); its points' place is the verifier's
     points: np.ndarray | None = None
 
 
@@ -426,8 +420,8 @@ class _Tree(KinematicTree):
         kept = self._records.get(key)
         if kept is not None:
             record = kept[1]
-            return record if record.name == name else _Record(name, record.levers, record.ints,
-                                                              record.floats, record.points)
+            return record if record.name == name else _Record(name, record.levers, record.geometry,
+                                                              record.points)
         record = self._build_record(geometry_object)
         if len(self._records) > 4096:
             self._records.clear()
@@ -437,19 +431,19 @@ class _Tree(KinematicTree):
     def _build_record(self, geometry_object: pin.GeometryObject) -> _Record:
         geometry = geometry_object.geometry
         levers = self.levers(geometry_object)          # computes the local AABB
-        floats = np.zeros(_GF_COLUMNS)
-        floats[_GF_ROT:_GF_ROT + 9] = np.asarray(geometry_object.placement.rotation).reshape(9)
-        floats[_GF_TRANS:_GF_TRANS + 3] = geometry_object.placement.translation
+        row = np.zeros((), dtype=GEOMETRY)
+        row["placement"][:9] = np.asarray(geometry_object.placement.rotation).reshape(9)
+        row["placement"][9:] = geometry_object.placement.translation
         centre, radius = _enclosing_sphere(geometry)
-        floats[_GF_CENTRE:_GF_CENTRE + 3] = centre
-        floats[_GF_RADIUS] = radius
+        row["centre"] = centre
+        row["radius"] = radius
         # The geometry's bounding box in its own frame (a box geometry: itself).
         low = np.asarray(geometry.aabb_local.min_, dtype=float)
         high = np.asarray(geometry.aabb_local.max_, dtype=float)
         has_box = bool(np.isfinite(low).all() and np.isfinite(high).all())
         if has_box:
-            floats[_GF_HALF:_GF_HALF + 3] = 0.5 * (high - low)
-            floats[_GF_BOX:_GF_BOX + 3] = 0.5 * (high + low)
+            row["half"] = 0.5 * (high - low)
+            row["box"] = 0.5 * (high + low)
         # Shapes whose support function the kernels evaluate exactly (or of a shape that
         # contains them): a box, a cylinder (about z) or a sphere from its bounding box,
         # centred on it; a convex hull from its vertices; each grown by its swept sphere
@@ -458,8 +452,8 @@ class _Tree(KinematicTree):
         swept = float(geometry.getSweptSphereRadius()) \
             if hasattr(geometry, "getSweptSphereRadius") else 0.0
         kind = type(geometry)
-        half = floats[_GF_HALF:_GF_HALF + 3]
-        if not has_box or np.any(floats[_GF_BOX:_GF_BOX + 3] != 0.0):
+        half = row["half"]
+        if not has_box or np.any(row["box"] != 0.0):
             pass
         elif kind is coal.Box:
             shape = _SHAPE_BOX
@@ -473,11 +467,13 @@ class _Tree(KinematicTree):
             if vertices.ndim == 2 and vertices.shape[1] == 3 and len(vertices) \
                     and np.isfinite(vertices).all():
                 shape, points = _SHAPE_HULL, np.ascontiguousarray(vertices)
-        floats[_GF_SWEPT] = swept if math.isfinite(swept) and swept >= 0.0 else 0.0
+        row["swept"] = swept if math.isfinite(swept) and swept >= 0.0 else 0.0
         if not (math.isfinite(swept) and swept >= 0.0):
             shape = _SHAPE_NONE
-        return _Record(geometry_object.name, levers,
-                       (int(geometry_object.parentJoint), int(has_box), shape), floats, points)
+        row["joint"] = int(geometry_object.parentJoint)
+        row["has_box"] = int(has_box)
+        row["shape"] = shape
+        return _Record(geometry_object.name, levers, row, points)
 
 
 def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:
@@ -522,20 +518,19 @@ def _tree(robot: RobotModel) -> _Tree:
 class _Kinematics:
     """Forward kinematics of one verifier's geometry (compiled)."""
 
-    def __init__(self, tree: _Tree, geo_i: np.ndarray, geo_f: np.ndarray) -> None:
+    def __init__(self, tree: _Tree, geometries: np.ndarray) -> None:
         self.joints = tree.joints
-        self.geo_i, self.geo_f = geo_i, geo_f
+        self.geometries = geometries
         self.supported = tree.supported
 
     def buffer(self) -> np.ndarray:
         """Work array of the kernels' frames (see ``_FR_*``)."""
-        return np.zeros((self.joints.shape[0] + self.geo_i.shape[0], _FR_COLUMNS))
+        return np.zeros((self.joints.shape[0] + self.geometries.shape[0], _FR_COLUMNS))
 
     def frames(self, q: np.ndarray) -> np.ndarray:
         """The frames at state ``q`` (see :meth:`poses`)."""
         frames = self.buffer()
-        _forward(np.ascontiguousarray(q, dtype=float), self.joints, self.geo_i, self.geo_f,
-                 frames)
+        _forward(np.ascontiguousarray(q, dtype=float), self.joints, self.geometries, frames)
         return frames
 
     def poses(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -575,37 +570,37 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 # except the support bound and its support function (called rarely, and large: each compiled
 # once, then called; inlined they would add seconds to the first compilation).
 @jit
-def _forward(q, joints, geo_i, geo_f, frames):  # type: ignore[no-untyped-def]
+def _forward(q, joints, geometries, frames):  # type: ignore[no-untyped-def]
     """World frames of the joints and the geometries at state ``q`` (into ``frames``,
     columns ``_FR_*``: geometry ``g`` is row ``n_joints + g``)."""
     joint_frames(q, joints, frames)
     nj = joints.shape[0]
-    for g in range(geo_i.shape[0]):
-        _geometry_frame(g, geo_i, geo_f, frames, nj)
+    for g in range(geometries.shape[0]):
+        _geometry_frame(g, geometries, frames, nj)
 
 
 @inline
-def _geometry_frame(g, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+def _geometry_frame(g, geometries, frames, nj):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s world frame, bounding sphere and box centres (row ``nj + g`` of
     ``frames``) from its joint's frame."""
-    jid = geo_i[g, _GI_JOINT]
+    jid = geometries[g].joint
     row = nj + g
-    compose(frames, row, jid, geo_f, g, _GF_ROT)  # _GF_TRANS follows the rotation
+    compose(frames, row, jid, geometries[g].placement)
     for a in range(3):
         centre = frames[row, ORIGIN + a]
         box = frames[row, ORIGIN + a]
         for b in range(3):
-            centre += frames[row, 3 * a + b] * geo_f[g, _GF_CENTRE + b]
-            box += frames[row, 3 * a + b] * geo_f[g, _GF_BOX + b]
+            centre += frames[row, 3 * a + b] * geometries[g].centre[b]
+            box += frames[row, 3 * a + b] * geometries[g].box[b]
         frames[row, _FR_CENTRE + a] = centre
         frames[row, _FR_BOX + a] = box
 
 
 @inline
-def _place(g, geo_i, geo_f, frames, nj, stamp):  # type: ignore[no-untyped-def]
+def _place(g, geometries, frames, nj, stamp):  # type: ignore[no-untyped-def]
     """Place geometry ``g`` at the state of the joint frames (compiled state ``stamp``)."""
-    _geometry_frame(g, geo_i, geo_f, frames, nj)
-    frames[nj + g, _FR_PLACED] = np.inf if geo_i[g, _GI_JOINT] == 0 else stamp
+    _geometry_frame(g, geometries, frames, nj)
+    frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
 
 
 @jit
@@ -628,24 +623,24 @@ def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyp
 
 
 @inline
-def _sphere_to_box(frames, row, radius, box, geo_f, nj):  # type: ignore[no-untyped-def]
+def _sphere_to_box(frames, row, radius, box, geometries, nj):  # type: ignore[no-untyped-def]
     """Distance from the bounding sphere of frames row ``row`` (radius ``radius``) to
     geometry ``box``'s bounding box (negative: may overlap)."""
     other = nj + box
     outside = 0.0
     for b in range(3):
-        local = -geo_f[box, _GF_BOX + b]
+        local = -geometries[box].box[b]
         for a in range(3):
             local += frames[other, 3 * a + b] * (frames[row, _FR_CENTRE + a]
                                                  - frames[other, ORIGIN + a])
-        excess = abs(local) - geo_f[box, _GF_HALF + b]
+        excess = abs(local) - geometries[box].half[b]
         if excess > 0.0:
             outside += excess * excess
     return math.sqrt(outside) - radius
 
 
 @inline
-def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+def _box_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
     """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
     boxes on their six face normals: a lower bound on their distance where positive.
 
@@ -661,16 +656,16 @@ def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
             t = frames[ra, _FR_BOX + m] - frames[rb, _FR_BOX + m]
             along_a += t * frames[ra, 3 * m + axis]
             along_b += t * frames[rb, 3 * m + axis]
-        gap_a = abs(along_a) - geo_f[a, _GF_HALF + axis]
-        gap_b = abs(along_b) - geo_f[b, _GF_HALF + axis]
+        gap_a = abs(along_a) - geometries[a].half[axis]
+        gap_b = abs(along_b) - geometries[b].half[axis]
         for j in range(3):
             c_aj = 0.0              # C[axis, j] and C[j, axis]
             c_ja = 0.0
             for m in range(3):
                 c_aj += frames[ra, 3 * m + axis] * frames[rb, 3 * m + j]
                 c_ja += frames[ra, 3 * m + j] * frames[rb, 3 * m + axis]
-            gap_a -= geo_f[b, _GF_HALF + j] * abs(c_aj)
-            gap_b -= geo_f[a, _GF_HALF + j] * abs(c_ja)
+            gap_a -= geometries[b].half[j] * abs(c_aj)
+            gap_b -= geometries[a].half[j] * abs(c_ja)
         if gap_a > best:
             best = gap_a
         if gap_b > best:
@@ -679,18 +674,18 @@ def _box_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _sphere_gap(a, b, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+def _sphere_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
     """The distance of geometries ``a``'s and ``b``'s bounding spheres (placed): the first
     of :func:`_lower_bound`'s bounds, which is at least this."""
     ra, rb = nj + a, nj + b
     gap = 0.0
     for i in range(3):
         gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
-    return math.sqrt(gap) - geo_f[a, _GF_RADIUS] - geo_f[b, _GF_RADIUS]
+    return math.sqrt(gap) - geometries[a].radius - geometries[b].radius
 
 
 @inline
-def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def]
+def _lower_bound(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
     bounding box and the boxes' separation along their face normals."""
@@ -698,24 +693,24 @@ def _lower_bound(a, b, geo_i, geo_f, frames, nj):  # type: ignore[no-untyped-def
     gap = 0.0
     for i in range(3):
         gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
-    best = math.sqrt(gap) - geo_f[a, _GF_RADIUS] - geo_f[b, _GF_RADIUS]
-    if geo_i[b, _GI_BOX] != 0:
-        value = _sphere_to_box(frames, ra, geo_f[a, _GF_RADIUS], b, geo_f, nj)
+    best = math.sqrt(gap) - geometries[a].radius - geometries[b].radius
+    if geometries[b].has_box != 0:
+        value = _sphere_to_box(frames, ra, geometries[a].radius, b, geometries, nj)
         if value > best:
             best = value
-    if geo_i[a, _GI_BOX] != 0:
-        value = _sphere_to_box(frames, rb, geo_f[b, _GF_RADIUS], a, geo_f, nj)
+    if geometries[a].has_box != 0:
+        value = _sphere_to_box(frames, rb, geometries[b].radius, a, geometries, nj)
         if value > best:
             best = value
-    if geo_i[a, _GI_BOX] != 0 and geo_i[b, _GI_BOX] != 0:
-        value = _box_gap(a, b, geo_f, frames, nj)
+    if geometries[a].has_box != 0 and geometries[b].has_box != 0:
+        value = _box_gap(a, b, geometries, frames, nj)
         if value > best:
             best = value
     return best
 
 
 @jit
-def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
+def _support(g, dx, dy, dz, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
     row = nj + g
@@ -723,25 +718,25 @@ def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[n
     lx = frames[row, 0] * dx + frames[row, 3] * dy + frames[row, 6] * dz
     ly = frames[row, 1] * dx + frames[row, 4] * dy + frames[row, 7] * dz
     lz = frames[row, 2] * dx + frames[row, 5] * dy + frames[row, 8] * dz
-    shape = geo_i[g, _GI_SHAPE]
+    shape = geometries[g].shape
     if shape != _SHAPE_HULL:
         px = py = pz = 0.0
         if shape == _SHAPE_BOX:
-            px = geo_f[g, _GF_HALF] if lx >= 0.0 else -geo_f[g, _GF_HALF]
-            py = geo_f[g, _GF_HALF + 1] if ly >= 0.0 else -geo_f[g, _GF_HALF + 1]
-            pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
+            px = geometries[g].half[0] if lx >= 0.0 else -geometries[g].half[0]
+            py = geometries[g].half[1] if ly >= 0.0 else -geometries[g].half[1]
+            pz = geometries[g].half[2] if lz >= 0.0 else -geometries[g].half[2]
         elif shape == _SHAPE_CYLINDER:
             radial = math.sqrt(lx * lx + ly * ly)
             if radial > 0.0:
-                px = geo_f[g, _GF_HALF] * lx / radial
-                py = geo_f[g, _GF_HALF] * ly / radial
-            pz = geo_f[g, _GF_HALF + 2] if lz >= 0.0 else -geo_f[g, _GF_HALF + 2]
+                px = geometries[g].half[0] * lx / radial
+                py = geometries[g].half[0] * ly / radial
+            pz = geometries[g].half[2] if lz >= 0.0 else -geometries[g].half[2]
         ox, oy, oz = frames[row, _FR_BOX], frames[row, _FR_BOX + 1], frames[row, _FR_BOX + 2]
     else:
-        first = geo_i[g, _GI_FROM]
+        first = geometries[g].first_point
         best = -np.inf
         px = py = pz = 0.0
-        for v in range(first, first + geo_i[g, _GI_COUNT]):
+        for v in range(first, first + geometries[g].point_count):
             value = points[v, 0] * lx + points[v, 1] * ly + points[v, 2] * lz
             if value > best:
                 best = value
@@ -754,7 +749,7 @@ def _support(g, dx, dy, dz, geo_i, geo_f, frames, points, nj):  # type: ignore[n
 
 
 @jit
-def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-untyped-def]
+def _support_bound(a, b, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).
 
@@ -767,10 +762,10 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
     closest to the origin, approached over segments), until the bound is within
     ``_SUPPORT_TOLERANCE`` of the distance estimate or after ``_SUPPORT_STEPS``. Each swept
     sphere radius is subtracted."""
-    if geo_i[a, _GI_SHAPE] == _SHAPE_NONE or geo_i[b, _GI_SHAPE] == _SHAPE_NONE:
+    if geometries[a].shape == _SHAPE_NONE or geometries[b].shape == _SHAPE_NONE:
         return -np.inf
     ra, rb = nj + a, nj + b
-    swept = geo_f[a, _GF_SWEPT] + geo_f[b, _GF_SWEPT]
+    swept = geometries[a].swept + geometries[b].swept
     best = -np.inf
     vx = vy = vz = 0.0
     # The offset of the bounding spheres' centres, from A to B.
@@ -785,7 +780,7 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
                 if axis == 3:
                     continue
                 owner = ra if side == 0 else rb
-                shape = geo_i[owner - nj, _GI_SHAPE]
+                shape = geometries[owner - nj].shape
                 if shape == _SHAPE_CYLINDER and axis < 2:
                     ux, uy, uz = frames[owner, 2], frames[owner, 5], frames[owner, 8]
                     if axis == 1:     # the offset less its part along the axis
@@ -809,8 +804,8 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
                     continue
                 ux, uy, uz = nx / length, ny / length, nz / length
             # Separation along u: min over B of u.b - max over A of u.a.
-            ax, ay, az = _support(a, ux, uy, uz, geo_i, geo_f, frames, points, nj)
-            bx, by, bz = _support(b, -ux, -uy, -uz, geo_i, geo_f, frames, points, nj)
+            ax, ay, az = _support(a, ux, uy, uz, geometries, frames, points, nj)
+            bx, by, bz = _support(b, -ux, -uy, -uz, geometries, frames, points, nj)
             gap = (bx - ax) * ux + (by - ay) * uy + (bz - az) * uz
             if gap > best:
                 best = gap
@@ -822,8 +817,8 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
         if not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length:
             break
         ux, uy, uz = vx / length, vy / length, vz / length
-        ax, ay, az = _support(a, ux, uy, uz, geo_i, geo_f, frames, points, nj)
-        bx, by, bz = _support(b, -ux, -uy, -uz, geo_i, geo_f, frames, points, nj)
+        ax, ay, az = _support(a, ux, uy, uz, geometries, frames, points, nj)
+        bx, by, bz = _support(b, -ux, -uy, -uz, geometries, frames, points, nj)
         wx, wy, wz = bx - ax, by - ay, bz - az
         gap = wx * ux + wy * uy + wz * uz
         if gap > best:
@@ -845,7 +840,7 @@ def _support_bound(a, b, geo_i, geo_f, frames, points, nj):  # type: ignore[no-u
 
 
 @inline
-def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
+def _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
     """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
     for the joints that count): for a revolute joint, the distance from its axis to the
     moved body's bounding sphere centre plus the radius (never more than the full-reach
@@ -865,7 +860,7 @@ def _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, col
                 along += v * frames[jid, AXIS + a]
                 length2 += v * v
             off_axis = length2 - along * along
-            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geo_f[g, _GF_RADIUS]
+            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometries[g].radius
             if lever < full:
                 value = lever
         walk[k, column + j] = value
@@ -1020,7 +1015,7 @@ def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
 
 
 @jit
-def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
+def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
              settings):
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
     of ``frames``) and schedule the pair's next measurement. A called function, not
@@ -1042,12 +1037,12 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
         walk[k, _HAS_L] = 1.0
         walk[k, _PL] = s
         walk[k, _DL] = d
-        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, left)
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
     else:                            # a gap: this one waits on the right
         walk[k, _HAS_R] = 1.0
         walk[k, _PR] = s
         walk[k, _DR] = d
-        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, right)
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, right)
     start = walk[k, _PL]
     # After a gap, the test below is the one that just failed (same start, lever arms
     # and position): skipped.
@@ -1081,7 +1076,7 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geo_f, frames, nj, walk, 
 
 
 @jit
-def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
+def _walk(joints, geometries, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
           unit_from, unit_of, states, cumulative, frames, walk, schedule, picked, selected,
           distances, q, settings):
     """Walk the path through ``states`` until some pairs need an exact distance: returns
@@ -1116,7 +1111,7 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
                 walk[k, column] = 0.0
             schedule[0, k] = 0.0                   # every unit is measured at the start
             schedule[1, k] = 0.0
-        for g in range(geo_i.shape[0]):
+        for g in range(geometries.shape[0]):
             frames[nj + g, _FR_PLACED] = -1.0      # not placed
     c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
@@ -1142,7 +1137,7 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
         u = unit_of[selected[i]]
         if walk[u, _UPENDING] == 0.0:
             walk[u, _UPENDING] = -1.0  # measured once
-            _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geo_f, frames, nj,
+            _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geometries, frames, nj,
                      walk, schedule, c0, settings)
     # Then on along the path.
     while True:
@@ -1177,10 +1172,10 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
                 k = members[m]
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 if frames[nj + a, _FR_PLACED] < stamp:
-                    _place(a, geo_i, geo_f, frames, nj, stamp)
+                    _place(a, geometries, frames, nj, stamp)
                 if frames[nj + b, _FR_PLACED] < stamp:
-                    _place(b, geo_i, geo_f, frames, nj, stamp)
-                distances[m] = _sphere_gap(a, b, geo_f, frames, nj)
+                    _place(b, geometries, frames, nj, stamp)
+                distances[m] = _sphere_gap(a, b, geometries, frames, nj)
                 if distances[m] < distances[nearest]:
                     nearest = m
             for t in range(first - 1, last):
@@ -1189,9 +1184,9 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
                     continue
                 k = members[m]
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
-                d = _lower_bound(a, b, geo_i, geo_f, frames, nj)
+                d = _lower_bound(a, b, geometries, frames, nj)
                 if d < cheap_from or not d > 0.0:
-                    bound = _support_bound(a, b, geo_i, geo_f, frames, points, nj)
+                    bound = _support_bound(a, b, geometries, frames, points, nj)
                     if bound > d:
                         d = bound
                     if not (bound > -np.inf and d >= exact_from):
@@ -1204,7 +1199,7 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
                 if d < least:
                     least = d
             if pending == 0:
-                _measure(u, least, s, cumulative, unit_i, unit_levers, geo_f, frames, nj, walk,
+                _measure(u, least, s, cumulative, unit_i, unit_levers, geometries, frames, nj, walk,
                          schedule, c0, settings)
             else:
                 walk[u, _UMIN] = least
@@ -1215,30 +1210,30 @@ def _walk(joints, geo_i, geo_f, points, pair_i, unit_i, unit_levers, members,  #
 
 
 @jit
-def _segment_bounds(cumulative, geo_f, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
+def _segment_bounds(cumulative, geometries, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
     """Per pair, the motion bound from the first state to the second (``cumulative``:
     their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
     nq = cumulative.shape[1]
     walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
     c0 = np.zeros(nq)
     for k in range(pair_i.shape[0]):
-        _levers_here(k, pair_i, pair_levers, geo_f, frames, nj, per_state, walk, _COLUMNS)
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, _COLUMNS)
         out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, _COLUMNS, 1.0)
 
 
 @jit
-def _lower_bounds(pair_i, geo_i, geo_f, frames, nj, out):  # type: ignore[no-untyped-def]
+def _lower_bounds(pair_i, geometries, frames, nj, out):  # type: ignore[no-untyped-def]
     """Per pair, :func:`_lower_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
-        out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+        out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
                               frames, nj)
 
 
 @jit
-def _support_bounds(pair_i, geo_i, geo_f, frames, points, nj, out):  # type: ignore[no-untyped-def]
+def _support_bounds(pair_i, geometries, frames, points, nj, out):  # type: ignore[no-untyped-def]
     """Per pair, :func:`_support_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
-        out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geo_i, geo_f,
+        out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
                                 frames, points, nj)
 
 

@@ -64,7 +64,7 @@ def test_a_build_from_the_kept_robot_rows_decides_as_one_from_scratch(panda_mode
     kept = PathVerifier(robot, scene.checker)
     sweep._TREES.clear()
     fresh = PathVerifier(robot, scene.checker)
-    for name in ("_pair_levers", "_pair_i", "_geo_i", "_geo_f", "_levers"):
+    for name in ("_pair_levers", "_pair_i", "_geometries", "_levers"):
         assert np.array_equal(getattr(kept, name), getattr(fresh, name)), name
     assert np.array_equal(kept._levers, lever_arms(robot, scene.checker.geometry_model))
     # A scene edit: an object added and one moved; the links' rows come from the cache.
@@ -74,7 +74,7 @@ def test_a_build_from_the_kept_robot_rows_decides_as_one_from_scratch(panda_mode
     sweep._TREES.clear()
     rebuilt = PathVerifier(robot, scene.checker)
     assert np.array_equal(edited._pair_i, rebuilt._pair_i)
-    assert np.array_equal(edited._geo_f, rebuilt._geo_f)
+    assert np.array_equal(edited._geometries, rebuilt._geometries)
     rng = np.random.default_rng(21)
     verdicts = set()
     for states in _random_paths(scene, rng, 12, 0.6):
@@ -136,7 +136,7 @@ def test_a_primitive_edited_in_place_gets_new_rows(panda_model):
     box = geometry_model.geometryObjects[index].geometry
     box.halfSide = np.asarray(box.halfSide) * 2.0
     after = PathVerifier(scene.robot, scene.checker)
-    row = after._geo_f[index]
-    assert not np.array_equal(before._geo_f[index], row)
+    row = after._geometries[index]
+    assert not np.array_equal(before._geometries[index], row)
     sweep._TREES.clear()
-    assert np.array_equal(PathVerifier(scene.robot, scene.checker)._geo_f[index], row)
+    assert np.array_equal(PathVerifier(scene.robot, scene.checker)._geometries[index], row)
