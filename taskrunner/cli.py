@@ -698,7 +698,14 @@ def _add_test_sweep_parsers(sub) -> None:  # type: ignore[no-untyped-def]
 def _parser() -> argparse.ArgumentParser:
     from taskrunner import __version__
 
-    parser = argparse.ArgumentParser(prog="run-task", description=__doc__.split("\n\n")[0])
+    # Help is plain text (the module's docstring is reStructuredText, for the API docs).
+    parser = argparse.ArgumentParser(
+        prog="run-task",
+        description="Check and run robot-cell task files (run-task FILE is run-task run "
+                    "FILE), serve the REST API and the web view. run-task COMMAND --help "
+                    "for a command's options.",
+        epilog="exit codes: 0 success, 2 invalid task or input, 3 planning failure, "
+               "4 execution failure, 130 cancelled (Ctrl-C), 143 cancelled by SIGTERM")
     parser.add_argument("--version", action="version", version=f"run-task {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
