@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from taskrunner.collision import frames as collision_frames
-from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, compose, inline, jit, joint_frames
+from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, inline, jit, joint_frames
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
@@ -54,19 +54,19 @@ PROVEN = 1e-5
 """m: a pair whose inner volumes overlap by more than this collides at that state (coal
 agrees without being asked: well beyond its 1 µm tolerance)."""
 
-VOLUMES = np.dtype([
-    ("joint", np.int64),           # the joint carrying the geometry (0: fixed)
-    ("has_box", np.int64),         # 1: it has a bounding box
-    ("exact", np.int64),           # 1: the box is the geometry itself (a box shape)
-    ("centre", np.float64, (3,)),  # bounding sphere: centre in the joint's frame (m)
-    ("radius", np.float64),        # ... and radius (m)
-    ("box", np.float64, (12,)),    # bounding box: placement on the joint (compose's layout)
-    ("half", np.float64, (3,)),    # ... and half extents (m)
-    ("inner", np.float64, (3,)),   # a sphere inside the geometry: centre in the joint's frame
-    ("inner_radius", np.float64),  # ... and radius (m; 0: none)
-])
-"""A geometry's volumes as the screen reads them (one record per geometry of the checker):
-those of its :data:`~taskrunner.collision.geometry.GEOMETRY` record, in its joint's frame."""
+# The screen's own rows per geometry, derived from the verifier's GEOMETRY records
+# (taskrunner.collision.geometry) in the joint's frame. Plain arrays, not records: with
+# records here the scan measured 8-10 % slower per state (numba 0.6x; the verifier's kernels
+# read records at the old speed). Columns of the float rows (``geo``): the sphere's centre
+# in its joint's frame and radius; the box's axes (a rotation, row-major) and centre in the
+# joint's frame and half extents.
+_G_CENTRE, _G_RADIUS, _G_ROT, _G_BOX, _G_HALF = 0, 3, 4, 13, 16
+# ... and a sphere inside the geometry: its centre in the joint's frame and radius (0: none).
+_G_INNER, _G_INNER_RADIUS = 19, 22
+_G_COLUMNS = 23
+# Per-geometry int rows (``gi``): the joint, whether it has a box, whether the box is the
+# geometry itself (a box shape).
+_I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
 # Work rows: the joints' frame rows (:func:`taskrunner.collision.frames.joint_frames`), then
 # per geometry its sphere centre (columns 0-2) and the state its box was last placed at
 # (column 3), then per geometry its box in the world (a frame row: rotation, centre).
@@ -148,38 +148,38 @@ class StateScreen:
         n = len(geometries)
         objects = verifier._geometry.geometryObjects
         inner = np.array([_inner_sphere(objects[g].geometry) for g in range(n)]).reshape(n, 5)
-        volumes = np.zeros(n, dtype=VOLUMES)
-        volumes["joint"] = geometries["joint"]
-        volumes["has_box"] = geometries["has_box"]
-        volumes["exact"] = inner[:, 4]
+        self._gi = np.zeros((n, 3), dtype=np.int64)
+        self._gi[:, _I_JOINT] = geometries["joint"]
+        self._gi[:, _I_BOX] = geometries["has_box"]
+        self._gi[:, _I_EXACT] = inner[:, 4]
         # Each geometry's sphere centre and box in its joint's frame (the records give
         # them in the geometry's own frame, and its placement on the joint).
         placement = geometries["placement"]
         rot = placement[:, :9].reshape(n, 3, 3)
         trans = placement[:, 9:]
-        volumes["centre"] = np.einsum("gij,gj->gi", rot, geometries["centre"]) + trans
-        volumes["radius"] = geometries["radius"]
-        volumes["box"][:, :9] = rot.reshape(n, 9)
-        volumes["box"][:, 9:] = np.einsum("gij,gj->gi", rot, geometries["box"]) + trans
-        volumes["half"] = geometries["half"]
-        volumes["inner"] = np.einsum("gij,gj->gi", rot, inner[:, :3]) + trans
-        volumes["inner_radius"] = inner[:, 3]
-        self._volumes = volumes
+        geo = np.zeros((n, _G_COLUMNS))
+        geo[:, _G_CENTRE:_G_CENTRE + 3] = np.einsum("gij,gj->gi", rot, geometries["centre"]) + trans
+        geo[:, _G_RADIUS] = geometries["radius"]
+        geo[:, _G_ROT:_G_ROT + 9] = rot.reshape(n, 9)
+        geo[:, _G_BOX:_G_BOX + 3] = np.einsum("gij,gj->gi", rot, geometries["box"]) + trans
+        geo[:, _G_HALF:_G_HALF + 3] = geometries["half"]
+        geo[:, _G_INNER:_G_INNER + 3] = np.einsum("gij,gj->gi", rot, inner[:, :3]) + trans
+        geo[:, _G_INNER_RADIUS] = inner[:, 3]
+        self._geo = geo
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
-        radius = volumes["radius"]
-        reach = radius[self._pairs[:, 0]] + radius[self._pairs[:, 1]] + CLEAR
+        reach = geo[self._pairs[:, 0], _G_RADIUS] + geo[self._pairs[:, 1], _G_RADIUS] + CLEAR
         self._reach2 = np.ascontiguousarray(reach * reach)
-        self._moving = np.ascontiguousarray(np.flatnonzero(volumes["joint"] != 0), dtype=np.int64)
+        self._moving = np.ascontiguousarray(np.flatnonzero(self._gi[:, 0] != 0), dtype=np.int64)
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
-        nj, ng = len(self._joints), len(self._volumes)
+        nj, ng = len(self._joints), len(self._gi)
         work = np.zeros((nj + 2 * ng, FRAME_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
 
     def _tail(self, work: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, ...]:
         """The kernels' arguments after the states: this screen's arrays and the work ones."""
-        return (self._joints, self._volumes, self._pairs, self._reach2,
+        return (self._joints, self._gi, self._geo, self._pairs, self._reach2,
                 self._moving, work, found)
 
     def scanner(self) -> Callable[[np.ndarray], int]:
@@ -389,18 +389,30 @@ def _compile_alone() -> None:
 
 
 @inline
-def _place_box(g, s, jid, nj, volumes, work):  # type: ignore[no-untyped-def]
+def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s box in the world at the current state (``s``: its stamp)."""
     ng = (work.shape[0] - nj) // 2
     placed = work[nj + g, 3]
     if placed == s or (jid == 0 and placed >= 0.0):  # fixed: placed once per scan
         return
     work[nj + g, 3] = s
-    compose(work, nj + ng + g, jid, volumes[g].box)
+    # compose() of taskrunner.collision.frames, written out for a plain row: inlined inside
+    # the scan's branches, a call with array slices costs numba reference-count operations
+    # on them (the scan measured 17 % slower per state with the call).
+    row = nj + ng + g
+    for a in range(3):
+        origin = work[jid, ORIGIN + a]
+        for b in range(3):
+            origin += work[jid, 3 * a + b] * geo[g, _G_BOX + b]
+            total = 0.0
+            for c in range(3):
+                total += work[jid, 3 * a + c] * geo[g, _G_ROT + 3 * c + b]
+            work[row, 3 * a + b] = total
+        work[row, ORIGIN + a] = origin
 
 
 @inline
-def _sphere_box(cx, cy, cz, radius, g, nj, ng, volumes, work):  # type: ignore[no-untyped-def]
+def _sphere_box(cx, cy, cz, radius, g, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     """Distance from a sphere to geometry ``g``'s (placed) box; negative: may overlap."""
     row = nj + ng + g
     dx = cx - work[row, ORIGIN]
@@ -409,14 +421,14 @@ def _sphere_box(cx, cy, cz, radius, g, nj, ng, volumes, work):  # type: ignore[n
     outside = 0.0
     for b in range(3):
         local = work[row, b] * dx + work[row, 3 + b] * dy + work[row, 6 + b] * dz
-        excess = abs(local) - volumes[g].half[b]
+        excess = abs(local) - geo[g, _G_HALF + b]
         if excess > 0.0:
             outside += excess * excess
     return math.sqrt(outside) - radius
 
 
 @inline
-def _boxes_gap(a, b, nj, ng, volumes, work):  # type: ignore[no-untyped-def]
+def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
     """The largest gap between the (placed) boxes' projections on their face normals."""
     ra, rb = nj + ng + a, nj + ng + b
     best = -np.inf
@@ -430,9 +442,9 @@ def _boxes_gap(a, b, nj, ng, volumes, work):  # type: ignore[no-untyped-def]
                       + (work[rb, ORIGIN + 1] - work[ra, ORIGIN + 1]) * uy
                       + (work[rb, ORIGIN + 2] - work[ra, ORIGIN + 2]) * uz)
             for j in range(3):
-                gap -= volumes[a].half[j] * abs(work[ra, j] * ux + work[ra, 3 + j] * uy
+                gap -= geo[a, _G_HALF + j] * abs(work[ra, j] * ux + work[ra, 3 + j] * uy
                                                  + work[ra, 6 + j] * uz)
-                gap -= volumes[b].half[j] * abs(work[rb, j] * ux + work[rb, 3 + j] * uy
+                gap -= geo[b, _G_HALF + j] * abs(work[rb, j] * ux + work[rb, 3 + j] * uy
                                                  + work[rb, 6 + j] * uz)
             if gap > best:
                 best = gap
@@ -440,64 +452,64 @@ def _boxes_gap(a, b, nj, ng, volumes, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _reset(nj, ng, volumes, work):  # type: ignore[no-untyped-def]
+def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     """No geometry box placed yet; the fixed geometries' sphere centres placed."""
     for g in range(ng):
         work[nj + g, 3] = -1.0
-        if volumes[g].joint == 0:
+        if gi[g, 0] == 0:
             for a in range(3):
-                work[nj + g, a] = volumes[g].centre[a]
+                work[nj + g, a] = geo[g, a]
 
 
 @inline
-def _inner_centre(g, jid, volumes, work):  # type: ignore[no-untyped-def]
+def _inner_centre(g, jid, geo, work):  # type: ignore[no-untyped-def]
     """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed)."""
-    x, y, z = volumes[g].inner[0], volumes[g].inner[1], volumes[g].inner[2]
+    x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
     return (work[jid, ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
             work[jid, ORIGIN + 1] + work[jid, 3] * x + work[jid, 4] * y + work[jid, 5] * z,
             work[jid, ORIGIN + 2] + work[jid, 6] * x + work[jid, 7] * y + work[jid, 8] * z)
 
 
 @inline
-def _proven(a, b, nj, ng, volumes, work):  # type: ignore[no-untyped-def]
+def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     """True when geometries ``a`` and ``b`` surely overlap (by more than
     :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
     box where that box is the geometry (a box shape; placed already)."""
-    ra = volumes[a].inner_radius
-    rb = volumes[b].inner_radius
+    ra = geo[a, _G_INNER_RADIUS]
+    rb = geo[b, _G_INNER_RADIUS]
     if ra <= 0.0 and rb <= 0.0:
         return False
-    ax, ay, az = _inner_centre(a, volumes[a].joint, volumes, work)
-    bx, by, bz = _inner_centre(b, volumes[b].joint, volumes, work)
+    ax, ay, az = _inner_centre(a, gi[a, _I_JOINT], geo, work)
+    bx, by, bz = _inner_centre(b, gi[b, _I_JOINT], geo, work)
     if ra > 0.0 and rb > 0.0:
         reach = ra + rb - PROVEN
         if reach > 0.0 and (ax - bx) ** 2 + (ay - by) ** 2 + (az - bz) ** 2 < reach * reach:
             return True
-    if ra > 0.0 and volumes[b].exact != 0 and volumes[b].has_box != 0:
-        if _sphere_box(ax, ay, az, ra, b, nj, ng, volumes, work) < -PROVEN:
+    if ra > 0.0 and gi[b, _I_EXACT] != 0 and gi[b, _I_BOX] != 0:
+        if _sphere_box(ax, ay, az, ra, b, nj, ng, geo, work) < -PROVEN:
             return True
-    if rb > 0.0 and volumes[a].exact != 0 and volumes[a].has_box != 0:
-        if _sphere_box(bx, by, bz, rb, a, nj, ng, volumes, work) < -PROVEN:
+    if rb > 0.0 and gi[a, _I_EXACT] != 0 and gi[a, _I_BOX] != 0:
+        if _sphere_box(bx, by, bz, rb, a, nj, ng, geo, work) < -PROVEN:
             return True
     return False
 
 
 @jit
-def _uncleared(q, stamp, joints, volumes, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
+def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
     since :func:`_reset`. Compiled once, called by both scans (inlined into each, the
     kernels took twice as long to compile: 11 s of CPU on a fresh machine)."""
     nj = joints.shape[0]
-    ng = volumes.shape[0]
+    ng = gi.shape[0]
     joint_frames(q, joints, work)
     for m in range(moving.shape[0]):
         g = moving[m]
-        jid = volumes[g].joint
+        jid = gi[g, 0]
         for a in range(3):
-            work[nj + g, a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * volumes[g].centre[0]
-                               + work[jid, 3 * a + 1] * volumes[g].centre[1]
-                               + work[jid, 3 * a + 2] * volumes[g].centre[2])
+            work[nj + g, a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
+                               + work[jid, 3 * a + 1] * geo[g, 1]
+                               + work[jid, 3 * a + 2] * geo[g, 2])
     count = 0
     for k in range(pairs.shape[0]):
         a, b = pairs[k, 0], pairs[k, 1]
@@ -506,19 +518,19 @@ def _uncleared(q, stamp, joints, volumes, pairs, reach2, moving, work, found):  
         dz = work[nj + a, 2] - work[nj + b, 2]
         if dx * dx + dy * dy + dz * dz > reach2[k]:
             continue
-        if volumes[b].has_box != 0:
-            _place_box(b, stamp, volumes[b].joint, nj, volumes, work)
+        if gi[b, 1] != 0:
+            _place_box(b, stamp, gi[b, 0], nj, geo, work)
             if _sphere_box(work[nj + a, 0], work[nj + a, 1], work[nj + a, 2],
-                           volumes[a].radius, b, nj, ng, volumes, work) > CLEAR:
+                           geo[a, _G_RADIUS], b, nj, ng, geo, work) > CLEAR:
                 continue
-        if volumes[a].has_box != 0:
-            _place_box(a, stamp, volumes[a].joint, nj, volumes, work)
+        if gi[a, 1] != 0:
+            _place_box(a, stamp, gi[a, 0], nj, geo, work)
             if _sphere_box(work[nj + b, 0], work[nj + b, 1], work[nj + b, 2],
-                           volumes[b].radius, a, nj, ng, volumes, work) > CLEAR:
+                           geo[b, _G_RADIUS], a, nj, ng, geo, work) > CLEAR:
                 continue
-            if volumes[b].has_box != 0 and _boxes_gap(a, b, nj, ng, volumes, work) > CLEAR:
+            if gi[b, 1] != 0 and _boxes_gap(a, b, nj, ng, geo, work) > CLEAR:
                 continue
-        if _proven(a, b, nj, ng, volumes, work):
+        if _proven(a, b, nj, ng, gi, geo, work):
             return -1
         found[count] = k
         count += 1
@@ -526,21 +538,21 @@ def _uncleared(q, stamp, joints, volumes, pairs, reach2, moving, work, found):  
 
 
 @jit
-def _first_uncleared(states, begin, joints, volumes, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
+def _first_uncleared(states, begin, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """From row ``begin`` of ``states`` on, the first state at which some pairs are not
     cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
     every state clears every pair. A state that is not finite clears nothing."""
-    _reset(joints.shape[0], volumes.shape[0], volumes, work)
+    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, states.shape[0]):
-        count = _uncleared(states[s], float(s), joints, volumes, pairs, reach2, moving, work, found)
+        count = _uncleared(states[s], float(s), joints, gi, geo, pairs, reach2, moving, work, found)
         if count != 0:
             return s, count
     return -1, 0
 
 
 @jit
-def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, joints, volumes,  # type: ignore[no-untyped-def]
-                             pairs, reach2, moving, work, found):
+def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, joints, gi,  # type: ignore[no-untyped-def]
+                             geo, pairs, reach2, moving, work, found):
     """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
     values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
     row ``s`` (``begin <= s < steps``) is written ``a + f (b - a)`` there, ``f`` the
@@ -562,12 +574,12 @@ def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution,
         if steps >= table.shape[0] or steps > rows.shape[0] or table[steps, 0] != 1.0:
             return -2, 0, steps
         fractions = table[steps]
-    _reset(joints.shape[0], volumes.shape[0], volumes, work)
+    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, steps):
         f = fractions[s]
         for i in range(n):
             rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), joints, volumes, pairs, reach2, moving, work,
+        count = _uncleared(rows[s], float(s), joints, gi, geo, pairs, reach2, moving, work,
                            found)
         if count != 0:
             return s, count, steps
