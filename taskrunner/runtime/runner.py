@@ -337,7 +337,7 @@ class Runner:
         self.events.emit("run_finished", error or status, status=status, exit_code=code,
                          scene=scene_data(self.scene.snapshot()))
         if self._file is not None:
-            self.events.unsubscribe(self._file.append)
+            self.events.set_journal(None)
             self._file.finish()
         return self.record
 
@@ -345,4 +345,5 @@ class Runner:
         """Write the record as it starts and journal every event from now on."""
         if self.options.runs_dir is not None:
             self._file = RecordFile(self.record, self.options.runs_dir)
-            self.events.subscribe(self._file.append)
+            # The journal, not a subscriber: written before any display prints the event.
+            self.events.set_journal(self._file.append)
