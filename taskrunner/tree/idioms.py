@@ -264,8 +264,12 @@ def place(ctx: TaskContext, name: str, location: str | None, arm_name: str, obj:
                       grip.translation)
 
     def descent(c: TaskContext, now: pin.SE3) -> np.ndarray:
-        # Down by the approach, less what would sink the object below the target's bottom.
-        down = pin.SE3(now.rotation, now.translation - np.array([0.0, 0.0, approach]))
+        # Down to where the held object's centre is at the target's height (a short arm's
+        # pre-place may be lower than `approach`: see taskrunner.tree.reach.LIFT_PARTS),
+        # less what would sink the object below the target's bottom.
+        centre = now.translation + now.rotation @ arm.grip(c.scene.object(obj).pose.se3).translation
+        drop = centre[2] - release[0].translation[2]
+        down = pin.SE3(now.rotation, now.translation - np.array([0.0, 0.0, drop]))
         return down.translation + np.array([0.0, 0.0, deficit(c, down)])
 
     def detach(c: TaskContext) -> None:
