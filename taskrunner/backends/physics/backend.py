@@ -638,7 +638,7 @@ class MujocoBackend(BaseBackend):
         self._publish()
         failure = self.failures.pop(0) if self.failures else None
         if failure is None:
-            failure = self._slip()
+            failure = self._slip(self._releasing(plan))
         for execution, start in plan:
             if execution.finished:  # cancelled while the chunk ran: hold where it is
                 self._targets[execution.columns] = self._positions[execution.columns]
@@ -672,10 +672,53 @@ class MujocoBackend(BaseBackend):
             self._history.append(sample)
             self._unreported.append(sample)
 
-    def _slip(self) -> str | None:
+    def _releasing(self, plan: list[tuple[TrajectoryExecution, float]]) -> frozenset[str]:
+        """Held objects that the running motions may let go of: their fingers move while
+        nothing moves the link holding them (a gripper opening, as a place does before the
+        scene lets go of the object). The object then settles on what it is set down on
+        and may leave the hand: not a slip (where it ends is the place's own check).
+        Their hold is checked again at the next motion that moves their holder."""
+        moving: set[str] = set()
+        for execution, _ in plan:
+            positions = np.asarray(execution.trajectory.positions, dtype=float)
+            if positions.size:
+                spread = positions.max(axis=0) - positions.min(axis=0)
+                moving.update(n for n, d in zip(execution.trajectory.names, spread) if d > 1e-9)
+        fingers = moving & self._cell.gripper_joints
+        if not fingers:
+            return frozenset()
+        model = self._model
+        out = []
+        for name, held in self._held.items():
+            carried: set[str] = set()  # joints between the world and the holding link
+            body = held.body
+            while body > 0:
+                first, count = model.body_jntadr[body], model.body_jntnum[body]
+                carried.update(model.joint(j).name for j in range(first, first + count))
+                body = model.body_parentid[body]
+            moved_fingers = {f for f in fingers if self._holds_finger(held.body, f)}
+            if moved_fingers and not (moving & carried):
+                out.append(name)
+        return frozenset(out)
+
+    def _holds_finger(self, holder: int, joint: str) -> bool:
+        """Whether finger joint ``joint`` hangs from the same hand as body ``holder`` (its
+        body's parent is the holder or one of the holder's ancestors' children)."""
+        model = self._model
+        body = model.jnt_bodyid[self._jnt[joint]] if joint in self._jnt else -1
+        if body < 0:
+            return False
+        chain = set()
+        b = holder
+        while b > 0:
+            chain.add(int(b))
+            b = model.body_parentid[b]
+        return int(model.body_parentid[body]) in chain
+
+    def _slip(self, releasing: frozenset[str] = frozenset()) -> str | None:
         data = self._data
         for name, held in self._held.items():
-            if held.weld is not None:
+            if held.weld is not None or name in releasing:
                 continue
             rel_pos, rel_quat = _relative(data, held.body, self._objects[name])
             moved = float(np.linalg.norm(rel_pos - held.rel_pos))
