@@ -142,3 +142,13 @@ def test_the_run_body_table_has_every_field_and_backend_of_the_server():
     assert set(rows) == set(RunCreate.model_fields), sorted(rows)
     for kind in get_args(Backend):
         assert f"`{kind}`" in rows["backend"], kind
+
+
+def test_every_picture_the_docs_show_is_committed():
+    shown = {m for text in _pages().values()
+             for m in re.findall(r"!\[[^\]]*\]\((images/[^)]+)\)", text)}
+    assert {"images/first-task-runs.png", "images/first-task-replay.png",
+            "images/first-task-preview.png"} <= shown
+    for image in sorted(shown):
+        path = DOCS / image
+        assert path.is_file() and path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", image
