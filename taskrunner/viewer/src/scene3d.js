@@ -88,20 +88,41 @@ export class CellView {
     this.render();
   }
 
-  // Aim the camera at the robots (not the whole table): from the front, a little above.
+  // Aim the camera at the robots: the orbit's centre is the middle of the links that
+  // move (from the link each first moving joint hangs on, down to the tool), not of the
+  // table under them or of the floor the merged URDF's world link sits on, so that the
+  // wheel zooms in on the arms. Link origins, not meshes: meshes load later.
   frameRobots() {
     this.scene.updateMatrixWorld(true);
-    const box = new THREE.Box3().setFromObject(this.robot);
+    const box = new THREE.Box3();
+    const at = new THREE.Vector3();
+    for (const joint of Object.values(this.robot.joints)) {
+      if (joint.jointType === 'fixed') continue;
+      if (joint.parent && joint.parent.isURDFLink) box.expandByPoint(joint.parent.getWorldPosition(at));
+      joint.traverse((o) => { if (o.isURDFLink) box.expandByPoint(o.getWorldPosition(at)); });
+    }
+    if (box.isEmpty()) box.setFromObject(this.robot);
     if (box.isEmpty()) return;
     const centre = box.getCenter(new THREE.Vector3());
-    const size = Math.max(0.3, box.getSize(new THREE.Vector3()).length());
+    const size = Math.max(0.35, 1.2 * box.getSize(new THREE.Vector3()).length() + 0.1);
     this.controls.target.copy(centre);
     const dir = new THREE.Vector3(0.35, 0.55, 1).normalize();
     this.camera.position.copy(centre).addScaledVector(dir, size * 1.6);
+    this.controls.minDistance = size * 0.2;
+    this.controls.maxDistance = size * 10;
     this.camera.near = size / 100;
     this.camera.far = size * 50;
     this.camera.updateProjectionMatrix();
     this.controls.update();
+  }
+
+  // Where a link is drawn: normalised device coordinates (x, y in -1..1 on the canvas).
+  onScreen(linkName) {
+    const link = this.robot && this.robot.links[linkName];
+    if (!link) return null;
+    this.scene.updateMatrixWorld(true);
+    const v = link.getWorldPosition(new THREE.Vector3()).project(this.camera);
+    return [v.x, v.y, v.z];
   }
 
   clear() {
