@@ -20,6 +20,10 @@ appended (nothing moves before what led to it is on disk) and with the run's fin
 (committed with ``synchronous=FULL``); events since the last of those may be lost then.
 An fsync per event would cost over 10x more on a busy shared disk (a bare ``INSERT``: 118 µs
 median, 4 ms p99, against 9 µs and 66 µs; ``benchmarks/api_record_cost.py``).
+SQLite's automatic checkpoint (the WAL copied into the database, about every thousand
+events) runs in the appending thread: a few ms once per thousand events. A checkpoint on
+a thread of its own was tried: it cannot reset a WAL written to meanwhile, so the WAL
+grew to 16 MB with no fewer slow appends (a fast repeat loop emits ~120 events/s).
 
 :meth:`RunStore.mark_interrupted` (at a server's start) marks rows still ``running`` from a
 previous server as ``interrupted``: no run is lost, and none claims to run when nothing
