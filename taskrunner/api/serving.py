@@ -128,12 +128,14 @@ def serve(app: Any, settings: Settings, host: str, port: int, log_level: str = "
     import uvicorn
 
     protocol = header_timeout_protocol(settings.header_timeout_s)
-    main = uvicorn.Server(uvicorn.Config(
-        app, host=host, port=port, log_level=log_level, http=protocol, timeout_keep_alive=5,
-        timeout_graceful_shutdown=int(settings.shutdown_timeout_s) + 1))
+    options: dict[str, Any] = {
+        "host": host, "port": port, "log_level": log_level, "http": protocol,
+        "timeout_keep_alive": 5,
+        "timeout_graceful_shutdown": int(settings.shutdown_timeout_s) + 1}
     if control_port is None:
-        main.run()
+        uvicorn.run(app, **options)
         return
+    main = uvicorn.Server(uvicorn.Config(app, **options))
     control = uvicorn.Server(uvicorn.Config(
         ControlOnly(app), host=host, port=control_port, log_level=log_level, http=protocol,
         lifespan="off", timeout_keep_alive=5, timeout_graceful_shutdown=1))

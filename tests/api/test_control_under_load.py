@@ -208,3 +208,37 @@ def test_the_control_port_serves_cancel_and_run_state_only(tmp_path: Path):
         assert state["status"] == "cancelled"
         assert _request(control, "POST", f"/runs/{run_id}/cancel")[0] == 409
         assert _request(control, "GET", "/runs/no-such-run")[0] == 404
+
+
+def test_run_task_serve_opens_the_control_port_beside_the_main_one(tmp_path: Path):
+    import os
+    import subprocess
+    import sys
+
+    from test_server import REPO_ROOT, free_port
+
+    port, control = free_port(), free_port()
+    env = {**os.environ, "PYTHONPATH": str(REPO_ROOT), "TASKRUNNER_TOKEN": AUTH[
+        "Authorization"].split()[1]}
+    server = subprocess.Popen(
+        [sys.executable, "-m", "taskrunner.cli", "serve", "--port", str(port),
+         "--control-port", str(control), "--planner", "inprocess", "--data-dir",
+         str(tmp_path), "--log-level", "warning"],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                if _request(control, "GET", "/health", timeout=1)[0] == 200:
+                    break
+            except OSError:
+                pass
+            assert server.poll() is None and time.monotonic() < deadline, "no control port"
+            time.sleep(0.1)
+        assert _request(port, "GET", "/cells")[0] == 200
+        assert _request(control, "GET", "/cells")[0] == 404
+        assert _request(control, "GET", "/runs/nope")[0] == 404
+    finally:
+        server.terminate()
+        out, _ = server.communicate(timeout=30)
+    assert f"control port: http://127.0.0.1:{control}" in out
