@@ -350,6 +350,7 @@ class MujocoBackend(BaseBackend):
         # Free objects a hand has touched since they were last let go (never touched or
         # slipped, when a held one comes loose).
         self._touched: set[str] = set()
+        self._moving_joints: dict[int, frozenset[str]] = {}  # by running motion: joints it moves
         self._robot_bodies = {int(b) for b in range(1, model.nbody)
                               if model.body(b).name not in self._objects}
         self._hand_bodies = {mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
@@ -679,11 +680,18 @@ class MujocoBackend(BaseBackend):
         and may leave the hand: not a slip (where it ends is the place's own check).
         Their hold is checked again at the next motion that moves their holder."""
         moving: set[str] = set()
+        known = self._moving_joints
+        for key in set(known) - {id(execution) for execution, _ in plan}:
+            del known[key]  # motions ended
         for execution, _ in plan:
-            positions = np.asarray(execution.trajectory.positions, dtype=float)
-            if positions.size:
-                spread = positions.max(axis=0) - positions.min(axis=0)
-                moving.update(n for n, d in zip(execution.trajectory.names, spread) if d > 1e-9)
+            joints = known.get(id(execution))
+            if joints is None:
+                positions = np.asarray(execution.trajectory.positions, dtype=float)
+                spread = (positions.max(axis=0) - positions.min(axis=0) if positions.size
+                          else np.zeros(len(execution.trajectory.names)))
+                joints = known[id(execution)] = frozenset(
+                    n for n, d in zip(execution.trajectory.names, spread) if d > 1e-9)
+            moving |= joints
         fingers = moving & self._cell.gripper_joints
         if not fingers:
             return frozenset()
