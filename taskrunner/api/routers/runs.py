@@ -154,7 +154,7 @@ async def _events_start(run_id: str, manager: Annotated[RunManager, Depends(get_
     return start
 
 
-@router.get("/{run_id}/events", response_class=EventStream,
+@router.get("/{run_id}/events", response_class=EventStream, status_code=status.HTTP_200_OK,
             dependencies=[Depends(require_read)],
             responses={**_ERRORS, 200: {"description": "the run's events, as Server-Sent "
                                                        "Events, to the end of the run"}})
