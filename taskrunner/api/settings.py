@@ -68,8 +68,9 @@ class Settings(BaseSettings):
             than its time limit (``plan_timeout_s``, ``check_timeout_s``).
         planner_idle_s: a planning process idle this long is closed (s).
         header_timeout_s: a connection must send its request headers within this (s).
-        stream_max_lag: events an event stream's client may fall behind the run before
-            it is dropped (told the ``Last-Event-ID`` to resume from).
+        stream_max_lag: events that may come while an event stream's client takes one
+            write; one more and it is dropped (told the ``Last-Event-ID`` to resume
+            from).
         stream_send_timeout_s: an event stream whose client takes no bytes for this
             long is disconnected (s).
         servo_port: the serial port of the ``serial`` backend (default: the one in the
