@@ -68,6 +68,8 @@ class Settings(BaseSettings):
             than its time limit (``plan_timeout_s``, ``check_timeout_s``).
         planner_idle_s: a planning process idle this long is closed (s).
         header_timeout_s: a connection must send its request headers within this (s).
+        body_timeout_s: a request's body must be complete within this of its headers
+            (s); past it the request is answered 408 and its connection closed.
         stream_max_lag: events that may come while an event stream's client takes one
             write; one more and it is dropped (told the ``Last-Event-ID`` to resume
             from).
@@ -107,6 +109,7 @@ class Settings(BaseSettings):
     work_queue: int = 8
     planner_idle_s: float = 120.0
     header_timeout_s: float = 10.0
+    body_timeout_s: float = 20.0
     stream_max_lag: int = 1000
     stream_send_timeout_s: float = 10.0
     servo_port: str | None = None
@@ -178,7 +181,8 @@ class Settings(BaseSettings):
         return number
 
     @field_validator("sim_speed", "tick_hz", "shutdown_timeout_s", "check_timeout_s",
-                     "plan_timeout_s", "header_timeout_s", "firmware_speedup",
+                     "plan_timeout_s", "header_timeout_s", "body_timeout_s",
+                     "firmware_speedup",
                      "planner_idle_s", "stream_send_timeout_s", mode="before")
     @classmethod
     def _positive(cls, value: Any, info: Any) -> Any:
