@@ -30,6 +30,7 @@ __all__ = [
     "example_tasks",
     "firmware_dir",
     "is_bare_name",
+    "kernel_cache_dir",
     "resolve_cell",
     "resolve_task",
     "robots_dir",
@@ -71,10 +72,19 @@ def firmware_dir() -> Path:
 
 
 def user_cache_dir() -> Path:
-    """Where taskrunner builds things it needs (the host firmware): ``$XDG_CACHE_HOME``
-    or ``~/.cache``, then ``taskrunner``."""
+    """Where taskrunner builds things it needs (the planner's compiled kernels, expanded
+    xacro files, the host firmware …): ``$XDG_CACHE_HOME`` or ``~/.cache``, then
+    ``taskrunner``."""
     base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
     return Path(base) / "taskrunner"
+
+
+def kernel_cache_dir() -> Path:
+    """Where numba keeps the planner's compiled kernels: ``$NUMBA_CACHE_DIR`` when set
+    (numba's own setting), else ``numba`` in :func:`user_cache_dir` (an installed
+    package's own folder may be read-only)."""
+    configured = os.environ.get("NUMBA_CACHE_DIR")
+    return Path(configured) if configured else user_cache_dir() / "numba"
 
 
 def example_tasks() -> dict[str, Path]:

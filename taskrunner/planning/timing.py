@@ -34,7 +34,7 @@ from taskrunner.errors import PlanningError
 from taskrunner.robot.model import JointInfo, RobotModel
 from taskrunner.types import JointPath, JointTrajectory
 
-__all__ = ["TimingOptions", "parameterize_path", "path_deviation", "trajectory_json"]
+__all__ = ["TimingOptions", "load_toppra", "parameterize_path", "path_deviation", "trajectory_json"]
 
 _CHECKS_PER_STAGE = 6  # limit checks per toppra stage (residual overshoot between them ~0.5 %)
 _CURVE_ERROR = 3e-3  # rad: spline intervals are split until 0.5 |q''| ds² is below this
@@ -410,24 +410,21 @@ class _InteriorPoints:
         return memo[2][fraction]
 
 
+def load_toppra() -> None:
+    """Import toppra and build what the timing needs of it now, not at the first path
+    timed: 0.3-0.5 s of CPU on a 2-core machine, most of it ``matplotlib.pyplot``, which
+    toppra imports at module level for its debugging plots. A caller that will time
+    paths does it ahead, in a thread, while it loads the rest."""
+    _toppra_kit()
+
+
 @functools.cache
 def _toppra_kit() -> SimpleNamespace:
-    """Import toppra on first use (0.1-0.2 s without matplotlib, see
-    :mod:`~taskrunner.planning.toppra_import`) and build what needs it."""
+    """Import toppra on first use (see :func:`load_toppra`) and build what needs it."""
     logging.getLogger("toppra").setLevel(logging.WARNING)  # it logs every call at INFO
-    from taskrunner.planning.toppra_import import import_toppra
-
-    import_toppra()
     import toppra
     import toppra.algorithm
     import toppra.constraint as tc
-    import toppra.solverwrapper
-
-    # toppra asks the file system which optional solvers are installed at every
-    # algorithm's construction (~0.15 ms): the answer does not change within a process.
-    if not hasattr(toppra.solverwrapper.available_solvers, "cache_info"):
-        toppra.solverwrapper.available_solvers = functools.cache(
-            toppra.solverwrapper.available_solvers)
     from scipy.interpolate import PchipInterpolator
     from toppra.constraint.linear_constraint import LinearConstraint
     from toppra.interpolator import AbstractGeometricPath

@@ -24,6 +24,7 @@ import signal
 import threading
 import time
 import weakref
+from collections.abc import Callable
 from dataclasses import replace
 from multiprocessing.connection import Connection
 from pathlib import Path
@@ -74,14 +75,9 @@ _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its ver
 def _warm_verifier(scene: Scene) -> None:
     """Verify and screen a short motion from the start state, so that the path
     verifier's and the search's compiled kernels are loaded (compiled, the first time on
-    a machine: then cached on disk) before the first request rather than during it.
-    Cached kernels are loaded without numba's full compiler set-up
-    (:mod:`taskrunner.planning.kernel_loads`: 0.1-0.15 s of CPU less before the worker
-    is ready)."""
-    from taskrunner.planning.kernel_loads import lighter_cache_loads
+    a machine: then cached on disk) before the first request rather than during it."""
     from taskrunner.scene.screen import warm_kernels
 
-    lighter_cache_loads()  # this process loads cached kernels without numba's full set-up
     warm_kernels(scene.path_verifier(), scene.state)
 
 
@@ -105,7 +101,6 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
     if nice and hasattr(os, "nice"):
         os.nice(nice)
     from taskrunner.planning.planner import MotionPlanner
-    from taskrunner.planning.toppra_import import import_toppra
     from taskrunner.robot.cell import load_cell_or_robot
 
     # No garbage collection while the model loads and numba is imported: its passes over
@@ -122,14 +117,19 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
         planner = MotionPlanner(scene)
         scene.checker  # noqa: B018 - build the collision geometry before the first request
         if timing:
-            import_toppra()  # every plan is timed: import it while the caller still loads
+            from taskrunner.planning.timing import load_toppra
+
+            load_toppra()  # every plan is timed: import it while the caller still loads
         import taskrunner.scene.screen  # noqa: F401 - numba (the path verifier's kernels)
+        from taskrunner.planning.warmup import kernels_ready
 
         if collecting:
             gc.enable()
-        # Loaded; what follows may compile the verifier's kernels (once per machine, 10-15 s
-        # of CPU): the parent then waits longer than for a load.
-        conn.send(("loaded", cell.model.name, time.perf_counter() - started))
+        # Loaded; what follows compiles the kernels when they are not in the cache (once
+        # per machine, 10-15 s of CPU): "compiling" tells the parent to wait longer than
+        # for a load, and why.
+        kind = "loaded" if kernels_ready() else "compiling"
+        conn.send((kind, cell.model.name, time.perf_counter() - started))
         _warm_verifier(scene)  # and verified: load its compiled kernels now too
         gc.freeze()
         conn.send(("ready", cell.model.name, time.perf_counter() - started))
@@ -228,6 +228,8 @@ class PlanningWorker:
     """
 
     _stays_here: tuple[Scene, MotionPlanner] | None = None
+    compile_time: float = 0.0
+    """Seconds the worker spent compiling kernels before it was ready (0.0: loaded)."""
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
                  wait_ready: bool = True, nice: int = 0,
@@ -272,12 +274,14 @@ class PlanningWorker:
         start_ignoring_sigint(self._process)
         child.close()
 
-    def _await_ready(self, timeout: float) -> None:
+    def _await_ready(self, timeout: float,
+                     on_compile: Callable[[], None] | None = None) -> None:
         if self._ready:
             return
         kind = "loaded"
         waited = timeout
-        while kind == "loaded":
+        compiling_since: float | None = None
+        while kind in ("loaded", "compiling"):
             if not self._conn.poll(waited):
                 self._process.kill()
                 doing = "load" if waited == timeout else "warm up (compile) its path verifier"
@@ -292,18 +296,42 @@ class PlanningWorker:
                     f"{self._process.exitcode}); a script that starts workers needs the "
                     "`if __name__ == '__main__':` guard (workers are spawned, not forked)"
                 ) from None
+            if kind == "compiling":
+                compiling_since = time.perf_counter()
+                if on_compile is not None:
+                    on_compile()
             # Loaded: the verifier's kernels may compile now, the first time on a machine
             # (minutes on a busy one): wait for that as long as it takes, within reason.
             waited = max(timeout, _COMPILE_TIMEOUT)
         if kind == "failed":
             self._process.join()
             raise payload
+        if compiling_since is not None:
+            self.compile_time = time.perf_counter() - compiling_since
         self.model_name = payload
         self.load_time = seconds
         self._sent_scene = None
         self._ready = True
 
     # ------------------------------------------------------------------ public
+    def wait_ready(self, on_compile: Callable[[], None] | None = None) -> float:
+        """Wait until the worker has loaded its model and its compiled kernels.
+
+        Args:
+            on_compile: called (in this thread) when the worker reports that it compiles
+                the kernels, which it does the first time on a machine
+                (:mod:`taskrunner.planning.warmup`).
+
+        Returns:
+            The seconds this worker spent compiling kernels (0.0: loaded from the cache).
+
+        Raises:
+            WorkerDiedError: the worker ended, or did not load or compile in time.
+        """
+        with self._lock:
+            self._await_ready(self._start_timeout, on_compile)
+        return self.compile_time
+
     def submit(self, scene: Scene, request: PlanRequest) -> PlanHandle:
         """Send a request; returns at once with a handle to poll, wait on or cancel.
 

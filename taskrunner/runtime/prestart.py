@@ -96,129 +96,18 @@ def _import_shared() -> None:
     classes and functions, which all live as long as the process, took 0.08 s), and what
     exists then is frozen (:func:`gc.freeze`): no later collection in either process
     walks it again (a full one took 0.03 s), nor writes to its pages, which the fork
-    shares until one of the processes writes to them. SciPy is imported the lighter way
-    (:func:`lighter_scipy_imports`)."""
+    shares until one of the processes writes to them (what Python's documentation of
+    :func:`gc.freeze` recommends before a fork). Nothing of the imported libraries is
+    changed: they are imported as any program imports them."""
     enabled = gc.isenabled()
     gc.disable()
     try:
-        lighter_scipy_imports()
         for name in ("taskrunner.planning.planner", "taskrunner.robot.cell"):
             importlib.import_module(name)
     finally:
         gc.freeze()
         if enabled:
             gc.enable()
-
-
-# numpy's developer tools, which SciPy's copy of the numpy namespace (array_api_compat's
-# ``clone_module``) would import only to copy them: f2py (with charset_normalizer),
-# testing (unittest, importlib.metadata, email), the masked arrays.
-_NUMPY_TOOLS = frozenset({"f2py", "testing", "ma"})
-
-
-def lighter_scipy_imports() -> bool:
-    """Make SciPy's import lighter for this process (``run-task``, before its fork; not a
-    program that merely imports taskrunner); both parts change no function's behaviour.
-
-    1. SciPy (1.15+) copies the numpy namespace into its array-API layer
-       (``scipy._lib.array_api_compat.numpy``) when ``scipy._lib._array_api`` is first
-       imported, and every lazily loaded numpy submodule with it: numpy.f2py,
-       numpy.testing and numpy.ma cost 0.05-0.07 s of CPU there. Imported here with
-       those three hidden from numpy's ``__all__`` and ``dir()`` for the duration (then
-       restored), the copy lacks them; SciPy reaches them as ``np.testing`` (its test
-       helpers), never through the copy, and ``numpy.testing`` etc. import as usual.
-    2. :func:`lighter_scipy_decorator`.
-
-    Returns:
-        Whether part 1 was done (False: SciPy's array-API layer was imported already, or
-        is not there, or numpy's namespace is not as expected).
-    """
-    done = False
-    if "scipy._lib._array_api" not in sys.modules:
-        import numpy
-
-        listed = getattr(numpy, "__all__", None)
-        listing = numpy.__dict__.get("__dir__")
-        if isinstance(listed, list) and callable(listing):
-            numpy.__all__ = [n for n in listed if n not in _NUMPY_TOOLS]
-            numpy.__dir__ = lambda: [n for n in listing() if n not in _NUMPY_TOOLS]  # type: ignore[method-assign]
-            try:
-                importlib.import_module("scipy._lib._array_api")
-                done = True
-            except ImportError:
-                pass
-            finally:
-                numpy.__all__ = listed
-                numpy.__dir__ = listing  # type: ignore[method-assign]
-    lighter_scipy_decorator()
-    return done
-
-
-def lighter_scipy_decorator() -> bool:
-    """Have SciPy's modules imported from now on skip their capabilities notes: SciPy
-    (1.15+) decorates ~200 public functions with ``xp_capabilities``, which parses each
-    one's docstring (numpydoc) and rewrites it with a table of the array libraries it
-    supports, as the module is imported: 0.05-0.06 s of CPU of the 0.10 s that
-    toppra's import takes (scipy.interpolate, scipy.special, scipy.spatial), and some of
-    the shared imports' scipy.linalg. The replacement registers every function in
-    SciPy's capabilities table exactly as the original does (what SciPy's own tests
-    read), and leaves the docstrings as they are written. Functions behave the same;
-    only ``help()`` in this process lacks the note. Used by ``run-task`` (before its
-    fork), not by a program that merely imports taskrunner.
-
-    Returns:
-        Whether it was installed now (False: already, or a SciPy without that decorator
-        or with a different one: nothing is changed).
-    """
-    try:
-        from scipy._lib import _array_api as api
-    except ImportError:
-        return False
-    original = getattr(api, "xp_capabilities", None)
-    table = getattr(api, "xp_capabilities_table", None)
-    if original is None or getattr(original, "_lighter", False) or not isinstance(table, dict):
-        return False
-    import inspect
-
-    signature = inspect.signature(original)
-    if not {"capabilities_table", "extra_note", "out_of_scope", "np_only"} <= set(
-            signature.parameters):
-        return False
-
-    # All keyword-only with defaults (SciPy 1.15-1.17): the arguments are the defaults
-    # updated with the keywords given, in the signature's order, as binding them gives,
-    # without binding each of the ~200 calls (~5 ms of CPU).
-    parameters = signature.parameters.values()
-    defaults = None
-    if all(p.kind is p.KEYWORD_ONLY and p.default is not p.empty for p in parameters):
-        defaults = {p.name: p.default for p in parameters}
-
-    def xp_capabilities(**kwargs: Any) -> Any:
-        if defaults is None:
-            bound = signature.bind(**kwargs)  # an unknown keyword: the original's TypeError
-            bound.apply_defaults()
-            capabilities = dict(bound.arguments)
-        else:
-            unknown = kwargs.keys() - defaults.keys()
-            if unknown:
-                raise TypeError(f"xp_capabilities() got an unexpected keyword argument "
-                                f"{min(unknown)!r}")
-            capabilities = {**defaults, **kwargs}
-        into = capabilities.pop("capabilities_table")
-        into = table if into is None else into
-        capabilities.pop("extra_note")
-        if capabilities["out_of_scope"]:
-            capabilities["np_only"] = True
-
-        def decorator(f: Any) -> Any:
-            into[f] = capabilities
-            return f
-        return decorator
-
-    xp_capabilities._lighter = True  # type: ignore[attr-defined]
-    xp_capabilities.__wrapped__ = original  # type: ignore[attr-defined]
-    api.xp_capabilities = xp_capabilities
-    return True
 
 
 def _start_method() -> str:

@@ -68,6 +68,9 @@ class RunRecord:
             ended by SIGTERM), None while running.
         task_text: the task file's text as it was run (includes are listed by path).
         error: the failure's message (with file:line), if it failed.
+        warm_up_s: seconds spent before the run started compiling the planner's kernels
+            (the first run on a machine, :mod:`taskrunner.planning.warmup`); not task
+            time. None: none was needed.
     """
 
     run_id: str
@@ -82,6 +85,7 @@ class RunRecord:
     error: str | None = None
     started: str = field(default_factory=lambda: datetime.now(UTC).isoformat())
     finished: str | None = None
+    warm_up_s: float | None = None
     events: list[RunEvent] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:

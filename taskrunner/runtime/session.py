@@ -15,6 +15,7 @@ import os
 import signal
 import sys
 import threading
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -163,9 +164,84 @@ def _can_redraw() -> bool:
 
 
 def _import_toppra() -> None:
-    from taskrunner.planning.toppra_import import import_toppra
+    from taskrunner.planning.timing import load_toppra
 
-    import_toppra()
+    load_toppra()
+
+
+WARM_UP_NOTE = "preparing the planner's compiled kernels (first run on this machine, ~10 s)"
+
+
+def _prepare_kernels(planner: PlanningWorker | InProcessPlanner, out: TextIO,
+                     stop: _StopSignals, live: bool) -> float | None:
+    """Wait until the planner's compiled kernels are loaded, compiling them if this
+    machine has none yet (:mod:`taskrunner.planning.warmup`), with a line that says so and,
+    in a terminal, the seconds going by. A Ctrl-C or SIGTERM meanwhile ends the wait (the
+    run is then cancelled before it starts).
+
+    Returns:
+        The seconds spent compiling, None when the kernels were in the cache.
+    """
+    from taskrunner.planning.worker import PlanningWorker
+
+    progress = _Progress(out, WARM_UP_NOTE, live)
+    if isinstance(planner, PlanningWorker):
+        waiting = threading.Thread(target=_wait_ready, args=(planner, progress),
+                                   name="kernel-warm-up", daemon=True)
+        waiting.start()
+        while waiting.is_alive() and stop.pending is None:
+            waiting.join(0.2)
+            progress.tick()
+        if stop.pending is not None:
+            progress.end("stopped")
+            return None
+        if progress.failure is not None:
+            raise progress.failure
+        seconds = planner.compile_time
+    else:
+        from taskrunner.planning.warmup import kernels_ready, warm_up_kernels
+
+        if kernels_ready():
+            return None  # loaded by the first plan, in a fraction of a second
+        seconds = warm_up_kernels(on_compile=progress.start)
+    if not progress.started:
+        return None
+    progress.end(f"ready in {seconds:.1f} s (not counted as task time)")
+    return round(seconds, 3)
+
+
+def _wait_ready(worker: PlanningWorker, progress: _Progress) -> None:
+    try:
+        worker.wait_ready(on_compile=progress.start)
+    except BaseException as exc:  # raised in the main thread
+        progress.failure = exc
+
+
+class _Progress:
+    """One line of output for a wait: said when it starts, redrawn with the seconds
+    going by in a terminal, ended with an outcome."""
+
+    def __init__(self, out: TextIO, text: str, live: bool) -> None:
+        self.out, self.text, self.live = out, text, live
+        self.started: float | None = None
+        self.failure: BaseException | None = None
+
+    def start(self) -> None:
+        self.started = time.perf_counter()
+        print(f"{self.text} …", end="" if self.live else "\n", file=self.out, flush=True)
+
+    def tick(self) -> None:
+        if self.live and self.started is not None:
+            print(f"\r{self.text} … {time.perf_counter() - self.started:.0f} s", end="",
+                  file=self.out, flush=True)
+
+    def end(self, outcome: str) -> None:
+        if self.started is None:
+            return
+        if self.live:
+            print(f"\r{self.text}: {outcome}", file=self.out, flush=True)
+        else:
+            print(f"  {outcome}", file=self.out, flush=True)
 
 
 def _log_line(event: RunEvent) -> str | None:
@@ -221,9 +297,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     stop = _StopSignals(out)
     with stop.installed():
         spec = reused[0] if reused is not None else load_task(path, parameters or {})
-        # toppra takes 0.1-0.2 s to import: do it while the rest loads.
+        # toppra takes 0.3-0.5 s to import: do it while the rest loads.
         threading.Thread(target=_import_toppra, daemon=True).start()
-        events = EventLog()
         planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other
         if worker:
             from taskrunner.planning.worker import PlanningWorker
@@ -246,9 +321,15 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
             planner_service.close()
             raise
         try:
+            # The run's clocks (its events', its task time) start once the planner's
+            # kernels are ready: compiling them (the first run on a machine) is said,
+            # waited for, and recorded apart.
+            warm_up_s = _prepare_kernels(planner_service, out, stop, live)
+            events = EventLog()
             runner = Runner(spec, cell, machine, planner_service,
                             RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
                             events=events)
+            runner.record.warm_up_s = warm_up_s
             if not live:
                 def log(event: RunEvent) -> None:
                     line = _log_line(event)
@@ -394,6 +475,9 @@ def _summary(record: RunRecord, runner: Runner, runs_dir: Path | None, out: Text
     print(f"\n{record.task}: {record.status} (exit {record.exit_code}) in {wall:.2f} s wall\n"
           f"  {len(steps)} steps, {len(planned)} motions planned in {plan_s:.3f} s, "
           f"{motion_s:.1f} s of motion", file=out)
+    if record.warm_up_s is not None:
+        print(f"  before it: {record.warm_up_s:.1f} s preparing the planner's compiled kernels "
+              "(once per machine)", file=out)
     if record.error:
         print(f"  {record.error}", file=out)
     if runner.late_cancel:
