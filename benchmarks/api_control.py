@@ -28,25 +28,20 @@ with ``--json``, one JSON line at the end.
 from __future__ import annotations
 
 import argparse
-import http.client
 import json
 import multiprocessing
 import os
 import random
-import socket
-import subprocess
 import sys
 import tempfile
 import threading
 import time
 from collections import Counter
-from pathlib import Path
 from typing import Any
 
 import numpy as np
+from _server import TOKEN, call, free_port, sample_tree, start_server
 
-REPO_ROOT = Path(__file__).resolve().parent.parent
-TOKEN = "bench-token-0123456789"
 TARGET_P99_MS = 100.0
 MOVE = ("task: bench_go\ncell: ../robots/cells/servo_arm_table.yaml\nsteps:\n"
         "  - go: {group: arm, to: Candle}\n  - go: {group: arm, to: home}\n")
@@ -63,72 +58,10 @@ FLOOD = [  # (method, path, body): what the flooding clients ask, drawn in turn
 ]
 
 
-def _port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
-def _call(port: int, method: str, path: str, body: object = None, token: str | None = TOKEN,
-          timeout: float = 120.0) -> tuple[int, bytes, float]:
-    headers = {"Content-Type": "application/json"}
-    if token is not None:
-        headers["Authorization"] = f"Bearer {token}"
-    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=timeout)
-    start = time.perf_counter()
-    try:
-        conn.request(method, path, body=None if body is None else json.dumps(body),
-                     headers=headers)
-        answer = conn.getresponse()
-        data = answer.read()
-        return answer.status, data, time.perf_counter() - start
-    finally:
-        conn.close()
-
-
-def _start_server(port: int, state: str, open_reads: bool,
-                  control_port: int | None) -> subprocess.Popen:
-    env = {**os.environ, "PYTHONPATH": str(REPO_ROOT), "TASKRUNNER_SIM_SPEED": "1",
-           "TASKRUNNER_OPEN_READS": "1" if open_reads else "0"}
-    server = subprocess.Popen(
-        [sys.executable, "-m", "taskrunner.cli", "serve", "--port", str(port), "--token",
-         TOKEN, "--data-dir", state, "--log-level", "critical",
-         *(["--control-port", str(control_port)] if control_port else [])],
-        cwd=REPO_ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 90
-    while True:
-        try:
-            if _call(port, "GET", "/health", timeout=1)[0] == 200:
-                return server
-        except OSError:
-            time.sleep(0.1)
-        if time.monotonic() > deadline or server.poll() is not None:
-            server.kill()
-            raise SystemExit("the server did not start")
-
-
 def _tree_memory(pid: int) -> tuple[int, float]:
     """Processes in the server's tree and their resident memory (MiB), from /proc."""
-    children: dict[int, list[int]] = {}
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                with open(f"/proc/{entry}/stat") as f:
-                    parent = int(f.read().rsplit(")", 1)[1].split()[1])
-            except OSError:
-                continue
-            children.setdefault(parent, []).append(int(entry))
-    todo, seen, rss = [pid], 0, 0.0
-    while todo:
-        p = todo.pop()
-        seen += 1
-        try:
-            with open(f"/proc/{p}/statm") as f:
-                rss += int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
-        except OSError:
-            pass
-        todo += children.get(p, [])
-    return seen, rss
+    tree = sample_tree(pid)
+    return tree.processes, tree.total_rss_mib
 
 
 class Flood:
@@ -164,7 +97,7 @@ def _flood(port: int, clients: int, recorded: str, seed: int, stop: Any, out: An
             method, path, body = FLOOD[rng.randrange(len(FLOOD))]
             token_used = "wrong-token-000000" if rng.random() < 0.05 else token
             try:
-                code, _, _ = _call(port, method, path.format(recorded=recorded), body,
+                code, _, _ = call(port, method, path.format(recorded=recorded), body,
                                    token_used)
             except OSError:
                 code = 0
@@ -184,7 +117,7 @@ def _moving_run(port: int, control: int) -> tuple[str, int]:
     """A sim run started (retried on 503) and its first motion sent; (id, 503s met)."""
     busy = 0
     while True:
-        code, data, _ = _call(port, "POST", "/runs", {"yaml": MOVE, "backend": "sim",
+        code, data, _ = call(port, "POST", "/runs", {"yaml": MOVE, "backend": "sim",
                                                       "check": False})
         if code == 202:
             run_id = json.loads(data)["run_id"]
@@ -195,7 +128,7 @@ def _moving_run(port: int, control: int) -> tuple[str, int]:
         time.sleep(0.2)
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
-        run = json.loads(_call(control, "GET", f"/runs/{run_id}")[1])
+        run = json.loads(call(control, "GET", f"/runs/{run_id}")[1])
         if any(e["kind"] == "motion" or e["kind"] == "planned" for e in run["events"]):
             return run_id, busy
         time.sleep(0.05)
@@ -212,15 +145,16 @@ def main() -> int:
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
 
-    port = _port()
-    control = _port() if args.control_port else port
+    port = free_port()
+    control = free_port() if args.control_port else port
     with tempfile.TemporaryDirectory() as state:
-        server = _start_server(port, state, args.open_reads,
-                               control if args.control_port else None)
+        server = start_server(port, state,
+                              env={"TASKRUNNER_OPEN_READS": "1" if args.open_reads else "0"},
+                              control_port=control if args.control_port else None)
         try:
-            recorded = json.loads(_call(port, "POST", "/runs", {"task": "pick_place",
+            recorded = json.loads(call(port, "POST", "/runs", {"task": "pick_place",
                                                                 "backend": "mock"})[1])["run_id"]
-            while json.loads(_call(port, "GET", f"/runs/{recorded}")[1])["status"] == "running":
+            while json.loads(call(port, "GET", f"/runs/{recorded}")[1])["status"] == "running":
                 time.sleep(0.1)
             flood = Flood(port, args.clients, recorded, args.seed)
             flood.start()
@@ -230,13 +164,13 @@ def main() -> int:
                 run_id, busy = _moving_run(port, control)
                 busy_starts += busy
                 time.sleep(0.3)
-                code, data, seconds = _call(control, "POST", f"/runs/{run_id}/cancel")
+                code, data, seconds = call(control, "POST", f"/runs/{run_id}/cancel")
                 if code != 202:
                     raise SystemExit(f"cancel answered {code}: {data[:300]!r}")
                 latencies.append(seconds * 1000.0)
                 deadline = time.monotonic() + 2.0
                 while time.monotonic() < deadline:
-                    status = json.loads(_call(control, "GET",
+                    status = json.loads(call(control, "GET",
                                               f"/runs/{run_id}")[1])["status"]
                     if status != "running":
                         effective += status == "cancelled"
