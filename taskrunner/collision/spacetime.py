@@ -1,0 +1,435 @@
+"""Space-time verification: arms moving at once, checked against each other over time.
+
+A *lane* is the work of one arm (or of one branch of a ``parallel``): timed trajectories
+(:class:`TimedMotion`) of its joints, each with its start on a clock common to all lanes
+(s). Outside its motions a lane rests: before its first motion where that motion starts,
+between two where the earlier ended, after the last where it ended. Lanes drive disjoint
+joints. :func:`verify_lanes` answers whether the lanes' bodies come closer than a
+clearance at any instant, which pair first does and when (:class:`Conflict`), and the
+least distance measured.
+
+Every backend here plays a trajectory linearly between its samples
+(:func:`~taskrunner.backends.base.sample_positions`), so between two consecutive sample
+times of *any* lane the whole state moves on a straight line in joint space. Over a time
+stretch, every point of a body moves, relative to a body of another lane, by at most
+``B = sum_j r_j |dq_j|``, where ``r_j`` is the full-reach lever arm of joint ``j`` for
+either body (:func:`~taskrunner.scene.sweep.lever_arms`: an upper bound on the distance
+from the joint's axis to any point of the body, 1 m/m for a prismatic joint). This is the
+bound of the path verifier (:mod:`taskrunner.scene.sweep`) taken along time.
+
+The walk is conservative advancement (as in Schwarzer, Saha & Latombe, IEEE T-RO 2005),
+per pair of bodies of two lanes: a measurement ``d`` (coal's exact signed distance, m,
+through the scene's :class:`~taskrunner.scene.collision.CollisionChecker`) at time ``s``
+proves the pair at least ``clearance`` apart until the time ``t`` where ``B(s, t)``
+reaches ``d - clearance``; the pair is measured again there. The pair is therefore never
+closer than ``clearance`` between measurements, and a measurement below it is a
+:class:`Conflict`, the first one moved back by bisection to within
+:data:`TIME_TOLERANCE` of where the distance first drops below the clearance. Pairs
+due at about the same time are measured together (one forward kinematics). Where a
+pair's distance creeps toward the clearance so slowly that more than
+:attr:`SpacetimeOptions.max_steps` measurements would be needed, the clearance is not
+proven and that is reported as a conflict too: never a silent pass.
+
+The verifier is independent of the planner and of the run: it reads trajectories and a
+scene only, so a run record can be verified after the fact
+(:mod:`taskrunner.tree.expect`).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from taskrunner.errors import InvalidStateError
+from taskrunner.scene import Scene
+from taskrunner.scene.sweep import lever_arms
+from taskrunner.types import JointTrajectory
+
+__all__ = ["TIME_TOLERANCE", "Conflict", "Lane", "SpacetimeOptions", "SpacetimeVerification",
+           "TimedMotion", "verify_lanes"]
+
+TIME_TOLERANCE = 1e-3
+"""s: a conflict's time is where the distance first drops below the clearance, within this."""
+_EARLY = 0.75  # a pair this far through its step is measured with the pairs due now
+_SLACK = 1e-6  # m: coal's distance tolerance, taken off every measured distance
+
+
+@dataclass(frozen=True)
+class TimedMotion:
+    """A trajectory of one lane, started at ``start`` (s, the common clock).
+
+    Attributes:
+        label: what the motion is, for reports (the task file:line and step).
+    """
+
+    trajectory: JointTrajectory
+    start: float
+    label: str | None = None
+
+    @property
+    def end(self) -> float:
+        """When it ends (s, the common clock)."""
+        return self.start + self.trajectory.duration
+
+
+@dataclass(frozen=True)
+class Lane:
+    """The motions of one arm (one branch) in time order; they must not overlap."""
+
+    name: str
+    motions: tuple[TimedMotion, ...]
+
+
+@dataclass(frozen=True)
+class SpacetimeOptions:
+    """How :func:`verify_lanes` verifies.
+
+    Attributes:
+        clearance: m; bodies of two lanes closer than this are a conflict (0: touching).
+        max_steps: most measurements of one pair before it counts as not proven.
+    """
+
+    clearance: float = 0.0
+    max_steps: int = 20000
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.clearance) and self.clearance >= 0):
+            raise ValueError(f"'clearance' must be a number of metres >= 0 "
+                             f"(got {self.clearance!r})")
+        if self.max_steps < 1:
+            raise ValueError(f"'max_steps' must be >= 1 (got {self.max_steps!r})")
+
+
+@dataclass(frozen=True)
+class Conflict:
+    """Two lanes' bodies closer than the clearance.
+
+    Attributes:
+        time: s on the common clock, where the distance first drops below the clearance
+            (within :data:`TIME_TOLERANCE`).
+        bodies: the two bodies (link or object names), the first of ``lanes[0]``.
+        lanes: the two lanes' names.
+        motions: the label of each lane's motion running then (None: the lane rests).
+        distance: m, measured there (negative: penetrating).
+        proven: False where the pair was not measured below the clearance but its
+            clearance could not be proven within :attr:`SpacetimeOptions.max_steps`.
+    """
+
+    time: float
+    bodies: tuple[str, str]
+    lanes: tuple[str, str]
+    motions: tuple[str | None, str | None]
+    distance: float
+    proven: bool = True
+
+    @property
+    def depth(self) -> float:
+        """How deep the bodies penetrate there (m, 0 where they do not touch)."""
+        return max(0.0, -self.distance)
+
+    def describe(self) -> str:
+        """One line: when, which bodies of which motions, how close."""
+        what = [m or f"{lane} at rest" for m, lane in zip(self.motions, self.lanes)]
+        how = (f"{1e3 * self.depth:.1f} mm deep" if self.distance < 0
+               else f"{1e3 * self.distance:.1f} mm apart")
+        if not self.proven:
+            how = "clearance not proven"
+        return (f"{self.bodies[0]} ({what[0]}) and {self.bodies[1]} ({what[1]}) at "
+                f"{self.time:.3f} s, {how}")
+
+
+@dataclass(frozen=True)
+class SpacetimeVerification:
+    """What :func:`verify_lanes` found.
+
+    Attributes:
+        conflict: the first conflict in time, None when the lanes keep their clearance.
+        min_distance: m, the least distance measured between two lanes' bodies (inf:
+            no pair); the true least distance lies between the clearance and this.
+        closest: the bodies measured at ``min_distance``, and ``closest_time`` when (s).
+        distance_queries: exact pair distances computed.
+        seconds: wall time of the verification.
+    """
+
+    conflict: Conflict | None
+    min_distance: float
+    closest: tuple[str, str] | None
+    closest_time: float | None
+    distance_queries: int
+    seconds: float
+
+    @property
+    def ok(self) -> bool:
+        """No conflict."""
+        return self.conflict is None
+
+
+def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None = None,
+                 options: SpacetimeOptions | None = None) -> SpacetimeVerification:
+    """Verify that no two lanes' bodies come closer than the clearance (module text).
+
+    Args:
+        scene: the bodies (robot links, attached and world objects) and the allowed
+            pairs; joints no lane moves stay at ``scene.state``. Only pairs of bodies
+            of two different lanes are checked: a body belongs to a lane when a joint
+            the lane moves, or a joint carrying such a joint, carries it.
+        lanes: at least two lanes for anything to be checked.
+        window: the stretch of the common clock checked (s), default from the first
+            motion's start to the last motion's end.
+
+    Raises:
+        InvalidStateError: two lanes move the same joint or share a moving joint that
+            carries both, or one lane's motions overlap in time.
+    """
+    started = time.perf_counter()
+    options = options or SpacetimeOptions()
+    timeline = _Timeline(scene, lanes, window)
+    if timeline.empty:
+        return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
+    walk = _Walk(scene, timeline, options)
+    conflict = walk.run()
+    return SpacetimeVerification(conflict, walk.least, walk.least_pair, walk.least_time,
+                                 walk.queries, time.perf_counter() - started)
+
+
+class _Timeline:
+    """The full state over the common clock: linear between the event times."""
+
+    def __init__(self, scene: Scene, lanes: Sequence[Lane],
+                 window: tuple[float, float] | None) -> None:
+        model = scene.robot
+        self.lanes = list(lanes)
+        self.columns: list[np.ndarray] = []
+        seen: dict[str, str] = {}
+        for lane in self.lanes:
+            names = sorted({n for m in lane.motions for n in m.trajectory.names})
+            for name in names:
+                if name in seen and seen[name] != lane.name:
+                    raise InvalidStateError(f"lanes {seen[name]!r} and {lane.name!r} both "
+                                            f"move joint {name!r}")
+                seen[name] = lane.name
+            ordered = sorted(lane.motions, key=lambda m: m.start)
+            for a, b in zip(ordered, ordered[1:]):
+                if b.start < a.end - 1e-9:
+                    raise InvalidStateError(f"lane {lane.name!r}: {b.label or 'a motion'} "
+                                            f"starts at {b.start:.3f} s, before "
+                                            f"{a.label or 'the one before'} ends "
+                                            f"({a.end:.3f} s)")
+            self.columns.append(model.indices(tuple(names)) if names else
+                                np.zeros(0, dtype=np.int64))
+        motions = [m for lane in self.lanes for m in lane.motions]
+        moving = sum(1 for lane in self.lanes if lane.motions)
+        self.empty = moving == 0 or len(self.lanes) < 2
+        if self.empty:
+            return
+        t0 = min(m.start for m in motions) if window is None else window[0]
+        t1 = max(m.end for m in motions) if window is None else window[1]
+        times = {t0, t1}
+        for m in motions:
+            for t in m.start + np.asarray(m.trajectory.times, dtype=float):
+                if t0 < t < t1:
+                    times.add(float(t))
+        self.times = np.array(sorted(times))
+        base = scene.state.copy()
+        states = np.repeat(base[None, :], len(self.times), axis=0)
+        for lane in self.lanes:
+            for row, t in enumerate(self.times):
+                motion, local = _at(lane, t)
+                if motion is None:
+                    continue
+                trajectory = motion.trajectory
+                idx = model.indices(trajectory.names)
+                states[row, idx] = _sample(trajectory, local)
+        for row in range(len(states)):
+            model.apply_mimic(states[row])
+        self.states = states
+        # Per joint, how far it has moved since t0 (rad or m): the motion bound's integrand.
+        steps = np.abs(np.diff(states, axis=0))
+        self.travel = np.vstack([np.zeros(model.nq), np.cumsum(steps, axis=0)])
+
+    def state(self, t: float) -> np.ndarray:
+        """The full state at ``t`` (linear between event times)."""
+        k = int(np.clip(np.searchsorted(self.times, t, side="right") - 1, 0, len(self.times) - 2))
+        span = self.times[k + 1] - self.times[k]
+        s = 0.0 if span <= 0 else min(1.0, max(0.0, (t - self.times[k]) / span))
+        return self.states[k] + s * (self.states[k + 1] - self.states[k])
+
+    def motion_label(self, lane: int, t: float) -> str | None:
+        motion, _ = _at(self.lanes[lane], t)
+        if motion is None or not (motion.start <= t <= motion.end):
+            return None
+        return motion.label or "a motion"
+
+
+def _at(lane: Lane, t: float) -> tuple[TimedMotion | None, float]:
+    """The motion that sets the lane's joints at ``t`` and the time on its own clock."""
+    ordered = sorted(lane.motions, key=lambda m: m.start)
+    if not ordered:
+        return None, 0.0
+    current = ordered[0]
+    for motion in ordered:
+        if motion.start <= t:
+            current = motion
+    return current, t - current.start
+
+
+def _sample(trajectory: JointTrajectory, t: float) -> np.ndarray:
+    times, positions = trajectory.times, trajectory.positions
+    if t <= times[0]:
+        return positions[0].copy()
+    if t >= times[-1]:
+        return positions[-1].copy()
+    k = int(np.searchsorted(times, t, side="right")) - 1
+    s = (t - times[k]) / (times[k + 1] - times[k])
+    return positions[k] + s * (positions[k + 1] - positions[k])
+
+
+class _Walk:
+    """Conservative advancement of every pair of two lanes' bodies along the timeline."""
+
+    def __init__(self, scene: Scene, timeline: _Timeline, options: SpacetimeOptions) -> None:
+        model = scene.robot
+        self.model, self.timeline, self.options = model, timeline, options
+        self.checker = checker = scene.checker
+        geometry = checker.geometry_model
+        pin_model = model.model
+        owner = np.full(len(geometry.geometryObjects), -1, dtype=np.int64)
+        carried: list[set[int]] = []  # per lane, the pinocchio joints that carry its bodies
+        for columns in timeline.columns:
+            joints: set[int] = set()
+            for index in columns:
+                jid = int(pin_model.getJointId(model.joint_names[int(index)]))
+                while jid > 0:
+                    joints.add(jid)
+                    jid = int(pin_model.parents[jid])
+            carried.append(joints)
+        for g, obj in enumerate(geometry.geometryObjects):
+            chain: set[int] = set()
+            jid = int(obj.parentJoint)
+            while jid > 0:
+                chain.add(jid)
+                jid = int(pin_model.parents[jid])
+            lanes = [i for i, joints in enumerate(carried) if chain & joints]
+            if len(lanes) > 1:
+                names = " and ".join(repr(timeline.lanes[i].name) for i in lanes)
+                raise InvalidStateError(f"lanes {names} share a joint that carries "
+                                        f"{obj.name!r}: they are not separate arms")
+            if lanes:
+                owner[g] = lanes[0]
+        self.owner = owner
+        self.names = [_body_name(obj, pin_model) for obj in geometry.geometryObjects]
+        pairs = []
+        for k, pair in enumerate(geometry.collisionPairs):
+            a, b = int(pair.first), int(pair.second)
+            if owner[a] >= 0 and owner[b] >= 0 and owner[a] != owner[b]:
+                pairs.append((k, a, b) if owner[a] < owner[b] else (k, b, a))
+        self.pairs = pairs
+        levers = lever_arms(model, geometry)
+        # Per pair, the motion bound's weight of each joint: either body's lever arm.
+        weights = np.array([levers[a] + levers[b] for _, a, b in pairs]).reshape(len(pairs),
+                                                                                 model.nq)
+        self.bound = timeline.travel @ weights.T  # (n_times, n_pairs), non-decreasing
+        self.queries = 0
+        self.least = math.inf
+        self.least_pair: tuple[str, str] | None = None
+        self.least_time: float | None = None
+        self._out = np.zeros(max(1, len(pairs)))
+
+    def bound_at(self, t: float) -> np.ndarray:
+        times = self.timeline.times
+        k = int(np.clip(np.searchsorted(times, t, side="right") - 1, 0, len(times) - 2))
+        span = times[k + 1] - times[k]
+        s = 0.0 if span <= 0 else min(1.0, max(0.0, (t - times[k]) / span))
+        return self.bound[k] + s * (self.bound[k + 1] - self.bound[k])
+
+    def time_of(self, pair: int, level: float) -> float:
+        """The first time the pair's motion bound reaches ``level`` (inf: never)."""
+        column = self.bound[:, pair]
+        if level > column[-1]:
+            return math.inf
+        k = int(np.searchsorted(column, level, side="left"))
+        if k == 0:
+            return float(self.timeline.times[0])
+        lo, hi = column[k - 1], column[k]
+        s = 0.0 if hi <= lo else (level - lo) / (hi - lo)
+        t0, t1 = self.timeline.times[k - 1], self.timeline.times[k]
+        return float(t0 + s * (t1 - t0))
+
+    def measure(self, t: float, pairs: Sequence[int]) -> np.ndarray:
+        q = self.timeline.state(t)
+        out = self._out[:len(pairs)]
+        self.checker.pair_distances(self.model.to_pin(q), [self.pairs[p][0] for p in pairs], out)
+        self.queries += len(pairs)
+        distances = out - _SLACK
+        for p, d in zip(pairs, distances):
+            if d < self.least:
+                _, a, b = self.pairs[p]
+                self.least, self.least_pair, self.least_time = (float(d + _SLACK),
+                                                                (self.names[a], self.names[b]),
+                                                                float(t))
+        return distances.copy()
+
+    def run(self) -> Conflict | None:
+        clearance = self.options.clearance
+        n = len(self.pairs)
+        if n == 0:
+            return None
+        t_end = float(self.timeline.times[-1])
+        last = np.full(n, float(self.timeline.times[0]))
+        due = last.copy()  # every pair measured at the start
+        steps = np.zeros(n, dtype=np.int64)
+        while True:
+            now = float(due.min())
+            if not math.isfinite(now):
+                return None
+            reach = due - last
+            pick = np.flatnonzero((due <= now) | ((now - last) >= _EARLY * reach))
+            distances = self.measure(now, pick.tolist())
+            for p, d in zip(pick, distances):
+                steps[p] += 1
+                if d < clearance:
+                    return self.conflict(int(p), float(last[p]), now, float(d))
+                if steps[p] > self.options.max_steps:
+                    return self.conflict(int(p), float(last[p]), now, float(d), proven=False)
+                last[p] = now
+                level = float(self.bound_at(now)[p]) + (d - clearance)
+                nxt = self.time_of(int(p), level)
+                due[p] = math.inf if nxt > t_end else max(nxt, now)
+                if due[p] == now:  # no progress possible: d is at the clearance
+                    return self.conflict(int(p), float(last[p]), now, float(d), proven=False)
+            if now >= t_end:
+                return None
+
+    def conflict(self, pair: int, free: float, bad: float, distance: float,
+                 proven: bool = True) -> Conflict:
+        """The conflict of ``pair``, moved back toward ``free`` (where it kept its
+        clearance) by bisection on exact distances."""
+        clearance = self.options.clearance
+        if proven:
+            while bad - free > TIME_TOLERANCE:
+                mid = 0.5 * (free + bad)
+                d = float(self.measure(mid, [pair])[0])
+                if d < clearance:
+                    bad, distance = mid, d
+                else:
+                    free = mid
+        _, a, b = self.pairs[pair]
+        la, lb = int(self.owner[a]), int(self.owner[b])
+        lanes = self.timeline.lanes
+        return Conflict(bad, (self.names[a], self.names[b]), (lanes[la].name, lanes[lb].name),
+                        (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
+                        distance, proven)
+
+
+def _body_name(obj, pin_model) -> str:  # type: ignore[no-untyped-def]
+    """A geometry's body: its link's name for a robot link, else the object's name."""
+    frame = int(obj.parentFrame)
+    if 0 <= frame < len(pin_model.frames):
+        name = str(obj.name)
+        link = str(pin_model.frames[frame].name)
+        return link if name.startswith(link) else name
+    return str(obj.name)
