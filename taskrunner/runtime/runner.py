@@ -330,12 +330,14 @@ class Runner:
             self.late_cancel = (f"{self._cancel_reason[0]} too late: every step had ended; "
                                 f"the run {status}")
             self.events.emit("message", self.late_cancel, late_cancel=True)
-        self.record.status = status
+        # The event first, then the record's status: a reader that sees the run ended
+        # (polls of GET /runs/{id}, TaskRun) finds its run_finished event there too.
+        self.events.emit("run_finished", error or status, status=status, exit_code=code,
+                         scene=scene_data(self.scene.snapshot()))
         self.record.exit_code = code
         self.record.error = error
         self.record.finished = datetime.now(UTC).isoformat()
-        self.events.emit("run_finished", error or status, status=status, exit_code=code,
-                         scene=scene_data(self.scene.snapshot()))
+        self.record.status = status
         if self._file is not None:
             self.events.set_journal(None)
             self._file.finish()
