@@ -64,7 +64,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw", "view", "test", "sweep", "plan")
+            "firmware-sim", "hw", "view", "test", "sweep", "plan", "warm-up")
 
 
 def _load(name_or_path: str):  # type: ignore[no-untyped-def]
@@ -648,6 +648,12 @@ def cmd_examples(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_warm_up(args: argparse.Namespace) -> int:
+    from taskrunner.runtime.session import warm_up_command
+
+    return warm_up_command()
+
+
 def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
     from taskrunner.scene import acm
 
@@ -819,6 +825,8 @@ def _parser() -> argparse.ArgumentParser:
                       help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
     view.add_argument("--log-level", default="warning", help="uvicorn's log level (warning)",
                       choices=("critical", "error", "warning", "info", "debug"))
+    sub.add_parser("warm-up", help="compile the planner's kernels into the user cache "
+                                   "(once per machine; a first run does it by itself)")
     sub.add_parser("collision-matrix", add_help=False,
                    help="generate a robot's self-collision matrix (see --help)")
     _add_test_sweep_parsers(sub)
@@ -878,7 +886,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
                 "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
-                "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep}
+                "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep,
+                "warm-up": cmd_warm_up}
     try:
         _apply_robot_options(args)
         return commands[args.command](args)

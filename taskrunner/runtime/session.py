@@ -53,7 +53,7 @@ if TYPE_CHECKING:
     from taskrunner.tasks.spec import TaskSpec
     from taskrunner.tree.check import CheckReport
 
-__all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration"]
+__all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration", "warm_up_command"]
 
 
 BACKENDS = ("mock", "sim", "mujoco", "serial", "http")
@@ -208,6 +208,34 @@ def _prepare_kernels(planner: PlanningWorker | InProcessPlanner, out: TextIO,
         return None
     progress.end(f"ready in {seconds:.1f} s (not counted as task time)")
     return round(seconds, 3)
+
+
+def warm_up_command(out: TextIO | None = None) -> int:
+    """``run-task warm-up``: compile the planner's kernels into the user cache (or say
+    they are there already), with a progress line; exit code 0."""
+    from taskrunner.planning.warmup import kernels_ready, warm_up_kernels
+    from taskrunner.resources import kernel_cache_dir
+
+    out = out or sys.stdout
+    if kernels_ready():
+        print(f"the planner's compiled kernels are ready (cache: {kernel_cache_dir()})",
+              file=out)
+        return 0
+    progress = _Progress(out, "compiling the planner's kernels (once per machine, ~10 s)",
+                         _can_redraw() and out.isatty())
+    ticking = threading.Event()
+
+    def tick() -> None:
+        while not ticking.wait(0.5):
+            progress.tick()
+
+    threading.Thread(target=tick, name="warm-up-progress", daemon=True).start()
+    try:
+        seconds = warm_up_kernels(on_compile=progress.start)
+    finally:
+        ticking.set()
+    progress.end(f"done in {seconds:.1f} s (cache: {kernel_cache_dir()})")
+    return 0
 
 
 def _wait_ready(worker: PlanningWorker, progress: _Progress) -> None:
