@@ -214,7 +214,7 @@ class _Timeline:
                 seen[name] = lane.name
             ordered = sorted(lane.motions, key=lambda m: m.start)
             for a, b in zip(ordered, ordered[1:]):
-                if b.start < a.end - 1e-9:
+                if b.start < a.end - TIME_TOLERANCE:  # (records round times to 0.1 ms)
                     raise InvalidStateError(f"lane {lane.name!r}: {b.label or 'a motion'} "
                                             f"starts at {b.start:.3f} s, before "
                                             f"{a.label or 'the one before'} ends "

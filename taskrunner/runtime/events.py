@@ -24,6 +24,8 @@ KINDS = (
     "motion",           # a trajectory was sent to the backend; data: trajectory, scene
     "physics",          # what a physics backend did during a node's motion; data: period,
                         # joints, t, q, objects (poses over time), grasps (welds)
+    "wait",             # a motion held back for another branch's arm; data: since, until
+                        # (s, the run's schedule), other (its step), bodies, at, distance
     "message",          # anything else worth showing (a warning, a retry)
     "run_finished",     # the run ended; status succeeded / failed / cancelled
 )

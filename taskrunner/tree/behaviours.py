@@ -34,10 +34,11 @@ from taskrunner.tree.choice import choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
+from taskrunner.tree.schedule import Admission, Blocked, LaneKey, ScheduleConflictError
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
-           "Wait"]
+           "TaskParallel", "Wait", "lane_of"]
 
 
 class TaskLeaf(py_trees.behaviour.Behaviour):
@@ -89,8 +90,55 @@ class TaskLeaf(py_trees.behaviour.Behaviour):
         """Stop the work: the leaf was interrupted."""
 
 
+class TaskParallel(py_trees.composites.Parallel):
+    """A ``parallel`` whose branches move their arms at the same time: each start is a new
+    instance of it on the run's motion schedule (:mod:`taskrunner.tree.schedule`), so its
+    branches' motions are verified against each other in time. It succeeds when every
+    branch has."""
+
+    def __init__(self, name: str, children: list[py_trees.behaviour.Behaviour],
+                 ctx: TaskContext) -> None:
+        super().__init__(name, policy=py_trees.common.ParallelPolicy.SuccessOnAll(
+            synchronise=True), children=children)
+        self.ctx = ctx
+        self.instance = 0
+
+    def initialise(self) -> None:
+        children = self.children
+        self.instance = self.ctx.schedule.new_instance(
+            lambda i: children[i].status not in (Status.SUCCESS, Status.FAILURE))
+        super().initialise()
+
+
+def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
+    """The schedule lane of a node: ``(parallel instance, branch index)`` of every
+    :class:`TaskParallel` above it, from the root (see :mod:`taskrunner.tree.schedule`)."""
+    path: list[tuple[int, int]] = []
+    child, parent = node, node.parent
+    while parent is not None:
+        if isinstance(parent, TaskParallel):
+            index = next(i for i, c in enumerate(parent.children) if c is child)
+            path.append((parent.instance, index))
+        child, parent = parent, parent.parent
+    return tuple(reversed(path))
+
+
+def _plays_time(backend: object) -> bool:
+    """Whether motions on ``backend`` take their time (a mock without ``speed`` ends each
+    at once: its schedule is the planned one, never held against the wall clock)."""
+    from taskrunner.backends.mock import MockBackend
+
+    return not (isinstance(backend, MockBackend) and backend.options.speed is None)
+
+
 class _Executes(TaskLeaf):
-    """A leaf that ends by executing one trajectory on the backend."""
+    """A leaf that ends by executing one trajectory on the backend.
+
+    Before it is sent, the trajectory is admitted to the run's motion schedule
+    (:meth:`~taskrunner.tree.schedule.MotionSchedule.admit`): verified against the motions
+    of the branches running beside it, and started later (a ``wait`` event) where it would
+    meet one; on a backend that plays motions in time, the leaf holds it until then.
+    """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext,
                  timing: TimingOptions | None) -> None:
@@ -98,15 +146,27 @@ class _Executes(TaskLeaf):
         self.timing = timing or ctx.timing
         self.handle: ExecutionHandle | None = None
         self.trajectory: JointTrajectory | None = None
+        self.admission: Admission | None = None
+        self.pending: JointTrajectory | None = None  # admitted, held until its start
+        # Not admitted yet: another branch's arm rests in its way (trajectory, revision seen).
+        self.held: tuple[JointTrajectory, int] | None = None
 
     def start(self) -> None:
         self.handle = None
         self.trajectory = None
+        self.admission = None
+        self.pending = None
+        self.held = None
 
     def execute_path(self, path: JointPath, planning_time: float,
                      trajectory: JointTrajectory | None = None) -> Status:
-        """Time ``path`` (unless the planner did: ``trajectory``), send it to the backend;
-        RUNNING, or FAILURE with the reason."""
+        """Time ``path`` (unless the planner did: ``trajectory``), admit it to the
+        schedule and send it to the backend; RUNNING, or FAILURE with the reason.
+
+        Raises:
+            TaskrunnerError: timing failed, or the schedule refused the motion
+                (:class:`~taskrunner.tree.schedule.ScheduleConflictError`).
+        """
         if trajectory is None:
             trajectory = parameterize_path(self.ctx.scene.robot, path, self.timing)
         self.trajectory = trajectory
@@ -116,13 +176,63 @@ class _Executes(TaskLeaf):
             duration=round(trajectory.duration, 6), waypoints=len(path))
         if len(trajectory.times) < 2:
             return Status.SUCCESS  # already there
+        return self._admit(trajectory)
+
+    def _admit(self, trajectory: JointTrajectory) -> Status:
+        """Put the motion on the run's schedule (module text); send it, hold it until its
+        start, or hold it until the branch in its way has moved on."""
+        schedule, lane = self.ctx.schedule, lane_of(self)
+        timed = _plays_time(self.ctx.backend)
+        now = self.ctx.clock.now() if timed else 0.0
+        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location, now)
+        if isinstance(found, Blocked):
+            refusal = schedule.refusal(lane, found, self.location)
+            if refusal is not None:
+                schedule.holding.pop(lane, None)
+                raise ScheduleConflictError(refusal)
+            if self.held is None:
+                self.ctx.events.emit("wait", found.describe(self.location), node=self.name,
+                                     location=self.location, hold=True, other=found.other,
+                                     bodies=list(found.conflict.bodies),
+                                     at=round(found.conflict.time, 6),
+                                     distance=round(found.conflict.distance, 6))
+            schedule.holding[lane] = found.lane
+            self.held = (trajectory, schedule.revision)
+            return Status.RUNNING
+        schedule.holding.pop(lane, None)
+        self.held = None
+        admission = found
+        self.admission = admission
+        for wait in admission.waits:
+            conflict = wait.conflict
+            self.ctx.events.emit(
+                "wait", wait.describe(self.location), node=self.name, location=self.location,
+                since=round(wait.since, 6), until=round(wait.until, 6), other=wait.other,
+                bodies=list(conflict.bodies), at=round(conflict.time, 6),
+                distance=round(conflict.distance, 6))
+        if timed and admission.start > now:
+            self.pending = trajectory
+            return Status.RUNNING
+        return self._send(trajectory)
+
+    def _send(self, trajectory: JointTrajectory) -> Status:
+        self.pending = None
         self.handle = self.ctx.backend.execute(trajectory)
         self.ctx.clock.track(self.handle)
         snapshot = self.ctx.scene.snapshot()
-        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot))
+        start = self.admission.start if self.admission is not None else 0.0
+        lane = lane_of(self)
+        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot,
+                                                lane, start))
         self.ctx.events.emit("motion", f"{trajectory.duration:.2f} s", node=self.name,
-                             location=self.location, **motion_data(trajectory, snapshot))
+                             location=self.location, start=round(start, 6),
+                             lane=[list(k) for k in lane], **motion_data(trajectory, snapshot))
         return Status.RUNNING
+
+    @property
+    def moving(self) -> bool:
+        """A motion is executing, or held (until its start, or until it is admitted)."""
+        return self.handle is not None or self.pending is not None or self.held is not None
 
     def finish_data(self) -> dict[str, object]:
         """How far the motion got: ``executed.until`` (s of trajectory), for a replay."""
@@ -132,6 +242,24 @@ class _Executes(TaskLeaf):
                              "status": str(self.handle.status)}}
 
     def poll_execution(self) -> Status:
+        if self.held is not None:
+            trajectory, seen = self.held
+            schedule = self.ctx.schedule
+            blocker = schedule.holding.get(lane_of(self))
+            if schedule.revision == seen and (blocker is None or schedule.lane_running(blocker)):
+                return Status.RUNNING  # nothing has moved on yet
+            try:
+                return self._admit(trajectory)
+            except TaskrunnerError as exc:
+                return self.fail(str(exc))
+        if self.pending is not None:
+            assert self.admission is not None
+            if self.ctx.clock.now() < self.admission.start:
+                return Status.RUNNING
+            try:
+                return self._send(self.pending)
+            except TaskrunnerError as exc:
+                return self.fail(str(exc))
         assert self.handle is not None
         if not self.handle.done():
             self.ctx.sync_from_backend()
@@ -145,6 +273,10 @@ class _Executes(TaskLeaf):
         return Status.SUCCESS
 
     def abort(self) -> None:
+        self.pending = None
+        if self.held is not None:
+            self.held = None
+            self.ctx.schedule.holding.pop(lane_of(self), None)
         if self.handle is not None and not self.handle.done():
             self.handle.cancel()
             self.ctx.sync_from_backend(finished=(self.name, self.location))
@@ -230,7 +362,7 @@ class MoveToGoal(_Executes):
             self.fail(str(exc))
 
     def update(self) -> Status:
-        if self.handle is not None:
+        if self.moving:
             return self.poll_execution()
         if self.ticket is None:
             return Status.FAILURE  # the request itself was invalid: fail() ran in start()
@@ -345,7 +477,7 @@ class MoveStraight(_Executes):
             self.outcome = self.fail(str(exc))
 
     def update(self) -> Status:
-        if self.handle is not None:
+        if self.moving:
             return self.poll_execution()
         return self.outcome
 
@@ -390,7 +522,7 @@ class MoveJoints(_Executes):
             self.outcome = self.fail(str(exc))
 
     def update(self) -> Status:
-        if self.handle is not None:
+        if self.moving:
             return self.poll_execution()
         return self.outcome
 

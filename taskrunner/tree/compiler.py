@@ -5,7 +5,8 @@ pick / place / handoff onto the subtrees of :mod:`taskrunner.tree.idioms`, ``seq
 a ``Sequence``, ``fallback`` onto a ``Selector``, ``retry`` / ``timeout`` / ``repeat`` onto
 the decorators of the same names. A ``parallel`` of ``go`` steps of different arms becomes
 ONE motion planned in a group spanning those arms, so the arms cannot collide; other
-parallel children run side by side on their own joints.
+parallel children run side by side on their own joints, each motion verified in time
+against the other branches' before it is sent (:mod:`taskrunner.tree.schedule`).
 """
 
 from __future__ import annotations
@@ -48,7 +49,14 @@ from taskrunner.tasks import (
 )
 from taskrunner.tasks.steps import ExpectStep
 from taskrunner.tree import idioms
-from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, SceneAction, Wait
+from taskrunner.tree.behaviours import (
+    MoveJoints,
+    MoveStraight,
+    MoveToGoal,
+    SceneAction,
+    TaskParallel,
+    Wait,
+)
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import CheckExpectation, StepTimer
 from taskrunner.tree.grasps import allow_lift_off, end_lift_off, end_lift_offs_left, tool_grasp
@@ -391,9 +399,7 @@ def _parallel(step: ParallelStep, ctx: TaskContext) -> Behaviour:
         behaviours.append(_joint_go(step, gos, ctx))
     if len(behaviours) == 1:
         return behaviours[0]
-    return py_trees.composites.Parallel(
-        step.label, policy=py_trees.common.ParallelPolicy.SuccessOnAll(synchronise=True),
-        children=behaviours)
+    return TaskParallel(step.label, behaviours, ctx)
 
 
 def _joint_go(step: ParallelStep, gos: list[GoStep], ctx: TaskContext) -> Behaviour:

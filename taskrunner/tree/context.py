@@ -26,6 +26,7 @@ from taskrunner.robot.tools import Tool, install_tools
 from taskrunner.runtime.events import EventLog
 from taskrunner.scene import Scene, SceneSnapshot
 from taskrunner.tree.clock import TaskClock
+from taskrunner.tree.schedule import MotionSchedule
 from taskrunner.types import JointTrajectory, Pose
 
 __all__ = ["Arm", "ExecutedMotion", "TaskContext", "resolve_arm"]
@@ -104,12 +105,15 @@ def resolve_arm(cell: Cell, name: str) -> Arm:
 @dataclass(frozen=True)
 class ExecutedMotion:
     """A trajectory sent to the backend, with the scene as it was when it started (plain
-    data: objects, attachments, allowances), so the motion can be re-checked afterwards."""
+    data: objects, attachments, allowances), so the motion can be re-checked afterwards;
+    its ``lane`` and ``start`` on the run's schedule (:mod:`taskrunner.tree.schedule`)."""
 
     node: str
     location: str | None
     trajectory: JointTrajectory
     scene: SceneSnapshot
+    lane: tuple[tuple[int, int], ...] = ()
+    start: float = 0.0
 
 
 @dataclass
@@ -128,6 +132,8 @@ class TaskContext:
             spares the worker importing toppra on its critical path).
         materials: mass, density and friction the task gives its objects (by name), for a
             physics backend.
+        schedule: every motion sent, on the run's clock, by branch: what a motion of one
+            branch of a ``parallel`` is verified against (:mod:`taskrunner.tree.schedule`).
     """
 
     cell: Cell
@@ -141,6 +147,7 @@ class TaskContext:
     planner_times: bool = False
     clock: TaskClock = field(default_factory=TaskClock)
     materials: dict[str, Any] = field(default_factory=dict)
+    schedule: MotionSchedule = field(default_factory=MotionSchedule)
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
     _cartesian: dict[int, tuple[Scene, CartesianPlanner]] = field(default_factory=dict)

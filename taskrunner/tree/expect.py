@@ -17,7 +17,14 @@ What is measured, and how:
   context was made, a step's between the start and the end of the step before the
   ``expect`` (a :class:`StepTimer` around it);
 - ``collision_free``: each executed trajectory, from the scene it started in, through
-  the exact path verifier (:meth:`taskrunner.scene.Scene.path_verifier`).
+  the exact path verifier (:meth:`taskrunner.scene.Scene.path_verifier`); a motion of a
+  branch of a ``parallel`` there against everything but the arms of the branches beside
+  it (their joints in that scene are where the backend last reported them, not where
+  they were at each instant). Arm against arm in time: the run record's ``motion``
+  events (trajectories with their ``start`` and ``lane`` on the run's schedule), each
+  ``parallel`` on its own, through the independent space-time verifier
+  (:func:`taskrunner.collision.spacetime.verify_lanes`, robot links against robot
+  links, no clearance asked: any contact is a miss).
 """
 
 from __future__ import annotations
@@ -29,7 +36,10 @@ import py_trees
 from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
+from taskrunner.collision.spacetime import Lane, TimedMotion, verify_lanes
 from taskrunner.errors import TaskrunnerError
+from taskrunner.robot import RobotModel
+from taskrunner.runtime.events import RunEvent
 from taskrunner.scene import Scene
 from taskrunner.tasks.expect import (
     DurationBounds,
@@ -41,9 +51,11 @@ from taskrunner.tasks.expect import (
 from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.outcome import Orientation, Tolerance, describe_pose, measure
+from taskrunner.tree.schedule import concurrent
+from taskrunner.types import JointTrajectory
 
-__all__ = ["CheckExpectation", "StepTimer", "check_expectation", "check_task_end",
-           "motion_collisions"]
+__all__ = ["CheckExpectation", "StepTimer", "arm_conflicts", "check_expectation",
+           "check_task_end", "motion_collisions"]
 
 
 class StepTimer(py_trees.decorators.Decorator):
@@ -143,7 +155,8 @@ def _duration(what: str, seconds: float, bounds: DurationBounds) -> list[str]:
 
 def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
     """Each executed motion from index ``start`` on that collides, re-checked along its
-    whole trajectory from the scene it started in: ``'node' (file:line): a, b at t s``."""
+    whole trajectory from the scene it started in: ``'node' (file:line): a, b at t s``.
+    The arms of branches running beside a motion are left out (module text)."""
     if len(ctx.executed) <= start:
         return []
     model = ctx.scene.robot
@@ -151,6 +164,10 @@ def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
     found = []
     for motion in ctx.executed[start:]:
         scene.restore(motion.scene)
+        beside = {n for other in ctx.executed if concurrent(other.lane, motion.lane)
+                  for n in other.trajectory.names}
+        if beside:
+            _ignore_arms(scene, beside, set(motion.trajectory.names))
         base = np.asarray(motion.scene.state.positions, dtype=float)
         traj = motion.trajectory
         states = np.array([model.state_with(base, dict(zip(traj.names, row)))
@@ -169,6 +186,76 @@ def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
                 else "two bodies"
             found.append(f"motion {motion.node!r}{where} collides: {pair}{at}")
     return found
+
+
+def _carried(model: RobotModel, joints: set[str]) -> set[str]:
+    """The links a joint of ``joints``, or a joint carrying one of them, carries."""
+    pin_model = model.model
+    chain: set[int] = set()
+    for name in joints:
+        jid = int(pin_model.getJointId(name))
+        while jid > 0:
+            chain.add(jid)
+            jid = int(pin_model.parents[jid])
+    links = set()
+    names = set(model.link_names)
+    for frame in pin_model.frames:
+        jid = int(frame.parentJoint)
+        while jid > 0 and jid not in chain:
+            jid = int(pin_model.parents[jid])
+        if jid > 0 and str(frame.name) in names:
+            links.add(str(frame.name))
+    return links
+
+
+def _ignore_arms(scene: Scene, beside: set[str], own: set[str]) -> None:
+    """Allow every body the joints ``beside`` carry (links, objects held) to touch every
+    body ``own`` carries: those pairs are checked in time instead (:func:`arm_conflicts`)."""
+    model = scene.robot
+
+    def bodies(links: set[str]) -> set[str]:
+        held = {o.name for link in links for o in scene.attached_objects(link)}
+        return links | held
+
+    theirs, mine = bodies(_carried(model, beside)), bodies(_carried(model, own))
+    for a in theirs:
+        for b in mine - theirs:
+            scene.allow_collision(a, b, reason="checked in time")
+
+
+def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
+    """Arm against arm in time, from a run's ``motion`` events (module text): one message
+    per ``parallel`` whose branches' links touch, naming both steps and the bodies."""
+    instances: dict[int, dict[tuple[tuple[int, int], ...], list[TimedMotion]]] = {}
+    first_state: dict[int, dict[str, float]] = {}
+    for event in events:
+        lane = tuple(tuple(k) for k in event.data.get("lane") or ()) if event.kind == "motion" \
+            else ()
+        if not lane or "trajectory" not in event.data:
+            continue
+        data = event.data["trajectory"]
+        positions = np.asarray(data["positions"], dtype=float)
+        trajectory = JointTrajectory(tuple(data["joints"]), np.asarray(data["times"], float),
+                                     positions, np.asarray(data["velocities"], float),
+                                     np.zeros_like(positions))
+        motion = TimedMotion(trajectory, float(event.data.get("start") or 0.0),
+                             event.location or event.node)
+        key = tuple((int(a), int(b)) for a, b in lane)
+        instances.setdefault(key[0][0], {}).setdefault(key, []).append(motion)
+        first_state.setdefault(key[0][0], (event.data.get("scene") or {}).get("joints", {}))
+    misses = []
+    for instance, lanes in instances.items():
+        scene = Scene(model)  # the robots alone: links against links
+        scene.set_state(model.state_with(scene.state, first_state[instance]))
+        try:
+            found = verify_lanes(scene, [Lane(f"branch {'.'.join(str(b) for _, b in key)}",
+                                              tuple(motions)) for key, motions in lanes.items()])
+        except TaskrunnerError as exc:
+            misses.append(f"arms not verified against each other in time: {exc}")
+            continue
+        if found.conflict is not None:
+            misses.append(f"arms collide in a parallel: {found.conflict.describe()}")
+    return misses
 
 
 def check_expectation(ctx: TaskContext, want: Expectation, step_seconds: float | None = None,
@@ -196,6 +283,7 @@ def check_expectation(ctx: TaskContext, want: Expectation, step_seconds: float |
             misses += _duration("the step's duration", step_seconds, want.step_duration)
     if want.collision_free:
         misses += motion_collisions(ctx, collisions_from)
+        misses += arm_conflicts(ctx.scene.robot, ctx.events.events())
     return misses
 
 

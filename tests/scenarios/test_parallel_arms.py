@@ -8,18 +8,18 @@ branches of one ``parallel``, so both grippers reach the middle at the same time
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.robot.cell import load_cell
-from taskrunner.runtime.replay import replay_of
 from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.scene import Scene
 from taskrunner.tasks import load_task
+from taskrunner.tree.expect import arm_conflicts
 
 FIXTURES = Path(__file__).parent / "fixtures"
 PROBE = FIXTURES / "meet_in_the_middle.yaml"
@@ -38,14 +38,17 @@ def run_probe(tmp_path: Path, seed: int = 0) -> Runner:
 
 def schedule_of(runner: Runner) -> list[tuple[float, dict]]:
     """Each recorded motion with its start on the run's common clock (s): the ``start``
-    the run recorded; where a record has none (runs before motions were scheduled), the
-    timing a parallel promises: each arm's motions back to back from the parallel's start."""
+    of its ``motion`` event; where a record has none (runs before motions were
+    scheduled), the timing a parallel promises: each arm's motions back to back from the
+    parallel's start."""
     out: list[tuple[float, dict]] = []
     ends: dict[str, float] = {}
-    for motion in replay_of(runner.record).motions:
-        trajectory = motion.trajectory
+    for event in runner.record.events:
+        if event.kind != "motion":
+            continue
+        trajectory = event.data["trajectory"]
         arm = trajectory["joints"][0].split("_")[0]  # left_… / right_…
-        start = trajectory.get("start")
+        start = event.data.get("start")
         if start is None:
             start = ends.get(arm, 0.0)
         ends[arm] = float(start) + float(trajectory["duration"])
@@ -81,12 +84,36 @@ def arm_contacts(runner: Runner, step: float = 0.005) -> list[tuple[float, str, 
     return found
 
 
-@pytest.mark.xfail(strict=True, reason="issue 25: branches are not checked against each "
-                   "other in time (1036 colliding samples at 5 ms, 12 mm deep)")
-def test_probe_replayed_on_its_common_clock_has_no_arm_against_arm_contact(tmp_path):
+def test_probe_runs_with_waits_and_no_arm_against_arm_contact(tmp_path):
     runner = run_probe(tmp_path)
+    assert runner.record.status == "succeeded", runner.record.error
+    assert runner.expectations_met  # collision_free: true covers arm against arm in time
     contacts = arm_contacts(runner)
-    assert runner.record.status != "succeeded" or not contacts, (
-        f"run succeeded with {len(contacts)} colliding samples, first at "
-        f"{contacts[0][0]:.3f} s ({contacts[0][1]} - {contacts[0][2]}, "
-        f"{1e3 * max(c[3] for c in contacts):.1f} mm deep)")
+    assert not contacts, (
+        f"{len(contacts)} colliding samples, first at {contacts[0][0]:.3f} s "
+        f"({contacts[0][1]} - {contacts[0][2]}, {1e3 * max(c[3] for c in contacts):.1f} mm)")
+    waits = [e for e in runner.record.events if e.kind == "wait"]
+    assert waits, "the branches meet in the middle: one of them must have waited"
+    for wait in waits:
+        assert wait.location and wait.data["other"] and wait.data["other"] != wait.location
+        assert len(wait.data["bodies"]) == 2
+    # The right arm's pick waited for the left arm's pick (lines 14 and 17 of the probe).
+    assert any(w.location.endswith(":17") and w.data["other"].endswith(":14") for w in waits)
+
+
+def test_the_record_verifier_finds_the_contact_of_the_unscheduled_timing(tmp_path):
+    """The same trajectories each arm back to back from the parallel's start (what a run
+    did before its motions were scheduled): ``collision_free`` reports the contact."""
+    runner = run_probe(tmp_path)
+    ends: dict[str, float] = {}
+    events = []
+    for event in runner.record.events:
+        if event.kind == "motion":
+            arm = event.data["trajectory"]["joints"][0].split("_")[0]
+            start = ends.get(arm, 0.0)
+            ends[arm] = start + event.data["trajectory"]["duration"]
+            event = replace(event, data={**event.data, "start": start})
+        events.append(event)
+    misses = arm_conflicts(runner.scene.robot, events)
+    assert len(misses) == 1 and "arms collide in a parallel" in misses[0], misses
+    assert "left_" in misses[0] and "right_" in misses[0] and ":17" in misses[0]

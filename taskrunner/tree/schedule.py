@@ -1,0 +1,276 @@
+"""The motions a run has committed to, on one clock, and the rule that admits a new one.
+
+Branches of a ``parallel`` move their arms at the same time. Each branch plans its
+motions against the other arms *frozen* where they stand when planning starts; what
+keeps the arms apart in time is this schedule. Every motion a run sends to the backend is
+first *admitted* (:meth:`MotionSchedule.admit`): it gets a start time on the schedule's
+clock and is verified, with :func:`~taskrunner.collision.spacetime.verify_lanes`, against
+every committed motion of the branches running at the same time (already executing or
+admitted to execute later), each other arm resting between its motions, with
+:data:`CLEARANCE` to spare. On a conflict the simplest safe resolution is taken: the new
+motion starts later, when the motion it meets has ended (a :class:`Wait`), and is
+verified again from there. When the other arm *rests* in its way after the last motion
+its branch has committed, the motion is :class:`Blocked`: its leaf holds it, uncommitted,
+until that branch commits its next motion (the arm may move away) and admits it again;
+when that branch has ended (its arm stays there) or holds for this one in turn (a
+deadlock), waiting cannot help and the step fails (:meth:`MotionSchedule.refusal`, a
+:class:`ScheduleConflictError` naming both steps' file:lines and the bodies). Both
+``run-task run`` (each leaf before it executes) and ``run-task check`` (its dry run of a
+``parallel``) call this one rule.
+
+*Lanes.* A motion belongs to the lane of its leaf: the branch it runs in, as the path of
+``(parallel instance, branch index)`` from the tree's root (``()`` outside any parallel;
+each time a ``parallel`` starts it is a new instance). Two lanes run at the same time when
+they part at the same instance of a ``parallel`` in different branches; otherwise one
+follows the other, so a motion never starts before the motions of the lanes it follows
+have ended.
+
+*The clock.* Seconds of task time. A motion starts at the earliest when every motion it
+follows has ended (planning counts as no time: what a mock run, which plays no time,
+shows) and, on a backend that plays motions in time, not before now
+(:class:`~taskrunner.tree.clock.TaskClock`). Where a motion was admitted to start later
+than now, its leaf holds it until then.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+from taskrunner.collision.spacetime import (
+    Conflict,
+    Lane,
+    SpacetimeOptions,
+    TimedMotion,
+    verify_lanes,
+)
+from taskrunner.errors import InvalidStateError, PlanningError
+from taskrunner.scene import Scene
+from taskrunner.types import JointTrajectory
+
+__all__ = ["CLEARANCE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "ScheduleConflictError",
+           "Wait", "concurrent"]
+
+CLEARANCE = 0.005
+"""m: the least distance a motion keeps from the bodies of arms moving at the same time
+(another branch of a ``parallel``), at every instant of the schedule. It also absorbs the
+difference between a planned trajectory and the one a record keeps (thinned to 25 Hz:
+well under a millimetre on these arms)."""
+
+LaneKey = tuple[tuple[int, int], ...]
+"""A lane: ``(parallel instance, branch index)`` pairs from the tree's root."""
+
+
+def concurrent(a: LaneKey, b: LaneKey) -> bool:
+    """Whether motions of lanes ``a`` and ``b`` may run at the same time: the lanes part
+    in different branches of one instance of a ``parallel``."""
+    for (pa, ba), (pb, bb) in zip(a, b):
+        if pa != pb:
+            return False
+        if ba != bb:
+            return True
+    return False
+
+
+class ScheduleConflictError(PlanningError):
+    """A motion meets another branch's arm and waiting cannot resolve it."""
+
+
+@dataclass(frozen=True)
+class Committed:
+    """A motion on the schedule: its lane, timing, and the step it is of."""
+
+    lane: LaneKey
+    motion: TimedMotion
+    location: str | None
+
+
+@dataclass(frozen=True)
+class Wait:
+    """A motion held back: it would have met ``conflict`` (another branch's motion, of
+    the step at ``other``), so it starts at ``until`` instead (s)."""
+
+    since: float
+    until: float
+    conflict: Conflict
+    other: str | None
+
+    def describe(self, here: str | None) -> str:
+        return (f"{here or 'this motion'} waits {self.until - self.since:.2f} s, until "
+                f"{self.other or 'the other arm'} has moved: {self.conflict.describe()}")
+
+
+@dataclass(frozen=True)
+class Blocked:
+    """A motion not admitted: another branch's arm rests in its way after that branch's
+    last committed motion (the step at ``other``). The branch may still move that arm
+    away (its next motion), so the motion is *held*: admitted again once that branch has
+    committed more; when it has ended, or holds for this one in turn, waiting cannot
+    resolve it (:meth:`MotionSchedule.refusal`)."""
+
+    conflict: Conflict
+    lane: LaneKey
+    other: str | None
+
+    def describe(self, here: str | None) -> str:
+        return (f"{here or 'this motion'} holds until the arm of {self.other or 'another branch'}"
+                f" moves on: {self.conflict.describe()}")
+
+
+@dataclass(frozen=True)
+class Admission:
+    """Where a motion was put on the schedule.
+
+    Attributes:
+        start: s on the schedule's clock.
+        waits: the waits inserted before it, in order.
+        queries: exact distances the verifications computed; ``seconds`` their wall time.
+    """
+
+    start: float
+    waits: tuple[Wait, ...]
+    queries: int
+    seconds: float
+
+
+@dataclass
+class MotionSchedule:
+    """The motions of one run (or one check), by lane, on one clock (module text).
+
+    Attributes:
+        clearance: m, see :data:`CLEARANCE`.
+    """
+
+    clearance: float = CLEARANCE
+    committed: list[Committed] = field(default_factory=list)
+    holding: dict[LaneKey, LaneKey] = field(default_factory=dict)
+    _instances: int = 0
+    _branches: dict[int, Callable[[int], bool]] = field(default_factory=dict)
+
+    def new_instance(self, running: Callable[[int], bool] | None = None) -> int:
+        """A fresh id for a ``parallel`` that starts; ``running(i)``: whether its branch
+        ``i`` has not ended yet (default: always)."""
+        self._instances += 1
+        if running is not None:
+            self._branches[self._instances] = running
+        return self._instances
+
+    @property
+    def revision(self) -> int:
+        """How many motions were committed: a held motion is admitted again when it grows."""
+        return len(self.committed)
+
+    def lane_running(self, lane: LaneKey) -> bool:
+        """Whether the branch ``lane`` has not ended (it may commit more motions)."""
+        return all(self._branches.get(instance, lambda _: True)(index)
+                   for instance, index in lane)
+
+    def refusal(self, lane: LaneKey, blocked: Blocked, location: str | None) -> str | None:
+        """Why ``blocked`` cannot be resolved by holding the motion of ``lane``: the other
+        branch has ended (its arm stays where it is), or it holds for this one (a
+        deadlock); None: hold it."""
+        if not self.lane_running(blocked.lane):
+            return (f"meets the arm of {blocked.other or 'another branch'}, which stays "
+                    f"where that branch ended: {blocked.conflict.describe()}; waiting cannot "
+                    f"resolve it (order the steps, or move that arm out of the way)")
+        seen, key = {lane}, blocked.lane
+        while key in self.holding:  # who waits for whom: a cycle back here is a deadlock
+            key = self.holding[key]
+            if any(_within(key, k) for k in seen):
+                return (f"and {blocked.other or 'another branch'} each wait for the other's "
+                        f"arm to move (a deadlock): {blocked.conflict.describe()}")
+            seen.add(key)
+        return None
+
+    def earliest(self, lane: LaneKey) -> float:
+        """When a motion of ``lane`` may start at the earliest: every motion of a lane it
+        follows has ended (s)."""
+        ends = [c.motion.end for c in self.committed if not concurrent(c.lane, lane)]
+        return max(ends, default=0.0)
+
+    def admit(self, scene: Scene, lane: LaneKey, trajectory: JointTrajectory,
+              location: str | None, now: float = 0.0) -> Admission | Blocked:
+        """Put a motion of ``lane`` on the schedule, at the earliest time it keeps the
+        clearance from every concurrent lane (module text), and commit it.
+
+        Args:
+            scene: the bodies as they are now (the motion's arm at its start).
+            now: the earliest start the backend allows (s; 0 for one that plays no time).
+
+        Returns:
+            The admission (committed), or :class:`Blocked` (nothing committed) when the
+            motion meets another branch's arm at rest after that branch's last motion.
+
+        Raises:
+            ScheduleConflictError: the lanes move the same joints, or the conflicts do
+                not end: nothing is committed.
+        """
+        start = max(self.earliest(lane), now)
+        others = [c for c in self.committed if concurrent(c.lane, lane)]
+        waits: list[Wait] = []
+        queries, seconds = 0, 0.0
+        options = SpacetimeOptions(clearance=self.clearance)
+        for _ in range(len(others) + 1):
+            if not others:
+                break
+            mine = TimedMotion(trajectory, start, location)
+            lanes = [Lane("this motion", (mine,))] + _lanes(others)
+            horizon = max([mine.end] + [c.motion.end for c in others])
+            try:
+                found = verify_lanes(scene, lanes, (start, horizon), options)
+            except InvalidStateError as exc:
+                raise ScheduleConflictError(f"cannot run beside the other branches: "
+                                            f"{exc}") from None
+            queries += found.distance_queries
+            seconds += found.seconds
+            conflict = found.conflict
+            if conflict is None:
+                break
+            blocking = _blocking(others, conflict)
+            if blocking is None:
+                last = _last(others, conflict)
+                return Blocked(conflict, last.lane, last.location)
+            waits.append(Wait(start, blocking.motion.end, conflict, blocking.location))
+            start = blocking.motion.end
+        else:
+            raise ScheduleConflictError(f"still meets another branch's arm after "
+                                        f"{len(waits)} waits")
+        self.committed.append(Committed(lane, TimedMotion(trajectory, start, location),
+                                        location))
+        return Admission(start, tuple(waits), queries, seconds)
+
+
+def _lanes(others: Sequence[Committed]) -> list[Lane]:
+    by_lane: dict[LaneKey, list[TimedMotion]] = {}
+    for c in others:
+        by_lane.setdefault(c.lane, []).append(c.motion)
+    return [Lane(f"branch {'.'.join(str(b) for _, b in key)}", tuple(motions))
+            for key, motions in by_lane.items()]
+
+
+def _blocking(others: Sequence[Committed], conflict: Conflict) -> Committed | None:
+    """The other lane's motion to wait for: the one moving at the conflict, or its next
+    one when it rests before it; None when it rests after its last motion."""
+    t = conflict.time
+    lane_name = conflict.lanes[1]
+    mine = [c for c in others if _lane_name(c.lane) == lane_name]
+    running = [c for c in mine if c.motion.start <= t <= c.motion.end]
+    if running:
+        return running[0]
+    later = sorted((c for c in mine if c.motion.start > t), key=lambda c: c.motion.start)
+    return later[0] if later else None
+
+
+def _last(others: Sequence[Committed], conflict: Conflict) -> Committed:
+    """The other lane's last committed motion (the conflict's arm rests after it)."""
+    mine = [c for c in others if _lane_name(c.lane) == conflict.lanes[1]]
+    return max(mine, key=lambda c: c.motion.end)
+
+
+def _within(key: LaneKey, lane: LaneKey) -> bool:
+    """Whether lane ``key`` is ``lane`` or a lane inside it."""
+    return key[:len(lane)] == lane
+
+
+def _lane_name(key: LaneKey) -> str:
+    return f"branch {'.'.join(str(b) for _, b in key)}"
