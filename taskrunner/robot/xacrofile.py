@@ -23,9 +23,10 @@ from __future__ import annotations
 import io
 import multiprocessing
 import os
+import re
 import resource
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
@@ -209,23 +210,26 @@ def _guarded_includes(xacro: Any, max_bytes: int, inputs: xacro_cache.XacroInput
     return original_parse, original_load_yaml
 
 
-def _recorded_includes(xacro: Any, inputs: xacro_cache.XacroInputs) -> Callable[..., Any]:
-    """Wrap xacro's include resolution: an include by glob pattern makes the expansion
-    depend on which files exist, which the cache does not track (not cached then).
-    Returns the original to restore."""
-    original = xacro.get_include_files
+# An include's ``filename`` attribute, in any namespace prefix (``xacro:include``).
+_INCLUDE = re.compile(r"""<\s*(?:[\w.-]+:)?include\b[^>]*?\bfilename\s*=\s*(["'])(.*?)\1""",
+                      re.DOTALL)
 
-    def get_include_files(filename_spec: Any, symbols: Any) -> Any:
+
+def _includes_by_pattern(files: Sequence[str | Path]) -> bool:
+    """Whether one of ``files`` (what an expansion read) includes by glob pattern, or by
+    a name an expression makes (which may be a pattern): the expansion then depends on
+    which files exist, which the cache does not track. Read from the files themselves
+    (unreadable: assumed so), not from inside xacro."""
+    for name in files:
         try:
-            spec = str(xacro.eval_text(filename_spec, symbols))
-        except Exception:  # xacro's own call below reports it
-            spec = str(filename_spec)
-        if any(c in spec for c in "*[?"):
-            inputs.cacheable = False
-        return original(filename_spec, symbols)
-
-    xacro.get_include_files = get_include_files
-    return original
+            text = Path(name).read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            return True
+        for match in _INCLUDE.finditer(text):
+            spec = match.group(2)
+            if "${" in spec or any(c in spec for c in "*[?"):
+                return True
+    return False
 
 
 def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
@@ -262,7 +266,6 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
         substitution_args._eval_env, substitution_args._eval_optenv = env, optenv
         substitution_args._eval_dict.update(find=find, env=env, optenv=optenv)
         saved_readers = _guarded_includes(xacro, max_bytes, inputs)
-        saved_includes = _recorded_includes(xacro, inputs)
         known_includes = len(xacro.all_includes)
         chatter = io.StringIO()
         try:
@@ -270,11 +273,14 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             # Every file xacro read, ``load_yaml`` from expressions included (xacro's
             # expression namespace holds its own reference to load_yaml, not the wrapper).
-            for name in xacro.all_includes[known_includes:]:
+            included = list(xacro.all_includes[known_includes:])
+            for name in included:
                 try:
                     inputs.read_file(name, Path(name).read_bytes())
                 except OSError:
                     inputs.cacheable = False
+            if _includes_by_pattern([path, *included]):
+                inputs.cacheable = False
             return str(document.toprettyxml(indent="  "))
         except MemoryError:
             raise
@@ -303,5 +309,4 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
             substitution_args._eval_dict.clear()
             substitution_args._eval_dict.update(saved_table)
             xacro.parse, xacro.load_yaml = saved_readers
-            xacro.get_include_files = saved_includes
             xacro.init_stacks(None)
