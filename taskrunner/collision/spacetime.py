@@ -235,15 +235,18 @@ class _Timeline:
                     times.add(float(t))
         self.times = np.array(sorted(times))
         base = scene.state.copy()
+        for lane in self.lanes:  # before its first motion, a joint is where that one starts
+            for motion in sorted(lane.motions, key=lambda m: m.start, reverse=True):
+                base[model.indices(motion.trajectory.names)] = motion.trajectory.positions[0]
         states = np.repeat(base[None, :], len(self.times), axis=0)
         for lane in self.lanes:
+            ordered = sorted(lane.motions, key=lambda m: m.start)
+            indices = [model.indices(m.trajectory.names) for m in ordered]
             for row, t in enumerate(self.times):
-                motion, local = _at(lane, t)
-                if motion is None:
-                    continue
-                trajectory = motion.trajectory
-                idx = model.indices(trajectory.names)
-                states[row, idx] = _sample(trajectory, local)
+                for motion, idx in zip(ordered, indices):  # each where the last one left it
+                    if motion.start > t:
+                        break
+                    states[row, idx] = _sample(motion.trajectory, t - motion.start)
         for row in range(len(states)):
             model.apply_mimic(states[row])
         self.states = states
@@ -391,7 +394,7 @@ class _Walk:
             distances = self.measure(now, pick.tolist())
             for p, d in zip(pick, distances):
                 steps[p] += 1
-                if d < clearance:
+                if d < clearance + _SLACK:  # at the clearance: no step would be safe
                     return self.conflict(int(p), float(last[p]), now, float(d))
                 if steps[p] > self.options.max_steps:
                     return self.conflict(int(p), float(last[p]), now, float(d), proven=False)

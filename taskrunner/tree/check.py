@@ -102,6 +102,8 @@ from taskrunner.tree.idioms import place_target
 from taskrunner.tree.occupancy import OVERLAP_TOLERANCE, target_overlap
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
 from taskrunner.tree.reach import StagedGoals
+from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
+from taskrunner.types import JointPath, JointTrajectory
 
 __all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
 
@@ -363,6 +365,9 @@ class _DryRun:
         self.stopped: TaskContext | None = None  # the situation at the first failure
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
         self._meshes = MeshCache()
+        # The motions the dry run made, in order (leaf, start state, end state, path or
+        # None for a straight joint line): what a parallel's branches are scheduled from.
+        self.trace: list[tuple[Behaviour, np.ndarray, np.ndarray, JointPath | None]] = []
 
     # ------------------------------------------------------------------ composites
     def sequence(self, steps: Iterable[StepNode], ctx: TaskContext) -> TaskContext:
@@ -381,9 +386,34 @@ class _DryRun:
             if leaves and all(isinstance(leaf, TaskLeaf) for leaf in leaves):
                 # Its go steps became one motion of the arms together: play it as the run does.
                 return self.leaf(step, ctx, leaves)
+            if compiled is not None:
+                return self.parallel(step, ctx)
         if step.children:
             return self.sequence(step.children, ctx)
         return self.leaf(step, ctx)
+
+    def parallel(self, step: ParallelStep, ctx: TaskContext) -> TaskContext:
+        """A ``parallel`` whose branches move at once: each branch checked in turn (each
+        starts where the one before left the scene), then their motions put on one
+        schedule by the run's own rule (:mod:`taskrunner.tree.schedule`), a motion of
+        each branch in turn: where a motion must wait for another branch's arm, a note
+        says so; where waiting cannot resolve a conflict, a problem names both steps.
+        A ``go`` is scheduled as the straight joint line to its goal state (the path a
+        planner tries first), a straight move as its Cartesian path."""
+        before = ctx.scene.copy()
+        problems = len(self.problems)
+        branches: list[list[tuple[Behaviour, np.ndarray, np.ndarray, JointPath | None]]] = []
+        for child in step.children:
+            mark = len(self.trace)
+            ctx = self.step(child, ctx)
+            branches.append(self.trace[mark:])
+        if len(self.problems) == problems and len(branches) > 1:
+            text, notes = schedule_branches(before, branches)
+            self.notes += [_at(step, note) for note in notes]
+            if text is not None:
+                self.problems.append(_at(step, f"{_describe(step)}: {text}"))
+                self.tainted = True
+        return ctx
 
     def fallback(self, step: FallbackStep, ctx: TaskContext) -> TaskContext:
         """The first branch without problems ends the fallback; when every branch has
@@ -507,12 +537,16 @@ class _DryRun:
             # or the first other one from which the rest of the step succeeds.
             if key is not None:
                 remember(model, key, states[0])
+            mark, start = len(self.trace), ctx.scene.state
+            self.trace.append((leaf, start, states[0], None))
             end, first = self.play(leaves, index + 1, step, _moved(ctx, states[0]), explore)
             if first is None or not explore:
                 return end, first
             for q in states[1:]:
                 if key is not None:
                     remember(model, key, q)
+                del self.trace[mark:]
+                self.trace.append((leaf, start, q, None))
                 other_end, failed = self.play(leaves, index + 1, step, _moved(ctx, q), False)
                 if failed is None:
                     return other_end, None
@@ -619,6 +653,7 @@ class _DryRun:
                         q = model.apply_mimic(line[k].copy())
                         if scene.in_collision(q):
                             return f"{what} collides ({_pairs(scene.collisions(q))})"
+                self.trace.append((leaf, start, goal, None))
                 scene.set_state(goal)
             elif isinstance(leaf, SceneAction):
                 leaf.action(ctx)
@@ -651,6 +686,7 @@ class _DryRun:
             parameterize_path(ctx.scene.robot, result.path, leaf.timing)
         except TaskrunnerError as exc:
             return f"{name}{sep}cannot be timed ({exc})"
+        self.trace.append((leaf, ctx.scene.state, result.end, result.path))
         ctx.scene.set_state(result.end)
         return None
 
@@ -684,3 +720,63 @@ class _DryRun:
             except TaskrunnerError:
                 continue
         return True
+
+
+def schedule_branches(scene: Scene, branches: list[list[tuple[Behaviour, np.ndarray, np.ndarray,
+                                                             JointPath | None]]]
+                      ) -> tuple[str | None, list[str]]:
+    """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
+    of each branch in turn, as a run admits them (the scene: as the parallel starts).
+
+    Returns:
+        What cannot be resolved (None: the schedule holds), and a note per wait.
+    """
+    schedule = MotionSchedule()
+    queues: dict[LaneKey, list[tuple[str | None, JointTrajectory]]] = {}
+    instance = schedule.new_instance(lambda i: bool(queues.get(((instance, i),))))
+    model = scene.robot
+    for index, motions in enumerate(branches):
+        queue = queues.setdefault(((instance, index),), [])
+        for leaf, start, end, path in motions:
+            if path is None:
+                moved = np.flatnonzero(np.abs(np.asarray(end) - np.asarray(start)) > 1e-9)
+                if len(moved) == 0:
+                    continue
+                names = tuple(model.joint_names[int(i)] for i in moved)
+                path = JointPath(names, np.vstack([np.asarray(start)[moved],
+                                                   np.asarray(end)[moved]]))
+            timing = getattr(leaf, "timing", None)  # a moving leaf's own timing
+            try:
+                trajectory = parameterize_path(model, path, timing)
+            except TaskrunnerError:
+                continue  # reported by the step itself where a run would time it
+            queue.append((getattr(leaf, "location", None), trajectory))
+    notes: list[str] = []
+    least = math.inf
+    while any(queues.values()):
+        progressed = False
+        for lane, queue in queues.items():
+            if not queue:
+                continue
+            location, trajectory = queue[0]
+            try:
+                found = schedule.admit(scene, lane, trajectory, location)
+            except TaskrunnerError as exc:
+                return f"{location}: {exc}", notes
+            if isinstance(found, Blocked):
+                refusal = schedule.refusal(lane, found, location)
+                if refusal is not None:
+                    return f"{location}: {refusal}", notes
+                schedule.holding[lane] = found.lane
+                continue
+            schedule.holding.pop(lane, None)
+            queue.pop(0)
+            progressed = True
+            least = min(least, found.least)
+            notes += [wait.describe(location) for wait in found.waits]
+        if not progressed:
+            return "the branches wait for each other's arms (a deadlock)", notes
+    if math.isfinite(least):
+        notes.append(f"arms at least {1e3 * least:.1f} mm apart at every instant (as "
+                     f"scheduled, {len(schedule.committed)} motions)")
+    return None, notes

@@ -34,6 +34,7 @@ than now, its leaf holds it until then.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
@@ -125,12 +126,15 @@ class Admission:
         start: s on the schedule's clock.
         waits: the waits inserted before it, in order.
         queries: exact distances the verifications computed; ``seconds`` their wall time.
+        least: m, the least distance measured between this motion's bodies and the
+            other branches' (inf: none moved beside it).
     """
 
     start: float
     waits: tuple[Wait, ...]
     queries: int
     seconds: float
+    least: float = math.inf
 
 
 @dataclass
@@ -208,13 +212,15 @@ class MotionSchedule:
         start = max(self.earliest(lane), now)
         others = [c for c in self.committed if concurrent(c.lane, lane)]
         waits: list[Wait] = []
-        queries, seconds = 0, 0.0
+        queries, seconds, least = 0, 0.0, math.inf
         options = SpacetimeOptions(clearance=self.clearance)
         for _ in range(len(others) + 1):
             if not others:
                 break
             mine = TimedMotion(trajectory, start, location)
-            lanes = [Lane("this motion", (mine,))] + _lanes(others)
+            # The lane's earlier motions too: where they left the joints this one holds.
+            before = tuple(c.motion for c in self.committed if c.lane == lane)
+            lanes = [Lane("this motion", (*before, mine))] + _lanes(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
             try:
                 found = verify_lanes(scene, lanes, (start, horizon), options)
@@ -225,6 +231,7 @@ class MotionSchedule:
             seconds += found.seconds
             conflict = found.conflict
             if conflict is None:
+                least = found.min_distance
                 break
             blocking = _blocking(others, conflict)
             if blocking is None:
@@ -237,7 +244,7 @@ class MotionSchedule:
                                         f"{len(waits)} waits")
         self.committed.append(Committed(lane, TimedMotion(trajectory, start, location),
                                         location))
-        return Admission(start, tuple(waits), queries, seconds)
+        return Admission(start, tuple(waits), queries, seconds, least)
 
 
 def _lanes(others: Sequence[Committed]) -> list[Lane]:
