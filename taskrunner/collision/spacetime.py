@@ -240,13 +240,15 @@ class _Timeline:
                 base[model.indices(motion.trajectory.names)] = motion.trajectory.positions[0]
         states = np.repeat(base[None, :], len(self.times), axis=0)
         for lane in self.lanes:
-            ordered = sorted(lane.motions, key=lambda m: m.start)
-            indices = [model.indices(m.trajectory.names) for m in ordered]
-            for row, t in enumerate(self.times):
-                for motion, idx in zip(ordered, indices):  # each where the last one left it
-                    if motion.start > t:
-                        break
-                    states[row, idx] = _sample(motion.trajectory, t - motion.start)
+            for motion in sorted(lane.motions, key=lambda m: m.start):
+                # From its start on (held at its end after), each where the last left it.
+                rows = self.times >= motion.start
+                local = self.times[rows] - motion.start
+                trajectory = motion.trajectory
+                idx = model.indices(trajectory.names)
+                states[np.ix_(rows, idx)] = np.column_stack(
+                    [np.interp(local, trajectory.times, trajectory.positions[:, j])
+                     for j in range(len(idx))])
         for row in range(len(states)):
             model.apply_mimic(states[row])
         self.states = states
@@ -256,7 +258,7 @@ class _Timeline:
 
     def state(self, t: float) -> np.ndarray:
         """The full state at ``t`` (linear between event times)."""
-        k = int(np.clip(np.searchsorted(self.times, t, side="right") - 1, 0, len(self.times) - 2))
+        k = min(max(int(np.searchsorted(self.times, t, side="right")) - 1, 0), len(self.times) - 2)
         span = self.times[k + 1] - self.times[k]
         s = 0.0 if span <= 0 else min(1.0, max(0.0, (t - self.times[k]) / span))
         return self.states[k] + s * (self.states[k + 1] - self.states[k])
@@ -278,17 +280,6 @@ def _at(lane: Lane, t: float) -> tuple[TimedMotion | None, float]:
         if motion.start <= t:
             current = motion
     return current, t - current.start
-
-
-def _sample(trajectory: JointTrajectory, t: float) -> np.ndarray:
-    times, positions = trajectory.times, trajectory.positions
-    if t <= times[0]:
-        return positions[0].copy()
-    if t >= times[-1]:
-        return positions[-1].copy()
-    k = int(np.searchsorted(times, t, side="right")) - 1
-    s = (t - times[k]) / (times[k + 1] - times[k])
-    return positions[k] + s * (positions[k + 1] - positions[k])
 
 
 class _Walk:
@@ -331,7 +322,7 @@ class _Walk:
             if owner[a] >= 0 and owner[b] >= 0 and owner[a] != owner[b]:
                 pairs.append((k, a, b) if owner[a] < owner[b] else (k, b, a))
         self.pairs = pairs
-        levers = lever_arms(model, geometry)
+        levers = _levers(model, geometry)
         # Per pair, the motion bound's weight of each joint: either body's lever arm.
         weights = np.array([levers[a] + levers[b] for _, a, b in pairs]).reshape(len(pairs),
                                                                                  model.nq)
@@ -344,7 +335,7 @@ class _Walk:
 
     def bound_at(self, t: float) -> np.ndarray:
         times = self.timeline.times
-        k = int(np.clip(np.searchsorted(times, t, side="right") - 1, 0, len(times) - 2))
+        k = min(max(int(np.searchsorted(times, t, side="right")) - 1, 0), len(times) - 2)
         span = times[k + 1] - times[k]
         s = 0.0 if span <= 0 else min(1.0, max(0.0, (t - times[k]) / span))
         return self.bound[k] + s * (self.bound[k + 1] - self.bound[k])
@@ -392,6 +383,7 @@ class _Walk:
             reach = due - last
             pick = np.flatnonzero((due <= now) | ((now - last) >= _EARLY * reach))
             distances = self.measure(now, pick.tolist())
+            reached = self.bound_at(now)
             for p, d in zip(pick, distances):
                 steps[p] += 1
                 if d < clearance + _SLACK:  # at the clearance: no step would be safe
@@ -399,7 +391,7 @@ class _Walk:
                 if steps[p] > self.options.max_steps:
                     return self.conflict(int(p), float(last[p]), now, float(d), proven=False)
                 last[p] = now
-                level = float(self.bound_at(now)[p]) + (d - clearance)
+                level = float(reached[p]) + (d - clearance)
                 nxt = self.time_of(int(p), level)
                 due[p] = math.inf if nxt > t_end else max(nxt, now)
                 if due[p] == now:  # no progress possible: d is at the clearance
@@ -426,6 +418,23 @@ class _Walk:
         return Conflict(bad, (self.names[a], self.names[b]), (lanes[la].name, lanes[lb].name),
                         (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
                         distance, proven)
+
+
+_LEVERS: dict[int, tuple[object, np.ndarray]] = {}  # id(geometry model) -> (it, levers)
+
+
+def _levers(model, geometry) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """:func:`~taskrunner.scene.sweep.lever_arms` of a checker's geometry model, kept for
+    the few latest models (a scene's checker lives until the scene is edited)."""
+    key = id(geometry)
+    found = _LEVERS.get(key)
+    if found is not None and found[0] is geometry:
+        return found[1]
+    if len(_LEVERS) >= 8:
+        _LEVERS.pop(next(iter(_LEVERS)))
+    levers = lever_arms(model, geometry)
+    _LEVERS[key] = (geometry, levers)
+    return levers
 
 
 def _body_name(obj, pin_model) -> str:  # type: ignore[no-untyped-def]
