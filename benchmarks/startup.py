@@ -17,10 +17,13 @@ and measures, on this side's wall clock from just before the spawn:
 * the exit code: 0, or 3/4 for a run that failed after it moved (still a start-up
   figure; counted in ``failed_runs``); any other ends the benchmark.
 
-``--cold`` adds one run first with an empty ``XDG_CACHE_HOME`` (no cached robot models,
-nothing built before) and Python's bytecode cache redirected to an empty folder
-(``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart. The warm runs
-follow, after one unmeasured run that fills the caches.
+``--cold`` adds one run first with an empty ``XDG_CACHE_HOME`` and ``NUMBA_CACHE_DIR``
+(no cached robot models, no compiled kernels: the run starts by compiling them, which its
+record keeps apart as ``warm_up_s``) and Python's bytecode cache redirected to an empty
+folder (``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart with its
+warm-up and whether the task's expectations were met; ``--cold-runs N`` makes it N such
+runs, each on fresh caches. The warm runs follow, after one unmeasured run that fills the
+caches.
 
 Warm runs keep their bytecode in a folder of their own (``PYTHONPYCACHEPREFIX`` in the
 benchmark's temporary folder, ``PYTHONDONTWRITEBYTECODE`` unset): an environment that
@@ -34,7 +37,7 @@ machine runs (the load average is reported either way).
 
 Usage::
 
-    python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold]
+    python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold | --cold-runs N]
                                  [--json] [--pythonpath DIR] [--no-bytecode-cache]
                                  [--busy N]
 
@@ -110,8 +113,17 @@ def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = 
         break
     if first_motion is None:
         raise RuntimeError(f"run-task {task} ended {code} with no motion in its record:\n{shown}")
+    record = json.loads(record_path.read_text(encoding="utf-8"))
     return {"first_motion": first_motion, "checked": checked, "wall": wall, "exit_code": code,
-            "main_cpu": main_cpu}
+            "main_cpu": main_cpu, "warm_up": record.get("warm_up_s"),
+            "expectations_met": _expectations_met(record)}
+
+
+def _expectations_met(record: dict[str, Any]) -> bool | None:
+    """Whether the run met its task's ``expect:`` (None: the task has none)."""
+    verdicts = [e["data"]["expectations"]["met"] for e in record["events"]
+                if isinstance(e.get("data"), dict) and "expectations" in e["data"]]
+    return bool(verdicts[-1]) if verdicts else None
 
 
 def _cpu_seconds(pid: int) -> float:
@@ -133,11 +145,11 @@ def _stats(values: list[float]) -> dict[str, float]:
 _BUSY_LOOP = "import time\nwhile True:\n    for i in range(100000):\n        pass\n"
 
 
-def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = False,
+def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: int = 0,
         pythonpath: str | None = None, bytecode_cache: bool = True,
         busy: int = 0) -> dict[str, Any]:
-    """Measure ``runs`` warm starts (and one cold one with ``cold``), with ``busy`` other
-    processes spinning meanwhile; see the module doc."""
+    """Measure ``runs`` warm starts (after ``cold`` cold ones, each on fresh caches), with
+    ``busy`` other processes spinning meanwhile; see the module doc."""
     spinning = [subprocess.Popen([sys.executable, "-c", _BUSY_LOOP], stdin=subprocess.DEVNULL)
                 for _ in range(busy)]
     try:
@@ -150,7 +162,7 @@ def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: bool = Fa
     return result
 
 
-def _measure(task: str, runs: int, seed: int, cold: bool, pythonpath: str | None,
+def _measure(task: str, runs: int, seed: int, cold: int, pythonpath: str | None,
              bytecode_cache: bool) -> dict[str, Any]:
     env = dict(os.environ)
     env.pop("PYTHONPROFILEIMPORTTIME", None)
@@ -165,11 +177,18 @@ def _measure(task: str, runs: int, seed: int, cold: bool, pythonpath: str | None
         if bytecode_cache:
             env.pop("PYTHONDONTWRITEBYTECODE", None)
             env["PYTHONPYCACHEPREFIX"] = str(root / "pycache")
-        if cold:
-            cold_env = dict(env, XDG_CACHE_HOME=str(root / "cold-cache"),
-                            PYTHONPYCACHEPREFIX=str(root / "cold-pycache"))
-            result["cold"] = run_once(task, seed, runs_dir, cold_env)
-        run_once(task, seed, runs_dir, env)  # fills the caches; not measured
+        colds = []
+        for k in range(cold):
+            fresh = root / f"cold-{k}"
+            cold_env = dict(env, XDG_CACHE_HOME=str(fresh / "cache"),
+                            NUMBA_CACHE_DIR=str(fresh / "cache" / "taskrunner" / "numba"),
+                            PYTHONPYCACHEPREFIX=str(fresh / "pycache"))
+            colds.append(run_once(task, seed, runs_dir, cold_env))
+        if colds:
+            result["cold"] = colds[0]
+            result["colds"] = colds
+        if runs:
+            run_once(task, seed, runs_dir, env)  # fills the caches; not measured
         samples = [run_once(task, seed + k, runs_dir, env) for k in range(runs)]
     for key in ("first_motion", "checked", "wall", "main_cpu"):
         values = [s[key] for s in samples if s[key] is not None]
@@ -192,10 +211,12 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
             out.append((f"run-task {result['task']}, {what}, {result['runs']} warm runs",
                         f"{s['median']:.3f} s median, {s['mean']:.3f} s mean, "
                         f"{s['min']:.3f}-{s['max']:.3f} s"))
-    if "cold" in result:
-        c = result["cold"]
-        out.append((f"run-task {result['task']}, cold caches (models, bytecode)",
-                    f"first motion {c['first_motion']:.3f} s, wall {c['wall']:.3f} s"))
+    for k, c in enumerate(result.get("colds", [])):
+        warm_up = "none" if c.get("warm_up") is None else f"{c['warm_up']:.1f} s"
+        met = {True: "met", False: "NOT met", None: "none"}[c.get("expectations_met")]
+        out.append((f"run-task {result['task']}, cold caches (models, kernels, bytecode) #{k + 1}",
+                    f"first motion {c['first_motion']:.3f} s (kernels' warm-up {warm_up}), "
+                    f"wall {c['wall']:.3f} s, exit {c['exit_code']}, expectations {met}"))
     if result.get("failed_runs"):
         out.append(("runs that failed after their first motion (exit 3 or 4)",
                     str(result["failed_runs"])))
@@ -214,6 +235,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=10, help="warm runs (10)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the first run (0)")
     parser.add_argument("--cold", action="store_true", help="one cold-cache run first")
+    parser.add_argument("--cold-runs", type=int, default=None, metavar="N",
+                        help="N cold-cache runs first, each on fresh caches (implies --cold)")
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
     parser.add_argument("--pythonpath", default=None,
                         help="run the taskrunner in this folder (a checkout of another commit)")
@@ -225,7 +248,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.busy < 0:
         parser.error("--busy must be 0 or more")
-    result = run(args.task, args.runs, args.seed, args.cold, args.pythonpath,
+    cold = args.cold_runs if args.cold_runs is not None else int(args.cold)
+    if cold < 0:
+        parser.error("--cold-runs must be 0 or more")
+    result = run(args.task, args.runs, args.seed, cold, args.pythonpath,
                  not args.no_bytecode_cache, args.busy)
     table = rows(result)
     width = max(len(what) for what, _ in table)
