@@ -34,7 +34,7 @@ from taskrunner.tree.choice import choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
-from taskrunner.tree.schedule import Admission, Blocked, LaneKey, ScheduleConflictError
+from taskrunner.tree.schedule import LATE, Admission, Blocked, LaneKey, ScheduleConflictError
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
@@ -123,6 +123,12 @@ def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
     return tuple(reversed(path))
 
 
+LEAD = 0.1
+"""s of task time ahead of now a motion is admitted on a backend that plays time; one the
+tree reaches too late for that start is admitted again from then and sent at once (late
+by the verification's time at most: the record's ``sent``)."""
+
+
 def _plays_time(backend: object) -> bool:
     """Whether motions on ``backend`` take their time (a mock without ``speed`` ends each
     at once: its schedule is the planned one, never held against the wall clock)."""
@@ -150,6 +156,7 @@ class _Executes(TaskLeaf):
         self.pending: JointTrajectory | None = None  # admitted, held until its start
         # Not admitted yet: another branch's arm rests in its way (trajectory, revision seen).
         self.held: tuple[JointTrajectory, int] | None = None
+        self.lead = LEAD  # s of task time a motion is admitted ahead of now (timed backends)
 
     def start(self) -> None:
         self.handle = None
@@ -157,6 +164,7 @@ class _Executes(TaskLeaf):
         self.admission = None
         self.pending = None
         self.held = None
+        self.lead = LEAD
 
     def execute_path(self, path: JointPath, planning_time: float,
                      trajectory: JointTrajectory | None = None) -> Status:
@@ -183,7 +191,9 @@ class _Executes(TaskLeaf):
         start, or hold it until the branch in its way has moved on."""
         schedule, lane = self.ctx.schedule, lane_of(self)
         timed = _plays_time(self.ctx.backend)
-        now = self.ctx.clock.now() if timed else 0.0
+        # Where time passes, the motion is admitted a little ahead (the verification and
+        # the next tick take some): it is held until then, then sent on time.
+        now = self.ctx.clock.now() + self.lead if timed else 0.0
         found = schedule.admit(self.ctx.scene, lane, trajectory, self.location, now)
         if isinstance(found, Blocked):
             refusal = schedule.refusal(lane, found, self.location)
@@ -210,9 +220,9 @@ class _Executes(TaskLeaf):
                 since=round(wait.since, 6), until=round(wait.until, 6), other=wait.other,
                 bodies=list(conflict.bodies), at=round(conflict.time, 6),
                 distance=round(conflict.distance, 6))
-        if timed and admission.start > now:
-            self.pending = trajectory
-            return Status.RUNNING
+        if timed:
+            self.pending = trajectory  # sent at its start (admitted again if late)
+            return self.poll_execution()
         return self._send(trajectory)
 
     def _send(self, trajectory: JointTrajectory) -> Status:
@@ -224,8 +234,10 @@ class _Executes(TaskLeaf):
         lane = lane_of(self)
         self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot,
                                                 lane, start))
+        sent = self.ctx.clock.now() if _plays_time(self.ctx.backend) else start
         self.ctx.events.emit("motion", f"{trajectory.duration:.2f} s", node=self.name,
                              location=self.location, start=round(start, 6),
+                             sent=round(sent, 6),
                              lane=[list(k) for k in lane], **motion_data(trajectory, snapshot))
         return Status.RUNNING
 
@@ -254,9 +266,16 @@ class _Executes(TaskLeaf):
                 return self.fail(str(exc))
         if self.pending is not None:
             assert self.admission is not None
-            if self.ctx.clock.now() < self.admission.start:
+            now = self.ctx.clock.now()
+            if now < self.admission.start:
                 return Status.RUNNING
             try:
+                if now > self.admission.start + LATE and self.lead > 0.0:
+                    # Verified for another start: verified again from now, sent at once.
+                    self.ctx.schedule.withdraw(self.admission)
+                    trajectory, self.pending = self.pending, None
+                    self.lead = 0.0
+                    return self._admit(trajectory)
                 return self._send(self.pending)
             except TaskrunnerError as exc:
                 return self.fail(str(exc))

@@ -238,8 +238,8 @@ def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
         trajectory = JointTrajectory(tuple(data["joints"]), np.asarray(data["times"], float),
                                      positions, np.asarray(data["velocities"], float),
                                      np.zeros_like(positions))
-        motion = TimedMotion(trajectory, float(event.data.get("start") or 0.0),
-                             event.location or event.node)
+        start = event.data.get("sent", event.data.get("start"))  # when it really started
+        motion = TimedMotion(trajectory, float(start or 0.0), event.location or event.node)
         key = tuple((int(a), int(b)) for a, b in lane)
         instances.setdefault(key[0][0], {}).setdefault(key, []).append(motion)
         first_state.setdefault(key[0][0], (event.data.get("scene") or {}).get("joints", {}))

@@ -29,7 +29,12 @@ have ended.
 follows has ended (planning counts as no time: what a mock run, which plays no time,
 shows) and, on a backend that plays motions in time, not before now
 (:class:`~taskrunner.tree.clock.TaskClock`). Where a motion was admitted to start later
-than now, its leaf holds it until then.
+than now, its leaf holds it until then; one reached more than :data:`LATE` after its
+admitted start (ticks are coarse on a fast simulator) is admitted again from then and
+sent at once, late by the verification's own time at most (the ``motion`` event's
+``sent`` is when it really started, and what the record's verifier takes). What it does
+not yet cover: an arm that *lags* its trajectory (physics, servos) while the other keeps
+to its own (a monitor holding the other arm: issue 25's stop-and-go).
 """
 
 from __future__ import annotations
@@ -49,7 +54,7 @@ from taskrunner.errors import InvalidStateError, PlanningError
 from taskrunner.scene import Scene
 from taskrunner.types import JointTrajectory
 
-__all__ = ["CLEARANCE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "ScheduleConflictError",
+__all__ = ["CLEARANCE", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "ScheduleConflictError",
            "Wait", "concurrent"]
 
 CLEARANCE = 0.005
@@ -57,6 +62,10 @@ CLEARANCE = 0.005
 (another branch of a ``parallel``), at every instant of the schedule. It also absorbs the
 difference between a planned trajectory and the one a record keeps (thinned to 25 Hz:
 well under a millimetre on these arms)."""
+
+LATE = 0.005
+"""s of task time: a motion sent later than this after its admitted start is admitted
+again (a tick late on a fast simulator)."""
 
 LaneKey = tuple[tuple[int, int], ...]
 """A lane: ``(parallel instance, branch index)`` pairs from the tree's root."""
@@ -128,6 +137,7 @@ class Admission:
         queries: exact distances the verifications computed; ``seconds`` their wall time.
         least: m, the least distance measured between this motion's bodies and the
             other branches' (inf: none moved beside it).
+        entry: the motion as committed (what :meth:`MotionSchedule.withdraw` takes).
     """
 
     start: float
@@ -135,6 +145,7 @@ class Admission:
     queries: int
     seconds: float
     least: float = math.inf
+    entry: Committed | None = None
 
 
 @dataclass
@@ -242,9 +253,14 @@ class MotionSchedule:
         else:
             raise ScheduleConflictError(f"still meets another branch's arm after "
                                         f"{len(waits)} waits")
-        self.committed.append(Committed(lane, TimedMotion(trajectory, start, location),
-                                        location))
-        return Admission(start, tuple(waits), queries, seconds, least)
+        entry = Committed(lane, TimedMotion(trajectory, start, location), location)
+        self.committed.append(entry)
+        return Admission(start, tuple(waits), queries, seconds, least, entry)
+
+    def withdraw(self, admission: Admission) -> None:
+        """Take an admitted motion off the schedule (it was not sent at its start: it is
+        admitted again from when it is)."""
+        self.committed = [c for c in self.committed if c is not admission.entry]
 
 
 def _lanes(others: Sequence[Committed]) -> list[Lane]:

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from taskrunner.backends.mock import MockBackend
+from taskrunner.backends.sim import SimBackend, SimOptions
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import Runner, RunOptions
@@ -25,13 +26,16 @@ FIXTURES = Path(__file__).parent / "fixtures"
 PROBE = FIXTURES / "meet_in_the_middle.yaml"
 
 
-def run_probe(tmp_path: Path, seed: int = 0) -> Runner:
+def run_probe(tmp_path: Path, seed: int = 0, sim_speed: float | None = None) -> Runner:
     spec = load_task(PROBE, {})
     cell = load_cell(spec.cell)
     names = cell.model.joint_names
-    backend = MockBackend(names, dict(zip(names, cell.start_state())))
+    start = dict(zip(names, cell.start_state()))
+    backend = (MockBackend(names, start) if sim_speed is None
+               else SimBackend(names, start, SimOptions(speed=sim_speed)))
     runner = Runner(spec, cell, backend, InProcessPlanner(),
-                    RunOptions(seed=seed, runs_dir=tmp_path / "runs"))
+                    RunOptions(seed=seed, runs_dir=tmp_path / "runs",
+                               backend_name="mock" if sim_speed is None else "sim"))
     runner.run()
     return runner
 
@@ -48,7 +52,7 @@ def schedule_of(runner: Runner) -> list[tuple[float, dict]]:
             continue
         trajectory = event.data["trajectory"]
         arm = trajectory["joints"][0].split("_")[0]  # left_… / right_…
-        start = event.data.get("start")
+        start = event.data.get("sent", event.data.get("start"))  # when it really started
         if start is None:
             start = ends.get(arm, 0.0)
         ends[arm] = float(start) + float(trajectory["duration"])
@@ -112,8 +116,20 @@ def test_the_record_verifier_finds_the_contact_of_the_unscheduled_timing(tmp_pat
             arm = event.data["trajectory"]["joints"][0].split("_")[0]
             start = ends.get(arm, 0.0)
             ends[arm] = start + event.data["trajectory"]["duration"]
-            event = replace(event, data={**event.data, "start": start})
+            event = replace(event, data={**event.data, "start": start, "sent": start})
         events.append(event)
     misses = arm_conflicts(runner.scene.robot, events)
     assert len(misses) == 1 and "arms collide in a parallel" in misses[0], misses
     assert "left_" in misses[0] and "right_" in misses[0] and ":17" in misses[0]
+
+
+def test_probe_on_the_simulator_keeps_the_arms_apart_on_its_clock(tmp_path):
+    """Motions take their time there: a motion admitted to start later is held until
+    then, and the record's start times (when each motion was really sent) replay without
+    contact."""
+    runner = run_probe(tmp_path, sim_speed=10.0)
+    assert runner.record.status == "succeeded", runner.record.error
+    assert runner.expectations_met
+    assert not arm_contacts(runner)
+    motions = [e for e in runner.record.events if e.kind == "motion"]
+    assert all(e.data["sent"] >= e.data["start"] - 1e-6 for e in motions)
