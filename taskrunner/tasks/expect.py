@@ -141,7 +141,8 @@ class Expectation(Node):
     """Task time of the step just before this 'expect' in the same list (s)."""
     collision_free: Literal[True] | None = None
     """true: every motion executed so far is re-checked for collisions against the scene
-    it started in (exactly, along the whole trajectory)."""
+    it started in (exactly, along the whole trajectory), and the arms of each
+    ``parallel``'s branches against each other over time (the space-time verifier)."""
 
     @model_validator(mode="after")
     def _something(self) -> Expectation:

@@ -35,7 +35,9 @@ the collision of their start state is not reported again. A ``fallback`` reports
 branches' problems only when every branch has some (each branch starts where the one
 before stopped, as in a run); the body of ``retry``, ``timeout`` and ``repeat`` is
 checked once; a ``parallel`` of ``go`` steps is the one motion a run makes of it, other
-parallels are checked child by child.
+parallels are checked child by child, then their motions put on one schedule by the run's
+own rule (:mod:`taskrunner.tree.schedule`): waits become notes, a conflict that waiting
+cannot resolve a problem naming both lines.
 """
 
 from __future__ import annotations
