@@ -288,10 +288,13 @@ class _Executes(TaskLeaf):
         try:
             self.handle.wait(0.0)
         except TaskrunnerError as exc:
+            self._stopped()
             return self.fail(f"execution failed: {exc}", kind="execution")
         return Status.SUCCESS
 
     def abort(self) -> None:
+        if self.pending is not None and self.admission is not None:
+            self.ctx.schedule.withdraw(self.admission)  # never sent
         self.pending = None
         if self.held is not None:
             self.held = None
@@ -299,6 +302,12 @@ class _Executes(TaskLeaf):
         if self.handle is not None and not self.handle.done():
             self.handle.cancel()
             self.ctx.sync_from_backend(finished=(self.name, self.location))
+            self._stopped()
+
+    def _stopped(self) -> None:
+        """The motion ended before its end: the schedule rests the arm where it stopped."""
+        if self.handle is not None and self.admission is not None:
+            self.ctx.schedule.stop(self.admission, float(self.handle.progress))
 
 
 class MoveToGoal(_Executes):

@@ -43,6 +43,8 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from taskrunner.collision.spacetime import (
     Conflict,
     Lane,
@@ -257,10 +259,34 @@ class MotionSchedule:
         self.committed.append(entry)
         return Admission(start, tuple(waits), queries, seconds, least, entry)
 
+    def stop(self, admission: Admission, progress: float) -> None:
+        """The admitted motion stopped ``progress`` s into its trajectory (cancelled, or
+        failed): from then on its arm rests there, as the schedule now says."""
+        entry = admission.entry
+        if entry is None or progress >= entry.motion.trajectory.duration:
+            return
+        cut = TimedMotion(_cut(entry.motion.trajectory, max(progress, 0.0)),
+                          entry.motion.start, entry.motion.label)
+        self.committed = [Committed(c.lane, cut, c.location) if c is entry else c
+                          for c in self.committed]
+
     def withdraw(self, admission: Admission) -> None:
         """Take an admitted motion off the schedule (it was not sent at its start: it is
         admitted again from when it is)."""
         self.committed = [c for c in self.committed if c is not admission.entry]
+
+
+def _cut(trajectory: JointTrajectory, until: float) -> JointTrajectory:
+    """``trajectory`` up to ``until`` s, its last sample there (the arm then rests)."""
+    times, positions = trajectory.times, trajectory.positions
+    keep = times < until
+    end = np.array([np.interp(until, times, positions[:, j]) for j in range(positions.shape[1])])
+    new_times = np.append(times[keep], until)
+    rows = np.vstack([positions[keep], end])
+    if len(new_times) < 2:  # stopped at its first sample
+        new_times, rows = np.array([0.0, 1e-6]), np.vstack([end, end])
+    zeros = np.zeros_like(rows)
+    return JointTrajectory(trajectory.names, new_times, rows, zeros, zeros)
 
 
 def _lanes(others: Sequence[Committed]) -> list[Lane]:

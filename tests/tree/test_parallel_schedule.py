@@ -6,6 +6,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
+import pytest
+
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.robot.cell import load_cell
@@ -13,7 +16,8 @@ from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.tasks import load_task
 from taskrunner.tree.check import check_task
 from taskrunner.tree.expect import arm_conflicts
-from taskrunner.tree.schedule import concurrent
+from taskrunner.tree.schedule import Admission, Blocked, MotionSchedule, concurrent
+from taskrunner.types import JointTrajectory
 
 FIXTURES = Path(__file__).parent / "fixtures"
 PROBE = Path(__file__).parents[1] / "scenarios" / "fixtures" / "meet_in_the_middle.yaml"
@@ -67,3 +71,83 @@ def test_a_run_of_the_blocked_task_never_succeeds_with_the_arms_in_each_other(tm
     assert runner.record.status == "failed" or not misses, misses
     motions = [e for e in runner.record.events if e.kind == "motion"]
     assert all("start" in e.data and e.data["lane"] for e in motions)
+
+
+# ------------------------------------------------------------------ the rule on its own
+P = [1.5708, -0.7, -0.9, -0.6, -1.5708]  # reaching to the middle: the two arms overlap there
+CANDLE = [1.5708, -1.5708, -1.5708, -1.5708, -1.5708]
+LEFT, RIGHT = ((1, 0),), ((1, 1),)
+
+
+@pytest.fixture(scope="module")
+def scene():
+    from taskrunner.resources import DATA_ROOT
+    from taskrunner.scene import scene_from_cell
+
+    return scene_from_cell(load_cell(DATA_ROOT / "robots/cells/servo_arm_pair.yaml"))
+
+
+def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> JointTrajectory:
+    times = np.linspace(0.0, duration, 21)
+    rows = np.array([np.add(a, s * np.subtract(b, a)) for s in np.linspace(0.0, 1.0, 21)])
+    return JointTrajectory(tuple(f"{side}_Revolute {i}" for i in range(1, 6)), times, rows,
+                           np.zeros_like(rows), np.zeros_like(rows))
+
+
+def test_a_motion_that_would_meet_a_running_one_waits_for_its_end(scene):
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    first = schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:1")
+    assert isinstance(first, Admission) and first.start == 0.0 and not first.waits
+    # The right arm reaching in and back out while the left one is there: it waits until
+    # the left arm's motion has ended, then meets it at rest: held (not admitted).
+    found = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:2")
+    assert isinstance(found, Blocked)
+    assert found.other == "t.yaml:1" and found.lane == LEFT
+    assert schedule.refusal(RIGHT, found, "t.yaml:2") is None  # the left branch may move on
+    assert schedule.revision == 1  # nothing committed
+
+
+def test_a_motion_in_the_way_of_an_ended_branch_is_refused_naming_both_steps(scene):
+    schedule = MotionSchedule()
+    schedule.new_instance(lambda branch: branch != 0)  # the left branch has ended
+    schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:1")
+    found = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:2")
+    assert isinstance(found, Blocked)
+    refusal = schedule.refusal(RIGHT, found, "t.yaml:2")
+    assert refusal is not None and "t.yaml:1" in refusal and "waiting cannot" in refusal
+
+
+def test_two_branches_holding_for_each_other_are_a_deadlock(scene):
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:1")
+    found = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:2")
+    assert isinstance(found, Blocked)
+    schedule.holding[LEFT] = RIGHT  # the left branch holds for the right one already
+    refusal = schedule.refusal(RIGHT, found, "t.yaml:2")
+    assert refusal is not None and "deadlock" in refusal
+
+
+def test_a_motion_waits_until_the_other_arm_has_left(scene):
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:1")
+    schedule.admit(scene, LEFT, line("left", P, CANDLE), "t.yaml:3")  # and back out, 2-4 s
+    found = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:2")
+    assert isinstance(found, Admission)
+    assert found.waits and found.waits[-1].other == "t.yaml:3"
+    assert found.start == pytest.approx(4.0)
+    assert found.least >= schedule.clearance
+
+
+def test_a_stopped_motion_rests_its_arm_where_it_stopped(scene):
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    first = schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:1")
+    assert isinstance(first, Admission)
+    schedule.stop(first, 0.0)  # cancelled at once: the left arm stays at Candle
+    found = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:2")
+    assert isinstance(found, Admission) and not found.waits and found.start == 0.0
+    schedule.withdraw(found)
+    assert schedule.revision == 1
