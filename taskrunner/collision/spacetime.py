@@ -175,15 +175,17 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     Args:
         scene: the bodies (robot links, attached and world objects) and the allowed
             pairs; joints no lane moves stay at ``scene.state``. Only pairs of bodies
-            of two different lanes are checked: a body belongs to a lane when a joint
-            the lane moves, or a joint carrying such a joint, carries it.
+            of two different lanes are checked: a body is of the lane that moves the
+            joint nearest above it (a finger: its gripper's lane, beside its arm's),
+            else of a lane whose joints it carries (an arm's links, when only its
+            gripper moves).
         lanes: at least two lanes for anything to be checked.
         window: the stretch of the common clock checked (s), default from the first
             motion's start to the last motion's end.
 
     Raises:
-        InvalidStateError: two lanes move the same joint or share a moving joint that
-            carries both, or one lane's motions overlap in time.
+        InvalidStateError: two lanes move the same joint, or one lane's motions overlap
+            in time.
     """
     started = time.perf_counter()
     options = options or SpacetimeOptions()
@@ -292,28 +294,28 @@ class _Walk:
         geometry = checker.geometry_model
         pin_model = model.model
         owner = np.full(len(geometry.geometryObjects), -1, dtype=np.int64)
-        carried: list[set[int]] = []  # per lane, the pinocchio joints that carry its bodies
-        for columns in timeline.columns:
-            joints: set[int] = set()
+        # A body is of the lane whose moved joint is nearest above it; a body no lane's
+        # joint moves, of the lane that carries it (a gripper lane: its arm's links).
+        moved: dict[int, int] = {}
+        carried: dict[int, int] = {}
+        for lane_index, columns in enumerate(timeline.columns):
             for index in columns:
                 jid = int(pin_model.getJointId(model.joint_names[int(index)]))
+                moved[jid] = lane_index
                 while jid > 0:
-                    joints.add(jid)
+                    carried.setdefault(jid, lane_index)
                     jid = int(pin_model.parents[jid])
-            carried.append(joints)
         for g, obj in enumerate(geometry.geometryObjects):
-            chain: set[int] = set()
+            chain = []
             jid = int(obj.parentJoint)
             while jid > 0:
-                chain.add(jid)
+                chain.append(jid)
                 jid = int(pin_model.parents[jid])
-            lanes = [i for i, joints in enumerate(carried) if chain & joints]
-            if len(lanes) > 1:
-                names = " and ".join(repr(timeline.lanes[i].name) for i in lanes)
-                raise InvalidStateError(f"lanes {names} share a joint that carries "
-                                        f"{obj.name!r}: they are not separate arms")
-            if lanes:
-                owner[g] = lanes[0]
+            found = next((moved[j] for j in chain if j in moved), None)
+            if found is None:
+                found = next((carried[j] for j in chain if j in carried), None)
+            if found is not None:
+                owner[g] = found
         self.owner = owner
         self.names = [_body_name(obj, pin_model) for obj in geometry.geometryObjects]
         pairs = []

@@ -148,3 +148,16 @@ def test_overlapping_motions_of_one_lane_are_refused(scene):
 def test_a_negative_clearance_is_refused():
     with pytest.raises(ValueError, match="'clearance' must be"):
         SpacetimeOptions(clearance=-0.001)
+
+
+def test_an_arm_and_its_own_gripper_may_be_two_lanes(scene):
+    """A gripper opening while its arm swings: the fingers are the gripper's lane, the
+    arm's links the arm's; they are checked against each other, not refused."""
+    names = ("left_Revolute 6",)
+    times = np.array([0.0, 1.0])
+    positions = np.array([[0.0], [0.01]])
+    gripper = TimedMotion(JointTrajectory(names, times, positions, np.zeros_like(positions),
+                                          np.zeros_like(positions)), 0.0, "open")
+    found = verify_lanes(scene, [Lane("arm", (swing("left"),)), Lane("gripper", (gripper,))])
+    assert found.ok, found.conflict
+    assert found.distance_queries > 0  # fingers against the arm's links were measured
