@@ -17,7 +17,8 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     │   ├── StartInCollisionError   the start state collides (names the pair)
     │   ├── GoalInCollisionError    every goal state collides (names the pair)
     │   ├── PlanningTimeoutError    no path found within the planning time
-    │   └── PlanningCancelledError  the caller cancelled the request
+    │   ├── PlanningCancelledError  the caller cancelled the request
+    │   └── ScheduleConflictError   a parallel branch's motion meets another arm; waiting cannot help
     └── BackendError                an execution backend failed or refused a command
         ├── TrajectoryRejectedError a trajectory refused before anything moved (names the joint)
         ├── BackendBusyError        joints already moving under another trajectory
@@ -50,6 +51,7 @@ __all__ = [
     "MissingMeshError",
     "PlanningError",
     "RobotDescriptionError",
+    "ScheduleConflictError",
     "SceneError",
     "TaskrunnerError",
     "UnknownNameError",
@@ -209,6 +211,12 @@ class NoDirectPathError(PlanningError):
     """A request that allows straight joint-space lines only
     (``PlannerOptions.direct_only``) found the line to every goal state blocked: no
     search was run."""
+
+
+class ScheduleConflictError(PlanningError):
+    """A motion of one branch of a ``parallel`` meets another branch's arm in time and
+    waiting cannot resolve it (the other arm stays in its way, or both wait for each
+    other): the message names both steps' file:lines (:mod:`taskrunner.tree.schedule`)."""
 
 
 class BackendError(TaskrunnerError):

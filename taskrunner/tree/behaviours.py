@@ -20,7 +20,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import ExecutionHandle
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import ScheduleConflictError, TaskrunnerError
 from taskrunner.planning.cartesian import (
     CartesianOptions,
     CartesianResult,
@@ -34,7 +34,7 @@ from taskrunner.tree.choice import choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
-from taskrunner.tree.schedule import LATE, Admission, Blocked, LaneKey, ScheduleConflictError
+from taskrunner.tree.schedule import LATE, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",

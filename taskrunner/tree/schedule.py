@@ -14,7 +14,7 @@ its branch has committed, the motion is :class:`Blocked`: its leaf holds it, unc
 until that branch commits its next motion (the arm may move away) and admits it again;
 when that branch has ended (its arm stays there) or holds for this one in turn (a
 deadlock), waiting cannot help and the step fails (:meth:`MotionSchedule.refusal`, a
-:class:`ScheduleConflictError` naming both steps' file:lines and the bodies). Both
+:class:`~taskrunner.errors.ScheduleConflictError` naming both steps' file:lines and the bodies). Both
 ``run-task run`` (each leaf before it executes) and ``run-task check`` (its dry run of a
 ``parallel``) call this one rule.
 
@@ -52,12 +52,12 @@ from taskrunner.collision.spacetime import (
     TimedMotion,
     verify_lanes,
 )
-from taskrunner.errors import InvalidStateError, PlanningError
+from taskrunner.errors import InvalidStateError, ScheduleConflictError
 from taskrunner.scene import Scene
 from taskrunner.types import JointTrajectory
 
-__all__ = ["CLEARANCE", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "ScheduleConflictError",
-           "Wait", "concurrent"]
+__all__ = ["CLEARANCE", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "Wait",
+           "concurrent"]
 
 CLEARANCE = 0.005
 """m: the least distance a motion keeps from the bodies of arms moving at the same time
@@ -82,10 +82,6 @@ def concurrent(a: LaneKey, b: LaneKey) -> bool:
         if ba != bb:
             return True
     return False
-
-
-class ScheduleConflictError(PlanningError):
-    """A motion meets another branch's arm and waiting cannot resolve it."""
 
 
 @dataclass(frozen=True)
