@@ -21,7 +21,8 @@ KINDS = (
     "node_started",     # a tree node began (initialise)
     "node_finished",    # a node ended: status SUCCESS / FAILURE / INVALID (stopped)
     "planned",          # a motion was planned; data: planning_time, duration, waypoints
-    "motion",           # a trajectory was sent to the backend; data: trajectory, scene
+    "motion",           # a trajectory was sent to the backend; data: trajectory, scene,
+                        # start / sent (s, the run's schedule), lane, verify_time (s)
     "physics",          # what a physics backend did during a node's motion; data: period,
                         # joints, t, q, objects (poses over time), grasps (welds)
     "wait",             # a motion held back for another branch's arm; data: since, until

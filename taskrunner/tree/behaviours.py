@@ -235,9 +235,10 @@ class _Executes(TaskLeaf):
         self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot,
                                                 lane, start))
         sent = self.ctx.clock.now() if _plays_time(self.ctx.backend) else start
+        verified = self.admission.seconds if self.admission is not None else 0.0
         self.ctx.events.emit("motion", f"{trajectory.duration:.2f} s", node=self.name,
                              location=self.location, start=round(start, 6),
-                             sent=round(sent, 6),
+                             sent=round(sent, 6), verify_time=round(verified, 6),
                              lane=[list(k) for k in lane], **motion_data(trajectory, snapshot))
         return Status.RUNNING
 
