@@ -125,8 +125,9 @@ def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
 
 LEAD = 0.1
 """s of task time ahead of now a motion is admitted on a backend that plays time; one the
-tree reaches too late for that start is admitted again from then and sent at once (late
-by the verification's time at most: the record's ``sent``)."""
+tree reaches too late for that start is admitted again from then, with no lead, and sent
+when the tree next reaches it (late by about a tick at most: the ``motion`` event's
+``sent``, which the record's verifier replays)."""
 
 
 def _plays_time(backend: object) -> bool:
@@ -173,7 +174,7 @@ class _Executes(TaskLeaf):
 
         Raises:
             TaskrunnerError: timing failed, or the schedule refused the motion
-                (:class:`~taskrunner.tree.schedule.ScheduleConflictError`).
+                (:class:`~taskrunner.errors.ScheduleConflictError`).
         """
         if trajectory is None:
             trajectory = parameterize_path(self.ctx.scene.robot, path, self.timing)

@@ -31,8 +31,8 @@ shows) and, on a backend that plays motions in time, not before now
 (:class:`~taskrunner.tree.clock.TaskClock`). Where a motion was admitted to start later
 than now, its leaf holds it until then; one reached more than :data:`LATE` after its
 admitted start (ticks are coarse on a fast simulator) is admitted again from then and
-sent at once, late by the verification's own time at most (the ``motion`` event's
-``sent`` is when it really started, and what the record's verifier takes). What it does
+sent when next reached, late by about a tick at most (the ``motion`` event's ``sent`` is
+when it really started, and what the record's verifier replays). What it does
 not yet cover: an arm that *lags* its trajectory (physics, servos) while the other keeps
 to its own (a monitor holding the other arm: issue 25's stop-and-go).
 """
