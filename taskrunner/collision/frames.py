@@ -10,7 +10,9 @@ geometry with :func:`compose`.
 
 The functions are numba kernels compiled on first use and cached on disk
 (``cache=True``, in ``NUMBA_CACHE_DIR``, by default ``user_cache_dir()/numba``);
-:data:`inline` ones are inlined into their callers at numba's IR level. Called from
+:data:`inline` ones are helpers the other kernels call (compiled once each, not inlined
+at numba's IR level: inlining them cost 38 % more first compilation, 10.5 against 6.6 s
+of CPU, for no measurable speed: ``benchmarks/HISTORY.md``). Called from
 Python they take C-contiguous float64 arrays and a :data:`~taskrunner.collision.tree.JOINT`
 record array; :func:`forward_kinematics` is the typed Python entry point.
 """
@@ -50,8 +52,7 @@ FRAME_COLUMNS = 15
 
 _F = TypeVar("_F", bound=Callable[..., Any])
 _jit: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy")
-_inline: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy",
-                                           inline="always")
+_inline: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy")
 
 
 def jit(function: _F) -> _F:
@@ -62,7 +63,8 @@ def jit(function: _F) -> _F:
 
 
 def inline(function: _F) -> _F:
-    """Compile ``function`` as a kernel inlined into the kernels that call it."""
+    """Compile ``function`` as a helper of the kernels that call it: compiled once and
+    called (the name is from when helpers were inlined; see the module docstring)."""
     compiled: _F = _inline(function)
     return compiled
 

@@ -565,10 +565,9 @@ def _enclosing_sphere(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, flo
 
 
 # ---------------------------------------------------------------------- kernels
-# The entry points (called from Python) are compiled functions of their own; the helpers
-# are inlined into their callers (numba IR inlining: no call or reference-count overhead),
-# except the support bound and its support function (called rarely, and large: each compiled
-# once, then called; inlined they would add seconds to the first compilation).
+# The entry points (called from Python) are compiled functions of their own, and so are
+# the helpers (``inline``, ``jit``): each compiled once and called, not inlined into every
+# caller (inlined, the first compilation took 38 % longer for no measurable speed).
 @jit
 def _forward(q, joints, geometries, frames):  # type: ignore[no-untyped-def]
     """World frames of the joints and the geometries at state ``q`` (into ``frames``,
