@@ -22,8 +22,10 @@ and measures, on this side's wall clock from just before the spawn:
 record keeps apart as ``warm_up_s``) and Python's bytecode cache redirected to an empty
 folder (``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart with its
 warm-up and whether the task's expectations were met; ``--cold-runs N`` makes it N such
-runs, each on fresh caches. The warm runs follow, after one unmeasured run that fills the
-caches.
+runs, each on fresh caches. ``--cold-keeps-bytecode``: the cold runs keep the warm runs'
+bytecode (compiled once beforehand), as after ``pip install``, which compiles it: only
+taskrunner's own caches are fresh. The warm runs follow, after one unmeasured run that
+fills the caches.
 
 Warm runs keep their bytecode in a folder of their own (``PYTHONPYCACHEPREFIX`` in the
 benchmark's temporary folder, ``PYTHONDONTWRITEBYTECODE`` unset): an environment that
@@ -147,13 +149,13 @@ _BUSY_LOOP = "import time\nwhile True:\n    for i in range(100000):\n        pas
 
 def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: int = 0,
         pythonpath: str | None = None, bytecode_cache: bool = True,
-        busy: int = 0) -> dict[str, Any]:
+        busy: int = 0, keep_bytecode: bool = False) -> dict[str, Any]:
     """Measure ``runs`` warm starts (after ``cold`` cold ones, each on fresh caches), with
     ``busy`` other processes spinning meanwhile; see the module doc."""
     spinning = [subprocess.Popen([sys.executable, "-c", _BUSY_LOOP], stdin=subprocess.DEVNULL)
                 for _ in range(busy)]
     try:
-        result = _measure(task, runs, seed, cold, pythonpath, bytecode_cache)
+        result = _measure(task, runs, seed, cold, pythonpath, bytecode_cache, keep_bytecode)
     finally:
         for process in spinning:
             process.kill()
@@ -163,7 +165,7 @@ def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: int = 0,
 
 
 def _measure(task: str, runs: int, seed: int, cold: int, pythonpath: str | None,
-             bytecode_cache: bool) -> dict[str, Any]:
+             bytecode_cache: bool, keep_bytecode: bool = False) -> dict[str, Any]:
     env = dict(os.environ)
     env.pop("PYTHONPROFILEIMPORTTIME", None)
     if pythonpath:
@@ -183,6 +185,13 @@ def _measure(task: str, runs: int, seed: int, cold: int, pythonpath: str | None,
             cold_env = dict(env, XDG_CACHE_HOME=str(fresh / "cache"),
                             NUMBA_CACHE_DIR=str(fresh / "cache" / "taskrunner" / "numba"),
                             PYTHONPYCACHEPREFIX=str(fresh / "pycache"))
+            if keep_bytecode:
+                if k == 0:  # the bytecode compiled once, by a run on caches of its own
+                    own = root / "bytecode-run"
+                    run_once(task, seed, runs_dir, dict(
+                        cold_env, PYTHONPYCACHEPREFIX=str(root / "pycache"),
+                        XDG_CACHE_HOME=str(own), NUMBA_CACHE_DIR=str(own / "numba")))
+                cold_env["PYTHONPYCACHEPREFIX"] = str(root / "pycache")
             colds.append(run_once(task, seed, runs_dir, cold_env))
         if colds:
             result["cold"] = colds[0]
@@ -214,7 +223,8 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
     for k, c in enumerate(result.get("colds", [])):
         warm_up = "none" if c.get("warm_up") is None else f"{c['warm_up']:.1f} s"
         met = {True: "met", False: "NOT met", None: "none"}[c.get("expectations_met")]
-        out.append((f"run-task {result['task']}, cold caches (models, kernels, bytecode) #{k + 1}",
+        what = "models, kernels" if result.get("cold_keeps_bytecode") else "models, kernels, bytecode"
+        out.append((f"run-task {result['task']}, cold caches ({what}) #{k + 1}",
                     f"first motion {c['first_motion']:.3f} s (kernels' warm-up {warm_up}), "
                     f"wall {c['wall']:.3f} s, exit {c['exit_code']}, expectations {met}"))
     if result.get("failed_runs"):
@@ -237,6 +247,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--cold", action="store_true", help="one cold-cache run first")
     parser.add_argument("--cold-runs", type=int, default=None, metavar="N",
                         help="N cold-cache runs first, each on fresh caches (implies --cold)")
+    parser.add_argument("--cold-keeps-bytecode", action="store_true",
+                        help="cold runs keep compiled bytecode (as after pip install)")
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
     parser.add_argument("--pythonpath", default=None,
                         help="run the taskrunner in this folder (a checkout of another commit)")
@@ -252,7 +264,8 @@ def main(argv: list[str] | None = None) -> int:
     if cold < 0:
         parser.error("--cold-runs must be 0 or more")
     result = run(args.task, args.runs, args.seed, cold, args.pythonpath,
-                 not args.no_bytecode_cache, args.busy)
+                 not args.no_bytecode_cache, args.busy, args.cold_keeps_bytecode)
+    result["cold_keeps_bytecode"] = args.cold_keeps_bytecode
     table = rows(result)
     width = max(len(what) for what, _ in table)
     for what, figure in table:
