@@ -2,7 +2,7 @@
 
 The path verifier (:mod:`taskrunner.scene.sweep`) and the search's state screen
 (:mod:`taskrunner.scene.screen`) run numba kernels that numba compiles the first time on a
-machine (about 10 s of CPU on an idle 2-core machine, a minute or more on a busy one) and
+machine (about 7 s of CPU, ~5 s on an idle 2-core machine, half a minute or more on a busy one) and
 keeps in its on-disk cache (:func:`taskrunner.resources.kernel_cache_dir`); every later
 process loads them from there in a fraction of a second.
 

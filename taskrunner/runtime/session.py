@@ -169,7 +169,7 @@ def _import_toppra() -> None:
     load_toppra()
 
 
-WARM_UP_NOTE = "preparing the planner's compiled kernels (first run on this machine, ~10 s)"
+WARM_UP_NOTE = "preparing the planner's compiled kernels (first run on this machine, ~5 s)"
 
 
 def _prepare_kernels(planner: PlanningWorker | InProcessPlanner, out: TextIO,
@@ -221,7 +221,7 @@ def warm_up_command(out: TextIO | None = None) -> int:
         print(f"the planner's compiled kernels are ready (cache: {kernel_cache_dir()})",
               file=out)
         return 0
-    progress = _Progress(out, "compiling the planner's kernels (once per machine, ~10 s)",
+    progress = _Progress(out, "compiling the planner's kernels (once per machine, ~5 s)",
                          _can_redraw() and out.isatty())
     ticking = threading.Event()
 
