@@ -73,8 +73,10 @@ def start_server(port: int, state: str, *, env: dict[str, str] | None = None,
         except OSError:
             time.sleep(0.1)
         if time.monotonic() > deadline or server.poll() is not None:
+            code = server.poll()
             server.kill()
-            raise SystemExit("the server did not start")
+            raise SystemExit("the server did not start in 90 s" if code is None else
+                             f"the server exited with {code} while starting")
 
 
 @dataclass(frozen=True)

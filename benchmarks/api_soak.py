@@ -264,26 +264,25 @@ class Canceller(threading.Thread):
 
 
 # ----------------------------------------------------------------- judging
-def _growth_mib(samples: list[tuple[float, TreeSample]]) -> tuple[float, float]:
-    """Growth (MiB, least-squares line over the samples' span) of the resident memory of
-    the processes alive in every sample, in all and of the server alone (the first pid)."""
+def _growth_mib(samples: list[tuple[float, TreeSample]]) -> dict[int, dict[str, float]]:
+    """For each process alive in every sample: its resident memory (MiB) at the first and
+    last sample and its growth (least-squares line over the samples' span)."""
     times = np.array([t for t, _ in samples])
     span = float(times[-1] - times[0])
     alive = set.intersection(*(set(s.rss_mib) for _, s in samples))
-    server = samples[0][1].pids[0]
-    total, own = 0.0, 0.0
-    for pid in alive:
-        slope = float(np.polyfit(times, [s.rss_mib[pid] for _, s in samples], 1)[0])
-        total += slope * span
-        if pid == server:
-            own = slope * span
-    return total, own
+    out = {}
+    for pid in sorted(alive):
+        rss = [s.rss_mib[pid] for _, s in samples]
+        slope = float(np.polyfit(times, rss, 1)[0])
+        out[pid] = {"first": round(rss[0]), "last": round(rss[-1]),
+                    "growth": round(slope * span, 1)}
+    return out
 
 
 def _settle(pid: int, idle_s: float, most: TreeSample | None = None) -> TreeSample:
     """The tree once idle planners are closed: sampled until its processes stop changing
     (and, given ``most``, are at most as many), within ``2 * idle_s + 30`` s."""
-    time.sleep(idle_s)
+    time.sleep(idle_s * 1.25 + 2)  # the reaper looks every idle_s / 4
     deadline = time.monotonic() + idle_s + 30
     last, same = sample_tree(pid), 0
     while time.monotonic() < deadline:
@@ -414,7 +413,9 @@ def main() -> int:
         tracebacks = log_path.read_text(errors="replace").count("Traceback")
 
     second = [(t, s) for t, s in samples if t - t0 >= args.minutes * 30]
-    growth, server_growth = _growth_mib(second)
+    by_pid = _growth_mib(second)
+    growth = sum(row["growth"] for row in by_pid.values())
+    server_growth = by_pid.get(server.pid, {}).get("growth", 0.0)
     by_kind: dict[str, list[float]] = defaultdict(list)
     codes: dict[str, Counter[int]] = defaultdict(Counter)
     for _, kind, code, ms in records:
@@ -441,6 +442,8 @@ def main() -> int:
                          "max": round(max(s.total_rss_mib for _, s in samples))},
         "second_half_growth_mib": round(growth, 1),
         "second_half_server_growth_mib": round(server_growth, 1),
+        "second_half_by_process": {("server" if pid == server.pid else str(pid)): row
+                                   for pid, row in by_pid.items()},
         "processes": {"baseline": baseline.processes,
                       "max": max(s.processes for _, s in samples), "end": end.processes},
         "fds": {"baseline": baseline.total_fds,
@@ -467,6 +470,9 @@ def main() -> int:
           f"processes {baseline.processes} -> {end.processes}; "
           f"fds {baseline.total_fds} -> {end.total_fds} (more: {dict(fds_added)}); "
           f"server tracebacks {tracebacks}")
+    print("over the second half, by process (MiB first -> last, growth): " + "; ".join(
+        f"{name} {row['first']} -> {row['last']} ({row['growth']:+})"
+        for name, row in result["second_half_by_process"].items()))
     print("met: " + ", ".join(f"{k} {'yes' if v else 'NO'}" for k, v in checks.items()))
     if args.json:
         print(json.dumps(result))
