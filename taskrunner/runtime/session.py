@@ -253,6 +253,7 @@ class _Progress:
         self.out, self.text, self.live = out, text, live
         self.started: float | None = None
         self.failure: BaseException | None = None
+        self._shown = ""
 
     def start(self) -> None:
         self.started = time.perf_counter()
@@ -260,14 +261,16 @@ class _Progress:
 
     def tick(self) -> None:
         if self.live and self.started is not None:
-            print(f"\r{self.text} … {time.perf_counter() - self.started:.0f} s", end="",
-                  file=self.out, flush=True)
+            seconds = f"{time.perf_counter() - self.started:.0f}"
+            if seconds != self._shown:  # redrawn once a second
+                self._shown = seconds
+                print(f"\r{self.text} … {seconds} s", end="", file=self.out, flush=True)
 
     def end(self, outcome: str) -> None:
         if self.started is None:
             return
         if self.live:
-            print(f"\r{self.text}: {outcome}", file=self.out, flush=True)
+            print(f"\r{self.text}: {outcome}\x1b[K", file=self.out, flush=True)
         else:
             print(f"  {outcome}", file=self.out, flush=True)
 
