@@ -19,14 +19,12 @@ _LIBRARIES = {"numpy", "np", "scipy", "toppra", "numba", "xacro", "matplotlib", 
               "mujoco", "uvicorn", "fastapi", "serial", "substitution_args", "caching"}
 
 # What is left, and why (issue 24): xacro has no public hook for ``$(find pkg)`` without
-# ament_index, nor for checking each file it opens; these run in the forked child that
-# expands one file (taskrunner.robot.xacrofile), and are restored after it.
+# ament_index, nor for checking each file it opens before it opens it; these run in the
+# forked child that expands one file (taskrunner.robot.xacrofile), restored after it.
 _KNOWN = {
     ("robot/xacrofile.py", "xacro.parse"),
     ("robot/xacrofile.py", "xacro.load_yaml"),
     ("robot/xacrofile.py", "substitution_args._eval_find"),
-    ("robot/xacrofile.py", "substitution_args._eval_env"),
-    ("robot/xacrofile.py", "substitution_args._eval_optenv"),
 }
 
 

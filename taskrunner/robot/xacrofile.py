@@ -232,6 +232,35 @@ def _includes_by_pattern(files: Sequence[str | Path]) -> bool:
     return False
 
 
+# ``$(env NAME)``, ``$(optenv NAME default)``; ``env('NAME')``, ``optenv('NAME', …)`` in a
+# ``$(eval …)`` expression; and any other call of those (a name not written out).
+_ENV_ARG = re.compile(r"\$\(\s*(?:env|optenv)\s+([^\s)]+)")
+_ENV_CALL = re.compile(r"""\b(?:env|optenv)\s*\(\s*(["'])([^"'$]*)\1""")
+_ENV_ANY = re.compile(r"\b(?:env|optenv)\s*\(")
+
+
+def _environment_read(files: Sequence[str | Path]) -> set[str] | None:
+    """The environment variables an expansion of ``files`` (what it read) may read, from
+    the files' own text; None when one is named by an expression or a substitution (not
+    known before it runs) or a file cannot be read again. A name in a comment counts too
+    (recorded, never wrong)."""
+    names: set[str] = set()
+    for name in files:
+        try:
+            text = Path(name).read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            return None
+        for match in _ENV_ARG.finditer(text):
+            if "$" in match.group(1):
+                return None
+            names.add(match.group(1))
+        literal = list(_ENV_CALL.finditer(text))
+        if len(literal) != len(_ENV_ANY.findall(text)):
+            return None
+        names.update(m.group(2) for m in literal)
+    return names
+
+
 def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
             max_bytes: int, inputs: xacro_cache.XacroInputs) -> str:
     """Expand in this process (unbounded; see :func:`expand_xacro`), recording what it
@@ -250,21 +279,11 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
         inputs.finds[pkg] = folder
         return folder
 
-    def env(name: str) -> str:
-        inputs.env[name] = os.environ.get(name)
-        return str(saved_env(name))
-
-    def optenv(name: str, default: str = "") -> str:
-        inputs.env[name] = os.environ.get(name)
-        return str(saved_optenv(name, default))
-
     with _XACRO_LOCK:
         saved_find = substitution_args._eval_find
-        saved_env, saved_optenv = substitution_args._eval_env, substitution_args._eval_optenv
         saved_table = dict(substitution_args._eval_dict)
         substitution_args._eval_find = find
-        substitution_args._eval_env, substitution_args._eval_optenv = env, optenv
-        substitution_args._eval_dict.update(find=find, env=env, optenv=optenv)
+        substitution_args._eval_dict.update(find=find)
         saved_readers = _guarded_includes(xacro, max_bytes, inputs)
         known_includes = len(xacro.all_includes)
         chatter = io.StringIO()
@@ -281,6 +300,11 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
                     inputs.cacheable = False
             if _includes_by_pattern([path, *included]):
                 inputs.cacheable = False
+            variables = _environment_read([path, *included])
+            if variables is None:
+                inputs.cacheable = False
+            else:
+                inputs.env.update({name: os.environ.get(name) for name in sorted(variables)})
             return str(document.toprettyxml(indent="  "))
         except MemoryError:
             raise
@@ -305,7 +329,6 @@ def _expand(path: Path, packages: PackageMap, mappings: dict[str, str] | None,
             raise RobotDescriptionError(f"xacro expansion failed: {detail}", where) from None
         finally:
             substitution_args._eval_find = saved_find
-            substitution_args._eval_env, substitution_args._eval_optenv = saved_env, saved_optenv
             substitution_args._eval_dict.clear()
             substitution_args._eval_dict.update(saved_table)
             xacro.parse, xacro.load_yaml = saved_readers
