@@ -43,7 +43,6 @@ from __future__ import annotations
 
 import math
 import threading
-import weakref
 from collections import OrderedDict
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
@@ -130,27 +129,38 @@ def wrist_roll(model: RobotModel, group: str, link: str, q: np.ndarray) -> tuple
     return joint.index, math.copysign(1.0, omega[2])
 
 
-_SOLVERS = threading.local()  # .models: {id(model): (weakref to it, {(group, link): solver})}
+_SOLVERS = threading.local()  # .models: {id(model): (the model, {(group, link): solver})}
+_SOLVER_MODELS = 4
+"""Models whose solvers a thread keeps (the most recently used): a solver holds its model,
+so an unbounded cache kept every model a long-lived process (a server's check worker)
+ever checked."""
 
 
 def _solver(model: RobotModel, group: str, link: str) -> IkSolver:
     """The IK solver of ``link`` for ``group``, kept per model and thread: its seed table
     (built by the first search that restarts, ~5-10 ms) serves every later choice. A
     solver's answers do not depend on its earlier calls (its random draws restart from
-    the call's seed), and it is not thread-safe, hence one per thread (dropped with it)."""
-    models: dict[int, tuple[weakref.ref, dict[tuple[str, str], IkSolver]]] | None = getattr(
-        _SOLVERS, "models", None)
+    the call's seed), and it is not thread-safe, hence one per thread (dropped with it).
+    The solvers of the :data:`_SOLVER_MODELS` models used last are kept."""
+    models: OrderedDict[int, tuple[RobotModel, dict[tuple[str, str], IkSolver]]] | None = \
+        getattr(_SOLVERS, "models", None)
     if models is None:
-        models = _SOLVERS.models = {}
+        models = _SOLVERS.models = OrderedDict()
     entry = models.get(id(model))
-    if entry is None or entry[0]() is not model:
-        for key in [k for k, (ref, _) in models.items() if ref() is None]:
-            del models[key]  # models gone
-        entry = models[id(model)] = (weakref.ref(model), {})
+    if entry is None or entry[0] is not model:
+        entry = models[id(model)] = (model, {})
+        while len(models) > _SOLVER_MODELS:
+            models.popitem(last=False)
+    models.move_to_end(id(model))
     solver = entry[1].get((group, link))
     if solver is None:
         solver = entry[1][(group, link)] = IkSolver(model, group, frame=link)
     return solver
+
+
+def forget_solvers() -> None:
+    """Drop this thread's IK solvers: the next goal choice builds them anew."""
+    _SOLVERS.models = OrderedDict()
 
 
 _MEMO_SIZE = 512

@@ -54,7 +54,7 @@ def test_goals_do_not_depend_on_earlier_calls(robot, group, link, request):
     start = model.default_state()
     a = _contacts(model, link, _state(model, group, 1))
     b = _contacts(model, link, _state(model, group, 2))
-    reach._SOLVERS.models = {}  # a fresh solver
+    reach.forget_solvers()  # a fresh solver
     first = reach.approach_goals(model, group, link, a, _back, start, seed=7)
     reach.approach_goals(model, group, link, b, _back, start, seed=8)  # another choice between
     again = reach.approach_goals(model, group, link, a, _back, start, seed=7)
@@ -158,3 +158,23 @@ def test_a_cell_loaded_again_reuses_the_remembered_goal_choices(servo_arm_model,
     second = reach.approach_goals(again, "arm", "tool0", contacts, _back, start, seed=5)
     assert len(reach._MEMO) == remembered  # every choice found, none made anew
     assert _values(second) == _values(first)
+
+
+def test_the_solver_cache_keeps_a_few_models_not_every_model_ever_checked(robots_dir):
+    """A long-lived process (a server's check worker) loads a new model per check: the
+    solvers' cache must let the old ones go (it kept every one: 31 MiB a 60 checks)."""
+    import gc
+    import weakref
+
+    from taskrunner.robot import load_robot
+
+    gone = []
+    for _ in range(reach._SOLVER_MODELS + 3):
+        model = load_robot(robots_dir / "servo_arm")
+        reach._solver(model, "arm", "tool0")
+        gone.append(weakref.ref(model))
+        del model
+    gc.collect()
+    alive = [ref for ref in gone if ref() is not None]
+    assert len(alive) == reach._SOLVER_MODELS
+    assert all(ref() is not None for ref in gone[-reach._SOLVER_MODELS:])  # the recent ones

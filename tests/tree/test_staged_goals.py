@@ -172,7 +172,7 @@ def test_a_remembered_choice_is_the_choice_made_afresh(robot, group, link, reque
     assert _values(again) == _values(first) and not solves  # nothing solved again
     monkeypatch.undo()
     reach.forget()
-    reach._SOLVERS.models = {}  # fresh solvers too
+    reach.forget_solvers()  # fresh solvers too
     fresh = reach.approach_goals(model, group, link, contact, _back, start, seed=5)
     assert _values(fresh) == _values(first)
     # Other inputs are another choice: computed, not taken from this one's.
