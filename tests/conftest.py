@@ -8,6 +8,8 @@ time): treat them as read-only. A test that needs to change a model, or uses
 
 from __future__ import annotations
 
+import os
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -30,6 +32,23 @@ def _verifier_kernels_compiled() -> None:
 
     scene = Scene(load_robot(DATA_ROOT / "robots" / "servo_arm"))
     warm_kernels(scene.path_verifier(), scene.state)
+
+
+# What `run-task`'s robot options set for its workers (os.environ): a test that calls the
+# CLI in-process must not leave them to the tests after it.
+_CLI_ENV = ("TASKRUNNER_STRICT", "TASKRUNNER_PACKAGE_PATH", "TASKRUNNER_COLLISION",
+            "TASKRUNNER_ALLOW_MISSING_MESHES")
+
+
+@pytest.fixture(autouse=True)
+def _cli_environment_restored() -> Iterator[None]:
+    before = {name: os.environ.get(name) for name in _CLI_ENV}
+    yield
+    for name, value in before.items():
+        if value is None:
+            os.environ.pop(name, None)
+        else:
+            os.environ[name] = value
 
 
 @pytest.fixture(scope="session")

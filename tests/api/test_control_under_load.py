@@ -227,9 +227,10 @@ def test_run_task_serve_opens_the_control_port_beside_the_main_one(tmp_path: Pat
         env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     try:
         deadline = time.monotonic() + 60
-        while True:
+        while True:  # both listening (the control port may answer first)
             try:
-                if _request(control, "GET", "/health", timeout=1)[0] == 200:
+                if _request(control, "GET", "/health", timeout=1)[0] == 200 \
+                        and _request(port, "GET", "/health", timeout=1)[0] == 200:
                     break
             except OSError:
                 pass
