@@ -67,6 +67,11 @@ def model_key(model: RobotModel) -> str:
     for name, placement in zip(pin_model.names, pin_model.jointPlacements):
         add(name, rounded(placement.homogeneous))
     for go in model.collision_model.geometryObjects:
+        # coal computes a shape's local box lazily (the path verifier asks for it): computed
+        # here, so that the digest does not depend on whether anything asked before.
+        compute = getattr(go.geometry, "computeLocalAABB", None)
+        if compute is not None:
+            compute()
         box = getattr(go.geometry, "aabb_local", None)
         extent = () if box is None else (rounded(box.min_), rounded(box.max_))
         add(go.name, int(go.parentJoint), rounded(go.placement.homogeneous), str(go.meshPath),

@@ -178,3 +178,18 @@ def test_the_solver_cache_keeps_a_few_models_not_every_model_ever_checked(robots
     alive = [ref for ref in gone if ref() is not None]
     assert len(alive) == reach._SOLVER_MODELS
     assert all(ref() is not None for ref in gone[-reach._SOLVER_MODELS:])  # the recent ones
+
+
+def test_a_models_digest_does_not_change_when_coal_computes_its_boxes(robots_dir):
+    """coal computes a shape's local box when first asked (the path verifier asks): the
+    digest that keys remembered choices must be the same before and after, else a run
+    after a check on a model the verifier used misses the check's choices."""
+    from taskrunner.robot import load_robot
+    from taskrunner.scene import Scene
+    from taskrunner.tree import choice
+
+    model = load_robot(robots_dir / "servo_arm")
+    before = choice.model_key(model)
+    Scene(model).path_verifier()
+    choice._MODEL_KEYS.clear()  # computed again, not the cached answer
+    assert choice.model_key(model) == before
