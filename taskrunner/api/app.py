@@ -20,6 +20,7 @@ from taskrunner.api.auth import AuthGate
 from taskrunner.api.cells import CellRegistry, settle_heap
 from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
+from taskrunner.api.overload import RequestLimit
 from taskrunner.api.requestwork import RequestWork
 from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer
 from taskrunner.api.runs import RunManager
@@ -114,7 +115,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
     # Before the body is read: a 401 costs no parsing.
     app.add_middleware(AuthGate, routes=[route for router in routers for route in router.routes])
-    app.add_middleware(RunDetailFastPath)  # outermost: polls skip the rest
+    app.add_middleware(RunDetailFastPath)  # polls skip the rest
+    # Outermost: past max_requests at once, 503 before any work (control requests exempt).
+    app.add_middleware(RequestLimit, limit=settings.max_requests)
     return app
 
 

@@ -26,14 +26,15 @@ from __future__ import annotations
 
 import asyncio
 import json
-import re
 import threading
 from typing import Any
 
 from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
 
+from taskrunner.api.overload import is_control
 from taskrunner.api.settings import Settings
 from taskrunner.api.streams import ABORT_EXTENSION
+from taskrunner.errors import ArgumentError
 
 __all__ = ["ControlOnly", "header_timeout_protocol", "serve"]
 
@@ -55,9 +56,9 @@ def header_timeout_protocol(header_timeout_s: float,
     longer than ``header_timeout_s`` (s) to arrive, or whose request body takes longer
     than ``body_timeout_s`` (s) after its headers (None: no limit on the body)."""
     if not header_timeout_s > 0:
-        raise ValueError(f"'header_timeout_s' must be a positive number (got {header_timeout_s!r})")
+        raise ArgumentError(f"'header_timeout_s' must be a positive number (got {header_timeout_s!r})")
     if body_timeout_s is not None and not body_timeout_s > 0:
-        raise ValueError(f"'body_timeout_s' must be a positive number (got {body_timeout_s!r})")
+        raise ArgumentError(f"'body_timeout_s' must be a positive number (got {body_timeout_s!r})")
 
     class HeaderTimeoutProtocol(HttpToolsProtocol):
         _header_timer: asyncio.TimerHandle | None = None
@@ -129,8 +130,6 @@ def header_timeout_protocol(header_timeout_s: float,
     return HeaderTimeoutProtocol
 
 
-_CANCEL = re.compile(r"^/runs/[^/]+/cancel$")
-_RUN = re.compile(r"^/runs/[^/]+$")
 _ELSEWHERE = json.dumps({"detail": "the control port serves only POST /runs/{id}/cancel, "
                                    "GET /runs/{id} and GET /health; the rest of the API is "
                                    "on the main port"}).encode()
@@ -148,9 +147,7 @@ class ControlOnly:
         if scope["type"] != "http":  # no lifespan here: the main server runs it
             return
         method, path = scope["method"], scope["path"]
-        allowed = ((method == "POST" and _CANCEL.match(path)) or
-                   (method == "GET" and (_RUN.match(path) or path == "/health")))
-        if not allowed:
+        if not is_control(method, path):
             await _answer(send, 404, _ELSEWHERE)
             return
         if getattr(self.app.state, "manager", None) is None:

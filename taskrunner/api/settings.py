@@ -20,6 +20,7 @@ from pydantic import ValidationError, field_validator, model_validator
 from pydantic_settings import BaseSettings, EnvSettingsSource, NoDecode, SettingsConfigDict
 
 from taskrunner import resources
+from taskrunner.errors import ArgumentError
 from taskrunner.folders import FolderPolicy
 
 __all__ = ["Settings"]
@@ -67,6 +68,10 @@ class Settings(BaseSettings):
             one more is answered 503 with ``Retry-After``, as is one that waited longer
             than its time limit (``plan_timeout_s``, ``check_timeout_s``).
         planner_idle_s: a planning process idle this long is closed (s).
+        max_requests: how many requests the server answers at once, cancels, run
+            states, ``/health`` and event streams not counted; one more is answered 503
+            with ``Retry-After`` at once, so a flood of clients cannot queue ahead of a
+            cancel.
         header_timeout_s: a connection must send its request headers within this (s).
         body_timeout_s: a request's body must be complete within this of its headers
             (s); past it the request is answered 408 and its connection closed.
@@ -108,6 +113,7 @@ class Settings(BaseSettings):
     max_planners: int = 2
     work_queue: int = 8
     planner_idle_s: float = 120.0
+    max_requests: int = 32
     header_timeout_s: float = 10.0
     body_timeout_s: float = 20.0
     stream_max_lag: int = 1000
@@ -162,7 +168,7 @@ class Settings(BaseSettings):
         return tuple(Path(p).resolve() for p in value)
 
     @field_validator("max_body_bytes", "check_memory_mb", "check_workers", "max_planners",
-                     "work_queue", "stream_max_lag", mode="before")
+                     "work_queue", "stream_max_lag", "max_requests", mode="before")
     @classmethod
     def _int_at_least(cls, value: Any, info: Any) -> Any:
         least = 0 if info.field_name == "work_queue" else 1  # a queue may be empty
@@ -261,7 +267,7 @@ class Settings(BaseSettings):
         try:
             return cls(**given)  # type: ignore[arg-type]
         except ValidationError as exc:
-            raise ValueError(_messages(exc)) from None
+            raise ArgumentError(_messages(exc)) from None
         finally:
             _ENVIRON.reset(token)
 
