@@ -49,6 +49,7 @@ from taskrunner.tasks.steps import (
     _DoComposite,
     _ListComposite,
 )
+from taskrunner.tasks.waits import wait_problems
 from taskrunner.textfile import file_problem, resolve_path
 from taskrunner.yamlfile import LineDict, LineList, line_of, load_yaml, load_yaml_text
 
@@ -200,6 +201,8 @@ class _Loader:
         result = self.load_file(path, text, Binding(overrides, None, None), (path,), root=True)
         objects = tuple(self.unique_objects())
         spec = None
+        if result is not None and not self.problems:
+            self.problems += wait_problems(result.steps)
         if result is not None and result.cell is not None and not self.problems:
             spec = TaskSpec(
                 name=result.task, description=result.description, path=path, cell=result.cell,
@@ -434,7 +437,8 @@ class _Loader:
                      f"{_shown(self.root_cell, file)!r}")
             return None
         return IncludeStep(path=target, task=result.task,
-                           parameters=result.values, steps=result.steps, name=include.name)
+                           parameters=result.values, steps=result.steps, name=include.name,
+                           wait_for=include.wait_for)
 
 
 def apply_defaults(step: Step, defaults: MotionOptions) -> Step:

@@ -53,7 +53,8 @@ __all__ = [
     "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "OutcomeTolerance",
     "ParallelStep",
     "PickStep", "PlaceStep", "RemoveObjectStep", "RepeatStep", "RetryStep", "STEP_TYPES",
-    "SequenceStep", "Step", "StepList", "StepNode", "TimeoutStep", "WaitStep", "walk_steps",
+    "SequenceStep", "Step", "StepList", "StepNode", "TimeoutStep", "WaitFor", "WaitStep",
+    "walk_steps",
 ]
 
 STEP_LIST_SCHEMA = {"type": "array", "items": {"$ref": "#/$defs/Step"}, "minItems": 1}
@@ -83,6 +84,14 @@ def _exactly_one(node: Node, *names: str) -> None:
 def _named_or_mapping(value: Any) -> str:
     """Tag of a 'name or pose' field: a mapping (or a built pose) is a pose."""
     return "<pose>" if isinstance(value, (dict, Node)) else "<name>"
+
+
+class WaitFor(Node):
+    """What a step of a ``parallel``'s branch waits for before it starts."""
+
+    step: str = Field(min_length=1)
+    """The ``name`` of a step of another branch of the same ``parallel``: this step
+    starts when that one has finished."""
 
 
 # ------------------------------------------------------------------------- base classes
@@ -133,6 +142,8 @@ class MotionStep(StepNode, MotionOptions):
 
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
 
 
 # ------------------------------------------------------------------------------- leaves
@@ -334,6 +345,8 @@ class AttachStep(StepNode):
     verb: ClassVar[str] = "attach"
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
     object: str
     """The object to attach."""
     arm: str | None = None
@@ -357,6 +370,8 @@ class DetachStep(StepNode):
     verb: ClassVar[str] = "detach"
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
     object: str
     """The object to detach."""
 
@@ -398,6 +413,8 @@ class WaitStep(StepNode):
     verb: ClassVar[str] = "wait"
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
     seconds: Number = Field(ge=0, le=MAX_SECONDS)
     """Duration (s), at most a day."""
 
@@ -448,6 +465,8 @@ class _DoComposite(StepNode):
 
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
     do: StepList
     """The steps, run as a sequence."""
 
@@ -492,6 +511,8 @@ class IncludeBody(Node):
     """Values for the included task's parameters."""
     name: str | None = None
     """Label for displays."""
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
 
 
 class IncludeStep(StepNode):
@@ -506,6 +527,8 @@ class IncludeStep(StepNode):
     """Every parameter of the included task with its bound value."""
     steps: StepList
     name: str | None = None
+    wait_for: WaitFor | None = None
+    """In a ``parallel``'s branch: start when a step of another branch has finished."""
 
     @property
     def children(self) -> tuple[StepNode, ...]:
