@@ -34,10 +34,12 @@ from taskrunner.api.dependencies import (
     get_work,
 )
 from taskrunner.api.requestwork import RequestWork, load_request
+from taskrunner.api.routers.viewer_goal import router as goal_router
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import CheckRequest, ErrorBody
 from taskrunner.api.settings import Settings
 from taskrunner.folders import FileKind
+from taskrunner.runtime.replay import scene_data
 from taskrunner.viewer import STATIC_DIR
 from taskrunner.viewer.describe import (
     MESH_TYPES,
@@ -50,6 +52,7 @@ from taskrunner.viewer.describe import (
 __all__ = ["router"]
 
 router = APIRouter(tags=["viewer"])
+router.include_router(goal_router)  # the page's goal and Execute (one router for the app)
 _ERRORS: dict[int | str, dict[str, Any]] = {401: {"model": ErrorBody}, 404: {"model": ErrorBody},
                                             422: {"model": ErrorBody}}
 _STATIC_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,100}$")
@@ -138,17 +141,18 @@ async def task_tree(body: TaskRequest, settings: Annotated[Settings, Depends(get
                     cells: Annotated[CellRegistry, Depends(get_cells)],
                     work: Annotated[RequestWork, Depends(get_work)],
                     checking: Annotated[Admission, Depends(get_checking)]) -> JSONResponse:
-    """The task compiled into its behaviour tree, each node with its file:line, and the
-    id of its cell. Nothing is planned or moved."""
+    """The task compiled into its behaviour tree, each node with its file:line, the id
+    of its cell, and the ``scene`` it starts in (joints, and the objects of the cell and
+    of the task's file with their shapes and poses). Nothing is planned or moved."""
     async with checking.slot():
         spec, _, _ = await run_in_threadpool(work.call, load_request,
                                              settings.folder_policy(), settings.tasks_dir,
                                              body.task, body.yaml, body.parameters)
-        tree, cell_id = await run_in_threadpool(_compile, spec, cells)
-    return JSONResponse({"task": spec.name, "cell": cell_id, "tree": tree})
+        tree, cell_id, scene = await run_in_threadpool(_compile, spec, cells)
+    return JSONResponse({"task": spec.name, "cell": cell_id, "tree": tree, "scene": scene})
 
 
-def _compile(spec: Any, cells: CellRegistry) -> tuple[dict[str, Any], str]:
+def _compile(spec: Any, cells: CellRegistry) -> tuple[dict[str, Any], str, dict[str, Any]]:
     from taskrunner.backends.mock import MockBackend
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.runtime.runner import Runner
@@ -158,7 +162,8 @@ def _compile(spec: Any, cells: CellRegistry) -> tuple[dict[str, Any], str]:
     names = cell.model.joint_names
     backend = MockBackend(names, dict(zip(names, cell.start_state())))
     runner = Runner(spec, cell, backend, InProcessPlanner())  # compiled, never run
-    return describe_tree(runner.tree), cells.id_of(session.key)
+    scene = scene_data(runner.scene.snapshot())
+    return describe_tree(runner.tree), cells.id_of(session.key), scene
 
 
 @router.post("/viewer/tasks/preview", dependencies=[Depends(require_read)], responses=_ERRORS)

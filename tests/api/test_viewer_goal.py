@@ -1,0 +1,123 @@
+"""The page's interactive goal and Execute: a dragged tool frame solved by IK on the
+server (unreachable and colliding goals answered with the reason), hostile bodies
+refused with the field named, Execute moving the arm on the backend as a run (token
+needed, a stale plan refused), and the Task view's objects before planning."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from apitest import NO_TOKEN, wait_until_done
+
+CELL = "/viewer/cells/servo_arm_table"
+
+
+def _home(client) -> dict[str, float]:
+    cell = client.get(CELL).json()
+    return next(g for g in cell["groups"] if g["name"] == "arm")["poses"]["home"]
+
+
+def test_a_dragged_tool_frame_is_solved_and_its_tip_lands_on_the_target(client):
+    home = _home(client)
+    at_home = client.post(CELL + "/goal", json={"group": "arm", "joints": home}).json()
+    assert at_home["ok"] and at_home["link"] == "gripper_base_1"
+    target = [at_home["xyz"][0] + 0.02, at_home["xyz"][1] + 0.02, at_home["xyz"][2] - 0.05]
+    answer = client.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": target, "quat": at_home["quat"]}, "seed": home})
+    body = answer.json()
+    assert answer.status_code == 200, body
+    assert body["reachable"] and body["ok"] and body["reason"] is None
+    assert math.dist(body["xyz"], target) < 1e-4  # the 5-DOF arm aims its position
+    assert body["joints"] != home and set(body["joints"]) == set(home)
+    # the answer's joints put the tip there: checked again as a joint goal
+    again = client.post(CELL + "/goal", json={"group": "arm", "joints": body["joints"]}).json()
+    assert math.dist(again["xyz"], target) < 1e-4
+
+
+def test_an_unreachable_or_colliding_goal_says_why(client):
+    home = _home(client)
+    far = client.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": [0.2, -0.17, 0.0], "quat": [0, 0, 0, 1]},
+        "seed": home}).json()
+    assert not far["reachable"] and not far["ok"]
+    assert "no IK solution for group 'arm'" in far["reason"]
+    assert far["joints"] == pytest.approx(home)  # the seed's joints, unchanged
+    low = client.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": [0.2088, -0.1737, 0.8059], "quat": [0, 0, 0, 1]},
+        "seed": home}).json()
+    assert low["reachable"] and not low["collision_free"] and not low["ok"]
+    assert "in collision" in low["reason"] and "table" in low["reason"]
+
+
+@pytest.mark.parametrize(("body", "expected"), [
+    ({"group": "arm", "pose": {"xyz": [0, 0, 1], "quat": [0, 0, 0, 1]}, "joints": {}},
+     "exactly one goal"),
+    ({"group": "arm"}, "exactly one goal"),
+    ({"group": "wing", "joints": {"Revolute 1": 0}}, "wing"),
+    ({"group": "arm", "joints": {"Revolute 9": 0}}, "Revolute 9"),
+    ({"group": "arm", "joints": {"Revolute 6": 0}}, "not a joint of group 'arm'"),
+    ({"group": "arm", "pose": {"xyz": [0, 0, 1e9], "quat": [0, 0, 0, 1]}}, "xyz"),
+    ({"group": "arm", "pose": {"xyz": [0, 0, 1], "quat": [0, 0, 0, 0]}}, "quat"),
+    ({"group": "arm", "pose": {"xyz": [0, 1], "quat": [0, 0, 0, 1]}}, "xyz"),
+    ({"group": "arm", "pose": {"xyz": [0, 0, 1], "quat": [0, 0, 0, 1], "link": "nowhere"}},
+     "nowhere"),
+    ({"group": "arm", "joints": {"Revolute 1": "0.1"}}, "Revolute 1"),
+    ({"group": "arm", "joints": {"Revolute 1": 0}, "extra": 1}, "extra"),
+])
+def test_a_hostile_goal_is_refused_naming_the_field(client, body, expected):
+    answer = client.post(CELL + "/goal", json=body)
+    assert answer.status_code == 422, answer.text
+    assert expected in answer.text
+
+
+def test_a_goal_with_nan_is_refused(client):
+    answer = client.post(CELL + "/goal", content=b'{"group": "arm", "joints": '
+                         b'{"Revolute 1": NaN}}', headers={"content-type": "application/json"})
+    assert answer.status_code == 422
+
+
+def _goal_off_home(client, dz: float) -> dict[str, float]:
+    home = _home(client)
+    at_home = client.post(CELL + "/goal", json={"group": "arm", "joints": home}).json()
+    target = [at_home["xyz"][0] + 0.02, at_home["xyz"][1] + 0.02, at_home["xyz"][2] + dz]
+    return client.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": target, "quat": at_home["quat"]}, "seed": home}).json()
+
+
+def test_execute_moves_the_arm_on_the_backend_as_a_run(client):
+    goal = _goal_off_home(client, -0.05)
+    assert goal["ok"], goal
+    body = {"group": "arm", "joints": goal["joints"], "backend": "mock",
+            "velocity_scaling": 0.5}
+    assert client.post(CELL + "/execute", json=body, headers=NO_TOKEN).status_code == 401
+    before = client.get("/cells/servo_arm_table/state?backend=mock").json()["joints"]
+    # a plan made from elsewhere than where the arm is: refused, nothing moves
+    stale = {**body, "start": {**before, "Revolute 1": before["Revolute 1"] + 0.3}}
+    refused = client.post(CELL + "/execute", json=stale)
+    assert refused.status_code == 409 and "plan again" in refused.text
+    answer = client.post(CELL + "/execute", json={**body, "start": before})
+    assert answer.status_code == 202, answer.text
+    run = wait_until_done(client, answer.json()["run_id"])
+    assert run["status"] == "succeeded" and run["cell"] == "servo_arm_table"
+    after = client.get("/cells/servo_arm_table/state?backend=mock").json()["joints"]
+    assert max(abs(after[n] - before[n]) for n in goal["joints"]) > 0.05
+    assert all(after[n] == pytest.approx(v, abs=1e-3) for n, v in goal["joints"].items())
+
+
+def test_execute_refuses_a_goal_in_collision(client):
+    low = _goal_off_home(client, -0.16)
+    assert low["reachable"] and not low["collision_free"], low
+    answer = client.post(CELL + "/execute", json={"group": "arm", "backend": "mock",
+                                                  "joints": low["joints"]})
+    assert answer.status_code == 422, answer.text
+    assert "cannot be planned to" in answer.text and "table" in answer.text
+
+
+def test_the_task_tree_carries_the_tasks_objects_before_planning(client):
+    answer = client.post("/viewer/tasks/tree", json={"task": "pick_place"}).json()
+    objects = {o["name"]: o for o in answer["scene"]["objects"]}
+    assert objects["cube"]["shape"] == {"type": "box", "size": [0.025, 0.025, 0.025]}
+    assert objects["cube"]["pose"]["xyz"] == pytest.approx([0.19, 0.04, 0.7625])
+    assert "table" in objects  # the cell's own objects too
+    assert answer["scene"]["joints"]
