@@ -5,10 +5,13 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
 
     TaskrunnerError
     ├── InputError                  bad input from a file or a caller; names the file:line
+    │   ├── ArgumentError           a Python caller's argument out of range or of the wrong
+    │   │                           shape (also a ValueError, as pydantic validators need)
     │   ├── RobotDescriptionError   URDF / xacro / SRDF / MoveIt YAML / robot manifest / cell
     │   │   └── MissingMeshError    a mesh file (robot collision or scene object) that does not exist
     │   ├── YamlError               a YAML file that does not parse, or repeats a key
-    │   └── TaskSpecError           a task file that is invalid (unknown verb, field, name …)
+    │   ├── TaskSpecError           a task file that is invalid (unknown verb, field, name …)
+    │   └── PathNotAllowedError     a file outside the folders a server allows (folders.py)
     ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
     ├── SceneError                  an invalid scene edit (duplicate object, bad shape)
     ├── PlanningError               no motion could be produced
@@ -18,11 +21,25 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     │   ├── GoalInCollisionError    every goal state collides (names the pair)
     │   ├── PlanningTimeoutError    no path found within the planning time
     │   ├── PlanningCancelledError  the caller cancelled the request
-    │   └── ScheduleConflictError   a parallel branch's motion meets another arm; waiting cannot help
-    └── BackendError                an execution backend failed or refused a command
-        ├── TrajectoryRejectedError a trajectory refused before anything moved (names the joint)
-        ├── BackendBusyError        joints already moving under another trajectory
-        └── ExecutionCancelledError the motion was stopped on request
+    │   ├── NoDirectPathError       a direct-only request whose straight lines are all blocked
+    │   ├── ScheduleConflictError   a parallel branch's motion meets another arm; waiting cannot help
+    │   └── WorkerDiedError         the planning worker process ended (planning/worker.py)
+    ├── BackendError                an execution backend failed or refused a command
+    │   ├── TrajectoryRejectedError a trajectory refused before anything moved (names the joint)
+    │   ├── BackendBusyError        joints already moving under another trajectory
+    │   ├── ExecutionCancelledError the motion was stopped on request
+    │   └── BusFaultError           a servo bus fault: status flags, stall, or link (feetech/)
+    └── ServiceError                the REST API refuses a request (HTTP code: api/handlers.py)
+        ├── NotFoundError           no such run or cell (404; also a LookupError)
+        │   ├── RunNotFoundError    (api/runs.py)
+        │   └── CellNotFoundError   (api/cells.py)
+        ├── ConflictError           the request conflicts with what runs now (409)
+        │   ├── ArmBusyError        a run in flight moves the same joints (api/runs.py)
+        │   ├── RunNotFinishedError (api/runs.py)
+        │   └── PoseConflictError   (api/cells.py)
+        ├── UnavailableError        the server is stopping (503)
+        │   └── ServerBusyError     its queue for a kind of work is full (api/admission.py)
+        └── WorkLimitError          a request's work passed a time or memory limit (api/requestwork.py)
 
 Messages follow the form ``'<field>' must be <expectation> (got <value>)`` where it fits,
 and every error raised from a file starts with ``path:line:``.
@@ -35,13 +52,17 @@ from collections.abc import Iterable
 from pathlib import Path
 
 __all__ = [
+    "ArgumentError",
     "BackendBusyError",
     "BackendError",
+    "BusFaultError",
+    "ConflictError",
     "ExecutionCancelledError",
     "GoalInCollisionError",
     "IkFailedError",
     "InvalidStateError",
     "NoDirectPathError",
+    "NotFoundError",
     "PlanningCancelledError",
     "PlanningTimeoutError",
     "StartInCollisionError",
@@ -53,7 +74,9 @@ __all__ = [
     "RobotDescriptionError",
     "ScheduleConflictError",
     "SceneError",
+    "ServiceError",
     "TaskrunnerError",
+    "UnavailableError",
     "UnknownNameError",
     "YamlError",
     "did_you_mean",
@@ -107,6 +130,13 @@ class InputError(TaskrunnerError):
     def _format(self) -> str:
         loc = self.location
         return f"{loc}: {self.reason}" if loc else self.reason
+
+
+class ArgumentError(InputError, ValueError):
+    """A Python caller's argument (an option, a state, a name) that is out of its range or
+    of the wrong shape. Also a :class:`ValueError`: pydantic validators that call our
+    checks turn it into a validation error naming the field, and callers that caught
+    ``ValueError`` before it existed still catch it."""
 
 
 class RobotDescriptionError(InputError):
@@ -233,3 +263,35 @@ class BackendBusyError(BackendError):
 
 class ExecutionCancelledError(BackendError):
     """The motion was stopped on request, where it was."""
+
+
+class BusFaultError(BackendError):
+    """A servo bus failed: a servo's status flags (overload, overheat …), a stall, or the
+    link (no reply, bad checksum, wrong ID, adapter unplugged). ``kind`` names the fault
+    (``taskrunner.backends.feetech.FaultKind``), ``servo_id`` the servo (None: the bus)."""
+
+    def __init__(self, message: str, kind: str = "link", servo_id: int | None = None):
+        self.kind = kind
+        self.servo_id = servo_id
+        super().__init__(message)
+
+    def __reduce__(self):  # type: ignore[no-untyped-def]
+        return (type(self), (self.args[0], self.kind, self.servo_id))
+
+
+class ServiceError(TaskrunnerError):
+    """The REST API refuses a request; :mod:`taskrunner.api.handlers` maps each subclass
+    to its HTTP code in one table."""
+
+
+class NotFoundError(ServiceError, LookupError):
+    """No run, cell or other resource of that id (HTTP 404)."""
+
+
+class ConflictError(ServiceError, RuntimeError):
+    """The request conflicts with the server's state: an arm in use, a run that has ended
+    (HTTP 409)."""
+
+
+class UnavailableError(ServiceError):
+    """The server cannot take the request now: it is stopping, or full (HTTP 503)."""

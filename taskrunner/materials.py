@@ -14,6 +14,7 @@ from typing import Annotated, Any
 
 from pydantic import AfterValidator, BeforeValidator, Field, WithJsonSchema
 
+from taskrunner.errors import ArgumentError
 from taskrunner.validation import NUMBER, check_number
 
 __all__ = ["Density", "Friction", "Kilograms", "Material", "check_material", "material_of"]
@@ -27,7 +28,7 @@ def _bounded(low: float, high: float, unit: str, low_open: bool) -> Any:
     def check(value: float) -> float:
         problem = check_number(value, low, high, unit, low_open)
         if problem is not None:
-            raise ValueError(problem)
+            raise ArgumentError(problem)
         return value
     return AfterValidator(check)
 
@@ -80,5 +81,5 @@ def material_of(spec: Any) -> Material:
 def check_material(spec: Any) -> None:
     """Raise ``ValueError`` if an object spec gives both ``mass`` and ``density``."""
     if getattr(spec, "mass", None) is not None and getattr(spec, "density", None) is not None:
-        raise ValueError("give 'mass' or 'density', not both (the mass of a shape of a "
+        raise ArgumentError("give 'mass' or 'density', not both (the mass of a shape of a "
                          "given density follows from its volume)")

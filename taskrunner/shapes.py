@@ -9,13 +9,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from taskrunner.errors import ArgumentError
+
 __all__ = ["Box", "Cylinder", "Mesh", "Shape", "Sphere"]
 
 
 def _positive(name: str, value: float) -> float:
     value = float(value)
     if not value > 0.0:
-        raise ValueError(f"'{name}' must be > 0 (got {value})")
+        raise ArgumentError(f"'{name}' must be > 0 (got {value})")
     return value
 
 
@@ -28,7 +30,7 @@ class Box:
     def __post_init__(self) -> None:
         size = tuple(self.size)
         if len(size) != 3:
-            raise ValueError(f"'size' must have 3 values x, y, z (got {len(size)})")
+            raise ArgumentError(f"'size' must have 3 values x, y, z (got {len(size)})")
         object.__setattr__(self, "size", tuple(_positive("size", v) for v in size))
 
 
@@ -65,7 +67,7 @@ class Mesh:
         object.__setattr__(self, "path", Path(self.path))
         scale = tuple(self.scale)
         if len(scale) != 3:
-            raise ValueError(f"'scale' must have 3 values (got {len(scale)})")
+            raise ArgumentError(f"'scale' must have 3 values (got {len(scale)})")
         object.__setattr__(self, "scale", tuple(_positive("scale", v) for v in scale))
 
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import InputError
+from taskrunner.errors import ArgumentError, InputError
 
 __all__ = ["JointState", "JointPath", "JointTrajectory", "Pose", "pose_from_xyz_rpy"]
 
@@ -21,7 +21,7 @@ __all__ = ["JointState", "JointPath", "JointTrajectory", "Pose", "pose_from_xyz_
 def _as_readonly(values: object, ndim: int, what: str) -> np.ndarray:
     array = np.array(values, dtype=float)
     if array.ndim != ndim:
-        raise ValueError(f"'{what}' must have {ndim} dimension(s) (got shape {array.shape})")
+        raise ArgumentError(f"'{what}' must have {ndim} dimension(s) (got shape {array.shape})")
     array.setflags(write=False)
     return array
 
@@ -37,7 +37,7 @@ class JointState:
         object.__setattr__(self, "names", tuple(self.names))
         object.__setattr__(self, "positions", _as_readonly(self.positions, 1, "positions"))
         if len(self.names) != len(self.positions):
-            raise ValueError(
+            raise ArgumentError(
                 f"'positions' must have one value per joint ({len(self.names)}) "
                 f"(got {len(self.positions)})"
             )
@@ -63,7 +63,7 @@ class JointPath:
         object.__setattr__(self, "names", tuple(self.names))
         object.__setattr__(self, "waypoints", _as_readonly(self.waypoints, 2, "waypoints"))
         if self.waypoints.shape[1] != len(self.names):
-            raise ValueError(
+            raise ArgumentError(
                 f"'waypoints' must have {len(self.names)} columns (got {self.waypoints.shape[1]})"
             )
 
@@ -87,13 +87,13 @@ class JointTrajectory:
         for attr in ("positions", "velocities", "accelerations"):
             array = _as_readonly(getattr(self, attr), 2, attr)
             if array.shape != (len(self.times), len(self.names)):
-                raise ValueError(
+                raise ArgumentError(
                     f"'{attr}' must have shape {(len(self.times), len(self.names))} "
                     f"(got {array.shape})"
                 )
             object.__setattr__(self, attr, array)
         if len(self.times) and np.any(np.diff(self.times) <= 0):
-            raise ValueError("'times' must be strictly increasing")
+            raise ArgumentError("'times' must be strictly increasing")
 
     @property
     def duration(self) -> float:
@@ -114,12 +114,12 @@ class Pose:
         xyz = tuple(float(v) for v in self.xyz)
         quat = np.array(self.quat, dtype=float)
         if len(xyz) != 3:
-            raise ValueError(f"'xyz' must have 3 values (got {len(xyz)})")
+            raise ArgumentError(f"'xyz' must have 3 values (got {len(xyz)})")
         if quat.shape != (4,):
-            raise ValueError(f"'quat' must have 4 values x, y, z, w (got {len(quat)})")
+            raise ArgumentError(f"'quat' must have 4 values x, y, z, w (got {len(quat)})")
         norm = float(np.linalg.norm(quat))
         if not np.isfinite(norm) or norm < 1e-9:
-            raise ValueError(f"'quat' must be a non-zero quaternion (got {tuple(quat)})")
+            raise ArgumentError(f"'quat' must be a non-zero quaternion (got {tuple(quat)})")
         quat = quat / norm
         object.__setattr__(self, "xyz", xyz)
         object.__setattr__(self, "quat", tuple(float(v) for v in quat))

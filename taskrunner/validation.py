@@ -15,7 +15,7 @@ from typing import Annotated, Any, TypeVar
 
 from pydantic import AfterValidator, BaseModel, Field, Strict, ValidationError
 
-from taskrunner.errors import YamlError
+from taskrunner.errors import ArgumentError, YamlError
 from taskrunner.yamlfile import line_of
 
 __all__ = ["MAX_METRES", "MAX_RADIANS", "NUMBER", "Integer", "Metres", "NonNegativeMetres",
@@ -52,7 +52,7 @@ def _bounded(low: float, high: float, unit: str, low_open: bool = False) -> Call
     def check(value: float) -> float:
         problem = check_number(value, low, high, unit, low_open)
         if problem is not None:
-            raise ValueError(problem)
+            raise ArgumentError(problem)
         return value
     return check
 

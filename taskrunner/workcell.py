@@ -33,7 +33,7 @@ import numpy as np
 
 from taskrunner.backends.base import Backend, ExecutionHandle
 from taskrunner.builder import Task
-from taskrunner.errors import InputError
+from taskrunner.errors import ArgumentError, InputError
 from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner, relative_pose
 from taskrunner.planning.cartesian_limits import time_cartesian_path
 from taskrunner.planning.planner import MotionPlanner
@@ -257,7 +257,7 @@ class Workcell:
             BackendError: the port or URL does not answer as the firmware does.
         """
         if kind not in BACKENDS:
-            raise ValueError(f"'kind' must be one of {', '.join(BACKENDS)} (got {kind!r})")
+            raise ArgumentError(f"'kind' must be one of {', '.join(BACKENDS)} (got {kind!r})")
         backend = make_backend(kind, self._cell, speed, port, url, firmware_speedup, home)
         self.disconnect()
         self._backend, self._backend_kind = backend, kind
@@ -463,7 +463,7 @@ class Workcell:
             StartInCollisionError: the start collides (with ``avoid_collisions``).
         """
         if (waypoints is None) == (by is None):
-            raise ValueError("'plan_cartesian' needs one of 'waypoints' or 'by'")
+            raise ArgumentError("'plan_cartesian' needs one of 'waypoints' or 'by'")
         options = CartesianOptions(eef_step=eef_step, jump_threshold=jump_threshold,
                                    avoid_collisions=avoid_collisions)
         timing = TimingOptions(velocity_scaling=velocity_scaling,
@@ -473,7 +473,7 @@ class Workcell:
         q = self._state_vector(start if start is not None else {})
         frame_link = link or self.model.group(group).tip_link
         if frame_link is None:
-            raise ValueError(f"group {group!r} has no tip link: give 'link'")
+            raise ArgumentError(f"group {group!r} has no tip link: give 'link'")
         if by is not None:
             target = relative_pose(self._scene, frame_link, _xyz("by", by), frame=frame, start=q)
             targets: list[Pose] = [target]
@@ -601,11 +601,11 @@ class Workcell:
     def _spec(self, task: TaskLike, parameters: Mapping[str, object] | None) -> TaskSpec:
         if isinstance(task, Task):
             if parameters:
-                raise ValueError("'parameters' are for task files; a Task built in Python "
+                raise ArgumentError("'parameters' are for task files; a Task built in Python "
                                  "takes its values directly")
             return task.spec(self._cell)
         if not isinstance(task, (str, os.PathLike)):
-            raise ValueError(f"'task' must be a task file, an example's name or a Task "
+            raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
                              f"(got {task!r})")
         spec = load_task(resolve_task(task), parameters)
         if self.path is None or spec.cell.resolve() != self.path.resolve():
@@ -625,7 +625,7 @@ class Workcell:
                                           ("position", position)) if value is not None]
         if len(given) != 1:
             got = f" (got {' and '.join(repr(g) for g in given)})" if given else ""
-            raise ValueError(f"'plan' needs exactly one of 'to', 'joints', 'pose' or "
+            raise ArgumentError(f"'plan' needs exactly one of 'to', 'joints', 'pose' or "
                              f"'position'{got}")
         if to is not None:
             return NamedGoal(to)
@@ -649,7 +649,7 @@ def _xyz(name: str, values: Position) -> tuple[float, float, float]:
     try:
         x, y, z = (float(v) for v in values)
     except (TypeError, ValueError):
-        raise ValueError(f"'{name}' must be 3 numbers x, y, z in metres (got {values!r})") from None
+        raise ArgumentError(f"'{name}' must be 3 numbers x, y, z in metres (got {values!r})") from None
     return (x, y, z)
 
 
@@ -759,10 +759,10 @@ def _workcell_of(task: TaskLike, parameters: Mapping[str, object] | None) -> Wor
     """A new workcell for the cell ``task`` is written for."""
     if isinstance(task, Task):
         if task.cell is None:
-            raise ValueError(f"task {task.name!r} has no 'cell': build it with "
+            raise ArgumentError(f"task {task.name!r} has no 'cell': build it with "
                              "Task(..., cell=...) or run it with Workcell.run_task")
         return load_workcell(task.cell)
     if not isinstance(task, (str, os.PathLike)):
-        raise ValueError(f"'task' must be a task file, an example's name or a Task "
+        raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
                          f"(got {task!r})")
     return load_workcell(load_task(resolve_task(task), parameters).cell)

@@ -36,7 +36,7 @@ from ruamel.yaml import events as ev
 from ruamel.yaml.error import MarkedYAMLError, YAMLError
 from ruamel.yaml.nodes import ScalarNode
 
-from taskrunner.errors import YamlError
+from taskrunner.errors import ArgumentError, YamlError
 from taskrunner.textfile import DEFAULT_MAX_BYTES, read_text_file
 
 __all__ = ["DEFAULT_LIMITS", "LineDict", "LineList", "YamlLimits", "line_of", "load_yaml",
@@ -64,7 +64,7 @@ class YamlLimits:
         for name in ("max_bytes", "max_depth", "max_nodes", "max_alias_nodes"):
             value = getattr(self, name)
             if not isinstance(value, int) or value < 1:
-                raise ValueError(f"{name!r} must be a positive integer (got {value!r})")
+                raise ArgumentError(f"{name!r} must be a positive integer (got {value!r})")
 
 
 DEFAULT_LIMITS = YamlLimits()

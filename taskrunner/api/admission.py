@@ -26,14 +26,14 @@ from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
 from typing import Any, TypeVar
 
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import ArgumentError, UnavailableError
 
 __all__ = ["Admission", "ControlExecutor", "ServerBusyError"]
 
 T = TypeVar("T")
 
 
-class ServerBusyError(TaskrunnerError):
+class ServerBusyError(UnavailableError):
     """The server runs as much of a kind of work as it allows and its queue is full (HTTP
     503, with ``Retry-After``: ``retry_after_s``)."""
 
@@ -58,11 +58,11 @@ class Admission:
     def __init__(self, what: str, capacity: int, queue: int, wait_s: float,
                  setting: str) -> None:
         if capacity < 1:
-            raise ValueError(f"'capacity' must be >= 1 (got {capacity})")
+            raise ArgumentError(f"'capacity' must be >= 1 (got {capacity})")
         if queue < 0:
-            raise ValueError(f"'queue' must be >= 0 (got {queue})")
+            raise ArgumentError(f"'queue' must be >= 0 (got {queue})")
         if not (math.isfinite(wait_s) and wait_s > 0):
-            raise ValueError(f"'wait_s' must be a positive number of seconds (got {wait_s})")
+            raise ArgumentError(f"'wait_s' must be a positive number of seconds (got {wait_s})")
         self.what = what
         self.capacity = capacity
         self.queue = queue

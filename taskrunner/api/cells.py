@@ -19,7 +19,7 @@ from typing import Any
 
 from taskrunner.backends.base import Backend
 from taskrunner.backends.sim import SimBackend, SimOptions
-from taskrunner.errors import InputError
+from taskrunner.errors import ArgumentError, ConflictError, InputError, NotFoundError
 from taskrunner.folders import FileKind, FolderPolicy
 from taskrunner.resources import cell_files
 from taskrunner.robot.cell import Cell, load_cell
@@ -34,7 +34,7 @@ log = logging.getLogger(__name__)
 BACKENDS = ("sim", "mock", "serial", "http", "mujoco")
 
 
-class CellNotFoundError(LookupError):
+class CellNotFoundError(NotFoundError):
     """No cell file of that id in the cells folder."""
 
     def __init__(self, cell_id: str, known: list[str]) -> None:
@@ -44,7 +44,7 @@ class CellNotFoundError(LookupError):
         super().__init__(f"unknown cell {cell_id!r}; known: {shown}")
 
 
-class PoseConflictError(RuntimeError):
+class PoseConflictError(ConflictError):
     """A pose cannot be taught now: the name belongs to the robot files, or runs move the
     cell (HTTP 409)."""
 
@@ -84,7 +84,7 @@ class CellSession:
             BackendError: the servos' port or URL does not answer as the firmware does.
         """
         if kind not in BACKENDS:
-            raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
+            raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
         with self.lock:
             if kind not in self.backends:
                 if kind == "http" and not self.servo_url:

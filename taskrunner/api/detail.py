@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any
 from pydantic import TypeAdapter
 
 from taskrunner.api.schemas import EventOut, RunDetail, RunSummary
+from taskrunner.errors import ArgumentError
 from taskrunner.runtime.records import RunRecord
 
 if TYPE_CHECKING:
@@ -96,9 +97,9 @@ def detail_body(record: RunRecord, current: tuple[str, str | None] | None = None
 
 def _check_page(since: int, limit: int) -> None:
     if since < 0:
-        raise ValueError(f"'since' must be >= 0 (got {since})")
+        raise ArgumentError(f"'since' must be >= 0 (got {since})")
     if not 1 <= limit <= MAX_LIMIT:
-        raise ValueError(f"'limit' must be 1..{MAX_LIMIT} (got {limit})")
+        raise ArgumentError(f"'limit' must be 1..{MAX_LIMIT} (got {limit})")
 
 
 class RunDetailCache:
@@ -118,7 +119,7 @@ class RunDetailCache:
     def __init__(self, live: LiveRun, tree_period_s: float = 0.05,
                  clock: Callable[[], float] = time.monotonic) -> None:
         if tree_period_s < 0:
-            raise ValueError(f"'tree_period_s' must be >= 0 (got {tree_period_s})")
+            raise ArgumentError(f"'tree_period_s' must be >= 0 (got {tree_period_s})")
         self.live = live
         self.tree_period_s = tree_period_s
         self._clock = clock
@@ -228,7 +229,7 @@ class StoredDetails:
 
     def __init__(self, store: RunStore, size: int = 64) -> None:
         if size < 1:
-            raise ValueError(f"'size' must be >= 1 (got {size})")
+            raise ArgumentError(f"'size' must be >= 1 (got {size})")
         self.store = store
         self.size = size
         self._lock = threading.Lock()

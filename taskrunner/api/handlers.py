@@ -1,4 +1,5 @@
-"""Errors to HTTP answers, in one place, and the request-body size limit.
+"""Errors to HTTP answers, in one place (:data:`ERROR_CODES`), and the request-body size
+limit.
 
 ======================  ====  ==========================================================
 error                   code  body
@@ -7,12 +8,12 @@ InputError (TaskSpec,   422   ``detail`` (the message), ``location`` (file:line)
 YamlError, robot …)           a task, ``problems`` (each with its file:line)
 UnknownNameError        422   ``detail`` names the unknown name and the known ones
 PlanningError           422   ``detail``: why no motion could be produced
-ArmBusyError            409   ``detail`` names the run holding the arm
-RunNotFinishedError     409   cancelling a run that has ended
-RunNotFoundError        404
-CellNotFoundError       404
+NotFoundError           404   no run or cell of that id
+ConflictError           409   an arm in use (names the run holding it), a run that has ended
+UnavailableError        503   the server is stopping
 ServerBusyError         503   ``detail``: what is running and waiting; ``Retry-After``
 other TaskrunnerError   422
+ValueError              422   pydantic's ValidationError, raised building our models
 body too large          413
 invalid request body    422   FastAPI's ``detail`` list of errors
 ======================  ====  ==========================================================
@@ -35,11 +36,32 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 
 from taskrunner.api.admission import ServerBusyError
-from taskrunner.api.cells import CellNotFoundError, PoseConflictError
-from taskrunner.api.runs import ArmBusyError, RunNotFinishedError, RunNotFoundError
-from taskrunner.errors import InputError, PlanningError, TaskrunnerError, UnknownNameError
+from taskrunner.errors import (
+    ConflictError,
+    InputError,
+    NotFoundError,
+    PlanningError,
+    TaskrunnerError,
+    UnavailableError,
+    UnknownNameError,
+)
 
-__all__ = ["BodyLimit", "MAX_DETAIL_CHARS", "MAX_PROBLEMS", "add_error_handlers", "problems_of"]
+__all__ = ["BodyLimit", "ERROR_CODES", "MAX_DETAIL_CHARS", "MAX_PROBLEMS", "add_error_handlers",
+           "problems_of"]
+
+ERROR_CODES: dict[type[Exception], int] = {
+    InputError: 422,
+    UnknownNameError: 422,
+    PlanningError: 422,
+    NotFoundError: 404,
+    ConflictError: 409,
+    UnavailableError: 503,
+    TaskrunnerError: 422,
+    ValueError: 422,
+}
+"""The HTTP code of each error class; an error takes the code of the nearest class of its
+MRO in this table (a :class:`~taskrunner.api.admission.ServerBusyError` is an
+``UnavailableError``: 503)."""
 
 MAX_PROBLEMS = 100
 """Most problems (or request errors) one error answer lists; one more entry says how many
@@ -83,43 +105,24 @@ def _answer(code: int, detail: Any, **extra: Any) -> JSONResponse:
     return JSONResponse(_encodable({"detail": detail, **extra}), status_code=code)
 
 
-async def _input_error(request: Request, exc: Exception) -> JSONResponse:
-    assert isinstance(exc, InputError)
-    return _answer(422, str(exc), location=exc.location or None, problems=problems_of(exc))
+def code_of(exc: BaseException) -> int:
+    """The HTTP code of ``exc`` in :data:`ERROR_CODES` (500 for a class not in it)."""
+    for cls in type(exc).__mro__:
+        if cls in ERROR_CODES:
+            return ERROR_CODES[cls]
+    return 500
 
 
-async def _unknown_name(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(422, str(exc))
-
-
-async def _planning_error(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(422, f"planning failed: {exc}")
-
-
-async def _taskrunner_error(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(422, str(exc))
-
-
-async def _arm_busy(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(409, str(exc))
-
-
-async def _not_finished(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(409, str(exc))
-
-
-async def _not_found(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(404, str(exc))
-
-
-async def _server_busy(request: Request, exc: Exception) -> JSONResponse:
-    assert isinstance(exc, ServerBusyError)
-    return JSONResponse({"detail": str(exc)}, status_code=503,
-                        headers={"Retry-After": str(max(1, round(exc.retry_after_s)))})
-
-
-async def _value_error(request: Request, exc: Exception) -> JSONResponse:
-    return _answer(422, str(exc))
+async def _error_answer(request: Request, exc: Exception) -> JSONResponse:
+    code = code_of(exc)
+    if isinstance(exc, InputError):
+        return _answer(code, str(exc), location=exc.location or None, problems=problems_of(exc))
+    if isinstance(exc, PlanningError):
+        return _answer(code, f"planning failed: {exc}")
+    if isinstance(exc, ServerBusyError):
+        return JSONResponse({"detail": str(exc)}, status_code=code,
+                            headers={"Retry-After": str(max(1, round(exc.retry_after_s)))})
+    return _answer(code, str(exc))
 
 
 async def _invalid_request(request: Request, exc: Exception) -> JSONResponse:
@@ -169,18 +172,10 @@ def _echo(value: Any) -> Any:
 
 
 def add_error_handlers(app: FastAPI) -> None:
-    """One handler per domain error class (the most specific class wins)."""
-    app.add_exception_handler(InputError, _input_error)
-    app.add_exception_handler(UnknownNameError, _unknown_name)
-    app.add_exception_handler(PlanningError, _planning_error)
-    app.add_exception_handler(TaskrunnerError, _taskrunner_error)
-    app.add_exception_handler(ArmBusyError, _arm_busy)
-    app.add_exception_handler(RunNotFinishedError, _not_finished)
-    app.add_exception_handler(RunNotFoundError, _not_found)
-    app.add_exception_handler(CellNotFoundError, _not_found)
-    app.add_exception_handler(PoseConflictError, _not_finished)
-    app.add_exception_handler(ServerBusyError, _server_busy)
-    app.add_exception_handler(ValueError, _value_error)
+    """The answer of :data:`ERROR_CODES` for each error class in it (Starlette picks the
+    handler of the nearest class of the error's MRO, and :func:`code_of` the code)."""
+    for cls in ERROR_CODES:
+        app.add_exception_handler(cls, _error_answer)
     app.add_exception_handler(RequestValidationError, _invalid_request)
 
 

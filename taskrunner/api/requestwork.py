@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import ServiceError
 from taskrunner.folders import FolderPolicy
 from taskrunner.taught import TaughtPoses
 
@@ -36,7 +36,7 @@ log = logging.getLogger(__name__)
 INLINE_NAME = "inline.yaml"
 
 
-class WorkLimitError(TaskrunnerError):
+class WorkLimitError(ServiceError):
     """A request's work went past the server's time or memory limit (HTTP 422)."""
 
 

@@ -22,7 +22,13 @@ from typing import Any
 from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
 from taskrunner.api.detail import DEFAULT_LIMIT, RunDetailCache, RunListCache, StoredDetails
 from taskrunner.api.store import RunStore, StoreJournal
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import (
+    ArgumentError,
+    ConflictError,
+    NotFoundError,
+    TaskrunnerError,
+    UnavailableError,
+)
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
@@ -35,7 +41,7 @@ __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunN
 _STOPPED = "the server stopped while the run was in flight"
 
 
-class RunNotFoundError(LookupError):
+class RunNotFoundError(NotFoundError):
     """No run of that id, in flight or recorded."""
 
     def __init__(self, run_id: str) -> None:
@@ -43,11 +49,11 @@ class RunNotFoundError(LookupError):
         super().__init__(f"unknown run {run_id!r}")
 
 
-class RunNotFinishedError(RuntimeError):
+class RunNotFinishedError(ConflictError):
     """Cancelling a run that has already ended."""
 
 
-class ArmBusyError(RuntimeError):
+class ArmBusyError(ConflictError):
     """A run would move joints that a run in flight moves."""
 
     def __init__(self, holder: str, joints: list[str]) -> None:
@@ -113,7 +119,7 @@ class RunManager:
     def __init__(self, cells: CellRegistry, store: RunStore, tick_hz: float = 100.0,
                  keep_finished: int = 32) -> None:
         if keep_finished < 0:
-            raise ValueError(f"'keep_finished' must be >= 0 (got {keep_finished})")
+            raise ArgumentError(f"'keep_finished' must be >= 0 (got {keep_finished})")
         self.cells = cells
         self.store = store
         self.tick_hz = tick_hz
@@ -138,14 +144,14 @@ class RunManager:
             PoseConflictError: ``speed`` differs from that of sim runs in flight.
         """
         if backend not in BACKENDS:
-            raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
+            raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
         session = self.cells.session(spec.cell)
         raise_for_problems(check_names(spec, session.cell))
         joints = self._joints(spec, session)
         claim = object()
         with self._lock:
             if self._stopping:
-                raise RuntimeError("the server is shutting down")
+                raise UnavailableError("the server is shutting down")
             self._claim_check(session, joints)
             if speed is not None and backend == "sim":
                 busy = any(other is session for other, _, _ in self._claims.values())

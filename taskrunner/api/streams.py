@@ -38,6 +38,7 @@ from typing import Any
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
+from taskrunner.errors import ArgumentError
 from taskrunner.runtime.events import EventLog, RunEvent
 
 __all__ = ["ABORT_EXTENSION", "EventStream", "RunFeed", "RunStreams", "StreamOptions",
@@ -74,15 +75,15 @@ class StreamOptions:
     def __post_init__(self) -> None:
         if isinstance(self.max_lag, bool) or not isinstance(self.max_lag, int) \
                 or self.max_lag < 1:
-            raise ValueError(f"'max_lag' must be an integer >= 1 (got {self.max_lag!r})")
+            raise ArgumentError(f"'max_lag' must be an integer >= 1 (got {self.max_lag!r})")
         for name in ("send_timeout_s", "keepalive_s"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int | float) or not value > 0:
-                raise ValueError(f"'{name}' must be a positive number of seconds "
+                raise ArgumentError(f"'{name}' must be a positive number of seconds "
                                  f"(got {value!r})")
         if isinstance(self.batch_s, bool) or not isinstance(self.batch_s, int | float) \
                 or not self.batch_s >= 0:
-            raise ValueError(f"'batch_s' must be a number of seconds >= 0 "
+            raise ArgumentError(f"'batch_s' must be a number of seconds >= 0 "
                              f"(got {self.batch_s!r})")
 
 

@@ -33,6 +33,7 @@ from taskrunner.backends.execution import (
     sample_positions,
 )
 from taskrunner.errors import (
+    ArgumentError,
     BackendBusyError,
     BackendError,
     TrajectoryRejectedError,
@@ -165,7 +166,7 @@ def check_option(name: str, value: Any, ok: Callable[[float], bool], expectation
         return
     number = isinstance(value, (int, float)) and not isinstance(value, bool)
     if not (number and not math.isnan(value) and ok(value)):
-        raise ValueError(f"'{name}' must be {expectation} (got {value!r})")
+        raise ArgumentError(f"'{name}' must be {expectation} (got {value!r})")
 
 
 def check_trajectory(trajectory: JointTrajectory, known: tuple[str, ...]) -> None:
@@ -215,7 +216,7 @@ def _initial_positions(names: tuple[str, ...],
         if name not in index:
             raise UnknownNameError("joint", name, names)
         if not math.isfinite(float(value)):
-            raise ValueError(f"'initial_positions' must be finite (got {value} for {name!r})")
+            raise ArgumentError(f"'initial_positions' must be finite (got {value} for {name!r})")
         positions[index[name]] = float(value)
     return positions
 
@@ -247,7 +248,7 @@ class BaseBackend(ABC):
                  clock: Callable[[], float] = time.monotonic) -> None:
         names = tuple(str(n) for n in joint_names)
         if not names or len(set(names)) != len(names):
-            raise ValueError(f"'joint_names' must be at least one unique name (got {list(names)})")
+            raise ArgumentError(f"'joint_names' must be at least one unique name (got {list(names)})")
         self._names = names
         self._index = {name: i for i, name in enumerate(names)}
         self._positions = _initial_positions(names, initial_positions)

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from taskrunner.errors import TrajectoryRejectedError, YamlError
+from taskrunner.errors import ArgumentError, TrajectoryRejectedError, YamlError
 from taskrunner.types import JointState, JointTrajectory
 from taskrunner.yamlfile import line_of, load_yaml
 
@@ -110,7 +110,7 @@ class ServoCalibration:
         """Unrounded, unclamped servo degrees of joint ``name`` (which owns a servo)."""
         joint = self._by_name[name]  # type: ignore[attr-defined]
         if joint.same_servo_as is not None:
-            raise ValueError(f"joint {name!r} has no servo of its own "
+            raise ArgumentError(f"joint {name!r} has no servo of its own "
                              f"(same_servo_as {joint.same_servo_as!r})")
         rad = np.asarray(joint_rad, dtype=float)
         return 90.0 + joint.direction * (rad - joint.zero_rad) * (180.0 / math.pi) * joint.scale
@@ -125,7 +125,7 @@ class ServoCalibration:
         values = positions.as_dict() if isinstance(positions, JointState) else dict(positions)
         missing = [n for n in self.servo_joint_names if n not in values]
         if missing:
-            raise ValueError(f"'positions' must give every servo joint (missing {missing})")
+            raise ArgumentError(f"'positions' must give every servo joint (missing {missing})")
         out = np.empty(len(self.servo_joint_names))
         for i, name in enumerate(self.servo_joint_names):
             deg = float(round_degrees(self.raw_degrees(name, float(values[name]))))
@@ -141,7 +141,7 @@ class ServoCalibration:
         reads as its leader."""
         degrees = np.asarray(degrees, dtype=float)
         if degrees.shape != (len(self.servo_joint_names),):
-            raise ValueError(f"'degrees' must hold {len(self.servo_joint_names)} angles "
+            raise ArgumentError(f"'degrees' must hold {len(self.servo_joint_names)} angles "
                              f"(got shape {degrees.shape})")
         positions = []
         for joint in self.joints:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from taskrunner.backends.base import BaseBackend, TrajectoryExecution, check_option
-from taskrunner.errors import BackendError
+from taskrunner.errors import ArgumentError, BackendError
 from taskrunner.types import JointState
 
 __all__ = ["SimBackend", "SimOptions"]
@@ -54,7 +54,7 @@ class SimOptions:
             raise TypeError(f"'keep_history' must be a bool (got {self.keep_history!r})")
         if not (isinstance(self.history_limit, int) and not isinstance(self.history_limit, bool)
                 and self.history_limit > 0):
-            raise ValueError(f"'history_limit' must be a positive integer "
+            raise ArgumentError(f"'history_limit' must be a positive integer "
                              f"(got {self.history_limit!r})")
         check_option("start_tolerance", self.start_tolerance, lambda v: v >= 0, "a number >= 0")
 

@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from taskrunner.errors import InvalidStateError
+from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.scene import Scene
 from taskrunner.scene.sweep import lever_arms
 from taskrunner.types import JointTrajectory
@@ -98,10 +98,10 @@ class SpacetimeOptions:
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.clearance) and self.clearance >= 0):
-            raise ValueError(f"'clearance' must be a number of metres >= 0 "
+            raise ArgumentError(f"'clearance' must be a number of metres >= 0 "
                              f"(got {self.clearance!r})")
         if self.max_steps < 1:
-            raise ValueError(f"'max_steps' must be >= 1 (got {self.max_steps!r})")
+            raise ArgumentError(f"'max_steps' must be >= 1 (got {self.max_steps!r})")
 
 
 @dataclass(frozen=True)

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from taskrunner.errors import ArgumentError
 from taskrunner.types import JointState
 
 __all__ = ["IkOptions", "IkSolution"]
@@ -18,9 +19,9 @@ def _check_positive(name: str, value: float | None, integer: bool = False) -> No
     kind = "a positive integer" if integer else "a positive number"
     allowed = (int, np.integer) if integer else (int, float, np.integer, np.floating)
     if isinstance(value, bool) or not isinstance(value, allowed):
-        raise ValueError(f"'{name}' must be {kind} (got {value!r})")
+        raise ArgumentError(f"'{name}' must be {kind} (got {value!r})")
     if not math.isfinite(value) or value <= 0:
-        raise ValueError(f"'{name}' must be {kind} (got {value!r})")
+        raise ArgumentError(f"'{name}' must be {kind} (got {value!r})")
 
 
 @dataclass(frozen=True)
@@ -81,11 +82,11 @@ class IkOptions:
         _check_positive("attempts", self.attempts, integer=True)
         _check_positive("num_solutions", self.num_solutions, integer=True)
         if isinstance(self.seed, bool) or not isinstance(self.seed, (int, np.integer)):
-            raise ValueError(f"'seed' must be an integer (got {self.seed!r})")
+            raise ArgumentError(f"'seed' must be an integer (got {self.seed!r})")
         if self.position_only is not None and not isinstance(self.position_only, bool):
-            raise ValueError(f"'position_only' must be True, False or None (got {self.position_only!r})")
+            raise ArgumentError(f"'position_only' must be True, False or None (got {self.position_only!r})")
         if not isinstance(self.min_distance, (int, float)) or not self.min_distance >= 0:
-            raise ValueError(f"'min_distance' must be a number >= 0 (got {self.min_distance!r})")
+            raise ArgumentError(f"'min_distance' must be a number >= 0 (got {self.min_distance!r})")
 
     @property
     def rotation_tol(self) -> float:

@@ -33,6 +33,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import (
+    ArgumentError,
     IkFailedError,
     InputError,
     InvalidStateError,
@@ -103,15 +104,15 @@ class CartesianOptions:
             if value is None and name in ("max_joint_step", "rotation_tolerance"):
                 continue
             if not _is_number(value) or not math.isfinite(value) or value <= 0:
-                raise ValueError(f"'{name}' must be a positive number (got {value!r})")
+                raise ArgumentError(f"'{name}' must be a positive number (got {value!r})")
         if (not _is_number(self.jump_threshold) or not math.isfinite(self.jump_threshold)
                 or self.jump_threshold < 0):
-            raise ValueError(f"'jump_threshold' must be a number >= 0 (got {self.jump_threshold!r})")
+            raise ArgumentError(f"'jump_threshold' must be a number >= 0 (got {self.jump_threshold!r})")
         if not isinstance(self.avoid_collisions, bool):  # ValueError like every option check
-            raise ValueError(
+            raise ArgumentError(
                 f"'avoid_collisions' must be a bool (got {self.avoid_collisions!r})")
         if self.position_only is not None and not isinstance(self.position_only, bool):
-            raise ValueError(
+            raise ArgumentError(
                 f"'position_only' must be True, False or None (got {self.position_only!r})")
 
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from taskrunner.errors import ArgumentError
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.model import Group
 from taskrunner.robot.moveit_yaml import OMPL_PLANNERS
@@ -40,7 +41,7 @@ class JointGoal:
 
     def __post_init__(self) -> None:
         if not self.values:
-            raise ValueError("'values' must name at least one joint")
+            raise ArgumentError("'values' must name at least one joint")
         object.__setattr__(self, "values", {str(k): float(v) for k, v in self.values.items()})
 
 
@@ -156,25 +157,25 @@ class PlannerOptions:
 
     def __post_init__(self) -> None:
         if self.planner and self.planner not in PLANNERS:
-            raise ValueError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
+            raise ArgumentError(f"'planner' must be one of {', '.join(PLANNERS)} (got {self.planner!r})")
         for name in ("planning_time", "longest_valid_segment", "validation_resolution",
                      "verify_margin"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-                raise ValueError(f"'{name}' must be a positive number (got {value!r})")
+                raise ArgumentError(f"'{name}' must be a positive number (got {value!r})")
         if not (isinstance(self.range, (int, float)) and math.isfinite(self.range)
                 and self.range >= 0):
-            raise ValueError(f"'range' must be a number >= 0 (got {self.range!r})")
+            raise ArgumentError(f"'range' must be a number >= 0 (got {self.range!r})")
         if isinstance(self.restart, bool) or not isinstance(self.restart, int) or self.restart < 0:
-            raise ValueError(f"'restart' must be an integer >= 0 (got {self.restart!r})")
+            raise ArgumentError(f"'restart' must be an integer >= 0 (got {self.restart!r})")
         for name in ("attempts", "goal_samples"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise ValueError(f"'{name}' must be a positive integer (got {value!r})")
+                raise ArgumentError(f"'{name}' must be a positive integer (got {value!r})")
         if self.direct_only and not self.direct:
-            raise ValueError("'direct_only' needs 'direct' (a straight line to try)")
+            raise ArgumentError("'direct_only' needs 'direct' (a straight line to try)")
         if isinstance(self.seed, bool) or not isinstance(self.seed, (int, np.integer)):
-            raise ValueError(f"'seed' must be an integer (got {self.seed!r})")
+            raise ArgumentError(f"'seed' must be an integer (got {self.seed!r})")
 
 
 @dataclass(frozen=True)

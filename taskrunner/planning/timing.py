@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from taskrunner.errors import PlanningError
+from taskrunner.errors import ArgumentError, PlanningError
 from taskrunner.robot.model import JointInfo, RobotModel
 from taskrunner.types import JointPath, JointTrajectory
 
@@ -53,7 +53,7 @@ def _check(name: str, value: Any, ok: Callable[[float], bool], expectation: str,
         return
     number = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
     if not (number and ok(value)):
-        raise ValueError(f"'{name}' must be {expectation} (got {value!r})")
+        raise ArgumentError(f"'{name}' must be {expectation} (got {value!r})")
 
 
 @dataclass(frozen=True)
@@ -121,9 +121,9 @@ def parameterize_path(model: RobotModel, path: JointPath,
     names = path.names
     joints = [model.joint(name) for name in names]
     if len(set(names)) != len(names):
-        raise ValueError(f"'path' must name each joint once (got {list(names)})")
+        raise ArgumentError(f"'path' must name each joint once (got {list(names)})")
     if not names or len(path) == 0 or not np.all(np.isfinite(path.waypoints)):
-        raise ValueError("'path' must have joints and finite waypoints "
+        raise ArgumentError("'path' must have joints and finite waypoints "
                          f"(got shape {path.waypoints.shape})")
     vmax, amax = _scaled_limits(model, joints, options)
     lower, upper = np.array([j.lower for j in joints]), np.array([j.upper for j in joints])
@@ -174,7 +174,7 @@ def path_deviation(path: JointPath, trajectory: JointTrajectory) -> float:
     the nearest segment of the polyline through ``path``'s waypoints (same joints, same order).
     """
     if tuple(trajectory.names) != tuple(path.names):
-        raise ValueError(f"'trajectory' must have the path's joints {list(path.names)} "
+        raise ArgumentError(f"'trajectory' must have the path's joints {list(path.names)} "
                          f"(got {list(trajectory.names)})")
     waypoints, q = np.asarray(path.waypoints), np.asarray(trajectory.positions)
     if len(q) == 0 or len(waypoints) == 0:

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from taskrunner.errors import PlanningError, TaskrunnerError
+from taskrunner.errors import ArgumentError, PlanningError, TaskrunnerError
 from taskrunner.planning.request import JointGoal, PlanRequest, PlanResult
 from taskrunner.processes import start_ignoring_sigint
 from taskrunner.scene import Scene
@@ -235,7 +235,7 @@ class PlanningWorker:
                  wait_ready: bool = True, nice: int = 0,
                  started: tuple[Any, Connection, Any] | None = None) -> None:
         if isinstance(nice, bool) or not isinstance(nice, int) or not 0 <= nice <= 19:
-            raise ValueError(f"'nice' must be an integer from 0 to 19 (got {nice!r})")
+            raise ArgumentError(f"'nice' must be an integer from 0 to 19 (got {nice!r})")
         self.source = str(source)
         self.nice = nice
         self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads

@@ -50,7 +50,7 @@ import numpy as np
 import pinocchio as pin
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-from taskrunner.errors import RobotDescriptionError, YamlError
+from taskrunner.errors import ArgumentError, RobotDescriptionError, YamlError
 from taskrunner.robot.model import RobotModel
 from taskrunner.validation import Metres, Radians, validate_node
 from taskrunner.yamlfile import line_of
@@ -91,7 +91,7 @@ def axis_vector(value: Axis) -> np.ndarray:
     vector = np.array(value, dtype=float)
     norm = float(np.linalg.norm(vector))
     if norm < 1e-9:
-        raise ValueError(f"must be a non-zero vector (got {value})")
+        raise ArgumentError(f"must be a non-zero vector (got {value})")
     return vector / norm
 
 

@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import Any
 from xml.parsers import expat
 
-from taskrunner.errors import RobotDescriptionError
+from taskrunner.errors import ArgumentError, RobotDescriptionError
 from taskrunner.robot import xacro_cache
 from taskrunner.robot.packages import PackageMap
 from taskrunner.textfile import DEFAULT_MAX_BYTES, file_problem, read_text_file
@@ -60,9 +60,9 @@ class XacroOptions:
 
     def __post_init__(self) -> None:
         if not self.time_limit_s > 0:
-            raise ValueError(f"'time_limit_s' must be > 0 (got {self.time_limit_s!r})")
+            raise ArgumentError(f"'time_limit_s' must be > 0 (got {self.time_limit_s!r})")
         if self.memory_limit_mb < 16:
-            raise ValueError(f"'memory_limit_mb' must be ≥ 16 (got {self.memory_limit_mb!r})")
+            raise ArgumentError(f"'memory_limit_mb' must be ≥ 16 (got {self.memory_limit_mb!r})")
 
 
 # xacro keeps its state in module globals: one in-process expansion at a time.

@@ -13,6 +13,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from taskrunner.errors import ArgumentError
+
 __all__ = ["EventLog", "RunEvent"]
 
 # The kinds of event a run emits.
@@ -109,7 +111,7 @@ class EventLog:
              **data: Any) -> RunEvent:
         """Append an event and pass it to the subscribers."""
         if kind not in KINDS:
-            raise ValueError(f"'kind' must be one of {', '.join(KINDS)} (got {kind!r})")
+            raise ArgumentError(f"'kind' must be one of {', '.join(KINDS)} (got {kind!r})")
         with self._lock:
             event = RunEvent(len(self._events) + 1, self._clock() - self._start, kind, node,
                              location, status, message, data)

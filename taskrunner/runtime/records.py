@@ -43,6 +43,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from taskrunner.errors import InputError
 from taskrunner.runtime.events import RunEvent
 
 __all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "needs_sync",
@@ -227,8 +228,8 @@ def load_record(path: str | Path) -> RunRecord:
     if not path.is_file() and journal.is_file():
         header, events = _read_journal(journal)
         if not isinstance(header.get("record"), dict):
-            raise ValueError(f"{journal}: no record head in its first line (not a run's "
-                             f"journal, or one from before heads were kept)")
+            raise InputError("no record head in its first line (not a run's journal, or "
+                             "one from before heads were kept)", journal, 1)
         record = RunRecord.from_dict({**header["record"], "events": []})
         record.status = "running"
         return _merged(record, header, events)

@@ -31,7 +31,13 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import Backend
-from taskrunner.errors import BackendError, InputError, PlanningError, TaskrunnerError
+from taskrunner.errors import (
+    ArgumentError,
+    BackendError,
+    InputError,
+    PlanningError,
+    TaskrunnerError,
+)
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -127,7 +133,7 @@ class RunOptions:
 
     def __post_init__(self) -> None:
         if not self.tick_hz > 0:
-            raise ValueError(f"'tick_hz' must be > 0 (got {self.tick_hz})")
+            raise ArgumentError(f"'tick_hz' must be > 0 (got {self.tick_hz})")
 
 
 def task_scene(spec: TaskSpec, cell: Cell) -> Scene:

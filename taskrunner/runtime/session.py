@@ -34,7 +34,7 @@ from taskrunner.backends import (
     load_calibration,
 )
 from taskrunner.backends.base import Backend
-from taskrunner.errors import InputError
+from taskrunner.errors import ArgumentError, InputError
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.display import LiveTree
 from taskrunner.runtime.events import EventLog, RunEvent
@@ -87,7 +87,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     names = cell.model.joint_names
     start_q = cell.start_state() if start is None else start
     if len(start_q) != len(names):
-        raise ValueError(f"'start' must have {len(names)} values, one per joint of the cell "
+        raise ArgumentError(f"'start' must have {len(names)} values, one per joint of the cell "
                          f"(got {len(start_q)})")
     initial = dict(zip(names, (float(v) for v in start_q)))
     if kind == "mock":
@@ -97,7 +97,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if kind == "mujoco":
         return _mujoco_backend(cell, speed, initial)
     if kind not in BACKENDS:
-        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
+        raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
     if len(robots) == 1 and not robots[0].prefix:
         calibration = servo_calibration(cell)

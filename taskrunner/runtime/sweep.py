@@ -56,7 +56,7 @@ def _typed(text: str, kind: str, name: str) -> Any:
                 return True
             if lowered in ("false", "no", "off", "0"):
                 return False
-            raise ValueError(text)
+            raise InputError(f"'--param {name}' values must be {kind}s (got {text!r})")
     except ValueError:
         raise InputError(f"'--param {name}' values must be {kind}s (got {text!r})") from None
     return text

@@ -31,7 +31,7 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import ArgumentError, InputError, TaskrunnerError
 from taskrunner.resources import resolve_cell
 from taskrunner.robot import PackageMap, Placement, RobotModel, build_model, load_description
 from taskrunner.scene.geometry import LinkGeometry, robot_link_geometry
@@ -98,9 +98,9 @@ class MatrixOptions:
         if self.collision is not None:
             check_collision_choice(self.collision)
         if not 0.0 < self.always_fraction <= 1.0:
-            raise ValueError(f"'always_fraction' must be in (0, 1] (got {self.always_fraction})")
+            raise ArgumentError(f"'always_fraction' must be in (0, 1] (got {self.always_fraction})")
         if self.always_batch < 1:
-            raise ValueError(f"'always_batch' must be >= 1 (got {self.always_batch})")
+            raise ArgumentError(f"'always_batch' must be >= 1 (got {self.always_batch})")
 
 
 def generate_collision_matrix(
@@ -125,7 +125,7 @@ def generate_collision_matrix(
     """
     options = options or MatrixOptions()
     if samples < 1:
-        raise ValueError(f"'samples' must be >= 1 (got {samples})")
+        raise ArgumentError(f"'samples' must be >= 1 (got {samples})")
     links = robot_link_geometry(robot, options.robot_collision)
     reasons: dict[frozenset[str], str] = {
         pair: "Adjacent" for pair in adjacent_link_pairs(robot, {g.link for g in links})

@@ -47,6 +47,8 @@ from typing import NamedTuple
 import numpy as np
 import pinocchio as pin
 
+from taskrunner.errors import ArgumentError
+
 __all__ = ["VERIFY_MARGIN", "Body", "Clearance", "CollisionChecker", "Contact", "RobotGeometry"]
 
 VERIFY_MARGIN = 2e-6
@@ -203,7 +205,7 @@ class CollisionChecker:
         if robot is None:
             robot = RobotGeometry(model, ())
         elif robot.model is not model:
-            raise ValueError("the robot geometry was built for another pinocchio model")
+            raise ArgumentError("the robot geometry was built for another pinocchio model")
         self._geometry = robot._template.copy()
         body_of = list(robot._body_of)
         static = list(robot._static)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from taskrunner.errors import ArgumentError
 from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
 
@@ -37,9 +38,9 @@ class SceneObject:
         object.__setattr__(self, "touch_links", tuple(self.touch_links))
         expected = self.attached_to or "world"
         if self.pose.frame != expected:
-            raise ValueError(f"'pose.frame' must be {expected!r} (got {self.pose.frame!r})")
+            raise ArgumentError(f"'pose.frame' must be {expected!r} (got {self.pose.frame!r})")
         if self.attached_to is None and self.touch_links:
-            raise ValueError(
+            raise ArgumentError(
                 f"'touch_links' must be empty for a world object (got {self.touch_links})"
             )
 

@@ -27,7 +27,7 @@ import coal
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import SceneError, UnknownNameError
+from taskrunner.errors import ArgumentError, SceneError, UnknownNameError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.allowed import AllowedCollisions
 from taskrunner.scene.collision import (
@@ -79,14 +79,14 @@ class SceneOptions:
 
     def __post_init__(self) -> None:
         if self.convex_robot_meshes is not None and not isinstance(self.convex_robot_meshes, bool):
-            raise ValueError(
+            raise ArgumentError(
                 f"'convex_robot_meshes' must be a bool (got {self.convex_robot_meshes!r})"
             )
         if self.collision is not None and self.collision not in COLLISION_CHOICES:
-            raise ValueError(f"'collision' must be one of {', '.join(COLLISION_CHOICES)} "
+            raise ArgumentError(f"'collision' must be one of {', '.join(COLLISION_CHOICES)} "
                              f"(got {self.collision!r})")
         if not self.hull_tolerance >= 0:
-            raise ValueError(f"'hull_tolerance' must be >= 0 m (got {self.hull_tolerance})")
+            raise ArgumentError(f"'hull_tolerance' must be >= 0 m (got {self.hull_tolerance})")
 
     @property
     def robot_collision(self) -> str | None:
@@ -227,7 +227,7 @@ class Scene:
             new = self._as_state(q)
             self.robot.apply_mimic(new)
         if not np.all(np.isfinite(new)):
-            raise ValueError(f"'q' must be finite (got {new})")
+            raise ArgumentError(f"'q' must be finite (got {new})")
         self._q = new
         self._fk_done = False
 
@@ -512,7 +512,7 @@ class Scene:
     def _as_state(self, q: np.ndarray | list[float]) -> np.ndarray:
         array = np.array(q, dtype=float)
         if array.shape != (self.robot.nq,):
-            raise ValueError(
+            raise ArgumentError(
                 f"'q' must be a state vector of {self.robot.nq} values "
                 f"({', '.join(self.robot.joint_names)}) (got shape {array.shape})"
             )

@@ -41,6 +41,7 @@ import numpy as np
 
 from taskrunner.collision import frames as collision_frames
 from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, inline, jit, joint_frames
+from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import sweep
 from taskrunner.scene.collision import CollisionChecker
@@ -253,7 +254,7 @@ class StateScreen:
             return None
         if (table.dtype != np.float64 or not table.flags.c_contiguous or table.ndim != 2
                 or table.shape[0] < 2 or table.shape[1] < table.shape[0] - 1):
-            raise ValueError("'table' must be a C-contiguous float array with a row of "
+            raise ArgumentError("'table' must be a C-contiguous float array with a row of "
                              f"fractions per step count (got {table.dtype}, {table.shape})")
         rows = np.empty((table.shape[0] - 1, self.robot.nq))
         rows[:] = np.asarray(base, dtype=float)
@@ -278,7 +279,7 @@ class StateScreen:
         states = np.ascontiguousarray(states, dtype=float)
         nq = self.robot.nq
         if states.ndim != 2 or states.shape[1] != nq:
-            raise ValueError(f"states must be an (n, {nq}) array of full state vectors "
+            raise ArgumentError(f"states must be an (n, {nq}) array of full state vectors "
                              f"(got shape {states.shape})")
         return self.scanner()(states)
 

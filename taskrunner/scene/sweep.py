@@ -83,6 +83,7 @@ import pinocchio as pin
 from taskrunner.collision.frames import AXIS, ORIGIN, ROTATION, compose, inline, jit, joint_frames
 from taskrunner.collision.geometry import GEOMETRY, ShapeKind
 from taskrunner.collision.tree import KinematicTree
+from taskrunner.errors import ArgumentError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 
@@ -175,7 +176,7 @@ class PathVerifier:
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
                  margin: float = VERIFY_MARGIN) -> None:
         if not (math.isfinite(margin) and margin > 0):
-            raise ValueError(f"'margin' must be a positive number of metres (got {margin!r})")
+            raise ArgumentError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot
         self.margin = margin
         self._checker = checker
@@ -296,13 +297,13 @@ class PathVerifier:
             states = states[None, :]
         nq = self.robot.nq
         if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
-            raise ValueError(f"states must be an (n, {nq}) array of full state "
+            raise ArgumentError(f"states must be an (n, {nq}) array of full state "
                              f"vectors (got shape {states.shape})")
         n_pairs = len(self._first)
         if n_pairs == 0:
             if not np.isfinite(states).all():
                 row = int(np.flatnonzero(~np.isfinite(states).all(axis=1))[0])
-                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
+                raise ArgumentError(f"state {row} of the path to verify is not finite: {states[row]}")
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
         states = np.ascontiguousarray(states)
         cumulative = np.empty_like(states)                    # per joint, sum of |dq|
@@ -327,7 +328,7 @@ class PathVerifier:
                 queries += count
             if count == _NOT_FINITE:
                 row = int(settings[_S_BAD])
-                raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
+                raise ArgumentError(f"state {row} of the path to verify is not finite: {states[row]}")
             states_count = max(evaluated, int(settings[_S_STATES]))
             if count < 0:
                 bad = int(selected[int(settings[_S_BAD])])

@@ -34,6 +34,7 @@ from pydantic import (
     model_validator,
 )
 
+from taskrunner.errors import ArgumentError
 from taskrunner.materials import Density, Friction, Kilograms, check_material
 from taskrunner.textfile import path_problem
 from taskrunner.types import Pose
@@ -200,7 +201,7 @@ def _check_quat(value: tuple[float, ...] | None) -> tuple[float, ...] | None:
         return None
     norm = float(np.linalg.norm(value))
     if not np.isfinite(norm) or abs(norm - 1.0) > 1e-3:
-        raise ValueError(f"must be a unit quaternion [x, y, z, w] (got norm {norm:.4g})")
+        raise ArgumentError(f"must be a unit quaternion [x, y, z, w] (got norm {norm:.4g})")
     return tuple(float(v) / norm for v in value)
 
 

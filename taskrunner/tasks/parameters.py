@@ -20,6 +20,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from taskrunner.errors import ArgumentError
 from taskrunner.tasks.nodes import location_of
 from taskrunner.tasks.problem import Problem, did_you_mean, problems_from_validation
 from taskrunner.tasks.spec import Parameter, ParameterDecl
@@ -104,9 +105,9 @@ def _infer_type(value: object) -> str | None:
 
 def _check_bounds(param: Parameter, value: Any) -> None:
     if param.min is not None and value < param.min:
-        raise ValueError(f"{param.name!r} must be >= {param.min:g} (got {value!r})")
+        raise ArgumentError(f"{param.name!r} must be >= {param.min:g} (got {value!r})")
     if param.max is not None and value > param.max:
-        raise ValueError(f"{param.name!r} must be <= {param.max:g} (got {value!r})")
+        raise ArgumentError(f"{param.name!r} must be <= {param.max:g} (got {value!r})")
 
 
 def declare_parameters(raw: Any, tree: Any, path: Path,

@@ -32,7 +32,7 @@ from enum import StrEnum
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.errors import SceneError
+from taskrunner.errors import ArgumentError, SceneError
 from taskrunner.robot.model import RobotModel
 from taskrunner.scene import Scene
 from taskrunner.scene.support import Support
@@ -74,7 +74,7 @@ class Tolerance:
         for name in ("position", "angle"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-                raise ValueError(f"'{name}' must be a finite number > 0 (got {value!r})")
+                raise ArgumentError(f"'{name}' must be a finite number > 0 (got {value!r})")
 
     def __str__(self) -> str:
         return f"{1e3 * self.position:g} mm, {math.degrees(self.angle):g}°"

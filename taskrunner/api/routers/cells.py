@@ -20,7 +20,7 @@ from taskrunner.api.schemas import (
     TeachRequest,
 )
 from taskrunner.api.store import RunStore
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import ArgumentError, TaskrunnerError
 from taskrunner.yamlfile import load_yaml
 
 __all__ = ["router"]
@@ -70,7 +70,7 @@ def cell_state(cell_id: str, cells: Annotated[CellRegistry, Depends(get_cells)],
     """Joint positions (rad or m) as the cell's backend reports them now, the objects
     attached to its links (in the newest run's scene), and the runs in flight."""
     if backend not in BACKENDS:
-        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
+        raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {backend!r})")
     session = cells.by_id(cell_id)
     state = session.backend(backend).joint_state()
     running = manager.running_on(session)
@@ -98,10 +98,10 @@ def teach_pose(cell_id: str, name: str, body: TeachRequest,
     like any named pose. A pose of the robot's own files cannot be replaced (409); a
     taught one can. Refused while a run moves the group (409)."""
     if not _POSE_NAME.match(name):
-        raise ValueError(f"'name' must be a letter or _ then letters, digits, _ or - "
+        raise ArgumentError(f"'name' must be a letter or _ then letters, digits, _ or - "
                          f"(got {name!r})")
     if body.backend not in BACKENDS:
-        raise ValueError(f"'backend' must be one of {', '.join(BACKENDS)} (got {body.backend!r})")
+        raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {body.backend!r})")
     session = cells.by_id(cell_id)
     model = session.cell.model
     group = model.group(body.group)
@@ -117,7 +117,7 @@ def teach_pose(cell_id: str, name: str, body: TeachRequest,
     joints = {j: float(state[j]) for j in group.joint_names}
     bad = model.limit_violations(model.state_with(model.default_state(), joints))
     if bad:
-        raise ValueError("the current state is outside the joint limits: " + "; ".join(bad))
+        raise ArgumentError("the current state is outside the joint limits: " + "; ".join(bad))
     taught = store.save_pose(cell_id, group.name, name, joints)
     session.teach(group.name, name, joints)
     return TaughtPose(cell=cell_id, group=group.name, name=name, joints=joints, taught=taught)

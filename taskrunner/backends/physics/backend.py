@@ -59,7 +59,7 @@ from taskrunner.backends.physics.mjcf import (
     compiled_model,
     weld_name,
 )
-from taskrunner.errors import BackendError
+from taskrunner.errors import ArgumentError, BackendError
 from taskrunner.types import JointState, Pose
 
 __all__ = ["MujocoBackend", "MujocoOptions", "PhysicsSample"]
@@ -133,7 +133,7 @@ class MujocoOptions:
                          "a number >= 0")
         for arm, mode in self.grasp_mode.items():
             if mode not in ("friction", "weld"):
-                raise ValueError(f"'grasp_mode' of {arm!r} must be 'friction' or 'weld' "
+                raise ArgumentError(f"'grasp_mode' of {arm!r} must be 'friction' or 'weld' "
                                  f"(got {mode!r})")
 
 

@@ -32,7 +32,7 @@ from taskrunner.backends.physics.inertia import (
     LinkInertia,
     estimate_link_inertias,
 )
-from taskrunner.errors import BackendError
+from taskrunner.errors import ArgumentError, BackendError
 from taskrunner.materials import Material
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 
@@ -68,11 +68,11 @@ class ObjectPhysics:
 
     def __post_init__(self) -> None:
         if not (self.density > 0 and math.isfinite(self.density)):
-            raise ValueError(f"'density' must be a positive number (got {self.density!r})")
+            raise ArgumentError(f"'density' must be a positive number (got {self.density!r})")
         if self.mass is not None and not (self.mass > 0 and math.isfinite(self.mass)):
-            raise ValueError(f"'mass' must be a positive number (got {self.mass!r})")
+            raise ArgumentError(f"'mass' must be a positive number (got {self.mass!r})")
         if len(self.friction) != 3 or not all(0 <= f < math.inf for f in self.friction):
-            raise ValueError(f"'friction' must be 3 numbers >= 0 (got {self.friction!r})")
+            raise ArgumentError(f"'friction' must be 3 numbers >= 0 (got {self.friction!r})")
 
     @classmethod
     def from_material(cls, material: Material, default: ObjectPhysics | None = None
