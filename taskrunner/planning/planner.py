@@ -59,6 +59,7 @@ from taskrunner.scene.collision import VERIFY_MARGIN
 from taskrunner.types import JointPath, JointTrajectory
 
 if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
+    from taskrunner.scene.coalpath import CoalPathVerifier, CoalScreen
     from taskrunner.scene.screen import StateScreen
     from taskrunner.scene.sweep import PathVerification
 
@@ -113,12 +114,19 @@ class MotionPlanner:
 
     Args:
         scene: the planning scene.
+        compiled: check with the compiled kernels (the screen and the path verifier of
+            :mod:`taskrunner.scene.screen` and :mod:`taskrunner.scene.sweep`), or, False,
+            with coal alone (:mod:`taskrunner.scene.coalpath`: the same verdicts for
+            states, the same guarantee for paths, slower) while the kernels compile
+            (:mod:`taskrunner.planning.warmup`). An attribute: set between requests.
     """
 
-    def __init__(self, scene: Scene) -> None:
+    def __init__(self, scene: Scene, compiled: bool = True) -> None:
         self.scene = scene
+        self.compiled = compiled
         self._ik: dict[tuple[str, str | None], IkSolver] = {}
         self._group_columns: dict[str, tuple[slice | np.ndarray, bool]] = {}
+        self._coal: tuple[object, float, CoalPathVerifier, CoalScreen] | None = None
 
     # ------------------------------------------------------------------ public
     def plan(self, request: PlanRequest, should_stop: Callable[[], bool] | None = None) -> PlanResult:
@@ -152,7 +160,21 @@ class MotionPlanner:
     def verify_states(self, states: np.ndarray, margin: float) -> PathVerification:
         """Verify the polyline through full state vectors ``states`` against the scene
         (conservative advancement, see :mod:`taskrunner.scene.sweep`; ``margin`` in m)."""
+        if not self.compiled:
+            return self._coal_checks(margin)[0].verify(states)
         return self.scene.path_verifier(margin).verify(states)
+
+    def _coal_checks(self, margin: float) -> tuple[CoalPathVerifier, CoalScreen]:
+        """The checks with coal alone for the scene as it is now (kept until it changes)."""
+        checker = self.scene.checker
+        kept = self._coal
+        if kept is None or kept[0] is not checker or kept[1] != margin:
+            from taskrunner.scene.coalpath import CoalPathVerifier, CoalScreen
+
+            robot = self.scene.robot
+            kept = self._coal = (checker, margin, CoalPathVerifier(robot, checker, margin),
+                                 CoalScreen(robot, checker))
+        return kept[2], kept[3]
 
     def _full_states(self, start: np.ndarray, names: tuple[str, ...], rows: np.ndarray
                      ) -> np.ndarray:
@@ -395,10 +417,13 @@ class MotionPlanner:
 
         return remembered, exact_edge, count
 
-    def _state_screen(self, margin: float) -> StateScreen:
+    def _state_screen(self, margin: float) -> StateScreen | CoalScreen:
         """The scene's state screen (:meth:`Scene.state_screen`: the checker's verdicts,
         with coal only on the pairs that cheap compiled bounds cannot clear), built on the
-        path verifier of the request's ``margin``, which verifies the path afterwards."""
+        path verifier of the request's ``margin``, which verifies the path afterwards;
+        not :attr:`compiled`: the checker's scans."""
+        if not self.compiled:
+            return self._coal_checks(margin)[1]
         return self.scene.state_screen(margin)
 
     def _scan(self, margin: float) -> Callable[[np.ndarray], int]:
