@@ -16,8 +16,8 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import AbstractContextManager, ExitStack, contextmanager
 from pathlib import Path
 from types import FrameType
 from typing import TYPE_CHECKING, TextIO
@@ -302,7 +302,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   port: str | None = None, url: str | None = None,
                   firmware_speedup: float = 1.0, home: bool = False,
                   check: bool = True, early: EarlyWorker | None = None,
-                  loaded: CheckReport | None = None) -> int:
+                  loaded: CheckReport | None = None,
+                  watch: Sequence[Callable[[Runner], AbstractContextManager[object]]] = ()
+                  ) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
@@ -313,7 +315,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     ``loaded``: the report of a check of this same file with these same ``parameters``
     (:func:`check_before_run`, ``check`` False): the run starts from the task and the
     cell the check loaded instead of loading them again (the same objects a second load
-    gives: the check changes neither).
+    gives: the check changes neither). ``watch``: each called with the runner, the run
+    goes inside the context it returns (a live feed; an export when the run has ended).
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -368,7 +371,10 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                         print(line, file=out, flush=True)
                 events.subscribe(log)
             stop.attach(runner)
-            record = _run_with_display(runner, live, out, stop)
+            with ExitStack() as watching:
+                for each in watch:
+                    watching.enter_context(each(runner))
+                record = _run_with_display(runner, live, out, stop)
         finally:
             machine.close()
             planner_service.close()
