@@ -6,13 +6,17 @@ a ``Sequence``, ``fallback`` onto a ``Selector``, ``retry`` / ``timeout`` / ``re
 the decorators of the same names. A ``parallel`` of ``go`` steps of different arms becomes
 ONE motion planned in a group spanning those arms, so the arms cannot collide; other
 parallel children run side by side on their own joints, each motion verified in time
-against the other branches' before it is sent (:mod:`taskrunner.tree.schedule`).
+against the other branches' before it is sent (:mod:`taskrunner.tree.schedule`). A step
+with ``wait_for`` is preceded by a leaf holding its branch until the step it names (in
+another branch) is followed by one recording that it has finished
+(:mod:`taskrunner.tree.waiting`); such steps are never joined into one ``go`` motion.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from typing import Any
 
 import pinocchio as pin
@@ -48,6 +52,7 @@ from taskrunner.tasks import (
     WaitStep,
 )
 from taskrunner.tasks.steps import ExpectStep
+from taskrunner.tasks.waits import wait_pairs
 from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import (
     MoveJoints,
@@ -62,6 +67,7 @@ from taskrunner.tree.expect import CheckExpectation, StepTimer
 from taskrunner.tree.grasps import allow_lift_off, end_lift_off, end_lift_offs_left, tool_grasp
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
+from taskrunner.tree.waiting import StepFinished, WaitForStep
 from taskrunner.types import Pose
 
 __all__ = ["compile_task", "object_shape", "planner_options", "timing_options"]
@@ -73,11 +79,30 @@ def compile_task(spec: TaskSpec, ctx: TaskContext) -> Behaviour:
     Raises:
         TaskSpecError: a step that names something the cell does not have, with file:line.
     """
-    children = _compile_list(spec.steps, ctx)
+    pairs = wait_pairs(spec.steps)
+    waits = _Waits({id(p.waiter): p.name for p in pairs}, {id(p.named): p.name for p in pairs})
+    children = _compile_list(spec.steps, ctx, waits)
     return py_trees.composites.Sequence(spec.name, memory=True, children=children)
 
 
-def _compile_list(steps: tuple[StepNode, ...], ctx: TaskContext) -> list[Behaviour]:
+@dataclass(frozen=True)
+class _Waits:
+    """The ``wait_for`` of the steps compiled (by ``id`` of the step): the name each
+    waiting step waits for, and the name of each step waited for."""
+
+    waiting: Mapping[int, str] = field(default_factory=dict)
+    waited: Mapping[int, str] = field(default_factory=dict)
+
+    def joins(self, step: StepNode) -> bool:
+        """Whether ``step`` takes part in a wait (so stays a branch of its own)."""
+        return id(step) in self.waiting or id(step) in self.waited
+
+
+_NO_WAITS = _Waits()
+
+
+def _compile_list(steps: tuple[StepNode, ...], ctx: TaskContext,
+                  waits: _Waits = _NO_WAITS) -> list[Behaviour]:
     """Steps run one after another; an ``expect`` with ``step_duration`` times the step
     before it (a :class:`StepTimer` around that step's behaviour)."""
     out: list[Behaviour] = []
@@ -89,7 +114,7 @@ def _compile_list(steps: tuple[StepNode, ...], ctx: TaskContext) -> list[Behavio
                 out[-1] = timer
             out.append(CheckExpectation(step.label, _where(step), ctx, step, timer))
         else:
-            out.append(_compile(step, ctx))
+            out.append(_compile(step, ctx, waits))
     return out
 
 
@@ -142,23 +167,38 @@ def object_shape(spec):  # type: ignore[no-untyped-def]
     return Mesh(spec.file, tuple(spec.scale or (1.0, 1.0, 1.0)))
 
 
-def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
+def _compile(step: StepNode, ctx: TaskContext, waits: _Waits = _NO_WAITS) -> Behaviour:
+    behaviour = _compile_step(step, ctx, waits)
+    if not waits.joins(step):
+        return behaviour
+    children = [behaviour]
+    if id(step) in waits.waiting:
+        name = waits.waiting[id(step)]
+        children.insert(0, WaitForStep(f"{step.label}: wait for {name!r}", _where(step), ctx,
+                                       name))
+    if id(step) in waits.waited:
+        children.append(StepFinished(waits.waited[id(step)], ctx))
+    return py_trees.composites.Sequence(f"{step.label} (wait_for)", memory=True,
+                                        children=children)
+
+
+def _compile_step(step: StepNode, ctx: TaskContext, waits: _Waits) -> Behaviour:
     name, where = step.label, _where(step)
     match step:
         case SequenceStep() | IncludeStep():
             return py_trees.composites.Sequence(
-                name, memory=True, children=_compile_list(step.children, ctx))
+                name, memory=True, children=_compile_list(step.children, ctx, waits))
         case FallbackStep():
             return py_trees.composites.Selector(
-                name, memory=True, children=_compile_list(step.children, ctx))
+                name, memory=True, children=_compile_list(step.children, ctx, waits))
         case RetryStep():
-            return py_trees.decorators.Retry(name, _body(step, ctx), num_failures=step.times)
+            return py_trees.decorators.Retry(name, _body(step, ctx, waits), num_failures=step.times)
         case TimeoutStep():
-            return TaskTimeout(name, _body(step, ctx), step.seconds, where, ctx)
+            return TaskTimeout(name, _body(step, ctx, waits), step.seconds, where, ctx)
         case RepeatStep():
-            return py_trees.decorators.Repeat(name, _body(step, ctx), num_success=step.times)
+            return py_trees.decorators.Repeat(name, _body(step, ctx, waits), num_success=step.times)
         case ParallelStep():
-            return _parallel(step, ctx)
+            return _parallel(step, ctx, waits)
         case GoStep():
             return MoveToGoal(name, where, ctx, _group(step, ctx, step.group), _go_goal(step),
                               planner_options(step), timing_options(step, ctx))
@@ -223,8 +263,8 @@ def _compile(step: StepNode, ctx: TaskContext) -> Behaviour:
     raise _error(step, f"step '{step.verb}' cannot be compiled")
 
 
-def _body(step, ctx: TaskContext) -> Behaviour:  # type: ignore[no-untyped-def]
-    children = _compile_list(step.children, ctx)
+def _body(step, ctx: TaskContext, waits: _Waits) -> Behaviour:  # type: ignore[no-untyped-def]
+    children = _compile_list(step.children, ctx, waits)
     if len(children) == 1:
         return children[0]
     return py_trees.composites.Sequence(f"{step.label} body", memory=True, children=children)
@@ -384,17 +424,17 @@ def _attach(step: AttachStep, ctx: TaskContext) -> Callable[[TaskContext], objec
     return attach
 
 
-def _parallel(step: ParallelStep, ctx: TaskContext) -> Behaviour:
+def _parallel(step: ParallelStep, ctx: TaskContext, waits: _Waits) -> Behaviour:
     children = step.children
     for child in children:
         if isinstance(child, ExpectStep):
             raise _error(child, "'expect' cannot run in a 'parallel' (it would check while "
                                 "the other children move): put it after the 'parallel'")
-    gos = [c for c in children if isinstance(c, GoStep)]
-    others = [c for c in children if not isinstance(c, GoStep)]
-    behaviours = [_compile(c, ctx) for c in others]
+    gos = [c for c in children if isinstance(c, GoStep) and not waits.joins(c)]
+    others = [c for c in children if not (isinstance(c, GoStep) and not waits.joins(c))]
+    behaviours = [_compile(c, ctx, waits) for c in others]
     if len(gos) == 1:
-        behaviours.append(_compile(gos[0], ctx))
+        behaviours.append(_compile(gos[0], ctx, waits))
     elif gos:
         behaviours.append(_joint_go(step, gos, ctx))
     if len(behaviours) == 1:

@@ -157,6 +157,12 @@ class MotionSchedule:
     clearance: float = CLEARANCE
     committed: list[Committed] = field(default_factory=list)
     holding: dict[LaneKey, LaneKey] = field(default_factory=dict)
+    finished: dict[tuple[int, str], float] = field(default_factory=dict)
+    """When each step another branch waits for (``wait_for``) finished, s, by (instance
+    of a ``parallel`` around it, its name)."""
+    floors: dict[LaneKey, float] = field(default_factory=dict)
+    """s: the earliest start of a lane's (and its inner lanes') next motions, set where a
+    step of it waited for another branch's step."""
     _instances: int = 0
     _branches: dict[int, Callable[[int], bool]] = field(default_factory=dict)
 
@@ -199,7 +205,26 @@ class MotionSchedule:
         """When a motion of ``lane`` may start at the earliest: every motion of a lane it
         follows has ended (s)."""
         ends = [c.motion.end for c in self.committed if not concurrent(c.lane, lane)]
+        ends += [floor for key, floor in self.floors.items() if _within(lane, key)]
         return max(ends, default=0.0)
+
+    def lane_end(self, lane: LaneKey) -> float:
+        """When the motions ``lane`` (and the lanes inside it) committed so far end: where
+        it stands on the schedule now (s)."""
+        ends = [c.motion.end for c in self.committed if _within(c.lane, lane)]
+        return max(ends, default=self.earliest(lane))
+
+    def finish_step(self, lane: LaneKey, name: str) -> float:
+        """The step ``name`` of ``lane``, which another branch waits for, has finished:
+        when its motions end (s), recorded for every ``parallel`` around it."""
+        at = self.lane_end(lane)
+        for instance, _ in lane:
+            self.finished[(instance, name)] = at
+        return at
+
+    def not_before(self, lane: LaneKey, at: float) -> None:
+        """The next motions of ``lane`` start at ``at`` s at the earliest (a ``wait_for``)."""
+        self.floors[lane] = max(self.floors.get(lane, 0.0), at)
 
     def admit(self, scene: Scene, lane: LaneKey, trajectory: JointTrajectory,
               location: str | None, now: float = 0.0) -> Admission | Blocked:
