@@ -11,6 +11,8 @@ caller can catch ours without catching a library's ``KeyError`` or ``RuntimeErro
     │   │   └── MissingMeshError    a mesh file (robot collision or scene object) that does not exist
     │   ├── YamlError               a YAML file that does not parse, or repeats a key
     │   ├── TaskSpecError           a task file that is invalid (unknown verb, field, name …)
+    │   ├── AmbiguousName           a MoveIt file's name that several robots of the cell have
+    │   │                           (moveit/names.py; its readers report it with file:line)
     │   └── PathNotAllowedError     a file outside the folders a server allows (folders.py)
     ├── UnknownNameError            a group, joint, link, frame, pose or object that is not there
     ├── SceneError                  an invalid scene edit (duplicate object, bad shape)

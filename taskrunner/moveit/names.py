@@ -17,14 +17,15 @@ from collections.abc import Callable
 
 import pinocchio as pin
 
-from taskrunner.errors import UnknownNameError
+from taskrunner.errors import InputError, UnknownNameError
 from taskrunner.robot.model import RobotModel
 
 __all__ = ["AmbiguousName", "NameMap"]
 
 
-class AmbiguousName(Exception):
-    """A file's name matches the same name of several robots of the cell."""
+class AmbiguousName(InputError):
+    """A file's name matches the same name of several robots of the cell (its readers
+    catch it and say which file and line)."""
 
 
 class NameMap:

@@ -35,6 +35,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from taskrunner.errors import ArgumentError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 from taskrunner.scene.sweep import PathVerification, lever_arms
@@ -64,7 +65,7 @@ class CoalPathVerifier:
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
                  margin: float = VERIFY_MARGIN) -> None:
         if not (math.isfinite(margin) and margin > 0):
-            raise ValueError(f"'margin' must be a positive number of metres (got {margin!r})")
+            raise ArgumentError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot
         self.margin = margin
         self._checker = checker
@@ -100,12 +101,12 @@ class CoalPathVerifier:
             states = states[None, :]
         nq = self.robot.nq
         if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
-            raise ValueError(f"states must be an (n, {nq}) array of full state "
+            raise ArgumentError(f"states must be an (n, {nq}) array of full state "
                              f"vectors (got shape {states.shape})")
         finite = np.isfinite(states).all(axis=1)
         if not finite.all():
             row = int(np.flatnonzero(~finite)[0])
-            raise ValueError(f"state {row} of the path to verify is not finite: {states[row]}")
+            raise ArgumentError(f"state {row} of the path to verify is not finite: {states[row]}")
         if len(self._pairs) == 0:
             return PathVerification(True, 0, 0, time.perf_counter() - t0)
         n = len(states)

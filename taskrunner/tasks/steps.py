@@ -34,6 +34,7 @@ from pydantic import (
     model_validator,
 )
 
+from taskrunner.errors import ArgumentError
 from taskrunner.tasks.expect import Expectation, OutcomeTolerance
 from taskrunner.tasks.nodes import (
     Node,
@@ -76,9 +77,9 @@ def _exactly_one(node: Node, *names: str) -> None:
     given = [n for n in names if getattr(node, attrs.get(n, n)) is not None]
     listed = ", ".join(repr(n) for n in names[:-1]) + f" or {names[-1]!r}"
     if not given:
-        raise ValueError(f"needs one of {listed}")
+        raise ArgumentError(f"needs one of {listed}")
     if len(given) > 1:
-        raise ValueError(f"takes only one of {listed} (got {' and '.join(repr(g) for g in given)})")
+        raise ArgumentError(f"takes only one of {listed} (got {' and '.join(repr(g) for g in given)})")
 
 
 def _named_or_mapping(value: Any) -> str:

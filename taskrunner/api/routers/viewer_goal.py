@@ -40,6 +40,7 @@ from taskrunner.api.schemas import (
     _Request,
 )
 from taskrunner.api.settings import Settings
+from taskrunner.errors import InvalidStateError
 from taskrunner.viewer.goal import GoalSolver
 
 __all__ = ["START_TOLERANCE", "router"]
@@ -171,7 +172,7 @@ def _execute_spec(cell_id: str, body: ExecuteBody, request: Request, cells: Cell
     session = cells.by_id(cell_id)
     state = _solver(request, cell_id, session).check_joints(body.group, body.joints, {})
     if state.reason is not None:
-        raise ValueError(f"the goal cannot be planned to: {state.reason}")
+        raise InvalidStateError(f"the goal cannot be planned to: {state.reason}")
     if body.start is not None:
         _check_start(session, body.backend, body.start)
     step: dict[str, Any] = {"group": state.group, "joints": dict(body.joints)}
