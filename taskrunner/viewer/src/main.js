@@ -4,6 +4,8 @@
 
 import { ApiError, followEvents, get, getToken, post, setToken } from './api.js';
 import { CellView } from './scene3d.js';
+import { GoalView } from './goal3d.js';
+import { PlanPanel } from './planpanel.js';
 import { Timeline, sample } from './timeline.js';
 import { drawPlot } from './plot.js';
 import { TreeView, shortLocation } from './tree.js';
@@ -23,6 +25,8 @@ const state = {
 const debug = (window.__viewer = { firstFrame: null, successOrder: [], errors: [], state });
 const stage = new CellView($('view3d'));
 debug.stage = stage;
+const goal = new GoalView(stage);
+debug.goal = goal;
 stage.onFirstFrame = () => { debug.firstFrame = performance.now(); };
 
 function notice(text, isError) {
@@ -68,6 +72,7 @@ async function showCell(cellId) {
   const cell = await get(`/viewer/cells/${encodeURIComponent(cellId)}`);
   state.cellId = cellId;
   state.cell = cell;
+  goal.unload();
   stage.loadCell(cell);
   stage.setFrames($('frames').checked);
   return cell;
@@ -170,31 +175,11 @@ async function viewCell(cellId) {
   setTimeline(null);
   const cell = await showCell(id);
   side.append(el('p', { textContent: cell.description || '' }));
-  const sliders = new Map();
-  side.append(el('h2', { textContent: 'Named poses' }));
-  for (const group of cell.groups) {
-    const names = Object.keys(group.poses);
-    if (!names.length) continue;
-    const select = el('select', { name: 'pose:' + group.name },
-      el('option', { value: '', textContent: '—' }), ...names.map((n) => el('option', { value: n, textContent: n })));
-    select.addEventListener('change', () => {
-      if (!select.value) return;
-      stage.setJoints(group.poses[select.value]);
-      for (const [name, input] of sliders) input.sync(stage.jointValue(name));
-    });
-    side.append(el('label', { className: 'row' }, el('span', { textContent: group.name }), select));
-  }
-  side.append(el('h2', { textContent: 'Joints (forward kinematics only)' }));
-  for (const joint of cell.joints) {
-    if (joint.mimic || joint.passive) continue;
-    const lo = joint.lower ?? -Math.PI, hi = joint.upper ?? Math.PI;
-    const input = el('input', { type: 'range', min: lo, max: hi, step: (hi - lo) / 1000, value: stage.jointValue(joint.name) });
-    const readout = el('span', { textContent: stage.jointValue(joint.name).toFixed(3) });
-    input.sync = (v) => { input.value = v; readout.textContent = Number(v).toFixed(3); };
-    input.addEventListener('input', () => { stage.setJoint(joint.name, Number(input.value)); readout.textContent = Number(input.value).toFixed(3); stage.render(); });
-    sliders.set(joint.name, input);
-    side.append(el('label', { className: 'slider' }, el('span', { textContent: joint.name, title: joint.name }), input, readout));
-  }
+  stage.setObjects(cell.objects);
+  goal.load(cell);
+  const panel = new PlanPanel({ el, side, guarded }, stage, goal, cell, debug);
+  state.panel = panel;
+  await panel.build();
 }
 
 async function viewTask(taskName) {
@@ -214,6 +199,10 @@ async function viewTask(taskName) {
   tree.show(compiled.tree);
   summary.textContent = `cell ${compiled.cell}`;
   await showCell(compiled.cell);
+  // where the task starts, with its own objects (from its file), before any planning
+  stage.setJoints(compiled.scene.joints);
+  stage.setObjects(compiled.scene.objects);
+  debug.taskScene = compiled.scene;
   const runCheck = async () => {
     summary.textContent = 'checking…';
     const report = await post('/tasks/check', { task: name });
@@ -359,6 +348,7 @@ async function viewRuns() {
 // ------------------------------------------------------------------ routing
 async function route() {
   if (state.live) { state.live.abort(); state.live = null; }
+  if (state.panel) { state.panel.close(); state.panel = null; }
   setPlaying(false);
   const [, view = 'cell', arg = ''] = location.hash.split('/');
   state.view = view;

@@ -224,7 +224,7 @@ function makeObject(spec) {
   return group;
 }
 
-function loadMesh(path, manager, done, redraw) {
+export function loadMesh(path, manager, done, redraw) {
   const ext = path.split('?')[0].split('.').pop().toLowerCase();
   manager.itemStart(path);
   getBinary(path).then((buffer) => {

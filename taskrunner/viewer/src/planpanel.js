@@ -1,0 +1,300 @@
+// Plan and execute from the page (the Cell view), as RViz's MotionPlanning panel does:
+// pick a planning group, set its goal by dragging the tool frame (solved by IK on the
+// server as it moves), by the joint sliders or by a named pose; Plan (POST /plan: the
+// trajectory plays on the goal ghost and leaves the tool's trail); Execute (a run on
+// the server's backend, token needed) and Stop (the run's cancel). The robot drawn
+// solid is where the backend says it is; the ghost is the goal.
+
+import { get, post } from './api.js';
+
+const POLL_MS = 120;
+
+export class PlanPanel {
+  // ui: { el, guarded, side }; debug: the page's window.__viewer
+  constructor(ui, stage, goal, cell, debug) {
+    this.ui = ui;
+    this.stage = stage;
+    this.goal = goal;
+    this.cell = cell;
+    this.debug = debug;
+    this.groups = cell.groups.filter((g) => g.joints.some((j) => this.movable(j)));
+    this.group = (this.groups.find((g) => g.tip_link && /arm/.test(g.name))
+      || this.groups.find((g) => g.tip_link) || this.groups[0] || null);
+    this.backend = 'sim';
+    this.mode = 'pose';
+    this.robot = {};       // joint values the backend reports
+    this.goalJoints = {};  // the ghost's joint values (the goal state)
+    this.answer = null;    // the server's last word on the goal
+    this.plan = null;
+    this.run = null;       // { id, status } of an Execute
+    this.inflight = false;
+    this.pending = null;
+    this.timer = null;
+    this.closed = false;
+    this.info = { state: this, answers: 0 };
+    debug.plan = this.info;
+  }
+
+  movable(name) {
+    const joint = this.cell.joints.find((j) => j.name === name);
+    return joint && !joint.mimic && !joint.passive && joint.type !== 'fixed';
+  }
+
+  close() {
+    this.closed = true;
+    clearTimeout(this.timer);
+    this.goal.onDrag = null;
+    this.goal.onDragEnd = null;
+    this.goal.setVisible(false);
+  }
+
+  async build() {
+    const { el, side } = this.ui;
+    if (!this.group) return;
+    const groupSelect = el('select', { id: 'plan-group' },
+      ...this.groups.map((g) => el('option', { value: g.name, textContent: g.name, selected: g === this.group })));
+    groupSelect.addEventListener('change', () => this.selectGroup(groupSelect.value));
+    const backend = el('select', { id: 'plan-backend' },
+      ...['sim', 'mock'].map((b) => el('option', { value: b, textContent: b })));
+    backend.addEventListener('change', () => this.ui.guarded(async () => {
+      this.backend = backend.value;
+      this.plan = null;
+      await this.readState(true);
+      this.refresh();
+    }));
+    const mode = el('select', { id: 'plan-mode' },
+      el('option', { value: 'pose', textContent: 'drag the tool frame (IK)' }),
+      el('option', { value: 'turn', textContent: 'turn the tool frame (IK)' }),
+      el('option', { value: 'joints', textContent: 'joint sliders' }));
+    mode.addEventListener('change', () => {
+      this.mode = mode.value;
+      this.goal.setMode(mode.value === 'turn' ? 'rotate' : 'translate');
+      this.goal.handle.enabled = mode.value !== 'joints' && Boolean(this.goal.tip);
+    });
+    this.scaling = el('input', { id: 'plan-scaling', type: 'number', min: '0.05', max: '1', step: '0.05', value: '0.5', style: 'width:5em' });
+    this.planButton = el('button', { id: 'plan-plan', type: 'button', textContent: 'Plan' });
+    this.executeButton = el('button', { id: 'plan-execute', type: 'button', textContent: 'Execute', disabled: true });
+    this.stopButton = el('button', { id: 'plan-stop', type: 'button', textContent: 'Stop', disabled: true });
+    const toCurrent = el('button', { type: 'button', textContent: 'goal = current' });
+    this.planButton.addEventListener('click', () => this.ui.guarded(() => this.doPlan()));
+    this.executeButton.addEventListener('click', () => this.ui.guarded(() => this.doExecute()));
+    this.stopButton.addEventListener('click', () => this.ui.guarded(() => this.doStop()));
+    toCurrent.addEventListener('click', () => { this.setGoal(this.groupValues(this.robot)); });
+    this.status = el('div', { id: 'plan-status', className: 'banner', textContent: 'goal: reading the robot…' });
+    this.slidersBox = el('div', { id: 'plan-sliders' });
+    side.append(el('h2', { textContent: 'Plan and execute' }),
+      el('label', { className: 'row' }, 'group ', groupSelect, ' backend ', backend),
+      el('label', { className: 'row' }, 'goal ', mode),
+      el('label', { className: 'row' }, 'velocity scaling ', this.scaling),
+      el('div', { className: 'row-ctl' }, this.planButton, this.executeButton, this.stopButton, toCurrent),
+      this.status);
+    side.append(el('h2', { textContent: 'Named poses (as goals)' }));
+    for (const group of this.cell.groups) {
+      const names = Object.keys(group.poses);
+      if (!names.length || !this.groups.includes(group)) continue;
+      const select = el('select', { name: 'pose:' + group.name },
+        el('option', { value: '', textContent: '—' }), ...names.map((n) => el('option', { value: n, textContent: n })));
+      select.addEventListener('change', () => {
+        if (!select.value) return;
+        if (group !== this.group) { groupSelect.value = group.name; this.selectGroup(group.name); }
+        this.setGoal(group.poses[select.value]);
+      });
+      side.append(el('label', { className: 'row' }, el('span', { textContent: group.name }), select));
+    }
+    side.append(el('h2', { textContent: 'Goal joints (the sliders set the goal, not the robot)' }), this.slidersBox);
+    this.goal.onDrag = (pose) => { if (this.mode !== 'joints') this.ask({ pose }); };
+    this.goal.setVisible(true);
+    await this.readState(true);
+    this.selectGroup(this.group.name);
+  }
+
+  groupValues(values) {
+    return Object.fromEntries(this.group.joints.filter((j) => this.movable(j) && j in values)
+      .map((j) => [j, values[j]]));
+  }
+
+  selectGroup(name) {
+    this.group = this.groups.find((g) => g.name === name) || this.group;
+    this.plan = null;
+    this.goal.clearTrail();
+    this.goal.setTip(this.group.tip_link);
+    this.goal.handle.enabled = this.mode !== 'joints' && Boolean(this.goal.tip);
+    this.buildSliders();
+    this.setGoal(this.groupValues(this.goalJoints));
+  }
+
+  buildSliders() {
+    const { el } = this.ui;
+    this.slidersBox.textContent = '';
+    this.sliders = new Map();
+    for (const name of this.group.joints) {
+      if (!this.movable(name)) continue;
+      const joint = this.cell.joints.find((j) => j.name === name);
+      const lo = joint.lower ?? -Math.PI, hi = joint.upper ?? Math.PI;
+      const input = el('input', { type: 'range', min: lo, max: hi, step: (hi - lo) / 1000, value: this.goalJoints[name] ?? 0 });
+      input.dataset.joint = name;
+      const readout = el('span', { className: 'goal-value' });
+      const now = el('span', { className: 'robot-value', title: 'where the robot is' });
+      input.sync = () => {
+        input.value = this.goalJoints[name] ?? 0;
+        readout.textContent = Number(this.goalJoints[name] ?? 0).toFixed(3);
+        now.textContent = Number(this.robot[name] ?? 0).toFixed(3);
+      };
+      input.addEventListener('input', () => {
+        this.setGoal({ [name]: Number(input.value) });
+      });
+      this.sliders.set(name, input);
+      this.slidersBox.append(el('label', { className: 'slider goal' }, el('span', { textContent: name, title: name }), input, readout, now));
+      input.sync();
+    }
+  }
+
+  syncSliders() {
+    for (const input of (this.sliders || new Map()).values()) input.sync();
+  }
+
+  // The goal set to joint values (a slider, a named pose): drawn at once, checked by
+  // the server (limits, collisions, the tool's pose for the handle).
+  setGoal(values) {
+    Object.assign(this.goalJoints, values);
+    this.goal.setJoints(this.goalJoints);
+    this.plan = null;
+    this.goal.clearTrail();
+    this.syncSliders();
+    this.refresh();
+    this.ask({ joints: this.groupValues(this.goalJoints) });
+  }
+
+  // Ask the server about the goal: one request in flight, the newest waiting behind it
+  // (a drag sends no more than the server answers).
+  ask(goal) {
+    this.pending = goal;
+    if (this.inflight) return;
+    clearTimeout(this.timer);
+    this.timer = setTimeout(() => this.sendPending(), 40);
+  }
+
+  async sendPending() {
+    if (this.closed || !this.pending) return;
+    const goal = this.pending;
+    this.pending = null;
+    this.inflight = true;
+    const body = { group: this.group.name, seed: this.groupValues(this.goalJoints) };
+    if (goal.pose) body.pose = { xyz: goal.pose.xyz, quat: goal.pose.quat, link: this.goal.tip };
+    else body.joints = goal.joints;
+    try {
+      const answer = await post(`/viewer/cells/${encodeURIComponent(this.cell.id)}/goal`, body);
+      if (this.closed) return;
+      this.answer = answer;
+      this.info.answers += 1;
+      this.info.answer = answer;
+      Object.assign(this.goalJoints, answer.joints);
+      this.goal.setJoints(this.goalJoints);
+      this.goal.setOk(answer.ok);
+      if (!goal.pose || !this.goal.dragging) {
+        if (goal.joints) this.goal.placeHandle(answer.xyz, answer.quat);
+      }
+      this.plan = null;
+      this.goal.clearTrail();
+      this.syncSliders();
+      this.refresh();
+    } catch (err) {
+      this.status.textContent = `goal: ${err.message}`;
+      this.status.className = 'banner status-failed';
+    } finally {
+      this.inflight = false;
+      if (this.pending) this.sendPending();
+    }
+  }
+
+  refresh() {
+    const running = this.run && this.run.status === 'running';
+    const ok = this.answer ? this.answer.ok : false;
+    this.planButton.disabled = running || !ok;
+    this.executeButton.disabled = running || !this.plan;
+    this.stopButton.disabled = !running;
+    let text, cls;
+    if (running) { text = `executing on ${this.backend} (run ${this.run.id})…`; cls = 'status-running'; }
+    else if (this.run && this.run.done) {
+      text = `run ${this.run.id}: ${this.run.status}` + (this.run.error ? ` — ${this.run.error}` : '');
+      cls = `status-${this.run.status}`;
+    } else if (!this.answer) { text = 'goal: checking…'; cls = ''; }
+    else if (!this.answer.ok) { text = `goal: ${this.answer.reason}`; cls = 'status-failed'; }
+    else if (this.plan) {
+      text = `planned: ${this.plan.duration.toFixed(2)} s of motion, found in ${(1000 * this.plan.planning_time).toFixed(0)} ms; Execute runs it on ${this.backend}`;
+      cls = 'status-succeeded';
+    } else { text = 'goal: reachable and collision-free; press Plan'; cls = 'status-succeeded'; }
+    if (this.run && this.run.done && this.answer && !this.plan && !running) {
+      text += ' · goal: ' + (this.answer.ok ? 'ok' : this.answer.reason);
+    }
+    this.status.textContent = text;
+    this.status.className = `banner ${cls}`;
+    this.info.status = text;
+  }
+
+  async readState(resetGoal) {
+    const answer = await get(`/cells/${encodeURIComponent(this.cell.id)}/state?backend=${this.backend}`);
+    if (this.closed) return;
+    this.robot = answer.joints;
+    this.info.robot = answer.joints;
+    this.stage.setJoints(answer.joints);
+    if (resetGoal) {
+      this.goalJoints = { ...answer.joints };
+      this.goal.setJoints(this.goalJoints);
+    }
+    this.syncSliders();
+  }
+
+  async doPlan() {
+    this.status.textContent = 'planning…';
+    this.planButton.disabled = true;
+    const scaling = Number(this.scaling.value);
+    try {
+      await this.readState(false);
+      const plan = await post('/plan', {
+        cell: this.cell.id, group: this.group.name, joints: this.groupValues(this.goalJoints),
+        backend: this.backend, velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5,
+      });
+      this.plan = plan;
+      this.info.planned = { duration: plan.duration, samples: plan.times.length, joint_names: plan.joint_names };
+      this.goal.showTrajectory(plan, this.goalJoints);
+    } finally {
+      this.refresh();
+    }
+  }
+
+  async doExecute() {
+    const plan = this.plan;
+    if (!plan) return;
+    const start = Object.fromEntries(plan.joint_names.map((n, i) => [n, plan.positions[0][i]]));
+    const scaling = Number(this.scaling.value);
+    const accepted = await post(`/viewer/cells/${encodeURIComponent(this.cell.id)}/execute`, {
+      group: this.group.name, joints: this.groupValues(this.goalJoints), backend: this.backend,
+      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5, start,
+    });
+    this.run = { id: accepted.run_id, status: 'running', done: false };
+    this.info.run = this.run;
+    this.plan = null;
+    this.refresh();
+    await this.follow(this.run);
+  }
+
+  // Poll the backend's joints (the solid robot moves) and the run, until it ends.
+  async follow(run) {
+    while (!this.closed && run.status === 'running') {
+      await new Promise((r) => setTimeout(r, POLL_MS));
+      const [, detail] = await Promise.all([
+        this.readState(false), get(`/runs/${encodeURIComponent(run.id)}`)]);
+      run.status = detail.status;
+      run.error = detail.error;
+    }
+    if (this.closed) return;
+    await this.readState(false);
+    run.done = true;
+    this.refresh();
+  }
+
+  async doStop() {
+    if (this.run && this.run.status === 'running') await post(`/runs/${encodeURIComponent(this.run.id)}/cancel`);
+  }
+}

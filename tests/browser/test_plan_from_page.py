@@ -1,0 +1,76 @@
+"""Plan and execute from the page, as in RViz's MotionPlanning panel: on a fresh server,
+the servo arm's tool-frame handle is dragged with the mouse (solved by IK on the server
+as it moves), Plan draws the trajectory's trail, Execute runs it on the mock backend,
+and the arm drawn on the page moves to the goal. The Task view shows the task's objects
+before anything is planned."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .test_viewer_browser import enter_token, shot
+
+_ANSWERS = "window.__viewer.plan ? window.__viewer.plan.answers : 0"
+
+
+def _handle_pixel(page: Any) -> tuple[float, float]:
+    x, y, _ = page.evaluate("window.__viewer.goal.handleOnScreen()")
+    box = page.locator("#view3d canvas").bounding_box()
+    return box["x"] + (x + 1) / 2 * box["width"], box["y"] + (1 - y) / 2 * box["height"]
+
+
+def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screenshots):
+    page.goto(page.server.url + "/#/cell/servo_arm_table")
+    enter_token(page)
+    page.wait_for_function(f"window.__viewer.firstFrame !== null && {_ANSWERS} > 0",
+                           timeout=30_000)
+    page.select_option("#plan-backend", "mock")
+    page.wait_for_function("window.__viewer.plan.answer && window.__viewer.plan.answer.ok")
+    joints = list(page.evaluate("Object.keys(window.__viewer.plan.answer.joints)"))
+    robot_before = {j: page.evaluate(f"window.__viewer.stage.jointValue({j!r})") for j in joints}
+    answers = page.evaluate(_ANSWERS)
+    # drag the handle's centre (it moves in the view's plane) down and toward the base
+    x, y = _handle_pixel(page)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 9):
+        page.mouse.move(x - 2 * k, y + 4 * k)
+        page.wait_for_timeout(30)
+    page.mouse.up()
+    page.wait_for_function(f"{_ANSWERS} > {answers} && !window.__viewer.goal.dragging")
+    page.wait_for_timeout(300)  # the last answer of the drag
+    answer = page.evaluate("window.__viewer.plan.answer")
+    assert answer["ok"], answer["reason"]
+    goal = answer["joints"]
+    assert max(abs(goal[j] - robot_before[j]) for j in joints) > 0.02, "the drag moved no joint"
+    # the ghost shows the goal; the solid robot has not moved
+    ghost = {j: page.evaluate(f"window.__viewer.goal.jointValue({j!r})") for j in joints}
+    assert all(abs(ghost[j] - goal[j]) < 1e-6 for j in joints)
+    assert all(abs(page.evaluate(f"window.__viewer.stage.jointValue({j!r})") - robot_before[j])
+               < 1e-6 for j in joints)
+    page.click("#plan-plan")
+    page.wait_for_function("window.__viewer.plan.planned", timeout=30_000)
+    assert page.evaluate("window.__viewer.goal.trail.geometry.attributes.position.count") > 2
+    shot(page, screenshots, "plan_servo_arm_planned")
+    page.click("#plan-execute")
+    page.wait_for_function("window.__viewer.plan.run && window.__viewer.plan.run.done",
+                           timeout=30_000)
+    run = page.evaluate("window.__viewer.plan.run")
+    assert run["status"] == "succeeded", run
+    robot_after = {j: page.evaluate(f"window.__viewer.stage.jointValue({j!r})") for j in joints}
+    assert all(abs(robot_after[j] - goal[j]) < 2e-3 for j in joints), (robot_after, goal)
+    shown = page.eval_on_selector_all("#plan-sliders .robot-value", "els => els.map(e => e.textContent)")
+    assert [float(v) for v in shown] == [round(goal[j], 3) for j in joints]
+    detail = page.server.api(f"/runs/{run['id']}")
+    assert detail["backend"] == "mock" and detail["task"] == "goal_from_view"
+    shot(page, screenshots, "plan_servo_arm_executed")
+
+
+def test_the_task_view_shows_the_tasks_objects_before_planning(page):
+    page.goto(page.server.url + "/#/task/pick_place")
+    enter_token(page)
+    page.wait_for_function("window.__viewer.taskScene && window.__viewer.stage.objectWorld('cube')",
+                           timeout=30_000)
+    cube = page.evaluate("window.__viewer.stage.objectWorld('cube')")
+    assert [round(v, 4) for v in cube] == [0.19, 0.04, 0.7625]
+    assert page.evaluate("window.__viewer.preview === undefined")  # nothing planned
