@@ -6,6 +6,9 @@ Subcommands:
   task as ``check`` does (``--no-check`` skips it; nothing moves when it finds a problem),
   then run it; a live tree in a terminal, plain log lines otherwise, a summary at the end.
 - ``run-task check FILE``: report every problem of a task at once, with file:line.
+- ``run-task export RECORD --mcap FILE``: a run record as an MCAP file of ROS 2 messages
+  (Foxglove, ``ros2 bag play`` into RViz); a run takes ``--mcap FILE`` and ``--foxglove
+  [PORT]`` (a live feed) too.
 - ``run-task test [PATHS…] [--jobs N] [--junit FILE] [--ray [ADDRESS]]``: run task files
   and their scenarios in parallel, each judged by its ``expect:``; exit 0 when all pass.
 - ``run-task sweep TASK --param NAME=START:STOP:COUNT [--seeds N] [--backend mock,sim]``:
@@ -64,7 +67,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw", "view", "test", "sweep", "plan", "warm-up")
+            "firmware-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export")
 
 
 def _load(name_or_path: str):  # type: ignore[no-untyped-def]
@@ -401,7 +404,16 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
                          port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
                          home=args.home, check=False, early=early,
-                         loaded=report)
+                         loaded=report, watch=_watches(args))
+
+
+def _watches(args: argparse.Namespace) -> list:  # type: ignore[type-arg]
+    """``--mcap`` and ``--foxglove`` (taskrunner.export, imported only when asked for)."""
+    if args.mcap is None and args.foxglove is None:
+        return []
+    from taskrunner.export.command import run_watches
+
+    return run_watches(args)
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
@@ -648,6 +660,12 @@ def cmd_examples(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_export(args: argparse.Namespace) -> int:
+    from taskrunner.export.command import export_command
+
+    return export_command(args)
+
+
 def cmd_warm_up(args: argparse.Namespace) -> int:
     from taskrunner.runtime.session import warm_up_command
 
@@ -740,6 +758,10 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--plain", action="store_true", help="log lines even in a terminal")
     run.add_argument("--in-process", action="store_true",
                      help="plan in this process instead of a worker process")
+    from taskrunner.export.command import add_export_parser, add_run_options
+
+    add_run_options(run)
+    add_export_parser(sub)
     run.add_argument("--no-check", action="store_true",
                      help="skip the check run before anything moves (run-task check)")
     check = sub.add_parser("check", help="check a task file; nothing moves")
@@ -887,7 +909,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
                 "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
                 "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep,
-                "warm-up": cmd_warm_up}
+                "warm-up": cmd_warm_up, "export": cmd_export}
     try:
         _apply_robot_options(args)
         return commands[args.command](args)

@@ -1,0 +1,76 @@
+"""``run-task export`` and the ``--mcap`` / ``--foxglove`` options of a run."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Iterator
+from contextlib import AbstractContextManager, contextmanager
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from taskrunner.runtime.runner import Runner
+
+__all__ = ["add_export_parser", "add_run_options", "export_command", "run_watches"]
+
+
+def add_export_parser(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    export = sub.add_parser("export", help="convert a run record to an MCAP file (ROS 2 "
+                                           "messages: Foxglove, ros2 bag play into RViz)")
+    export.add_argument("record", help="a run record (runs/<id>.json, or its .events.jsonl)")
+    export.add_argument("--mcap", required=True, metavar="FILE", help="the MCAP file to write")
+    export.add_argument("--cell", default=None, metavar="NAME_OR_PATH",
+                        help="the cell the run used (default: the one its task file names)")
+
+
+def add_run_options(run: argparse.ArgumentParser) -> None:
+    run.add_argument("--mcap", default=None, metavar="FILE",
+                     help="also write the run as an MCAP file (ROS 2 messages) when it ends")
+    run.add_argument("--foxglove", nargs="?", type=int, const=8765, default=None,
+                     metavar="PORT", help="stream /joint_states, /tf and /rosout live to "
+                                          "Foxglove on ws://127.0.0.1:PORT (8765)")
+
+
+def export_command(args: argparse.Namespace) -> int:
+    from taskrunner.export.mcapfile import export_mcap
+
+    path = export_mcap(Path(args.record), Path(args.mcap), args.cell)
+    print(f"{args.record}: written to {path} ({path.stat().st_size / 1024:.0f} KiB)")
+    return 0
+
+
+def run_watches(args: argparse.Namespace
+                ) -> list[Callable[[Runner], AbstractContextManager[object]]]:
+    """What a run's ``--foxglove`` and ``--mcap`` ask for, for ``run_task_file(watch=)``."""
+    watches: list[Callable[[Runner], AbstractContextManager[object]]] = []
+    if getattr(args, "foxglove", None) is not None:
+        port = args.foxglove
+
+        @contextmanager
+        def feed(runner: Runner) -> Iterator[None]:
+            from taskrunner.export.live import FoxgloveFeed, FoxgloveFeedOptions
+
+            with FoxgloveFeed(runner.cell, FoxgloveFeedOptions(port=port)) as live:
+                print(f"Foxglove: open connection {live.url}", flush=True)
+                with live.follow(runner):
+                    yield
+
+        watches.append(feed)
+    if getattr(args, "mcap", None):
+        out = Path(args.mcap)
+        if not out.parent.is_dir():  # said before anything moves, not after the run
+            from taskrunner.errors import InputError
+
+            raise InputError(f"'--mcap' must be a file in an existing folder (got {out})")
+
+        @contextmanager
+        def mcap(runner: Runner) -> Iterator[None]:
+            from taskrunner.export.mcapfile import export_mcap
+
+            yield
+            path = export_mcap(runner.record, out, runner.cell)
+            print(f"  mcap: {path}", file=sys.stdout, flush=True)
+
+        watches.append(mcap)
+    return watches

@@ -1,0 +1,307 @@
+"""A run record as timed ROS 2 messages: what an MCAP file of the run holds.
+
+Time: a message's log time (and header stamp) is the record's ``started`` (UTC) plus the
+run's own task time (s), the schedule the motions were put on:
+
+* a motion starts at its ``sent`` time (when it really started; the planned ``start``
+  on a backend that plays no time, the mock) and runs for the seconds of its
+  trajectory it executed (``executed.until`` of its node's end, else all of it);
+* any other event is at the latest of those times reached so far, or at its own clock
+  time if that is later and the backend plays motions in time (sim, mujoco, servos).
+
+So a mock run, whose motions end at once on the wall clock, still plays back at the
+speed it was planned for; a run on the robot plays as it ran.
+
+Topics (ROS 2 conventions, so Foxglove's 3D panel and RViz show them):
+
+* ``/robot_description`` (``std_msgs/String``): the merged URDF, once, at the start.
+* ``/tf_static`` (``tf2_msgs/TFMessage``): every fixed joint's transform, robot
+  placements included, once.
+* ``/joint_states`` (``sensor_msgs/JointState``) and ``/tf``: every joint of the cell at
+  each recorded trajectory sample (the record keeps up to 25 per second) and at each
+  motion's end; joints of motions running at once are each interpolated there.
+* ``/scene_objects`` (``visualization_msgs/MarkerArray``): the scene's objects, at the
+  start, when each motion starts (objects picked up ride on their link's frame), and at
+  the end; each array starts with a DELETEALL, so objects taken away disappear.
+* ``/rosout`` (``rcl_interfaces/Log``): every event, the tree node as the logger's name,
+  the task file and line as ``file`` and ``line``, the event's kind as ``function``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from datetime import datetime
+from typing import Any
+
+import numpy as np
+
+from taskrunner.errors import InputError
+from taskrunner.export import rosmsg
+from taskrunner.export.frames import FrameTree, robot_description
+from taskrunner.export.rosmsg import LogLine, Marker, MessageType
+from taskrunner.robot.cell import Cell
+from taskrunner.runtime.events import RunEvent
+from taskrunner.runtime.records import RunRecord
+from taskrunner.shapes import Mesh
+
+__all__ = ["LATCHED", "TOPICS", "TimedMessage", "log_line", "record_messages", "scene_markers"]
+
+# topic → message type, in the order channels are declared.
+TOPICS: dict[str, MessageType] = {
+    "/robot_description": rosmsg.STRING,
+    "/tf_static": rosmsg.TF_MESSAGE,
+    "/scene_objects": rosmsg.MARKER_ARRAY,
+    "/joint_states": rosmsg.JOINT_STATE,
+    "/tf": rosmsg.TF_MESSAGE,
+    "/rosout": rosmsg.LOG,
+}
+LATCHED = frozenset({"/robot_description", "/tf_static"})  # transient local, as published
+
+
+@dataclass(frozen=True)
+class TimedMessage:
+    """One encoded message: ``time_ns`` (UNIX ns) on ``topic``."""
+
+    time_ns: int
+    topic: str
+    data: bytes
+
+
+@dataclass
+class _Motion:
+    node: str
+    t0: float                   # s of task time
+    joints: tuple[str, ...]
+    times: np.ndarray           # s from t0
+    positions: np.ndarray       # one row per sample
+    velocities: np.ndarray
+    until: float                # s of trajectory executed
+
+    def sample_times(self) -> np.ndarray:
+        kept = self.times[self.times <= self.until]
+        return self.t0 + np.append(kept, self.until)
+
+    def at(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """Positions and velocities ``t`` s after its start (held at its end)."""
+        s = min(max(t, 0.0), self.until)
+        q = np.array([np.interp(s, self.times, self.positions[:, j])
+                      for j in range(len(self.joints))])
+        if t > self.until:
+            return q, np.zeros(len(self.joints))
+        qd = np.array([np.interp(s, self.times, self.velocities[:, j])
+                       for j in range(len(self.joints))])
+        return q, qd
+
+
+@dataclass
+class _Schedule:
+    """The record's events placed on its task time (module docstring)."""
+
+    times: dict[int, float] = field(default_factory=dict)  # event seq → s
+    motions: list[_Motion] = field(default_factory=list)
+    end: float = 0.0
+
+
+def _trajectory(event: RunEvent) -> tuple[tuple[str, ...], np.ndarray, np.ndarray, np.ndarray]:
+    data: Any = event.data["trajectory"]
+    try:
+        joints = tuple(str(j) for j in data["joints"])
+        times = np.asarray(data["times"], dtype=float)
+        positions = np.asarray(data["positions"], dtype=float).reshape(len(times), len(joints))
+        velocities = np.asarray(data.get("velocities") or np.zeros_like(positions),
+                                dtype=float).reshape(len(times), len(joints))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise InputError(f"event {event.seq} ({event.kind} of {event.node!r}): its "
+                         f"'trajectory' must have joints, times and positions ({exc})") from None
+    if len(times) == 0:
+        raise InputError(f"event {event.seq} ({event.kind} of {event.node!r}): its "
+                         f"'trajectory' has no samples")
+    return joints, times, positions, velocities
+
+
+def _schedule(record: RunRecord) -> _Schedule:
+    motions = [e for e in record.events if e.kind == "motion" and "trajectory" in e.data]
+    timed = record.backend != "mock" or any(
+        e.data.get("sent", e.data.get("start")) != e.data.get("start") for e in motions)
+    out = _Schedule()
+    running: dict[str, _Motion] = {}
+    cursor = 0.0
+    for event in record.events:
+        t = max(cursor, event.time) if timed else cursor
+        if event.kind == "motion" and "trajectory" in event.data:
+            joints, times, positions, velocities = _trajectory(event)
+            t = float(event.data.get("sent", event.data.get("start", cursor)))
+            motion = _Motion(event.node or "", t, joints, times, positions, velocities,
+                             float(times[-1]))
+            running[event.node or ""] = motion
+            out.motions.append(motion)
+        elif event.kind == "node_finished" and (event.node or "") in running:
+            motion = running.pop(event.node or "")
+            executed = event.data.get("executed")
+            if isinstance(executed, dict) and executed.get("until") is not None:
+                motion.until = min(float(executed["until"]), float(motion.times[-1]))
+            t = max(t, motion.t0 + motion.until)
+        # Events keep their order (a motion's planned start may lie a rounding before
+        # the recorded end of the one before it).
+        out.times[event.seq] = max(t, cursor)
+        cursor = max(cursor, t)
+    out.end = max([cursor, *(m.t0 + m.until for m in out.motions)])
+    return out
+
+
+def _start_state(record: RunRecord, cell: Cell) -> np.ndarray:
+    model = cell.model
+    q = cell.start_state()
+    started = next((e for e in record.events if e.kind == "run_started"), None)
+    scene = started.data.get("scene") if started is not None else None
+    joints = scene.get("joints") if isinstance(scene, dict) else None
+    if isinstance(joints, dict):
+        _check_joints(record, cell, joints)
+        q = model.state_with(q, {str(k): float(v) for k, v in joints.items()})
+    return q
+
+
+def _check_joints(record: RunRecord, cell: Cell, joints: Any) -> None:
+    unknown = [str(j) for j in joints if str(j) not in cell.model.joint_names]
+    if unknown:
+        raise InputError(f"run {record.run_id}: joint {unknown[0]!r} of the record is not a "
+                         f"joint of cell {cell.name!r} (is it the cell the run used?)")
+
+
+def _stamp(base_ns: int, t: float) -> int:
+    return base_ns + int(round(t * 1e9))
+
+
+def _joint_samples(schedule: _Schedule, start: np.ndarray, cell: Cell
+                   ) -> Iterator[tuple[float, np.ndarray, np.ndarray]]:
+    """``(t, q, qd)`` of every joint at each sample time (module docstring)."""
+    model = cell.model
+    times = [np.array([0.0]), *(m.sample_times() for m in schedule.motions)]
+    columns = [model.indices(m.joints) for m in schedule.motions]
+    ordered = sorted(range(len(schedule.motions)), key=lambda i: schedule.motions[i].t0)
+    for t in np.unique(np.round(np.concatenate(times), 9)):
+        q, qd = start.copy(), np.zeros(model.nq)
+        for i in ordered:
+            motion = schedule.motions[i]
+            if t + 1e-9 < motion.t0:
+                continue
+            q[columns[i]], qd[columns[i]] = motion.at(float(t) - motion.t0)
+        yield float(t), model.apply_mimic(q), qd
+
+
+# Marker colours (r, g, b, a): objects in the world, and objects a link carries.
+_WORLD_COLOUR = (0.55, 0.6, 0.7, 1.0)
+_CARRIED_COLOUR = (0.95, 0.55, 0.15, 1.0)
+
+
+def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str
+              ) -> tuple[list[Marker], list[str]]:
+    """The scene's objects as markers (after a DELETEALL; ``root``: the tf tree's root,
+    the world); and the objects that could not be drawn, with why."""
+    markers = [Marker(stamp_ns, root, "", 0, action=rosmsg.DELETEALL)]
+    skipped = []
+    meshes = {o.name: o.shape for o in cell.objects if isinstance(o.shape, Mesh)}
+    for i, obj in enumerate(objects or [], start=1):
+        shape, pose = obj.get("shape") or {}, obj.get("pose") or {}
+        frame = obj.get("attached_to") or pose.get("frame") or "world"
+        frame = root if frame == "world" else frame
+        common = dict(stamp_ns=stamp_ns, frame_id=frame, ns=str(obj.get("name", "")), id=i,
+                      xyz=tuple(float(v) for v in pose.get("xyz", (0, 0, 0))),
+                      quat=tuple(float(v) for v in pose.get("quat", (0, 0, 0, 1))),
+                      color=_CARRIED_COLOUR if obj.get("attached_to") else _WORLD_COLOUR,
+                      text=str(obj.get("name", "")))
+        kind = shape.get("type")
+        if kind == "box":
+            markers.append(Marker(**common, type=rosmsg.CUBE,  # type: ignore[arg-type]
+                                  scale=tuple(float(v) for v in shape["size"])))
+        elif kind == "sphere":
+            d = 2 * float(shape["radius"])
+            markers.append(Marker(**common, type=rosmsg.SPHERE,  # type: ignore[arg-type]
+                                  scale=(d, d, d)))
+        elif kind == "cylinder":
+            d = 2 * float(shape["radius"])
+            markers.append(Marker(**common, type=rosmsg.CYLINDER,  # type: ignore[arg-type]
+                                  scale=(d, d, float(shape["length"]))))
+        elif kind == "mesh" and obj.get("name") in meshes:
+            mesh = meshes[str(obj.get("name"))]
+            markers.append(Marker(**common, type=rosmsg.MESH_RESOURCE,  # type: ignore[arg-type]
+                                  scale=tuple(float(v) for v in mesh.scale),
+                                  mesh_resource=mesh.path.resolve().as_uri()))
+        else:
+            skipped.append(f"object {obj.get('name')!r} ({kind}) not drawn: "
+                           + ("its mesh file is not in the record (only objects of the cell "
+                              "are found again)" if kind == "mesh" else "unknown shape"))
+    return markers, skipped
+
+
+def _log_level(event: RunEvent) -> int:
+    if event.kind == "run_finished":
+        return {"succeeded": rosmsg.INFO, "failed": rosmsg.ERROR}.get(event.status or "",
+                                                                       rosmsg.WARN)
+    if event.kind == "node_finished" and event.status == "FAILURE":
+        return rosmsg.WARN
+    if event.kind == "node_started":
+        return rosmsg.DEBUG
+    return rosmsg.INFO
+
+
+def log_line(event: RunEvent, stamp_ns: int, record: RunRecord) -> LogLine:
+    file, line = record.task_file, 0
+    if event.location:
+        head, sep, tail = event.location.rpartition(":")
+        if sep and tail.isdigit():
+            file, line = head, int(tail)
+        else:
+            file = event.location
+    text = event.message or event.kind
+    if event.status and event.kind in ("node_finished", "run_finished"):
+        text = f"{event.status}: {text}" if event.message and event.message != event.status \
+            else event.status
+    return LogLine(stamp_ns, _log_level(event), event.node or record.task, text, file,
+                   event.kind, line)
+
+
+def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
+    """Every message of ``record``'s MCAP file, in time order (module docstring).
+
+    Args:
+        record: a run record (:func:`taskrunner.runtime.records.load_record`).
+        cell: the cell the run used (its model gives the links' poses).
+
+    Raises:
+        InputError: the record names a joint the cell does not have, or holds a
+            trajectory that cannot be read.
+    """
+    tree = FrameTree(cell.model)
+    base_ns = int(datetime.fromisoformat(record.started).timestamp() * 1e9)
+    schedule = _schedule(record)
+    for motion in schedule.motions:
+        _check_joints(record, cell, motion.joints)
+    out: list[tuple[int, int, TimedMessage]] = []
+    order = {topic: i for i, topic in enumerate(TOPICS)}
+
+    def add(t: float, topic: str, data: bytes) -> None:
+        stamp = _stamp(base_ns, t)
+        out.append((stamp, order[topic], TimedMessage(stamp, topic, data)))
+
+    add(0.0, "/robot_description", rosmsg.encode_string(robot_description(cell.model)))
+    add(0.0, "/tf_static", rosmsg.encode_tf_message(tree.static_transforms(base_ns)))
+    names = cell.model.joint_names
+    for t, q, qd in _joint_samples(schedule, _start_state(record, cell), cell):
+        stamp = _stamp(base_ns, t)
+        add(t, "/joint_states", rosmsg.encode_joint_state(stamp, names, q, qd))
+        add(t, "/tf", rosmsg.encode_tf_message(tree.moving_transforms(q, stamp)))
+    for event in record.events:
+        t = schedule.times[event.seq]
+        stamp = _stamp(base_ns, t)
+        scene = event.data.get("scene")
+        if event.kind in ("run_started", "motion", "run_finished") and isinstance(scene, dict):
+            markers, skipped = scene_markers(scene.get("objects"), stamp, cell, tree.root)
+            add(t, "/scene_objects", rosmsg.encode_marker_array(markers))
+            for reason in skipped:
+                add(t, "/rosout", rosmsg.encode_log(
+                    LogLine(stamp, rosmsg.WARN, "taskrunner.export", reason)))
+        add(t, "/rosout", rosmsg.encode_log(log_line(event, stamp, record)))
+    out.sort(key=lambda item: (item[0], item[1]))
+    return [message for _, _, message in out]
