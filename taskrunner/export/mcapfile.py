@@ -79,6 +79,7 @@ def write_mcap(messages: list[TimedMessage], path: str | Path,
             if metadata:
                 writer.add_metadata("taskrunner", metadata)
             writer.finish()
+        os.chmod(tmp, 0o644)  # mkstemp's 0600 is for the temporary name only
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
