@@ -44,7 +44,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Hashable, Iterable, Mapping
+from collections.abc import Hashable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -89,6 +89,7 @@ from taskrunner.tasks import (
     load_task,
     walk_steps,
 )
+from taskrunner.tasks.waits import WaitPair, wait_pairs
 from taskrunner.tree.behaviours import (
     CheckOutcome,
     MoveJoints,
@@ -370,6 +371,10 @@ class _DryRun:
         # The motions the dry run made, in order (leaf, start state, end state, path or
         # None for a straight joint line): what a parallel's branches are scheduled from.
         self.trace: list[tuple[Behaviour, np.ndarray, np.ndarray, JointPath | None]] = []
+        # Where each step's motions begin and end in the trace (by id of the step), and
+        # the task's wait_for: a parallel's branches are scheduled with them.
+        self.spans: dict[int, tuple[int, int]] = {}
+        self.waits: list[WaitPair] = wait_pairs(spec.steps)
 
     # ------------------------------------------------------------------ composites
     def sequence(self, steps: Iterable[StepNode], ctx: TaskContext) -> TaskContext:
@@ -378,6 +383,12 @@ class _DryRun:
         return ctx
 
     def step(self, step: StepNode, ctx: TaskContext) -> TaskContext:
+        mark = len(self.trace)
+        ctx = self._step(step, ctx)
+        self.spans[id(step)] = (mark, len(self.trace))
+        return ctx
+
+    def _step(self, step: StepNode, ctx: TaskContext) -> TaskContext:
         if isinstance(step, FallbackStep):
             return self.fallback(step, ctx)
         if isinstance(step, ParallelStep) and not any(
@@ -405,12 +416,23 @@ class _DryRun:
         before = ctx.scene.copy()
         problems = len(self.problems)
         branches: list[list[tuple[Behaviour, np.ndarray, np.ndarray, JointPath | None]]] = []
+        marks: list[int] = []
         for child in step.children:
-            mark = len(self.trace)
+            marks.append(len(self.trace))
             ctx = self.step(child, ctx)
-            branches.append(self.trace[mark:])
+            branches.append(self.trace[marks[-1]:])
+        # wait_for between these branches: where in its branch a step waits, and where
+        # the step it waits for ends.
+        waits: list[tuple[int, int, int, int, str, str | None]] = []
+        for pair in self.waits:
+            waiter, named = self.spans.get(id(pair.waiter)), self.spans.get(id(pair.named))
+            if pair.parallel is step and waiter is not None and named is not None:
+                i, j = pair.waiter_branch, pair.named_branch
+                where = str(pair.waiter.loc) if pair.waiter.loc is not None else None
+                waits.append((i, waiter[0] - marks[i], j, named[1] - marks[j], pair.name,
+                              where))
         if len(self.problems) == problems and len(branches) > 1:
-            text, notes = schedule_branches(before, branches)
+            text, notes = schedule_branches(before, branches, waits)
             self.notes += [_at(step, note) for note in notes]
             if text is not None:
                 self.problems.append(_at(step, f"{_describe(step)}: {text}"))
@@ -724,22 +746,48 @@ class _DryRun:
         return True
 
 
+@dataclass(frozen=True)
+class _Queued:
+    """What comes next in a branch the check schedules: a motion (``trajectory``), a step
+    waiting for another branch's step ``name`` ("wait"), or the end of a step another
+    branch waits for ("done")."""
+
+    kind: str
+    where: str | None
+    trajectory: JointTrajectory | None = None
+    name: str = ""
+
+
 def schedule_branches(scene: Scene, branches: list[list[tuple[Behaviour, np.ndarray, np.ndarray,
-                                                             JointPath | None]]]
+                                                             JointPath | None]]],
+                      waits: Sequence[tuple[int, int, int, int, str, str | None]] = ()
                       ) -> tuple[str | None, list[str]]:
     """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
     of each branch in turn, as a run admits them (the scene: as the parallel starts).
+
+    Args:
+        waits: each ``wait_for`` between the branches: (branch of the waiting step, the
+            index in that branch of its first motion, branch of the step waited for, the
+            index after its last motion, that step's name, the waiting step's file:line);
+            followed as the run's leaves follow it (:mod:`taskrunner.tree.waiting`).
 
     Returns:
         What cannot be resolved (None: the schedule holds), and a note per wait.
     """
     schedule = MotionSchedule()
-    queues: dict[LaneKey, list[tuple[str | None, JointTrajectory]]] = {}
+    queues: dict[LaneKey, list[_Queued]] = {}
     instance = schedule.new_instance(lambda i: bool(queues.get(((instance, i),))))
     model = scene.robot
     for index, motions in enumerate(branches):
         queue = queues.setdefault(((instance, index),), [])
-        for leaf, start, end, path in motions:
+        for position in range(len(motions) + 1):
+            queue += [_Queued("done", None, name=name) for _, _, b, at, name, _ in waits
+                      if (b, at) == (index, position)]
+            queue += [_Queued("wait", where, name=name) for b, at, _, _, name, where in waits
+                      if (b, at) == (index, position)]
+            if position == len(motions):
+                break
+            leaf, start, end, path = motions[position]
             if path is None:
                 moved = np.flatnonzero(np.abs(np.asarray(end) - np.asarray(start)) > 1e-9)
                 if len(moved) == 0:
@@ -752,7 +800,7 @@ def schedule_branches(scene: Scene, branches: list[list[tuple[Behaviour, np.ndar
                 trajectory = parameterize_path(model, path, timing)
             except TaskrunnerError:
                 continue  # reported by the step itself where a run would time it
-            queue.append((getattr(leaf, "location", None), trajectory))
+            queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory))
     notes: list[str] = []
     least = math.inf
     while any(queues.values()):
@@ -760,9 +808,25 @@ def schedule_branches(scene: Scene, branches: list[list[tuple[Behaviour, np.ndar
         for lane, queue in queues.items():
             if not queue:
                 continue
-            location, trajectory = queue[0]
+            item = queue[0]
+            if item.kind == "done":
+                schedule.finish_step(lane, item.name)
+            elif item.kind == "wait":
+                at = schedule.finished.get((instance, item.name))
+                if at is None:
+                    continue  # the other branch has not got there yet
+                if at > schedule.lane_end(lane):
+                    notes.append(f"{item.where or 'a step'} waits until step {item.name!r} "
+                                 f"has finished, at {at:.2f} s")
+                schedule.not_before(lane, at)
+            if item.kind != "motion":
+                queue.pop(0)
+                progressed = True
+                continue
+            location, motion = item.where, item.trajectory
+            assert motion is not None
             try:
-                found = schedule.admit(scene, lane, trajectory, location)
+                found = schedule.admit(scene, lane, motion, location)
             except TaskrunnerError as exc:
                 return f"{location}: {exc}", notes
             if isinstance(found, Blocked):
