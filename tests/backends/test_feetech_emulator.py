@@ -1,0 +1,74 @@
+"""The STS3215 model behind ``run-task bus-sim``: goal tracking, backlash, load, protection."""
+
+from __future__ import annotations
+
+import pytest
+
+from taskrunner.backends.feetech.emulator import (
+    ACCELERATION_UNIT,
+    TICKS_PER_DEGREE,
+    BusEmulator,
+    ServoModel,
+    so101_servos,
+)
+from taskrunner.backends.feetech.protocol import StatusFlag
+
+
+def _servo(**kwargs: float) -> ServoModel:
+    servo = ServoModel(1, **kwargs)  # type: ignore[arg-type]
+    servo.put("Torque_Enable", 1)
+    return servo
+
+
+def test_goal_is_tracked_at_the_speed_and_acceleration_limits() -> None:
+    servo = _servo(actual=1000.0, backlash=0.0)
+    servo.put("Goal_Velocity", 1000)  # ticks/s
+    servo.put("Acceleration", 50)  # 5000 ticks/s²: 0.2 s to full speed
+    servo.put("Goal_Position", 2000)
+    servo.advance(0.2)
+    assert servo.velocity == pytest.approx(1000.0, abs=1.0)
+    assert servo.actual == pytest.approx(1000 + 0.5 * 50 * ACCELERATION_UNIT * 0.2 ** 2, abs=6)
+    servo.advance(0.5)
+    assert servo.velocity == pytest.approx(1000.0, abs=1.0)  # cruising, not yet braking
+    servo.advance(0.6)
+    assert servo.present() == 2000 and servo.velocity == 0.0
+
+
+def test_backlash_leaves_the_output_behind_after_a_reversal() -> None:
+    servo = _servo(actual=2048.0)  # no gravity: the output rests where the gears left it
+    servo.put("Goal_Position", 2300)
+    servo.advance(1.0)
+    assert servo.motor == 2300 and servo.actual == pytest.approx(2300 - TICKS_PER_DEGREE / 2)
+    servo.put("Goal_Position", 2100)
+    servo.advance(1.0)
+    assert servo.actual == pytest.approx(2100 + TICKS_PER_DEGREE / 2)
+
+
+def test_gravity_loads_the_servo_and_holds_the_output_on_one_side() -> None:
+    servo = _servo(actual=2048.0, gravity=0.3, gravity_zero=1024.0)  # horizontal at 2048
+    servo.put("Goal_Position", 2048)
+    servo.advance(0.2)
+    assert servo.load == pytest.approx(0.3, abs=0.01)
+    assert servo.actual == pytest.approx(2048 - TICKS_PER_DEGREE / 2)
+
+
+def test_a_stall_trips_the_overload_protection_after_its_time() -> None:
+    servo = _servo(actual=2048.0)
+    servo.put("Goal_Position", 2500)
+    servo.stalled = True
+    servo.advance(0.15)  # Protection_Time 20 × 10 ms
+    assert servo.load == 1.0 and not servo.flags
+    servo.advance(0.06)
+    assert servo.flags == StatusFlag.OVERLOAD
+    servo.stalled = False
+    position = servo.actual
+    servo.advance(0.2)
+    assert servo.actual == position  # the torque is cut: no motion
+
+
+def test_inject_refuses_unknown_faults_and_servos() -> None:
+    emulator = BusEmulator(so101_servos())
+    with pytest.raises(ValueError, match="'kind' must be one of drop, corrupt"):
+        emulator.inject("fire")
+    with pytest.raises(ValueError, match=r"'servo_id' must be one of \[1, 2, 3, 4, 5, 6\]"):
+        emulator.inject("drop", 9)
