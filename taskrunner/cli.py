@@ -35,15 +35,18 @@ from __future__ import annotations
 
 import argparse
 import gc
-import logging
 import math
 import os
 import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING
 
+from taskrunner.commands.examples import cmd_examples
+from taskrunner.commands.robots import cmd_collision_matrix, cmd_demo, cmd_info, cmd_plan
+from taskrunner.commands.server import cmd_serve, cmd_view
+from taskrunner.commands.servos import cmd_firmware_sim, cmd_hw
 from taskrunner.errors import (
     BackendError,
     InputError,
@@ -51,34 +54,20 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnknownNameError,
 )
+from taskrunner.kinds import ExitCode
 
 if TYPE_CHECKING:
-    import numpy as np
-
-    from taskrunner.kinematics import IkSolver
     from taskrunner.runtime.prestart import EarlyWorker
-    from taskrunner.runtime.records import RunRecord
-    from taskrunner.scene import Scene
     from taskrunner.tree.check import CheckReport
 
 __all__ = ["main"]
 
 DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells)
 
-EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = 0, 2, 3, 4, 130
+EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = (
+    ExitCode.OK, ExitCode.INVALID, ExitCode.PLANNING, ExitCode.EXECUTION, ExitCode.CANCELLED)
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
             "firmware-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export")
-
-
-def _load(name_or_path: str):  # type: ignore[no-untyped-def]
-    from taskrunner.resources import resolve_cell
-    from taskrunner.robot.cell import load_cell_or_robot
-
-    return load_cell_or_robot(resolve_cell(name_or_path))
-
-
-def _fmt(values: np.ndarray) -> str:
-    return "[" + ", ".join(f"{v:+.3f}" for v in values) + "]"
 
 
 def _add_robot_options(parser: argparse.ArgumentParser) -> None:
@@ -122,174 +111,6 @@ def _apply_robot_options(args: argparse.Namespace) -> None:
         os.environ[ALLOW_MISSING_MESHES_ENV] = "1"
     if getattr(args, "collision", None):
         os.environ[COLLISION_ENV] = args.collision
-
-
-def cmd_info(args: argparse.Namespace) -> int:
-    # The loader logs each warning; info lists them in its report instead, so that each
-    # is shown once.
-    robot_log = logging.getLogger("taskrunner.robot")
-    quiet, propagate = logging.NullHandler(), robot_log.propagate
-    robot_log.addHandler(quiet)
-    robot_log.propagate = False
-    try:
-        cell = _load(args.path)
-    finally:
-        robot_log.removeHandler(quiet)
-        robot_log.propagate = propagate
-    model = cell.model
-    out = [f"cell {cell.name}: {len(model.instances)} robot(s), {model.nq} joints"]
-    for inst in model.instances:
-        xyz = _fmt(inst.base.translation)
-        out.append(f"  robot {inst.name!r} prefix {inst.prefix!r} at {xyz}  ({inst.source})")
-        out += [f"    {line}" for line in inst.describe_files()]
-    out.append("groups:")
-    for group in model.groups.values():
-        aliases = model.pose_aliases.get(group.name, {})
-        poses = ", ".join(f"{n} (= {aliases[n]})" if n in aliases else n
-                          for n in model.named_state_names(group.name)) or "-"
-        ik = " position-only IK" if group.position_only_ik else ""
-        planner = f", planner {group.default_planner}" if group.default_planner else ""
-        out.append(f"  {group.name}: {len(group.joint_names)} joints, tip {group.tip_link}"
-                   f"{ik}{planner}; poses: {poses}")
-    if model.end_effectors:
-        out.append("end effectors:")
-        for eef in model.end_effectors.values():
-            out.append(f"  {eef.name}: group {eef.group} on {eef.parent_link}"
-                       f" (arm {eef.parent_group or '-'})")
-    if cell.tools:
-        out.append("tools (TCP: the tool frame's origin; y closes, z approaches):")
-        out += [f"  {tool.describe()}" for tool in cell.tools.values()]
-    bare = model.links_without_collision_geometry()
-    if bare:
-        out.append(f"links without collision geometry: {', '.join(bare)}")
-    from taskrunner.scene.linkgeometry import describe_link_geometry
-
-    out += describe_link_geometry(model)
-    if cell.objects:
-        out.append("objects:")
-        for obj in cell.objects:
-            out.append(f"  {obj.name}: {obj.shape} at {_fmt(obj.pose.translation)} in {obj.frame}")
-    for warning in model.warnings:
-        out.append(f"warning: {warning}")
-    print("\n".join(out))
-    return EXIT_OK
-
-
-def cmd_plan(args: argparse.Namespace) -> int:
-    import json
-
-    from taskrunner.moveit import plan_files
-
-    report, warnings = plan_files(_load(args.robot), args.request, args.scene,
-                                  robot=args.instance, group=args.group, seed=args.seed,
-                                  merge=True if args.merge else None)
-    if args.json:
-        print(json.dumps({**report.to_json(), "warnings": [str(w) for w in warnings]}, indent=2))
-    else:
-        for warning in warnings:
-            print(f"warning: {warning}", file=sys.stderr)
-        if report.success:
-            print(f"plan {report.group} ({report.planner}): success\n"
-                  f"  planning time {report.planning_time:.3f} s (total {report.total_time:.3f} s)"
-                  f", {report.waypoints} waypoints, length {report.path_length:.3f} rad, "
-                  f"duration {report.duration:.3f} s")
-        else:
-            print(f"plan {report.group} ({report.planner}): failed ({report.error_kind}): "
-                  f"{report.message}")
-    return EXIT_OK if report.success else EXIT_PLANNING
-
-
-def _demo_below_surface(scene: Scene, solver: IkSolver, target: np.ndarray,
-                        seed_q: np.ndarray) -> None:
-    """The demo's collision example: IK to 2 cm below the surface under ``target`` (found
-    by lowering a probe onto it), and what that pose hits."""
-    from taskrunner.errors import IkFailedError
-    from taskrunner.kinematics import IkOptions
-    from taskrunner.shapes import Sphere
-    from taskrunner.types import Pose
-
-    probe = "__demo_probe__"
-    scene.add_object(probe, Sphere(0.001), Pose(xyz=(float(target[0]), float(target[1]), float(target[2]))))
-    try:
-        support = scene.support(probe)
-    finally:
-        scene.remove_object(probe)
-    if support.below is None:
-        print("nothing below the target within 1 m: no surface to reach into")
-        return
-    surface = float(target[2]) - support.gap - 0.001
-    import numpy as np
-
-    below = np.array([target[0], target[1], surface - 0.02])
-    try:
-        sunk = solver.solve(below, seed_q=seed_q, options=IkOptions(position_only=True))
-    except IkFailedError:
-        print(f"2 cm below the top of {support.below!r}: out of reach")
-        return
-    hits = scene.collisions(sunk.q)
-    pairs = ", ".join(f"{c.a}–{c.b} ({1e3 * c.depth:.1f} mm deep)" for c in hits[:3])
-    print(f"IK 2 cm below the top of {support.below!r}: reachable, "
-          + (f"but in collision: {pairs}" if hits else "and (unexpectedly) collision-free"))
-
-
-def cmd_demo(args: argparse.Namespace) -> int:
-    from taskrunner.kinematics import IkOptions, IkSolver, frame_pose
-    from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
-    from taskrunner.scene import scene_from_cell
-
-    t0 = time.perf_counter()
-    cell = _load(args.cell)
-    model = cell.model
-    scene = scene_from_cell(cell)
-    print(f"loaded cell {cell.name!r} ({model.nq} joints, {len(cell.objects)} objects) "
-          f"in {1e3 * (time.perf_counter() - t0):.0f} ms")
-    arm = next((g for g in model.groups.values() if g.tip_link and g.end_effector), None)
-    if arm is None:
-        raise InputError(f"cell {cell.name!r} has no arm group with an end effector")
-    tip = arm.tip_link
-    assert tip is not None
-    start = scene.state
-    here = frame_pose(model, start, tip)
-    print(f"group {arm.name!r} at start {_fmt(start[arm.joint_indices])}: "
-          f"{tip} at {_fmt(here.translation)} m")
-    clearance = scene.min_distance()
-    pair = cast(tuple[str, str], clearance.pair)  # an arm's links give body pairs to check
-    print(f"start state collision-free; closest pair {pair[0]}–{pair[1]} "
-          f"at {1e3 * clearance.distance:.1f} mm")
-
-    # A point in front of the arm's base, a hand's height above the table.
-    base = model.instances[0].base
-    import numpy as np
-
-    target = base.act(np.array(args.target, dtype=float))
-    # Aim the grasp point between the fingers: the arm's tool frame.
-    frame = cell.tools[arm.name].frame if arm.name in cell.tools else tip
-    solver = IkSolver(model, arm.name, frame=frame)
-    t0 = time.perf_counter()
-    solutions = solver.solve_all(target, seed_q=start, options=IkOptions(
-        position_only=True, seed=args.seed, num_solutions=8, timeout=0.05))
-    ik_ms = 1e3 * (time.perf_counter() - t0)
-    free = [s for s in solutions if not scene.in_collision(s.q)]
-    print(f"IK (position only) of {frame} to {_fmt(target)} m: {len(solutions)} distinct "
-          f"solutions in {ik_ms:.2f} ms, {len(free)} collision-free")
-    if not free:
-        pairs = ", ".join(f"{c.a}–{c.b}" for c in scene.collisions(solutions[0].q))
-        raise PlanningError(f"every IK solution collides (first: {pairs})")
-    solution = free[0]
-    print(f"  chose {_fmt(solution.joint_state.positions)} rad, error "
-          f"{1e3 * solution.position_error:.4f} mm")
-
-    _demo_below_surface(scene, solver, target, solution.q)
-
-    planner = MotionPlanner(scene)
-    request = PlanRequest(arm.name, JointGoal(solution.joint_state.as_dict()),
-                          options=PlannerOptions(seed=args.seed))
-    result = planner.plan(request)
-    print(f"planned {arm.name!r} start → IK solution: {len(result.path)} waypoints, "
-          f"{1e3 * result.planning_time:.1f} ms search + {1e3 * result.simplify_time:.1f} ms "
-          f"shortcut, {result.checks} collision checks, re-checked every "
-          f"{request.options.validation_resolution} rad")
-    return EXIT_OK
 
 
 def _parameters(pairs: Sequence[str]) -> dict[str, str]:
@@ -416,250 +237,6 @@ def _watches(args: argparse.Namespace) -> list:  # type: ignore[type-arg]
     return run_watches(args)
 
 
-def cmd_firmware_sim(args: argparse.Namespace) -> int:
-    """Build the host firmware, start it, pass its two address lines through.
-
-    SIGTERM is passed on to the firmware process (Ctrl-C reaches it from the terminal);
-    this command ends when it has: no firmware is left behind. Exit code: the firmware's,
-    128 + N when a signal N ended it.
-    """
-    import signal
-    import subprocess
-
-    from taskrunner.backends.host_firmware import build_host_firmware
-
-    command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
-    if args.log:
-        command += ["--log", args.log]
-    if args.channels:
-        command += ["--channels", args.channels]
-    started: list[subprocess.Popen[bytes]] = []
-    pending: list[int] = []
-
-    def forward(signum: int, frame: object) -> None:
-        if not started:
-            pending.append(signum)  # before Popen returned: passed on right after
-        elif started[0].poll() is None:
-            started[0].send_signal(signum)
-
-    # Installed before the firmware starts: it prints its address lines at once, and a
-    # SIGTERM sent as soon as they appear must find the handler in place.
-    previous = signal.signal(signal.SIGTERM, forward)
-    try:
-        process = subprocess.Popen(command)
-        started.append(process)
-        for signum in pending:
-            process.send_signal(signum)
-        while True:
-            try:
-                code = process.wait()
-                break
-            except KeyboardInterrupt:  # the firmware had its own SIGINT: give it a moment
-                try:
-                    code = process.wait(5)
-                except subprocess.TimeoutExpired:
-                    process.kill()
-                    code = process.wait()
-                break
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-    return 128 - code if code < 0 else code
-
-
-def _ask_terminal(prompt: str) -> str:
-    """``input`` for an interactive helper; no input (closed, or ended) is an InputError."""
-    if sys.stdin is None or sys.stdin.closed:
-        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
-                         "(standard input is closed)")
-    try:
-        return input(prompt)
-    except EOFError:
-        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
-                         "(standard input ended before every answer was given; nothing "
-                         "was written)") from None
-
-
-def cmd_hw(args: argparse.Namespace) -> int:
-    """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
-    import math
-
-    from taskrunner.backends import ServoBackend
-    from taskrunner.runtime.session import make_backend
-
-    if args.action == "calibrate" and (sys.stdin is None or sys.stdin.closed):
-        _ask_terminal("")  # refuses before anything is connected or moved
-    cell = _load(args.cell)
-    kind = "http" if args.url else "serial"
-    # serial and http backends are servo backends
-    backend = cast(ServoBackend, make_backend(kind, cell, None, port=args.port, url=args.url,
-                                              firmware_speedup=args.firmware_speedup))
-    try:
-        if args.action == "calibrate":
-            from taskrunner.backends.calibrate import calibrate_servos
-
-            robot = cell.model.instances[0]
-            assert robot.hardware_path is not None  # make_backend checked it
-            calibrate_servos(backend, robot.hardware_path,
-                             [args.joint] if args.joint else None, ask=_ask_terminal)
-            return EXIT_OK
-        if args.action == "home":
-            backend.command("HOME")
-        elif args.action == "jog":
-            if args.joint is None or args.degrees is None:
-                raise InputError("jog needs JOINT and DEGREES (run-task hw jog 'Revolute 1' 10)")
-            calibration = backend.calibration
-            servo = calibration.servo_of(args.joint)
-            state = backend.joint_state().as_dict()
-            state[args.joint] += math.radians(args.degrees)
-            degrees = calibration.to_servo_degrees(state)
-            print(f"jog {args.joint!r} {args.degrees:+.1f}° (servo {servo}) → "
-                  f"MOVE:{','.join(f'{d:.2f}' for d in degrees)}")
-            backend.command("MOVE:" + ",".join(f"{d:.2f}" for d in degrees))
-        status = backend.firmware_status()
-        print(f"firmware {backend.version.get('firmware', '?')}: {status}")
-        for name, value in backend.joint_state().as_dict().items():
-            print(f"  {name}: {value:+.4f} rad ({math.degrees(value):+.1f}°)")
-    finally:
-        backend.close()
-    return EXIT_OK
-
-
-def cmd_serve(args: argparse.Namespace) -> int:
-    import shlex
-
-    from taskrunner.api import Settings, create_app
-    from taskrunner.api.serving import serve
-
-    try:
-        settings = Settings.from_env(token=args.token, planner=args.planner,
-                                     data_dir=args.data_dir)
-        if args.no_auth:
-            settings = settings.replaced(auth=False, token=None)
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INVALID
-    app = create_app(settings)
-    base = f"http://{args.host}:{args.port}"
-    if app.state.token is None:
-        print(f"taskrunner API at {base} (docs: {base}/docs), OPEN: no token needed "
-              "(--no-auth)", flush=True)
-    else:
-        made = "" if settings.token else " (made for this session; set TASKRUNNER_TOKEN to fix it)"
-        reads = ("reads are open (TASKRUNNER_OPEN_READS)" if settings.open_reads
-                 else "every endpoint but /health and /docs needs it")
-        print(f"taskrunner API at {base} (docs: {base}/docs)\n"
-              f"  token{made}; {reads}; for curl, paste:\n"
-              f"export TASKRUNNER_TOKEN={shlex.quote(app.state.token)}", flush=True)
-    if args.control_port is not None:
-        print(f"  control port: http://{args.host}:{args.control_port} (cancel and run state "
-              "only, on a listener of its own)", flush=True)
-    serve(app, settings, args.host, args.port, args.log_level, control_port=args.control_port)
-    return EXIT_OK
-
-
-def _records_in(folder: Path) -> list[RunRecord]:
-    """The run records of ``folder`` (``*.json``); one that cannot be read is named on
-    stderr and left out."""
-    from taskrunner.runtime.records import load_record
-
-    records = []
-    for path in sorted(folder.glob("*.json")) if folder.is_dir() else []:
-        try:
-            records.append(load_record(path))
-        except (OSError, ValueError, TypeError, KeyError, TaskrunnerError) as exc:
-            print(f"warning: {path}: not shown: {exc}", file=sys.stderr)
-    return records
-
-
-def cmd_view(args: argparse.Namespace) -> int:
-    """Serve the web view on 127.0.0.1 and print its URL: a run record (``.json``) opens
-    for replay, a task (file or shipped name) for its check and plan-only preview, nothing
-    the runs of ``./runs`` (``TASKRUNNER_RUNS_DIR``; the cells when there are none). The
-    server keeps its data in a temporary folder (records are copied into it); it needs a
-    token like ``serve`` (printed, typed into the page, never in a URL)."""
-    import shlex
-    import socket
-    import tempfile
-
-    from taskrunner.api import Settings, create_app
-    from taskrunner.api.app import new_token
-    from taskrunner.api.serving import serve
-    from taskrunner.api.store import RunStore
-    from taskrunner.resources import resolve_task
-    from taskrunner.runtime.records import load_record
-
-    data_dir = Path(tempfile.mkdtemp(prefix="taskrunner-view-"))
-    token = args.token or os.environ.get("TASKRUNNER_TOKEN") or new_token()
-    tasks_dir: Path | None = None
-    cells_dir: Path | None = None
-    fragment = "#/cell"
-    try:
-        if args.target and args.target.endswith(".json"):
-            record = load_record(args.target)
-            fragment = f"#/run/{record.run_id}"
-        elif args.target:
-            from taskrunner.tasks import load_task
-
-            task_file = resolve_task(args.target)
-            spec = load_task(task_file)
-            tasks_dir, cells_dir = task_file.parent, Path(spec.cell).parent
-            fragment = f"#/task/{task_file.stem}"
-        settings = Settings.from_env(data_dir=data_dir, token=token, tasks_dir=tasks_dir,
-                                     cells_dir=cells_dir)
-        if args.target and args.target.endswith(".json"):
-            records = [record]
-        elif args.target:
-            records = []
-        else:
-            records = _records_in(Path(os.environ.get("TASKRUNNER_RUNS_DIR") or "runs"))
-            fragment = "#/runs" if records else fragment
-        if records:
-            store = RunStore(settings.db_path)
-            for each in records:
-                store.save(each)
-            store.close()
-    except (OSError, ValueError, TaskrunnerError) as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INVALID
-    port = args.port
-    if not port:
-        with socket.socket() as probe:
-            probe.bind(("127.0.0.1", 0))
-            port = int(probe.getsockname()[1])
-    app = create_app(settings)
-    print(f"taskrunner view at http://127.0.0.1:{port}/{fragment}\n"
-          f"  the page asks for the token: {app.state.token}\n"
-          f"export TASKRUNNER_TOKEN={shlex.quote(str(app.state.token))}", flush=True)
-    serve(app, settings, "127.0.0.1", port, args.log_level)
-    return EXIT_OK
-
-
-def cmd_examples(args: argparse.Namespace) -> int:
-    """The shipped example tasks: name, cell, first line of the description."""
-    from taskrunner.resources import example_tasks
-    from taskrunner.yamlfile import load_yaml
-
-    rows = []
-    for name, path in example_tasks().items():
-        try:
-            data = load_yaml(path)
-        except TaskrunnerError as exc:  # a broken shipped file is a bug: say so, go on
-            rows.append((name, "?", f"unreadable: {exc}"))
-            continue
-        cell = Path(str(data.get("cell", "?"))).stem if isinstance(data, dict) else "?"
-        lines = str(data.get("description", "")).strip().splitlines() if isinstance(
-            data, dict) else []
-        rows.append((name, cell, lines[0] if lines else ""))
-    width = max(len(r[0]) for r in rows)
-    cell_width = max(len(r[1]) for r in rows)
-    for name, cell, about in rows:
-        print(f"{name:<{width}}  {cell:<{cell_width}}  {about}".rstrip())
-    if args.paths:
-        for name, path in example_tasks().items():
-            print(f"{name}: {path}")
-    return EXIT_OK
-
-
 def cmd_export(args: argparse.Namespace) -> int:
     from taskrunner.export.command import export_command
 
@@ -670,12 +247,6 @@ def cmd_warm_up(args: argparse.Namespace) -> int:
     from taskrunner.runtime.session import warm_up_command
 
     return warm_up_command()
-
-
-def cmd_collision_matrix(args: argparse.Namespace, rest: Sequence[str]) -> int:
-    from taskrunner.scene import acm
-
-    return acm.main(list(rest))
 
 
 def cmd_test(args: argparse.Namespace) -> int:

@@ -1,0 +1,126 @@
+"""``run-task firmware-sim`` and ``hw``: the host build of the ESP32 firmware, and bench
+helpers for the servo arm (status, home, jog, calibrate)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING, cast
+
+from taskrunner.commands.robots import load_named_cell
+from taskrunner.errors import InputError
+from taskrunner.kinds import ExitCode
+
+if TYPE_CHECKING:
+
+    pass
+
+__all__ = ["cmd_firmware_sim", "cmd_hw"]
+
+
+def cmd_firmware_sim(args: argparse.Namespace) -> int:
+    """Build the host firmware, start it, pass its two address lines through.
+
+    SIGTERM is passed on to the firmware process (Ctrl-C reaches it from the terminal);
+    this command ends when it has: no firmware is left behind. Exit code: the firmware's,
+    128 + N when a signal N ended it.
+    """
+    import signal
+    import subprocess
+
+    from taskrunner.backends.host_firmware import build_host_firmware
+
+    command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
+    if args.log:
+        command += ["--log", args.log]
+    if args.channels:
+        command += ["--channels", args.channels]
+    started: list[subprocess.Popen[bytes]] = []
+    pending: list[int] = []
+
+    def forward(signum: int, frame: object) -> None:
+        if not started:
+            pending.append(signum)  # before Popen returned: passed on right after
+        elif started[0].poll() is None:
+            started[0].send_signal(signum)
+
+    # Installed before the firmware starts: it prints its address lines at once, and a
+    # SIGTERM sent as soon as they appear must find the handler in place.
+    previous = signal.signal(signal.SIGTERM, forward)
+    try:
+        process = subprocess.Popen(command)
+        started.append(process)
+        for signum in pending:
+            process.send_signal(signum)
+        while True:
+            try:
+                code = process.wait()
+                break
+            except KeyboardInterrupt:  # the firmware had its own SIGINT: give it a moment
+                try:
+                    code = process.wait(5)
+                except subprocess.TimeoutExpired:
+                    process.kill()
+                    code = process.wait()
+                break
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+    return 128 - code if code < 0 else code
+
+
+def _ask_terminal(prompt: str) -> str:
+    """``input`` for an interactive helper; no input (closed, or ended) is an InputError."""
+    if sys.stdin is None or sys.stdin.closed:
+        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
+                         "(standard input is closed)")
+    try:
+        return input(prompt)
+    except EOFError:
+        raise InputError("hw calibrate asks a question for each joint: run it in a terminal "
+                         "(standard input ended before every answer was given; nothing "
+                         "was written)") from None
+
+
+def cmd_hw(args: argparse.Namespace) -> int:
+    """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
+    import math
+
+    from taskrunner.backends import ServoBackend
+    from taskrunner.runtime.session import make_backend
+
+    if args.action == "calibrate" and (sys.stdin is None or sys.stdin.closed):
+        _ask_terminal("")  # refuses before anything is connected or moved
+    cell = load_named_cell(args.cell)
+    kind = "http" if args.url else "serial"
+    # serial and http backends are servo backends
+    backend = cast(ServoBackend, make_backend(kind, cell, None, port=args.port, url=args.url,
+                                              firmware_speedup=args.firmware_speedup))
+    try:
+        if args.action == "calibrate":
+            from taskrunner.backends.calibrate import calibrate_servos
+
+            robot = cell.model.instances[0]
+            assert robot.hardware_path is not None  # make_backend checked it
+            calibrate_servos(backend, robot.hardware_path,
+                             [args.joint] if args.joint else None, ask=_ask_terminal)
+            return ExitCode.OK
+        if args.action == "home":
+            backend.command("HOME")
+        elif args.action == "jog":
+            if args.joint is None or args.degrees is None:
+                raise InputError("jog needs JOINT and DEGREES (run-task hw jog 'Revolute 1' 10)")
+            calibration = backend.calibration
+            servo = calibration.servo_of(args.joint)
+            state = backend.joint_state().as_dict()
+            state[args.joint] += math.radians(args.degrees)
+            degrees = calibration.to_servo_degrees(state)
+            print(f"jog {args.joint!r} {args.degrees:+.1f}° (servo {servo}) → "
+                  f"MOVE:{','.join(f'{d:.2f}' for d in degrees)}")
+            backend.command("MOVE:" + ",".join(f"{d:.2f}" for d in degrees))
+        status = backend.firmware_status()
+        print(f"firmware {backend.version.get('firmware', '?')}: {status}")
+        for name, value in backend.joint_state().as_dict().items():
+            print(f"  {name}: {value:+.4f} rad ({math.degrees(value):+.1f}°)")
+    finally:
+        backend.close()
+    return ExitCode.OK
