@@ -1,0 +1,92 @@
+"""The live Foxglove feed: a WebSocket client speaking Foxglove's protocol receives
+/joint_states while a run goes (the servo arm's go_home on the mock backend played at
+4x), and /robot_description when it subscribes, after it was first sent."""
+
+from __future__ import annotations
+
+import io
+import json
+import struct
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+from rosbags.typesys import Stores, get_typestore
+from websockets.sync.client import connect
+
+from taskrunner.errors import ArgumentError
+from taskrunner.export.live import FoxgloveFeed, FoxgloveFeedOptions
+from taskrunner.resources import DATA_ROOT, resolve_cell
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.session import run_task_file
+
+HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
+
+
+def _subscribe(ws: Any, topics: list[str]) -> dict[int, tuple[str, str]]:
+    """Read the server's hello and channels; subscribe to ``topics``: subscription id →
+    (topic, schema name)."""
+    channels: dict[str, dict[str, Any]] = {}
+    deadline = time.monotonic() + 10
+    while not set(topics) <= set(channels) and time.monotonic() < deadline:
+        message = json.loads(ws.recv(timeout=10))
+        if message["op"] == "advertise":
+            channels.update({c["topic"]: c for c in message["channels"]})
+    subscriptions = {i: channels[t] for i, t in enumerate(topics, start=1)}
+    ws.send(json.dumps({"op": "subscribe", "subscriptions": [
+        {"id": i, "channelId": c["id"]} for i, c in subscriptions.items()]}))
+    for channel in subscriptions.values():
+        assert (channel["encoding"], channel["schemaEncoding"]) == ("cdr", "ros2msg")
+    return {i: (c["topic"], c["schemaName"]) for i, c in subscriptions.items()}
+
+
+def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
+    cell = load_cell(resolve_cell("servo_arm_table"))
+    received: list[tuple[float, str, Any]] = []  # (monotonic s, topic, message)
+    ready, done = threading.Event(), threading.Event()
+    with FoxgloveFeed(cell, FoxgloveFeedOptions(port=0, rate_hz=50)) as feed:
+        def client() -> None:
+            with connect(feed.url, subprotocols=["foxglove.sdk.v1"]) as ws:
+                subscriptions = _subscribe(ws, ["/joint_states", "/robot_description"])
+                ready.set()
+                while not done.is_set():
+                    try:
+                        frame = ws.recv(timeout=0.2)
+                    except TimeoutError:
+                        continue
+                    if isinstance(frame, bytes) and frame[0] == 1:  # message data
+                        sub, _ = struct.unpack_from("<IQ", frame, 1)
+                        topic, schema = subscriptions[sub]
+                        received.append((time.monotonic(), topic,
+                                         HUMBLE.deserialize_cdr(frame[13:], schema)))
+
+        listener = threading.Thread(target=client, daemon=True)
+        listener.start()
+        assert ready.wait(15)
+        time.sleep(0.2)  # the subscription reaches the server
+        started = time.monotonic()
+        code = run_task_file(DATA_ROOT / "tasks" / "go_home.yaml", backend="mock", speed=4.0,
+                             runs_dir=tmp_path, worker=False, out=io.StringIO(),
+                             watch=[feed.follow])
+        ended = time.monotonic()
+        time.sleep(0.3)
+        done.set()
+        listener.join(5)
+    assert code == 0
+    states = [(t, m) for t, topic, m in received if topic == "/joint_states"]
+    during = [m for t, m in states if started < t < ended]
+    assert len(during) >= 10
+    assert all(m.name == list(cell.model.joint_names) for _, m in states)
+    joint = cell.model.joint_names.index("Revolute 2")
+    assert len({round(float(m.position[joint]), 4) for m in during}) >= 5  # it moved
+    descriptions = [m for _, topic, m in received if topic == "/robot_description"]
+    assert descriptions and descriptions[0].data.startswith("<robot")
+
+
+def test_feed_options_are_checked() -> None:
+    with pytest.raises(ArgumentError, match="'port' must be 0..65535"):
+        FoxgloveFeedOptions(port=70000)
+    with pytest.raises(ArgumentError, match="'rate_hz' must be 1..1000"):
+        FoxgloveFeedOptions(rate_hz=0)
