@@ -18,6 +18,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from taskrunner.errors import ArgumentError
+
 __all__ = ["CdrWriter"]
 
 _HEADER = b"\x00\x01\x00\x00"  # CDR_LE, options 0
@@ -59,7 +61,7 @@ class CdrWriter:
     def string(self, value: str) -> None:
         data = value.encode("utf-8")
         if b"\x00" in data:
-            raise ValueError(f"a CDR string cannot hold a NUL character (got {value!r})")
+            raise ArgumentError(f"a CDR string cannot hold a NUL character (got {value!r})")
         self.uint32(len(data) + 1)
         self._buf += data + b"\x00"
 
