@@ -113,7 +113,7 @@ class Settings(BaseSettings):
     max_planners: int = 2
     work_queue: int = 8
     planner_idle_s: float = 120.0
-    max_requests: int = 32
+    max_requests: int = 16
     header_timeout_s: float = 10.0
     body_timeout_s: float = 20.0
     stream_max_lag: int = 1000

@@ -103,7 +103,7 @@ def test_control_requests(method, path, control):
 
 
 def test_the_setting_is_checked():
-    assert Settings(auth=False).max_requests == 32
+    assert Settings(auth=False).max_requests == 16
     with pytest.raises(ArgumentError):
         RequestLimit(_HeldApp(), limit=0)
     for bad in (0, -1, True, "many", 2.5):
