@@ -22,7 +22,7 @@ from taskrunner.api.fastpath import RunDetailFastPath
 from taskrunner.api.handlers import BodyLimit, add_error_handlers
 from taskrunner.api.overload import RequestLimit
 from taskrunner.api.requestwork import RequestWork
-from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer
+from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer, viewer_goal
 from taskrunner.api.runs import RunManager
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
@@ -108,7 +108,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # One feed per run followed, its streams bounded (see api.streams).
     app.state.streams = RunStreams(StreamOptions(
         max_lag=settings.stream_max_lag, send_timeout_s=settings.stream_send_timeout_s))
-    routers = [module.router for module in (health, runs, tasks, cells, plan, viewer)]
+    routers = [module.router
+               for module in (health, runs, tasks, cells, plan, viewer, viewer_goal)]
     for router in routers:
         app.include_router(router)
     add_error_handlers(app)

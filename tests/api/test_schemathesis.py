@@ -64,13 +64,13 @@ def test_no_generated_request_gets_a_server_error(case, client):
 
 
 def test_every_route_of_the_app_is_in_the_schema():
-    from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer
+    from taskrunner.api.routers import cells, health, plan, runs, tasks, viewer, viewer_goal
 
     routes = {(method, route.path.replace(":path}", "}"))  # OpenAPI has no path converters
-              for module in (cells, health, plan, runs, tasks, viewer)
+              for module in (cells, health, plan, runs, tasks, viewer, viewer_goal)
               for route in module.router.routes if isinstance(route, APIRoute)
               and route.include_in_schema for method in route.methods}
-    assert len(routes) == 19  # 12 + the web view's 7 data endpoints (its page is not an API)
+    assert len(routes) == 21  # 12 + the web view's 9 data endpoints (its page is not an API)
     operations = {(op.method.upper(), op.path) for op in
                   (result.ok() for result in SCHEMA.get_all_operations())}
     assert routes == operations

@@ -34,7 +34,6 @@ from taskrunner.api.dependencies import (
     get_work,
 )
 from taskrunner.api.requestwork import RequestWork, load_request
-from taskrunner.api.routers.viewer_goal import router as goal_router
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import CheckRequest, ErrorBody
 from taskrunner.api.settings import Settings
@@ -52,7 +51,6 @@ from taskrunner.viewer.describe import (
 __all__ = ["router"]
 
 router = APIRouter(tags=["viewer"])
-router.include_router(goal_router)  # the page's goal and Execute (one router for the app)
 _ERRORS: dict[int | str, dict[str, Any]] = {401: {"model": ErrorBody}, 404: {"model": ErrorBody},
                                             422: {"model": ErrorBody}}
 _STATIC_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,100}$")
