@@ -16,7 +16,7 @@ angle sensor, over-current), a stall (the load at ``stall_load`` or more for
 every servo's present position as its goal; ``"torque_off"`` cuts the torque: the arm
 falls), fails the running execution with a :class:`~taskrunner.errors.BusFaultError`
 naming the joint, servo and fault, and refuses further trajectories. Detection takes at
-most one cycle plus one reply timeout (20 + 20 ms by default). Units: rad, s.
+most one cycle plus one reply timeout (20 + 40 ms by default). Units: rad, s.
 """
 
 from __future__ import annotations
@@ -77,7 +77,7 @@ class FeetechOptions:
     settle_timeout: float = 1.0
     max_tracking_error: float | None = 0.35
     stall_load: float = 0.95
-    stall_cycles: int = 3
+    stall_cycles: int = 2
 
     def __post_init__(self) -> None:
         check_option("rate_hz", self.rate_hz, lambda v: 50 <= v <= 1000, "in [50, 1000] Hz")
@@ -409,6 +409,8 @@ class FeetechBackend(BaseBackend):
             kind = FaultKind(exc.kind) if exc.kind in _KINDS else FaultKind.NO_REPLY
             joint = self._joint_of.get(exc.servo_id) if exc.servo_id is not None else None
             message = f"{exc}; stopped: {stop}"
+            if joint is not None and repr(joint) not in message:
+                message = f"joint {joint!r}: {message}"
             self.fault = FaultRecord(kind, exc.servo_id, joint, detected, stop, message)
             self._closed = True
             self._closed_reason = f"stopped on a bus fault ({message})"

@@ -148,7 +148,7 @@ class FeetechBus:
     resolution = 4096
 
     def __init__(self, port: str | Any, baud: int = 1_000_000,
-                 reply_timeout: float = 0.02) -> None:
+                 reply_timeout: float = 0.04) -> None:
         self._timeout = float(reply_timeout)
         if isinstance(port, str):
             self.port_name = port
@@ -212,8 +212,8 @@ class FeetechBus:
         with self._lock:
             self._send(sync_read_packet(address, length, servo_ids))
             deadline = time.monotonic() + self._timeout
-            for servo_id in servo_ids:
-                reply = self._receive(servo_id, deadline, "SYNC READ")
+            for k, servo_id in enumerate(servo_ids):
+                reply = self._receive(servo_id, deadline, "SYNC READ", servo_ids[k + 1:])
                 if len(reply.params) != length:
                     raise self._fault(FaultKind.BAD_CHECKSUM, servo_id,
                                       f"{len(reply.params)} byte(s) in its SYNC READ reply, "
@@ -254,7 +254,10 @@ class FeetechBus:
         except (pyserial.SerialException, OSError, TypeError) as exc:
             raise self._fault(FaultKind.UNPLUGGED, None, f"write failed ({exc})") from None
 
-    def _receive(self, servo_id: int, deadline: float, what: str) -> Packet:
+    def _receive(self, servo_id: int, deadline: float, what: str,
+                 later: Sequence[int] = ()) -> Packet:
+        """The reply of ``servo_id``; ``later``: the servos expected to answer after it (a
+        reply from one of them means ``servo_id`` said nothing)."""
         while True:
             packet, used = parse_packet(self._rx)
             del self._rx[:used]
@@ -262,6 +265,10 @@ class FeetechBus:
                 if not packet.valid:
                     raise self._fault(FaultKind.BAD_CHECKSUM, servo_id,
                                       f"the reply to {what} failed its checksum")
+                if packet.servo_id in later:
+                    raise self._fault(FaultKind.NO_REPLY, servo_id,
+                                      f"no reply to {what}: servo {packet.servo_id} answered "
+                                      "in its place")
                 if packet.servo_id != servo_id:
                     raise self._fault(FaultKind.WRONG_ID, servo_id,
                                       f"the reply to {what} came from ID {packet.servo_id}")

@@ -164,7 +164,7 @@ class ServoModel:
             else:
                 self.motor += step
         gravity = self.gravity * math.sin(2 * math.pi * (self.actual - self.gravity_zero) / 4096)
-        if not self.stalled:
+        if torque and not self.stalled:  # limp (no torque), the joint stays where it is
             half = self.backlash / 2
             if abs(gravity) > 0.02:  # gravity holds the output on one side of the gap
                 self.actual = self.motor - math.copysign(half, gravity)
@@ -320,7 +320,7 @@ class BusEmulator:
         servo = self.servos[servo_id]
         reply_id = servo_id
         if servo_id in self._faults.get("wrong_id", ()):
-            reply_id = servo_id % 0xFD + 1 if servo_id + 1 not in self.servos else servo_id + 1
+            reply_id = (servo_id + 100) % 0xFD  # an ID nobody on the bus has
         packet = bytearray(encode_packet(reply_id, servo.flags, params))
         if servo_id in self._faults.get("corrupt", ()):
             packet[-1] ^= 0x5A
