@@ -11,7 +11,8 @@ from scenario import TASKS, assert_record_complete, run_scenario
 from taskrunner.tasks import HandoffStep, PlaceStep, walk_steps
 
 # Examples of the 5-DOF servo arm: their places check the turn about z, not the tilt.
-SERVO_ARM = {"handoff.yaml", "pick_place.yaml", "stack_three.yaml", "fallback_servo.yaml"}
+SERVO_ARM = {"handoff.yaml", "pick_place.yaml", "stack_three.yaml", "fallback_servo.yaml",
+             "pick_place_so101.yaml", "handoff_so101.yaml"}  # and the 5-joint SO-101
 _ERROR = re.compile(r"error (\d+\.\d) mm, (\d+\.\d)°")
 
 
