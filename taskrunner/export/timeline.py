@@ -195,8 +195,13 @@ _WORLD_COLOUR = (0.55, 0.6, 0.7, 1.0)
 _CARRIED_COLOUR = (0.95, 0.55, 0.15, 1.0)
 
 
+def _triple(values: Any) -> tuple[float, float, float]:
+    x, y, z = (float(v) for v in values)
+    return (x, y, z)
+
+
 def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str
-              ) -> tuple[list[Marker], list[str]]:
+                  ) -> tuple[list[Marker], list[str]]:
     """The scene's objects as markers (after a DELETEALL; ``root``: the tf tree's root,
     the world); and the objects that could not be drawn, with why."""
     markers = [Marker(stamp_ns, root, "", 0, action=rosmsg.DELETEALL)]
@@ -204,34 +209,33 @@ def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str
     meshes = {o.name: o.shape for o in cell.objects if isinstance(o.shape, Mesh)}
     for i, obj in enumerate(objects or [], start=1):
         shape, pose = obj.get("shape") or {}, obj.get("pose") or {}
-        frame = obj.get("attached_to") or pose.get("frame") or "world"
-        frame = root if frame == "world" else frame
-        common = dict(stamp_ns=stamp_ns, frame_id=frame, ns=str(obj.get("name", "")), id=i,
-                      xyz=tuple(float(v) for v in pose.get("xyz", (0, 0, 0))),
-                      quat=tuple(float(v) for v in pose.get("quat", (0, 0, 0, 1))),
-                      color=_CARRIED_COLOUR if obj.get("attached_to") else _WORLD_COLOUR,
-                      text=str(obj.get("name", "")))
-        kind = shape.get("type")
+        name, kind = str(obj.get("name", "")), shape.get("type")
+        resource = ""
         if kind == "box":
-            markers.append(Marker(**common, type=rosmsg.CUBE,  # type: ignore[arg-type]
-                                  scale=tuple(float(v) for v in shape["size"])))
+            marker_type, scale = rosmsg.CUBE, _triple(shape["size"])
         elif kind == "sphere":
             d = 2 * float(shape["radius"])
-            markers.append(Marker(**common, type=rosmsg.SPHERE,  # type: ignore[arg-type]
-                                  scale=(d, d, d)))
+            marker_type, scale = rosmsg.SPHERE, (d, d, d)
         elif kind == "cylinder":
             d = 2 * float(shape["radius"])
-            markers.append(Marker(**common, type=rosmsg.CYLINDER,  # type: ignore[arg-type]
-                                  scale=(d, d, float(shape["length"]))))
-        elif kind == "mesh" and obj.get("name") in meshes:
-            mesh = meshes[str(obj.get("name"))]
-            markers.append(Marker(**common, type=rosmsg.MESH_RESOURCE,  # type: ignore[arg-type]
-                                  scale=tuple(float(v) for v in mesh.scale),
-                                  mesh_resource=mesh.path.resolve().as_uri()))
+            marker_type, scale = rosmsg.CYLINDER, (d, d, float(shape["length"]))
+        elif kind == "mesh" and name in meshes:
+            mesh = meshes[name]
+            assert isinstance(mesh, Mesh)
+            marker_type, scale = rosmsg.MESH_RESOURCE, _triple(mesh.scale)
+            resource = mesh.path.resolve().as_uri()
         else:
-            skipped.append(f"object {obj.get('name')!r} ({kind}) not drawn: "
+            skipped.append(f"object {name!r} ({kind}) not drawn: "
                            + ("its mesh file is not in the record (only objects of the cell "
                               "are found again)" if kind == "mesh" else "unknown shape"))
+            continue
+        frame = obj.get("attached_to") or pose.get("frame") or "world"
+        x, y, z, w = (float(v) for v in pose.get("quat", (0, 0, 0, 1)))
+        markers.append(Marker(
+            stamp_ns, root if frame == "world" else str(frame), name, i, marker_type,
+            xyz=_triple(pose.get("xyz", (0, 0, 0))), quat=(x, y, z, w), scale=scale,
+            color=_CARRIED_COLOUR if obj.get("attached_to") else _WORLD_COLOUR, text=name,
+            mesh_resource=resource))
     return markers, skipped
 
 
