@@ -30,6 +30,9 @@ def add_run_options(run: argparse.ArgumentParser) -> None:
     run.add_argument("--foxglove", nargs="?", type=int, const=8765, default=None,
                      metavar="PORT", help="stream /joint_states, /tf and /rosout live to "
                                           "Foxglove on ws://127.0.0.1:PORT (8765)")
+    run.add_argument("--foxglove-wait", type=float, default=0.0, metavar="SECONDS",
+                     help="with --foxglove: before the run starts, wait up to SECONDS for a "
+                          "Foxglove client to subscribe (0: start at once)")
 
 
 def export_command(args: argparse.Namespace) -> int:
@@ -45,7 +48,11 @@ def run_watches(args: argparse.Namespace
     """What a run's ``--foxglove`` and ``--mcap`` ask for, for ``run_task_file(watch=)``."""
     watches: list[Callable[[Runner], AbstractContextManager[object]]] = []
     if getattr(args, "foxglove", None) is not None:
-        port = args.foxglove
+        port, wait = args.foxglove, float(getattr(args, "foxglove_wait", 0.0) or 0.0)
+        if not (wait >= 0 and wait < float("inf")):
+            from taskrunner.errors import InputError
+
+            raise InputError(f"'--foxglove-wait' must be a number of seconds >= 0 (got {wait})")
 
         @contextmanager
         def feed(runner: Runner) -> Iterator[None]:
@@ -53,6 +60,10 @@ def run_watches(args: argparse.Namespace
 
             with FoxgloveFeed(runner.cell, FoxgloveFeedOptions(port=port)) as live:
                 print(f"Foxglove: open connection {live.url}", flush=True)
+                if wait > 0:
+                    print(f"Foxglove: waiting up to {wait:g} s for a client …", flush=True)
+                    if not live.wait_for_client(wait):
+                        print("Foxglove: no client yet; the run starts", flush=True)
                 with live.follow(runner):
                     yield
 

@@ -91,8 +91,11 @@ class FoxgloveFeed:
             for topic, kind in TOPICS.items()}
         feed = self
 
+        self._subscribed = threading.Event()
+
         class Latched(ServerListener):
             def on_subscribe(self, client: Any, channel: Any) -> None:
+                feed._subscribed.set()
                 if channel.topic in LATCHED:
                     feed._send_latched(channel.topic)
 
@@ -114,6 +117,11 @@ class FoxgloveFeed:
     def url(self) -> str:
         """``ws://host:port``, what Foxglove's "Open connection" takes."""
         return f"ws://{self.options.host}:{self.port}"
+
+    def wait_for_client(self, timeout: float) -> bool:
+        """Wait until a client has subscribed to a topic (``timeout`` s at most);
+        whether one has."""
+        return self._subscribed.wait(timeout)
 
     def _send_latched(self, topic: str) -> None:
         now = time.time_ns()
