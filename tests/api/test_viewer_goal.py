@@ -6,11 +6,23 @@ needed, a stale plan refused), and the Task view's objects before planning."""
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 
 import pytest
-from apitest import NO_TOKEN, wait_until_done
+from apitest import AUTH, NO_TOKEN, make_settings, wait_for_event, wait_until_done
+from fastapi.testclient import TestClient
+
+from taskrunner.api import create_app
 
 CELL = "/viewer/cells/servo_arm_table"
+
+
+@pytest.fixture(scope="module")
+def reader(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TestClient]:
+    """One app for the tests that move nothing (goal checks)."""
+    settings = make_settings(tmp_path_factory.mktemp("goal") / "state")
+    with TestClient(create_app(settings), headers=AUTH) as c:
+        yield c
 
 
 def _home(client) -> dict[str, float]:
@@ -18,12 +30,12 @@ def _home(client) -> dict[str, float]:
     return next(g for g in cell["groups"] if g["name"] == "arm")["poses"]["home"]
 
 
-def test_a_dragged_tool_frame_is_solved_and_its_tip_lands_on_the_target(client):
-    home = _home(client)
-    at_home = client.post(CELL + "/goal", json={"group": "arm", "joints": home}).json()
+def test_a_dragged_tool_frame_is_solved_and_its_tip_lands_on_the_target(reader):
+    home = _home(reader)
+    at_home = reader.post(CELL + "/goal", json={"group": "arm", "joints": home}).json()
     assert at_home["ok"] and at_home["link"] == "gripper_base_1"
     target = [at_home["xyz"][0] + 0.02, at_home["xyz"][1] + 0.02, at_home["xyz"][2] - 0.05]
-    answer = client.post(CELL + "/goal", json={
+    answer = reader.post(CELL + "/goal", json={
         "group": "arm", "pose": {"xyz": target, "quat": at_home["quat"]}, "seed": home})
     body = answer.json()
     assert answer.status_code == 200, body
@@ -31,19 +43,19 @@ def test_a_dragged_tool_frame_is_solved_and_its_tip_lands_on_the_target(client):
     assert math.dist(body["xyz"], target) < 1e-4  # the 5-DOF arm aims its position
     assert body["joints"] != home and set(body["joints"]) == set(home)
     # the answer's joints put the tip there: checked again as a joint goal
-    again = client.post(CELL + "/goal", json={"group": "arm", "joints": body["joints"]}).json()
+    again = reader.post(CELL + "/goal", json={"group": "arm", "joints": body["joints"]}).json()
     assert math.dist(again["xyz"], target) < 1e-4
 
 
-def test_an_unreachable_or_colliding_goal_says_why(client):
-    home = _home(client)
-    far = client.post(CELL + "/goal", json={
+def test_an_unreachable_or_colliding_goal_says_why(reader):
+    home = _home(reader)
+    far = reader.post(CELL + "/goal", json={
         "group": "arm", "pose": {"xyz": [0.2, -0.17, 0.0], "quat": [0, 0, 0, 1]},
         "seed": home}).json()
     assert not far["reachable"] and not far["ok"]
     assert "no IK solution for group 'arm'" in far["reason"]
     assert far["joints"] == pytest.approx(home)  # the seed's joints, unchanged
-    low = client.post(CELL + "/goal", json={
+    low = reader.post(CELL + "/goal", json={
         "group": "arm", "pose": {"xyz": [0.2088, -0.1737, 0.8059], "quat": [0, 0, 0, 1]},
         "seed": home}).json()
     assert low["reachable"] and not low["collision_free"] and not low["ok"]
@@ -65,14 +77,14 @@ def test_an_unreachable_or_colliding_goal_says_why(client):
     ({"group": "arm", "joints": {"Revolute 1": "0.1"}}, "Revolute 1"),
     ({"group": "arm", "joints": {"Revolute 1": 0}, "extra": 1}, "extra"),
 ])
-def test_a_hostile_goal_is_refused_naming_the_field(client, body, expected):
-    answer = client.post(CELL + "/goal", json=body)
+def test_a_hostile_goal_is_refused_naming_the_field(reader, body, expected):
+    answer = reader.post(CELL + "/goal", json=body)
     assert answer.status_code == 422, answer.text
     assert expected in answer.text
 
 
-def test_a_goal_with_nan_is_refused(client):
-    answer = client.post(CELL + "/goal", content=b'{"group": "arm", "joints": '
+def test_a_goal_with_nan_is_refused(reader):
+    answer = reader.post(CELL + "/goal", content=b'{"group": "arm", "joints": '
                          b'{"Revolute 1": NaN}}', headers={"content-type": "application/json"})
     assert answer.status_code == 422
 
@@ -103,6 +115,21 @@ def test_execute_moves_the_arm_on_the_backend_as_a_run(client):
     after = client.get("/cells/servo_arm_table/state?backend=mock").json()["joints"]
     assert max(abs(after[n] - before[n]) for n in goal["joints"]) > 0.05
     assert all(after[n] == pytest.approx(v, abs=1e-3) for n, v in goal["joints"].items())
+
+
+def test_stop_cancels_an_execute_and_the_arm_stays_where_it_stopped(client):
+    cell = client.get(CELL).json()
+    candle = next(g for g in cell["groups"] if g["name"] == "arm")["poses"]["Candle"]
+    answer = client.post(CELL + "/execute", json={
+        "group": "arm", "joints": candle, "backend": "sim", "velocity_scaling": 0.05})
+    assert answer.status_code == 202, answer.text
+    run_id = answer.json()["run_id"]
+    wait_for_event(client, run_id, "motion")
+    assert client.post(f"/runs/{run_id}/cancel").status_code == 202
+    run = wait_until_done(client, run_id)
+    assert run["status"] == "cancelled"
+    stopped = client.get("/cells/servo_arm_table/state?backend=sim").json()["joints"]
+    assert abs(stopped["Revolute 2"] - candle["Revolute 2"]) > 0.05  # not at the goal
 
 
 def test_execute_refuses_a_goal_in_collision(client):

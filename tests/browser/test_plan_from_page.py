@@ -64,6 +64,24 @@ def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screensh
     detail = page.server.api(f"/runs/{run['id']}")
     assert detail["backend"] == "mock" and detail["task"] == "goal_from_view"
     shot(page, screenshots, "plan_servo_arm_executed")
+    # dragged down into the table: the ghost turns red and the page says why
+    answers = page.evaluate(_ANSWERS)
+    x, y = _handle_pixel(page)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 11):
+        page.mouse.move(x, y + 25 * k)
+        page.wait_for_timeout(30)
+    page.mouse.up()
+    page.wait_for_function(f"{_ANSWERS} > {answers} && !window.__viewer.goal.dragging")
+    page.wait_for_function("window.__viewer.plan.answer && !window.__viewer.plan.answer.ok")
+    page.wait_for_timeout(300)
+    reason = page.evaluate("window.__viewer.plan.answer.reason")
+    assert "collision" in reason or "no IK solution" in reason, reason
+    assert reason in page.text_content("#plan-status")
+    assert page.evaluate("window.__viewer.goal.material.color.getHex()") == 0xD83A3A
+    assert page.is_disabled("#plan-plan")
+    shot(page, screenshots, "plan_servo_arm_goal_refused")
 
 
 def test_the_task_view_shows_the_tasks_objects_before_planning(page):

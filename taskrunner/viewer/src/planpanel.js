@@ -81,13 +81,14 @@ export class PlanPanel {
     this.stopButton.addEventListener('click', () => this.ui.guarded(() => this.doStop()));
     toCurrent.addEventListener('click', () => { this.setGoal(this.groupValues(this.robot)); });
     this.status = el('div', { id: 'plan-status', className: 'banner', textContent: 'goal: reading the robot…' });
+    this.runLine = el('a', { id: 'plan-run', hidden: true });
     this.slidersBox = el('div', { id: 'plan-sliders' });
     side.append(el('h2', { textContent: 'Plan and execute' }),
       el('label', { className: 'row' }, 'group ', groupSelect, ' backend ', backend),
       el('label', { className: 'row' }, 'goal ', mode),
       el('label', { className: 'row' }, 'velocity scaling ', this.scaling),
       el('div', { className: 'row-ctl' }, this.planButton, this.executeButton, this.stopButton, toCurrent),
-      this.status);
+      this.status, this.runLine);
     side.append(el('h2', { textContent: 'Named poses (as goals)' }));
     for (const group of this.cell.groups) {
       const names = Object.keys(group.poses);
@@ -215,21 +216,22 @@ export class PlanPanel {
     this.stopButton.disabled = !running;
     let text, cls;
     if (running) { text = `executing on ${this.backend} (run ${this.run.id})…`; cls = 'status-running'; }
-    else if (this.run && this.run.done) {
-      text = `run ${this.run.id}: ${this.run.status}` + (this.run.error ? ` — ${this.run.error}` : '');
-      cls = `status-${this.run.status}`;
-    } else if (!this.answer) { text = 'goal: checking…'; cls = ''; }
+    else if (!this.answer) { text = 'goal: checking…'; cls = ''; }
     else if (!this.answer.ok) { text = `goal: ${this.answer.reason}`; cls = 'status-failed'; }
     else if (this.plan) {
       text = `planned: ${this.plan.duration.toFixed(2)} s of motion, found in ${(1000 * this.plan.planning_time).toFixed(0)} ms; Execute runs it on ${this.backend}`;
       cls = 'status-succeeded';
     } else { text = 'goal: reachable and collision-free; press Plan'; cls = 'status-succeeded'; }
-    if (this.run && this.run.done && this.answer && !this.plan && !running) {
-      text += ' · goal: ' + (this.answer.ok ? 'ok' : this.answer.reason);
-    }
     this.status.textContent = text;
     this.status.className = `banner ${cls}`;
     this.info.status = text;
+    const run = this.run && this.run.done ? this.run : null;
+    this.runLine.hidden = !run;
+    if (run) {
+      this.runLine.textContent = `last Execute: run ${run.id} ${run.status}` + (run.error ? ` — ${run.error}` : '');
+      this.runLine.className = `status-${run.status}`;
+      this.runLine.href = `#/run/${run.id}`;
+    }
   }
 
   async readState(resetGoal) {
