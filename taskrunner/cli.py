@@ -23,7 +23,11 @@ Subcommands:
   firmware; prints the pseudo-terminal path, then the HTTP URL.
 - ``run-task hw status|home|jog JOINT DEGREES|calibrate [JOINT] (--port P | --url U)``:
   bench helpers for the servo arm on its ESP32 (calibrate writes zero_rad and direction to
-  hardware.yaml).
+  hardware.yaml).; with ``--robot so101 --port P [--calibration FILE]``: ``status``,
+  ``jog JOINT DEGREES``, ``torque on|off``, ``calibrate`` on the SO-101's Feetech bus
+  (LeRobot's calibration file).
+- ``run-task bus-sim``: the SO-101's Feetech bus emulated on a pty (prints its path; reads
+  ``inject KIND [ID]`` / ``clear`` on standard input).
 - ``run-task serve [--host 127.0.0.1] [--port 8000] [--token T | --no-auth]``: the REST API
   (``api/``); with no token given or in ``TASKRUNNER_TOKEN``, one is made and printed.
 
@@ -46,7 +50,7 @@ from typing import TYPE_CHECKING
 from taskrunner.commands.examples import cmd_examples
 from taskrunner.commands.robots import cmd_collision_matrix, cmd_demo, cmd_info, cmd_plan
 from taskrunner.commands.server import cmd_serve, cmd_view
-from taskrunner.commands.servos import cmd_firmware_sim, cmd_hw
+from taskrunner.commands.servos import cmd_bus_sim, cmd_firmware_sim, cmd_hw
 from taskrunner.errors import (
     BackendError,
     InputError,
@@ -54,7 +58,7 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnknownNameError,
 )
-from taskrunner.kinds import ExitCode
+from taskrunner.kinds import BackendKind, ExitCode
 
 if TYPE_CHECKING:
     from taskrunner.runtime.prestart import EarlyWorker
@@ -67,7 +71,7 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = (
     ExitCode.OK, ExitCode.INVALID, ExitCode.PLANNING, ExitCode.EXECUTION, ExitCode.CANCELLED)
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export")
+            "firmware-sim", "bus-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export")
 
 
 def _add_robot_options(parser: argparse.ArgumentParser) -> None:
@@ -305,7 +309,7 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
     run.add_argument("file", help="task file (YAML), or a shipped example's name (pick_place)")
-    run.add_argument("--backend", choices=("mock", "sim", "mujoco", "serial", "http"),
+    run.add_argument("--backend", choices=[kind.value for kind in BackendKind],
                      default="mock", help="where the motion goes (mock); mujoco: physics, "
                      "pip install 'mujoco>=3.2,<4' 'trimesh>=4.0,<6'")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
@@ -353,16 +357,24 @@ def _parser() -> argparse.ArgumentParser:
                      help="the board's servo channels in MOVE/TRAJ order (default: one arm, "
                           "0,3,6,9,12,15; servo_arm_pair's board: 0,1,2,3,4,5,8,9,10,11,12,13)")
     hw = sub.add_parser("hw", help="bench helpers for the servo arm's ESP32")
-    hw.add_argument("action", choices=("status", "home", "jog", "calibrate"),
+    hw.add_argument("action", choices=("status", "home", "jog", "calibrate", "torque"),
                     help="status: firmware and joint angles; home; jog JOINT DEGREES; "
                          "calibrate [JOINT]: write zero_rad and direction to hardware.yaml")
-    hw.add_argument("joint", nargs="?", help="joint to jog, e.g. 'Revolute 1'")
+    hw.add_argument("joint", nargs="?", help="joint to jog, e.g. 'Revolute 1'; on|off for "
+                                             "torque (--robot)")
     hw.add_argument("degrees", nargs="?", type=float, help="how far to jog (degrees)")
     hw.add_argument("--port", help="serial port (default: the robot's hardware.yaml)")
     hw.add_argument("--url", help="the ESP32's /api/command URL instead of serial")
     hw.add_argument("--cell", default=str(DEFAULT_CELL),
                     help=f"cell of the servo arm: a path or a shipped cell's name ({DEFAULT_CELL})")
     hw.add_argument("--firmware-speedup", type=float, default=1.0, help=argparse.SUPPRESS)
+    hw.add_argument("--robot", choices=("so101",), default=None,
+                    help="an arm on a Feetech servo bus instead of the ESP32 servo arm: "
+                         "status, jog, torque on|off, calibrate (LeRobot's file)")
+    hw.add_argument("--calibration", default=None,
+                    help="with --robot: LeRobot's calibration file (calibrate writes it)")
+    bus_sim = sub.add_parser("bus-sim", help="emulate the SO-101's Feetech servo bus on a pty")
+    bus_sim.add_argument("--seed", type=int, default=0, help="varies the servos' start (0)")
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
     demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL),
                       help=f"cell or robot: a path or a shipped cell's name ({DEFAULT_CELL})")
@@ -478,7 +490,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return args
     commands = {"run": cmd_run, "check": cmd_check, "examples": cmd_examples, "view": cmd_view,
                 "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
-                "firmware-sim": cmd_firmware_sim, "hw": cmd_hw,
+                "firmware-sim": cmd_firmware_sim, "bus-sim": cmd_bus_sim, "hw": cmd_hw,
                 "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep,
                 "warm-up": cmd_warm_up, "export": cmd_export}
     try:

@@ -15,7 +15,7 @@ if TYPE_CHECKING:
 
     pass
 
-__all__ = ["cmd_firmware_sim", "cmd_hw"]
+__all__ = ["cmd_bus_sim", "cmd_firmware_sim", "cmd_hw"]
 
 
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
@@ -68,6 +68,12 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     return 128 - code if code < 0 else code
 
 
+def _ask_terminal_ready() -> None:
+    """Refuse an interactive helper before anything moves when standard input is closed."""
+    if sys.stdin is None or sys.stdin.closed:
+        _ask_terminal("")
+
+
 def _ask_terminal(prompt: str) -> str:
     """``input`` for an interactive helper; no input (closed, or ended) is an InputError."""
     if sys.stdin is None or sys.stdin.closed:
@@ -81,9 +87,29 @@ def _ask_terminal(prompt: str) -> str:
                          "was written)") from None
 
 
+def cmd_bus_sim(args: argparse.Namespace) -> int:
+    """Serve the SO-101's Feetech bus on a pty until standard input ends."""
+    from taskrunner.backends.feetech.commands import run_bus_sim
+
+    return run_bus_sim(seed=args.seed)
+
+
 def cmd_hw(args: argparse.Namespace) -> int:
     """Bench helpers: the firmware's status, homing, jogging one joint, calibrating."""
     import math
+
+    if getattr(args, "robot", None):  # an arm on a Feetech bus (the SO-101), not the ESP32
+        from taskrunner.backends.feetech.commands import run_hw
+
+        if not args.port:
+            raise InputError(f"hw --robot {args.robot} needs --port (the bus adapter's serial "
+                             "port, or run-task bus-sim's pty)")
+        if args.action == "calibrate":
+            _ask_terminal_ready()
+        return run_hw(args.action, args.port, args.robot, args.calibration, args.joint,
+                      None if args.degrees is None else str(args.degrees), ask=_ask_terminal)
+    if args.action == "torque":
+        raise InputError("hw torque is for a bus-servo arm: add --robot so101 --port P")
 
     from taskrunner.backends import ServoBackend
     from taskrunner.runtime.session import make_backend

@@ -81,7 +81,7 @@ def jog_joint(bus: ServoBus, calibration: LeRobotCalibration, joint: str,
 
 
 def calibrate_arm(bus: ServoBus, motors: Sequence[Motor], path: str | Path,
-                  wait_enter: Callable[[str], None], range_done: Callable[[], bool],
+                  wait_enter: Callable[[str], object], range_done: Callable[[], bool],
                   say: Callable[[str], None] = print) -> dict[str, MotorCalibration]:
     """LeRobot's calibration of an arm (see the module); writes ``path`` (an existing file
     is kept as ``<path>.bak``) and the servos' EEPROM.
