@@ -55,6 +55,7 @@ import json
 import os
 import platform
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -68,6 +69,7 @@ __all__ = ["run", "run_once"]
 
 _PLANNED = re.compile(r"^\s*[0-9.]+s\s+planned in ")
 _CHECKED = re.compile(r": checked \d+ steps? in ")
+_COAL = "planning with coal alone meanwhile"  # taskrunner.runtime.session.COAL_NOTE
 
 
 def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = None,
@@ -118,7 +120,56 @@ def run_once(task: str, seed: int, runs_dir: Path, env: dict[str, str] | None = 
     record = json.loads(record_path.read_text(encoding="utf-8"))
     return {"first_motion": first_motion, "checked": checked, "wall": wall, "exit_code": code,
             "main_cpu": main_cpu, "warm_up": record.get("warm_up_s"),
-            "expectations_met": _expectations_met(record)}
+            "expectations_met": _expectations_met(record),
+            "planned_with_coal": any(_COAL in text for _, text in lines)}
+
+
+def _background_compile(numba_cache: Path, wait: float) -> dict[str, Any]:
+    """After a cold run: the kernels' compilation it left running in the background
+    (:mod:`taskrunner.planning.warmup`), waited for up to ``wait`` s, then ended (by its
+    pid, and the screen's helper it started, by theirs), so that the next measurement
+    runs beside nothing of this one's. Returns whether one was running, how long after
+    the run it ended, and whether it finished or was stopped."""
+    lock = numba_cache / "compiling.lock"
+    try:
+        pid = int(lock.read_text(encoding="ascii").strip())
+    except (OSError, ValueError):
+        return {"running": False}
+    started = time.perf_counter()
+    while _alive(pid) and time.perf_counter() - started < wait:
+        time.sleep(0.1)
+    waited = time.perf_counter() - started
+    if not _alive(pid):
+        return {"running": True, "finished": True, "after_exit_s": waited}
+    for child in [pid, *_children(pid)]:
+        try:
+            os.kill(child, signal.SIGKILL)
+        except OSError:
+            pass
+    return {"running": True, "finished": False, "after_exit_s": waited}
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+            return stat.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+def _children(pid: int) -> list[int]:
+    """The direct children of ``pid`` (Linux)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            fields = (entry / "stat").read_text(encoding="ascii").rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found.append(int(entry.name))
+    return found
 
 
 def _expectations_met(record: dict[str, Any]) -> bool | None:
@@ -149,13 +200,15 @@ _BUSY_LOOP = "import time\nwhile True:\n    for i in range(100000):\n        pas
 
 def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: int = 0,
         pythonpath: str | None = None, bytecode_cache: bool = True,
-        busy: int = 0, keep_bytecode: bool = False) -> dict[str, Any]:
+        busy: int = 0, keep_bytecode: bool = False,
+        compile_wait: float = 60.0) -> dict[str, Any]:
     """Measure ``runs`` warm starts (after ``cold`` cold ones, each on fresh caches), with
     ``busy`` other processes spinning meanwhile; see the module doc."""
     spinning = [subprocess.Popen([sys.executable, "-c", _BUSY_LOOP], stdin=subprocess.DEVNULL)
                 for _ in range(busy)]
     try:
-        result = _measure(task, runs, seed, cold, pythonpath, bytecode_cache, keep_bytecode)
+        result = _measure(task, runs, seed, cold, pythonpath, bytecode_cache, keep_bytecode,
+                          compile_wait)
     finally:
         for process in spinning:
             process.kill()
@@ -165,7 +218,8 @@ def run(task: str = "pick_place", runs: int = 10, seed: int = 0, cold: int = 0,
 
 
 def _measure(task: str, runs: int, seed: int, cold: int, pythonpath: str | None,
-             bytecode_cache: bool, keep_bytecode: bool = False) -> dict[str, Any]:
+             bytecode_cache: bool, keep_bytecode: bool = False,
+             compile_wait: float = 60.0) -> dict[str, Any]:
     env = dict(os.environ)
     env.pop("PYTHONPROFILEIMPORTTIME", None)
     if pythonpath:
@@ -191,12 +245,21 @@ def _measure(task: str, runs: int, seed: int, cold: int, pythonpath: str | None,
                     run_once(task, seed, runs_dir, dict(
                         cold_env, PYTHONPYCACHEPREFIX=str(root / "pycache"),
                         XDG_CACHE_HOME=str(own), NUMBA_CACHE_DIR=str(own / "numba")))
+                    _background_compile(own / "numba", 0.0)
                 cold_env["PYTHONPYCACHEPREFIX"] = str(root / "pycache")
-            colds.append(run_once(task, seed, runs_dir, cold_env))
+            sample = run_once(task, seed + k, runs_dir, cold_env)
+            sample["background_compile"] = _background_compile(
+                fresh / "cache" / "taskrunner" / "numba", compile_wait)
+            colds.append(sample)
         if colds:
             result["cold"] = colds[0]
             result["colds"] = colds
+            result["cold_first_motion"] = _stats([c["first_motion"] for c in colds])
         if runs:
+            # The kernels compiled in the foreground first (else the unmeasured run would
+            # leave them compiling in the background, and the warm runs plan with coal).
+            subprocess.run([sys.executable, "-m", "taskrunner.cli", "warm-up"], env=env,
+                           cwd=runs_dir, check=True, capture_output=True)
             run_once(task, seed, runs_dir, env)  # fills the caches; not measured
         samples = [run_once(task, seed + k, runs_dir, env) for k in range(runs)]
     for key in ("first_motion", "checked", "wall", "main_cpu"):
@@ -220,13 +283,20 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
             out.append((f"run-task {result['task']}, {what}, {result['runs']} warm runs",
                         f"{s['median']:.3f} s median, {s['mean']:.3f} s mean, "
                         f"{s['min']:.3f}-{s['max']:.3f} s"))
+    what = "models, kernels" if result.get("cold_keeps_bytecode") else "models, kernels, bytecode"
+    if "cold_first_motion" in result:
+        s = result["cold_first_motion"]
+        out.append((f"run-task {result['task']}, cold caches ({what}), start to first motion, "
+                    f"{len(result['colds'])} runs",
+                    f"{s['median']:.3f} s median, {s['min']:.3f}-{s['max']:.3f} s"))
     for k, c in enumerate(result.get("colds", [])):
         warm_up = "none" if c.get("warm_up") is None else f"{c['warm_up']:.1f} s"
         met = {True: "met", False: "NOT met", None: "none"}[c.get("expectations_met")]
-        what = "models, kernels" if result.get("cold_keeps_bytecode") else "models, kernels, bytecode"
+        coal = ", planned with coal" if c.get("planned_with_coal") else ""
         out.append((f"run-task {result['task']}, cold caches ({what}) #{k + 1}",
-                    f"first motion {c['first_motion']:.3f} s (kernels' warm-up {warm_up}), "
-                    f"wall {c['wall']:.3f} s, exit {c['exit_code']}, expectations {met}"))
+                    f"first motion {c['first_motion']:.3f} s (kernels' warm-up {warm_up}{coal}), "
+                    f"wall {c['wall']:.3f} s, exit {c['exit_code']}, expectations {met}"
+                    f"{_compile_note(c.get('background_compile', {}))}"))
     if result.get("failed_runs"):
         out.append(("runs that failed after their first motion (exit 3 or 4)",
                     str(result["failed_runs"])))
@@ -237,6 +307,14 @@ def rows(result: dict[str, Any]) -> list[tuple[str, str]]:
     out.append(("load average (1 min) before / after",
                 f"{result['load_before']:.2f} / {result['load_after']:.2f}"))
     return out
+
+
+def _compile_note(background: dict[str, Any]) -> str:
+    if not background.get("running"):
+        return ""
+    if background["finished"]:
+        return f"; kernels compiled {background['after_exit_s']:.1f} s after its exit"
+    return f"; kernels still compiling {background['after_exit_s']:.0f} s after its exit (stopped)"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -255,6 +333,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-bytecode-cache", action="store_true",
                         help="warm runs keep the environment's PYTHONDONTWRITEBYTECODE and "
                              "PYTHONPYCACHEPREFIX (see the module doc)")
+    parser.add_argument("--compile-wait", type=float, default=60.0, metavar="S",
+                        help="after each cold run, wait up to S s for the compilation it "
+                             "left in the background, then stop it (60)")
     parser.add_argument("--busy", type=int, default=0, metavar="N",
                         help="keep N other processes busy meanwhile (0)")
     args = parser.parse_args(argv)
@@ -264,7 +345,8 @@ def main(argv: list[str] | None = None) -> int:
     if cold < 0:
         parser.error("--cold-runs must be 0 or more")
     result = run(args.task, args.runs, args.seed, cold, args.pythonpath,
-                 not args.no_bytecode_cache, args.busy, args.cold_keeps_bytecode)
+                 not args.no_bytecode_cache, args.busy, args.cold_keeps_bytecode,
+                 args.compile_wait)
     result["cold_keeps_bytecode"] = args.cold_keeps_bytecode
     table = rows(result)
     width = max(len(what) for what, _ in table)

@@ -149,6 +149,8 @@ class MotionPlanner:
             planner = group_planner(self.scene.robot.group(request.group))
             request = replace(request, options=replace(request.options, planner=planner))
         result = self._plan(request, should_stop)
+        if not self.compiled:
+            result = replace(result, compiled=False)
         if request.timing is None:
             return result
         trajectory, verified = self._timed(result, request.timing, request.options)

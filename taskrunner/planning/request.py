@@ -226,6 +226,8 @@ class PlanResult:
         trajectory_json: with the request's ``trajectory_json``, the trajectory as one
             JSON object: ``{"times": [...], "positions": [[...], ...], "velocities":
             [[...], ...]}`` (s, rad or m, rad/s or m/s; one row per sample).
+        compiled: checked with the planner's compiled kernels; False: with coal alone, while
+            they compiled (:mod:`taskrunner.scene.coalpath`: the same guarantee).
     """
 
     path: JointPath
@@ -243,4 +245,5 @@ class PlanResult:
     verify_time: float = 0.0
     trajectory: JointTrajectory | None = None
     trajectory_json: bytes | None = None
+    compiled: bool = True
 

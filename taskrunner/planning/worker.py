@@ -72,15 +72,6 @@ def stays(scene: Scene, request: PlanRequest) -> bool:
 _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its verifier
 
 
-def _warm_verifier(scene: Scene) -> None:
-    """Verify and screen a short motion from the start state, so that the path
-    verifier's and the search's compiled kernels are loaded (compiled, the first time on
-    a machine: then cached on disk) before the first request rather than during it."""
-    from taskrunner.scene.screen import warm_kernels
-
-    warm_kernels(scene.path_verifier(), scene.state)
-
-
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
            timing: bool = True) -> None:
     """The worker process: load the model, then answer requests until told to stop.
@@ -121,18 +112,18 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
 
             load_toppra()  # every plan is timed: import it while the caller still loads
         import taskrunner.scene.screen  # noqa: F401 - numba (the path verifier's kernels)
-        from taskrunner.planning.warmup import kernels_ready
+        from taskrunner.planning.warmup import CompiledKernels
 
         if collecting:
             gc.enable()
-        # Loaded; what follows compiles the kernels when they are not in the cache (once
-        # per machine, 10-15 s of CPU): "compiling" tells the parent to wait longer than
-        # for a load, and why.
-        kind = "loaded" if kernels_ready() else "compiling"
-        conn.send((kind, cell.model.name, time.perf_counter() - started))
-        _warm_verifier(scene)  # and verified: load its compiled kernels now too
+        conn.send(("loaded", cell.model.name, time.perf_counter() - started))
+        # The compiled kernels loaded from the cache; where they are not there yet (the
+        # first time on a machine), compiled in the background while the planner checks
+        # with coal alone ("coal"), switching to them between requests once they are in.
+        kernels = CompiledKernels()
+        kind = "ready" if kernels.prepare(planner) else "coal"
         gc.freeze()
-        conn.send(("ready", cell.model.name, time.perf_counter() - started))
+        conn.send((kind, cell.model.name, time.perf_counter() - started))
     except TaskrunnerError as exc:
         conn.send(("failed", exc, 0.0))
         return
@@ -151,6 +142,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
         try:
             if snapshot is not None:
                 scene.restore(snapshot)
+            kernels.update(planner)
             result = planner.plan(request, should_stop=lambda: cancel.value == request_id)
             conn.send(("ok", request_id, result))
         except TaskrunnerError as exc:
@@ -230,6 +222,9 @@ class PlanningWorker:
     _stays_here: tuple[Scene, MotionPlanner] | None = None
     compile_time: float = 0.0
     """Seconds the worker spent compiling kernels before it was ready (0.0: loaded)."""
+    planning_with_coal: bool = False
+    """The worker found no compiled kernels when it started: it plans with coal alone
+    until their compilation in the background is done (:mod:`taskrunner.planning.warmup`)."""
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
                  wait_ready: bool = True, nice: int = 0,
@@ -308,6 +303,7 @@ class PlanningWorker:
             raise payload
         if compiling_since is not None:
             self.compile_time = time.perf_counter() - compiling_since
+        self.planning_with_coal = kind == "coal"
         self.model_name = payload
         self.load_time = seconds
         self._sent_scene = None

@@ -170,6 +170,8 @@ def _import_toppra() -> None:
 
 
 WARM_UP_NOTE = "preparing the planner's compiled kernels (first run on this machine, ~5 s)"
+COAL_NOTE = ("the planner's compiled kernels are compiling in the background (first run on "
+             "this machine); planning with coal alone meanwhile (as exact, slower)")
 
 
 def _prepare_kernels(planner: PlanningWorker | InProcessPlanner, out: TextIO,
@@ -197,6 +199,8 @@ def _prepare_kernels(planner: PlanningWorker | InProcessPlanner, out: TextIO,
             return None
         if progress.failure is not None:
             raise progress.failure
+        if planner.planning_with_coal:
+            print(COAL_NOTE, file=out, flush=True)
         seconds = planner.compile_time
     else:
         from taskrunner.planning.warmup import kernels_ready, warm_up_kernels

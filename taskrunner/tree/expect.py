@@ -161,6 +161,8 @@ def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
         return []
     model = ctx.scene.robot
     scene = Scene(model)
+    from taskrunner.planning.warmup import exact_path_verifier
+
     found = []
     for motion in ctx.executed[start:]:
         scene.restore(motion.scene)
@@ -172,7 +174,7 @@ def motion_collisions(ctx: TaskContext, start: int = 0) -> list[str]:
         traj = motion.trajectory
         states = np.array([model.state_with(base, dict(zip(traj.names, row)))
                            for row in traj.positions])
-        result = scene.path_verifier().verify(states)
+        result = exact_path_verifier(scene).verify(states)
         if not result.valid:
             where = f" ({motion.location})" if motion.location else ""
             at = ""
