@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import json
 import threading
-from typing import Annotated, Any
+from typing import Annotated, Any, cast
 
 from fastapi import APIRouter, Depends, Request, Response, status
 from pydantic import Field, model_validator
@@ -97,7 +97,7 @@ class ExecuteBody(_Request):
     group: str = _NAME
     joints: dict[str, Number] = Field(min_length=1, max_length=MAX_JOINTS,
                                       description="the goal (rad or m)")
-    backend: Backend = "sim"
+    backend: Backend = Field(default=cast(Backend, "sim"), description="whose arm moves")
     velocity_scaling: Number | None = Field(default=None, gt=0, le=1)
     seed: Integer = Field(default=0, ge=0, le=2**31 - 1)
     start: dict[str, Number] | None = Field(
@@ -164,7 +164,7 @@ async def execute(cell_id: str, body: ExecuteBody, request: Request, response: R
         lambda: manager.start(spec, body.backend, seed=body.seed, task_text=text))
     url = f"/runs/{live.run_id}"
     response.headers["Location"] = url
-    return RunAccepted(run_id=live.run_id, status="running", url=url)
+    return RunAccepted.model_validate({"run_id": live.run_id, "status": "running", "url": url})
 
 
 def _execute_spec(cell_id: str, body: ExecuteBody, request: Request, cells: CellRegistry,
