@@ -18,14 +18,18 @@ and measures, on this side's wall clock from just before the spawn:
   figure; counted in ``failed_runs``); any other ends the benchmark.
 
 ``--cold`` adds one run first with an empty ``XDG_CACHE_HOME`` and ``NUMBA_CACHE_DIR``
-(no cached robot models, no compiled kernels: the run starts by compiling them, which its
-record keeps apart as ``warm_up_s``) and Python's bytecode cache redirected to an empty
-folder (``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart with its
-warm-up and whether the task's expectations were met; ``--cold-runs N`` makes it N such
-runs, each on fresh caches. ``--cold-keeps-bytecode``: the cold runs keep the warm runs'
-bytecode (compiled once beforehand), as after ``pip install``, which compiles it: only
-taskrunner's own caches are fresh. The warm runs follow, after one unmeasured run that
-fills the caches.
+(no cached robot models, no compiled kernels: the run plans with coal alone while they
+compile in the background, :mod:`taskrunner.planning.warmup`; a run that waited for them
+instead recorded the wait as ``warm_up_s``) and Python's bytecode cache redirected to an
+empty folder (``PYTHONPYCACHEPREFIX``: every module compiled again), reported apart with
+whether it planned with coal, its warm-up if any and whether the task's expectations were
+met; ``--cold-runs N`` makes it N such runs (seeds S, S+1, …), each on fresh caches, and
+their median. After each, the compilation it left in the background is waited for up to
+``--compile-wait`` s (how long after the run's exit it finished is reported), then ended,
+so that it does not run beside the next measurement. ``--cold-keeps-bytecode``: the cold
+runs keep the warm runs' bytecode (compiled once beforehand), as after ``pip install``,
+which compiles it: only taskrunner's own caches are fresh. The warm runs follow, after
+``run-task warm-up`` and one unmeasured run that fill the caches.
 
 Warm runs keep their bytecode in a folder of their own (``PYTHONPYCACHEPREFIX`` in the
 benchmark's temporary folder, ``PYTHONDONTWRITEBYTECODE`` unset): an environment that
@@ -40,8 +44,8 @@ machine runs (the load average is reported either way).
 Usage::
 
     python benchmarks/startup.py [--task pick_place] [--runs 10] [--seed 0] [--cold | --cold-runs N]
-                                 [--json] [--pythonpath DIR] [--no-bytecode-cache]
-                                 [--busy N]
+                                 [--cold-keeps-bytecode] [--compile-wait S] [--json]
+                                 [--pythonpath DIR] [--no-bytecode-cache] [--busy N]
 
 ``--pythonpath DIR`` runs the taskrunner found in DIR instead (``git archive`` of an
 older commit, for a before/after in the same run). Prints a table, and with ``--json``
