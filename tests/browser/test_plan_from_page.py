@@ -64,6 +64,19 @@ def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screensh
     detail = page.server.api(f"/runs/{run['id']}")
     assert detail["backend"] == "mock" and detail["task"] == "goal_from_view"
     shot(page, screenshots, "plan_servo_arm_executed")
+    # jog: one joint of the robot a step further; teach: its state as a named pose
+    before = page.evaluate("window.__viewer.stage.jointValue('Revolute 1')")
+    page.click("button[data-jog='Revolute 1:1']")
+    page.wait_for_function("window.__viewer.plan.run.jog && window.__viewer.plan.run.done",
+                           timeout=30_000)
+    assert page.evaluate("window.__viewer.plan.run.status") == "succeeded"
+    jogged = page.evaluate("window.__viewer.stage.jointValue('Revolute 1')")
+    assert abs(jogged - before - 0.05) < 2e-3, (before, jogged)
+    page.fill("#teach-name", "from_the_page")
+    page.click("#teach")
+    page.wait_for_function("window.__viewer.plan.taught")
+    assert abs(page.evaluate("window.__viewer.plan.taught.joints['Revolute 1']") - jogged) < 1e-6
+    assert page.locator("select[name='pose:arm'] option[value='from_the_page']").count() == 1
     # dragged down into the table: the ghost turns red and the page says why
     answers = page.evaluate(_ANSWERS)
     x, y = _handle_pixel(page)

@@ -5,9 +5,11 @@
 // the server's backend, token needed) and Stop (the run's cancel). The robot drawn
 // solid is where the backend says it is; the ghost is the goal.
 
-import { get, post } from './api.js';
+import { get, post, request } from './api.js';
 
 const POLL_MS = 120;
+const JOG_RAD = 0.05;   // a jog step of a revolute joint (rad)
+const JOG_M = 0.005;    // of a prismatic one (m)
 
 export class PlanPanel {
   // ui: { el, guarded, side }; debug: the page's window.__viewer
@@ -90,11 +92,13 @@ export class PlanPanel {
       el('div', { className: 'row-ctl' }, this.planButton, this.executeButton, this.stopButton, toCurrent),
       this.status, this.runLine);
     side.append(el('h2', { textContent: 'Named poses (as goals)' }));
+    this.poseSelects = new Map();
     for (const group of this.cell.groups) {
       const names = Object.keys(group.poses);
-      if (!names.length || !this.groups.includes(group)) continue;
+      if (!this.groups.includes(group)) continue;
       const select = el('select', { name: 'pose:' + group.name },
         el('option', { value: '', textContent: '—' }), ...names.map((n) => el('option', { value: n, textContent: n })));
+      this.poseSelects.set(group.name, select);
       select.addEventListener('change', () => {
         if (!select.value) return;
         if (group !== this.group) { groupSelect.value = group.name; this.selectGroup(group.name); }
@@ -102,7 +106,11 @@ export class PlanPanel {
       });
       side.append(el('label', { className: 'row' }, el('span', { textContent: group.name }), select));
     }
-    side.append(el('h2', { textContent: 'Goal joints (the sliders set the goal, not the robot)' }), this.slidersBox);
+    const teachName = el('input', { id: 'teach-name', placeholder: 'pose name', size: 12 });
+    const teach = el('button', { id: 'teach', type: 'button', textContent: 'teach the robot\'s state' });
+    teach.addEventListener('click', () => this.ui.guarded(() => this.doTeach(teachName.value.trim())));
+    side.append(el('div', { className: 'row-ctl' }, teachName, teach));
+    side.append(el('h2', { textContent: 'Goal joints (the sliders set the goal, not the robot; ± jogs the robot)' }), this.slidersBox);
     this.goal.onDrag = (pose) => { if (this.mode !== 'joints') this.ask({ pose }); };
     this.goal.setVisible(true);
     await this.readState(true);
@@ -144,8 +152,15 @@ export class PlanPanel {
       input.addEventListener('input', () => {
         this.setGoal({ [name]: Number(input.value) });
       });
+      const step = joint.type === 'prismatic' ? JOG_M : JOG_RAD;
+      const jog = (sign) => {
+        const b = el('button', { type: 'button', className: 'jog', textContent: sign > 0 ? '+' : '−', title: `jog ${name} by ${sign * step}` });
+        b.dataset.jog = `${name}:${sign}`;
+        b.addEventListener('click', (ev) => { ev.preventDefault(); this.ui.guarded(() => this.doJog(name, sign * step, lo, hi)); });
+        return b;
+      };
       this.sliders.set(name, input);
-      this.slidersBox.append(el('label', { className: 'slider goal' }, el('span', { textContent: name, title: name }), input, readout, now));
+      this.slidersBox.append(el('label', { className: 'slider goal' }, el('span', { textContent: name, title: name }), input, readout, now, jog(-1), jog(1)));
       input.sync();
     }
   }
@@ -294,6 +309,38 @@ export class PlanPanel {
     await this.readState(false);
     run.done = true;
     this.refresh();
+  }
+
+  // Teach: the robot's state (as its backend reports it) stored as a named pose of the
+  // group on the server (PUT /cells/{id}/poses/{name}); it becomes a goal here too.
+  async doTeach(name) {
+    if (!/^[A-Za-z_][A-Za-z0-9_-]{0,63}$/.test(name)) {
+      throw new Error(`'name' must be a letter or _ then letters, digits, _ or - (got ${JSON.stringify(name)})`);
+    }
+    const taught = await request('PUT', `/cells/${encodeURIComponent(this.cell.id)}/poses/${encodeURIComponent(name)}`,
+      { group: this.group.name, backend: this.backend });
+    const known = name in this.group.poses;
+    this.group.poses[name] = taught.joints;
+    const select = this.poseSelects.get(this.group.name);
+    if (select && !known) select.append(this.ui.el('option', { value: name, textContent: name }));
+    this.info.taught = taught;
+  }
+
+  // Jog: one joint of the robot moved by a step (within its limits) as an Execute.
+  async doJog(name, delta, lo, hi) {
+    if (this.run && this.run.status === 'running') return;
+    await this.readState(false);
+    const joints = this.groupValues(this.robot);
+    joints[name] = Math.min(hi, Math.max(lo, joints[name] + delta));
+    const scaling = Number(this.scaling.value);
+    const accepted = await post(`/viewer/cells/${encodeURIComponent(this.cell.id)}/execute`, {
+      group: this.group.name, joints, backend: this.backend,
+      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5,
+    });
+    this.run = { id: accepted.run_id, status: 'running', done: false, jog: name };
+    this.info.run = this.run;
+    this.refresh();
+    await this.follow(this.run);
   }
 
   async doStop() {
