@@ -1,0 +1,136 @@
+"""Makespan benchmark: two arms at once against one after the other.
+
+    python benchmarks/makespan.py [--runs N] [--seed S] [--json]
+
+For each pair below, the parallel task and its sequential version (the same steps, one
+arm after the other; the versions not shipped in taskrunner/data/tasks are in
+benchmarks/makespan_tasks) are run on the mock backend, planning in-process, ``--runs`` times each with seeds
+``S, S+1, …``. Per task:
+
+- *makespan*: the task time the run's schedule gives, from the first motion's start to the
+  last one's end (s; each ``motion`` event's ``start`` plus its trajectory's duration; on
+  the mock backend this is the schedule's own clock: what a backend that plays time
+  follows, waits included);
+- *planning per motion*: the planner's time (``planned`` events' ``planning_time``) plus
+  the space-time admission of the motion against the other branches (``motion`` events'
+  ``verify_time``), over the motions planned (ms).
+
+The table gives the speed-up (sequential makespan / parallel makespan, target >= 1.6 on
+the two examples) and the planning overhead of a motion in the parallel task against a
+motion in the sequential one, whose motions are single-arm plans with nothing to verify
+against (target <= 2x). Prints a table, and with --json one JSON object as the last line.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+TASKS = ROOT / "taskrunner" / "data" / "tasks"
+SEQUENTIAL = Path(__file__).resolve().parent / "makespan_tasks"
+PAIRS = [
+    ("tray_pair", TASKS / "tray_pair.yaml", SEQUENTIAL / "tray_pair_sequential.yaml"),
+    ("assembly_panda", TASKS / "assembly_panda.yaml",
+     SEQUENTIAL / "assembly_panda_sequential.yaml"),
+    # The shipped handoff is the sequential one here: its parallel version lays the bar
+    # down while the other arm goes back to Candle.
+    ("handoff", SEQUENTIAL / "handoff_parallel.yaml", TASKS / "handoff.yaml"),
+]
+SPEEDUP_TARGET = 1.6
+OVERHEAD_TARGET = 2.0
+
+
+def run_once(path: Path, seed: int, runs_dir: Path) -> dict:
+    """One mock run of ``path``: its status, makespan (s), motions and planning (s)."""
+    from taskrunner.backends.mock import MockBackend
+    from taskrunner.planning.service import InProcessPlanner
+    from taskrunner.robot.cell import load_cell
+    from taskrunner.runtime.runner import Runner, RunOptions
+    from taskrunner.tasks import load_task
+
+    spec = load_task(path)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = MockBackend(names, dict(zip(names, cell.start_state())))
+    runner = Runner(spec, cell, backend, InProcessPlanner(),
+                    RunOptions(seed=seed, runs_dir=runs_dir))
+    record = runner.run()
+    spans, planning, verifying, planned, waits = [], 0.0, 0.0, 0, 0
+    for event in record.events:
+        if event.kind == "motion":
+            start = float(event.data["start"])
+            spans.append((start, start + float(event.data["trajectory"]["duration"])))
+            verifying += float(event.data.get("verify_time", 0.0))
+        elif event.kind == "planned":
+            planning += float(event.data.get("planning_time", 0.0))
+            planned += 1
+        elif event.kind == "wait":
+            waits += 1
+    makespan = (max(e for _, e in spans) - min(s for s, _ in spans)) if spans else 0.0
+    return {"status": record.status, "makespan_s": makespan, "motions": len(spans),
+            "planned": planned, "planning_s": planning, "verify_s": verifying,
+            "waits": waits}
+
+
+def bench_task(path: Path, runs: int, seed: int) -> dict:
+    with tempfile.TemporaryDirectory() as tmp:
+        run_once(path, seed, Path(tmp))  # warm-up: imports, IK seed tables, kernels
+        found = [run_once(path, seed + i, Path(tmp)) for i in range(runs)]
+    ok = [r for r in found if r["status"] == "succeeded"]
+    per_motion = [1e3 * (r["planning_s"] + r["verify_s"]) / max(r["planned"], 1) for r in ok]
+    return {
+        "task": path.stem, "runs": runs, "succeeded": len(ok),
+        "makespan_s_median": round(statistics.median(r["makespan_s"] for r in ok), 3)
+        if ok else None,
+        "motions": ok[0]["motions"] if ok else None,
+        "waits_median": statistics.median(r["waits"] for r in ok) if ok else None,
+        "plan_ms_per_motion_median": round(statistics.median(per_motion), 2) if ok else None,
+        "verify_ms_per_motion_median": round(statistics.median(
+            1e3 * r["verify_s"] / max(r["planned"], 1) for r in ok), 2) if ok else None,
+    }
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=3, help="runs of each task (3)")
+    parser.add_argument("--seed", type=int, default=0, help="first planner seed (0)")
+    parser.add_argument("--json", action="store_true", help="print one JSON line at the end")
+    args = parser.parse_args(argv)
+    rows = []
+    for name, parallel, sequential in PAIRS:
+        par, seq = bench_task(parallel, args.runs, args.seed), bench_task(
+            sequential, args.runs, args.seed)
+        speedup = overhead = None
+        if par["makespan_s_median"] and seq["makespan_s_median"]:
+            speedup = round(seq["makespan_s_median"] / par["makespan_s_median"], 3)
+        if par["plan_ms_per_motion_median"] and seq["plan_ms_per_motion_median"]:
+            overhead = round(par["plan_ms_per_motion_median"]
+                             / seq["plan_ms_per_motion_median"], 3)
+        rows.append({"name": name, "parallel": par, "sequential": seq,
+                     "speedup": speedup, "planning_overhead": overhead})
+    print(f"{'task':<16} {'ok':>5} {'parallel s':>10} {'sequential s':>12} {'speed-up':>8} "
+          f"{'waits':>5} {'plan+verify ms/motion':>21} {'single-arm ms':>13} {'overhead':>8}")
+    for row in rows:
+        par, seq = row["parallel"], row["sequential"]
+        ok = f"{par['succeeded']}+{seq['succeeded']}/{2 * par['runs']}"
+        print(f"{row['name']:<16} {ok:>5} {par['makespan_s_median'] or 0:>10.2f} "
+              f"{seq['makespan_s_median'] or 0:>12.2f} {row['speedup'] or 0:>7.2f}x "
+              f"{par['waits_median'] or 0:>5} "
+              f"{par['plan_ms_per_motion_median'] or 0:>7.1f} "
+              f"(verify {par['verify_ms_per_motion_median'] or 0:>4.1f}) "
+              f"{seq['plan_ms_per_motion_median'] or 0:>13.1f} "
+              f"{row['planning_overhead'] or 0:>7.2f}x")
+    print(f"targets: speed-up >= {SPEEDUP_TARGET}x on tray_pair and assembly_panda; planning "
+          f"per motion <= {OVERHEAD_TARGET}x a single-arm plan")
+    if args.json:
+        print(json.dumps({"seed": args.seed, "runs": args.runs, "pairs": rows}))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
