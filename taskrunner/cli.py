@@ -58,7 +58,7 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnknownNameError,
 )
-from taskrunner.kinds import ExitCode
+from taskrunner.kinds import BackendKind, ExitCode
 
 if TYPE_CHECKING:
     from taskrunner.runtime.prestart import EarlyWorker
@@ -309,7 +309,7 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = sub.add_parser("run", help="run a task file (also: run-task FILE)")
     run.add_argument("file", help="task file (YAML), or a shipped example's name (pick_place)")
-    run.add_argument("--backend", choices=("mock", "sim", "mujoco", "serial", "http"),
+    run.add_argument("--backend", choices=[kind.value for kind in BackendKind],
                      default="mock", help="where the motion goes (mock); mujoco: physics, "
                      "pip install 'mujoco>=3.2,<4' 'trimesh>=4.0,<6'")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "

@@ -8,9 +8,84 @@ answers keep the bytes they had when these were plain constants.
 
 from __future__ import annotations
 
-from enum import IntEnum
+from enum import IntEnum, StrEnum
 
-__all__ = ["ExitCode"]
+__all__ = ["BackendKind", "EventKind", "ExitCode", "FailureKind", "RunStatus", "StopReason"]
+
+
+class BackendKind(StrEnum):
+    """The backend that executes a run's motions: mock, sim, mujoco (physics), or the servo
+    arm over serial or http."""
+
+    MOCK = "mock"
+    """Reaches every target at once (tests, dry runs)."""
+    SIM = "sim"
+    """Plays trajectories in (scaled) real time, kinematically."""
+    MUJOCO = "mujoco"
+    """MuJoCo physics: contacts, grasps, objects that fall."""
+    SERIAL = "serial"
+    """The servo arm's ESP32 over USB serial."""
+    HTTP = "http"
+    """The servo arm's ESP32 over WiFi/HTTP."""
+
+
+class RunStatus(StrEnum):
+    """A run's status, in its record and in the REST API."""
+
+    RUNNING = "running"
+    SUCCEEDED = "succeeded"
+    FAILED = "failed"
+    CANCELLED = "cancelled"
+    INTERRUPTED = "interrupted"
+    """The process that ran it ended before the run did (read back from its journal)."""
+
+
+class FailureKind(StrEnum):
+    """Why a run failed, as ``run-task`` maps it to an exit code."""
+
+    INVALID = "invalid"
+    """Invalid input: ``InputError``, ``UnknownNameError``, ``SceneError`` …"""
+    PLANNING = "planning"
+    """No motion could be produced (``PlanningError``)."""
+    EXECUTION = "execution"
+    """A backend failed, or an expectation was missed (``BackendError``)."""
+
+
+class StopReason(StrEnum):
+    """Why a Cartesian path stopped short (:class:`taskrunner.planning.CartesianResult`)."""
+
+    IK = "ik"
+    """No IK solution near the previous point."""
+    COLLISION = "collision"
+    """The next point collides."""
+    JUMP = "jump"
+    """A joint would jump between two points."""
+
+
+class EventKind(StrEnum):
+    """The kinds of event a run emits (:class:`taskrunner.runtime.events.RunEvent`)."""
+
+    RUN_STARTED = "run_started"
+    """The task was loaded and compiled; data: task, cell, backend, parameters."""
+    NODE_STARTED = "node_started"
+    """A tree node began (initialise)."""
+    NODE_FINISHED = "node_finished"
+    """A node ended: status SUCCESS / FAILURE / INVALID (stopped)."""
+    PLANNED = "planned"
+    """A motion was planned; data: planning_time, duration, waypoints."""
+    MOTION = "motion"
+    """A trajectory was sent to the backend; data: trajectory, scene, start / sent (s, the
+    run's schedule), lane, verify_time (s)."""
+    PHYSICS = "physics"
+    """What a physics backend did during a node's motion; data: period, joints, t, q,
+    objects (poses over time), grasps (welds)."""
+    WAIT = "wait"
+    """A motion held back for another branch's arm; data: since, until (s, the run's
+    schedule), other (its step), bodies, at, distance."""
+    MESSAGE = "message"
+    """Anything else worth showing (a warning, a retry)."""
+    RUN_FINISHED = "run_finished"
+    """The run ended; status succeeded / failed / cancelled."""
 
 
 class ExitCode(IntEnum):

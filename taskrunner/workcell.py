@@ -34,6 +34,7 @@ import numpy as np
 from taskrunner.backends.base import Backend, ExecutionHandle
 from taskrunner.builder import Task
 from taskrunner.errors import ArgumentError, InputError
+from taskrunner.kinds import BackendKind
 from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner, relative_pose
 from taskrunner.planning.cartesian_limits import time_cartesian_path
 from taskrunner.planning.planner import MotionPlanner
@@ -60,7 +61,6 @@ from taskrunner.types import JointPath, JointState, JointTrajectory, Pose
 
 __all__ = ["Plan", "Workcell", "load_workcell", "run_task", "start_task"]
 
-BackendKind = Literal["mock", "sim", "serial", "http"]
 StateLike = JointState | Mapping[str, float]
 Position = Sequence[float]
 PoseLike = Pose | Mapping[str, Any]
@@ -228,7 +228,7 @@ class Workcell:
         """The connected backend (None before :meth:`connect`)."""
         return self._backend
 
-    def connect(self, kind: BackendKind = "mock", *, speed: float | None = None,
+    def connect(self, kind: BackendKind | str = "mock", *, speed: float | None = None,
                 port: str | None = None, url: str | None = None,
                 firmware_speedup: float = 1.0, home: bool = False) -> Backend:
         """Create the backend that executes this cell's motions, and use it from now on.
@@ -548,7 +548,7 @@ class Workcell:
 
     # ------------------------------------------------------------------ tasks
     def start_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-                   backend: BackendKind | None = None, speed: float | None = None,
+                   backend: BackendKind | str | None = None, speed: float | None = None,
                    seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
                    on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
         """Start a task on this cell in a background thread; returns at once.
@@ -577,7 +577,7 @@ class Workcell:
         return self._start(spec, task.to_text(self._cell) if isinstance(task, Task) else None,
                            backend, speed, seed, runs_dir, on_event)
 
-    def _start(self, spec: TaskSpec, text: str | None, backend: BackendKind | None,
+    def _start(self, spec: TaskSpec, text: str | None, backend: BackendKind | str | None,
                speed: float | None, seed: int, runs_dir: str | os.PathLike[str] | None,
                on_event: Callable[[RunEvent], None] | None) -> TaskRun:
         if backend is not None:
@@ -588,7 +588,7 @@ class Workcell:
                          on_event=on_event, on_end=self.sync, task_text=text)
 
     def run_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-                 backend: BackendKind | None = None, speed: float | None = None,
+                 backend: BackendKind | str | None = None, speed: float | None = None,
                  seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
                  on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
         """Run a task on this cell to its end; returns its result (see
@@ -713,7 +713,7 @@ def _waypoint(value: PoseLike | Position, here: Pose, index: int) -> Pose:
 
 
 def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-             backend: BackendKind = "mock", speed: float | None = None, seed: int = 0,
+             backend: BackendKind | str = "mock", speed: float | None = None, seed: int = 0,
              runs_dir: str | os.PathLike[str] | None = None,
              on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
     """Run a task in its own cell, like ``run-task TASK``; returns its result.
@@ -738,7 +738,7 @@ def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
 
 
 def start_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-               backend: BackendKind = "mock", speed: float | None = None, seed: int = 0,
+               backend: BackendKind | str = "mock", speed: float | None = None, seed: int = 0,
                runs_dir: str | os.PathLike[str] | None = None,
                on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
     """Start a task in its own cell in a background thread (see :func:`run_task`);

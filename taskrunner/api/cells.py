@@ -21,6 +21,7 @@ from taskrunner.backends.base import Backend
 from taskrunner.backends.sim import SimBackend, SimOptions
 from taskrunner.errors import ArgumentError, ConflictError, InputError, NotFoundError
 from taskrunner.folders import FileKind, FolderPolicy
+from taskrunner.kinds import BackendKind
 from taskrunner.resources import cell_files
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.session import make_backend
@@ -31,7 +32,7 @@ __all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession", "Pose
 
 log = logging.getLogger(__name__)
 
-BACKENDS = ("sim", "mock", "serial", "http", "mujoco")
+BACKENDS = tuple(kind.value for kind in BackendKind)
 
 
 class CellNotFoundError(NotFoundError):

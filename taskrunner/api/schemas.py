@@ -6,6 +6,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from taskrunner.kinds import BackendKind, RunStatus
 from taskrunner.validation import Integer, Number
 
 __all__ = [
@@ -14,7 +15,6 @@ __all__ = [
     "RobotOut", "RunAccepted", "RunCreate", "RunDetail", "RunSummary", "TeachBody", "TeachResponse",
 ]
 
-RunStatus = Literal["running", "succeeded", "failed", "cancelled", "interrupted"]
 MAX_YAML_CHARS = 200_000
 MAX_PARAMETERS = 1_000
 """Most parameter overrides one request may give (a task declares a handful)."""
@@ -50,11 +50,11 @@ class _TaskSource(_Request):
         return self
 
 
-Backend = Literal["sim", "mock", "serial", "http", "mujoco"]
+Backend = BackendKind
 
 
 class RunCreate(_TaskSource):
-    backend: Backend = Field(default="sim", description="sim, mock, mujoco (physics; the "
+    backend: Backend = Field(default=BackendKind.SIM, description="sim, mock, mujoco (physics; the "
                              "mujoco extra), or the cell's servos over serial or http (the "
                              "port and URL the server is set up with)")
     speed: Number | None = Field(default=None, gt=0, le=1000,
@@ -201,7 +201,7 @@ class PlanBody(_Request):
     joints: dict[str, Number] | None = Field(default=None, max_length=MAX_JOINTS,
                                              description="joint values (go)")
     pose: PoseTarget | None = Field(default=None, description="a link pose (move)")
-    backend: Backend = "sim"
+    backend: Backend = BackendKind.SIM
     planning_time: Number = Field(default=5.0, gt=0, le=30,
                                  description="seconds allowed to search, a cap and not a "
                                              "target: planning stops at the first path")
@@ -232,7 +232,7 @@ class PlanResponse(_Strict):
 
 class TeachBody(_Request):
     group: str
-    backend: Backend = "sim"
+    backend: Backend = BackendKind.SIM
 
 
 class TeachResponse(_Strict):
@@ -250,7 +250,7 @@ class Health(_Strict):
 
 class TeachRequest(_Request):
     group: str = Field(description="the group whose joints the pose sets")
-    backend: Backend = Field(default="sim", description="whose joint state to store")
+    backend: Backend = Field(default=BackendKind.SIM, description="whose joint state to store")
 
 
 class TaughtPose(_Strict):

@@ -39,6 +39,7 @@ from taskrunner.errors import (
     InvalidStateError,
     StartInCollisionError,
 )
+from taskrunner.kinds import StopReason
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
@@ -139,7 +140,7 @@ class CartesianResult:
     fraction: float
     start: np.ndarray
     end: np.ndarray
-    stop_reason: str | None
+    stop_reason: StopReason | None
     message: str
     waypoints_reached: int
     ik_solves: int
@@ -215,7 +216,8 @@ class CartesianPlanner:
         idx = group.joint_indices
         to_pin = model.to_pin
         rows, fractions, states = [q[idx]], [0.0], [q]
-        stop, message = None, ""
+        stop: StopReason | None = None
+        message = ""
         solves = checks = 0
         for point in _points(poses, options, position_only):
             solves += 1
@@ -224,7 +226,7 @@ class CartesianPlanner:
             try:
                 q_next = solver.solve_near(target, q, ik_options)
             except IkFailedError as error:
-                stop = "ik"
+                stop = StopReason.IK
                 xyz = ", ".join(f"{v:.4f}" for v in point.position)
                 residual = "" if error.best_error is None else (
                     f"; best residual {error.best_error:.3g}")
@@ -237,7 +239,7 @@ class CartesianPlanner:
                 moves = np.abs(q_next[idx] - q[idx])
                 k = int(moves.argmax())
                 if moves[k] > options.max_joint_step:
-                    stop = "jump"
+                    stop = StopReason.JUMP
                     message = (f"joint {group.joint_names[k]!r} would move {moves[k]:.3f} "
                                f"between consecutive points at {_percent(point.fraction)} of "
                                f"the path (max_joint_step {options.max_joint_step:g})")
@@ -258,7 +260,7 @@ class CartesianPlanner:
                 checks += count if hit is None else hit
                 if hit is not None:
                     at = fractions[-1] + hit / count * (point.fraction - fractions[-1])
-                    stop = "collision"
+                    stop = StopReason.COLLISION
                     message = (f"collision between {_describe(self.scene.collisions(dense[hit - 1]))}"
                                f" at {_percent(at)} of the path")
                     break
@@ -269,7 +271,7 @@ class CartesianPlanner:
         jump = _relative_jump(rows, options.jump_threshold)
         if jump is not None:
             k, step, mean = jump
-            stop = "jump"
+            stop = StopReason.JUMP
             message = (f"joint-space step of {step:.4f} at {_percent(fractions[k + 1])} of the "
                        f"path exceeds jump_threshold {options.jump_threshold:g} x the mean "
                        f"step {mean:.4f}")

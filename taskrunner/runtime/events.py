@@ -14,24 +14,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from taskrunner.errors import ArgumentError
+from taskrunner.kinds import EventKind
 
 __all__ = ["EventLog", "RunEvent"]
 
-# The kinds of event a run emits.
-KINDS = (
-    "run_started",      # the task was loaded and compiled; data: task, cell, backend, parameters
-    "node_started",     # a tree node began (initialise)
-    "node_finished",    # a node ended: status SUCCESS / FAILURE / INVALID (stopped)
-    "planned",          # a motion was planned; data: planning_time, duration, waypoints
-    "motion",           # a trajectory was sent to the backend; data: trajectory, scene,
-                        # start / sent (s, the run's schedule), lane, verify_time (s)
-    "physics",          # what a physics backend did during a node's motion; data: period,
-                        # joints, t, q, objects (poses over time), grasps (welds)
-    "wait",             # a motion held back for another branch's arm; data: since, until
-                        # (s, the run's schedule), other (its step), bodies, at, distance
-    "message",          # anything else worth showing (a warning, a retry)
-    "run_finished",     # the run ended; status succeeded / failed / cancelled
-)
+# The kinds of event a run emits, each with its data: taskrunner.kinds.EventKind.
+KINDS = tuple(kind.value for kind in EventKind)
 
 
 @dataclass(frozen=True)

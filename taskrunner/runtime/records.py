@@ -44,12 +44,13 @@ from pathlib import Path
 from typing import Any
 
 from taskrunner.errors import InputError
+from taskrunner.kinds import RunStatus
 from taskrunner.runtime.events import RunEvent
 
 __all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "needs_sync",
            "new_run_id", "save_record"]
 
-STATUSES = ("running", "succeeded", "failed", "cancelled", "interrupted")
+STATUSES = tuple(status.value for status in RunStatus)
 
 
 def new_run_id() -> str:

@@ -38,6 +38,7 @@ from taskrunner.errors import (
     PlanningError,
     TaskrunnerError,
 )
+from taskrunner.kinds import ExitCode
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -55,9 +56,10 @@ from taskrunner.tree.timeout import TaskTimeout
 
 __all__ = ["CANCELLED", "EXIT_CODES", "RunOptions", "Runner", "task_scene", "tree_text"]
 
-# Exit codes of run-task, by outcome ("terminated": cancelled by SIGTERM, 128 + 15).
-EXIT_CODES = {"succeeded": 0, "invalid": 2, "planning": 3, "execution": 4, "cancelled": 130,
-              "terminated": 143}
+# Exit codes of run-task, by outcome (plain ints: records and JSON keep their bytes).
+EXIT_CODES = {"succeeded": int(ExitCode.OK), "invalid": int(ExitCode.INVALID),
+              "planning": int(ExitCode.PLANNING), "execution": int(ExitCode.EXECUTION),
+              "cancelled": int(ExitCode.CANCELLED), "terminated": int(ExitCode.TERMINATED)}
 
 
 def error_kind(exc: TaskrunnerError) -> str:

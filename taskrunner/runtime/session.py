@@ -35,6 +35,7 @@ from taskrunner.backends import (
 )
 from taskrunner.backends.base import Backend
 from taskrunner.errors import ArgumentError, InputError
+from taskrunner.kinds import BackendKind
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.display import LiveTree
 from taskrunner.runtime.events import EventLog, RunEvent
@@ -56,7 +57,7 @@ if TYPE_CHECKING:
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration", "warm_up_command"]
 
 
-BACKENDS = ("mock", "sim", "mujoco", "serial", "http")
+BACKENDS = tuple(kind.value for kind in BackendKind)
 _FRAME_PERIOD = 0.1  # s between frames of the live tree
 
 

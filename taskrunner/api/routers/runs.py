@@ -82,7 +82,7 @@ async def start_run(body: RunCreate, response: Response,
                               task_file=task_file, speed=body.speed))
     url = f"/runs/{live.run_id}"
     response.headers["Location"] = url
-    return RunAccepted(run_id=live.run_id, status="running", url=url)
+    return RunAccepted(run_id=live.run_id, status=RunStatus.RUNNING, url=url)
 
 
 @router.get("", response_model=list[RunSummary], dependencies=[Depends(require_read)],
