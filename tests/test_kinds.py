@@ -8,10 +8,11 @@ import json
 from taskrunner import cli
 from taskrunner.api import schemas
 from taskrunner.api.cells import BACKENDS as API_BACKENDS
-from taskrunner.kinds import BackendKind, EventKind, ExitCode, RunStatus, StopReason
+from taskrunner.errors import BackendError, PlanningError, TaskSpecError
+from taskrunner.kinds import BackendKind, EventKind, ExitCode, FailureKind, RunStatus, StopReason
 from taskrunner.runtime.events import KINDS
 from taskrunner.runtime.records import STATUSES
-from taskrunner.runtime.runner import EXIT_CODES
+from taskrunner.runtime.runner import EXIT_CODES, error_kind
 from taskrunner.runtime.session import BACKENDS
 
 
@@ -54,3 +55,11 @@ def test_an_api_answer_keeps_its_bytes():
     assert schemas.RunCreate.model_validate({"task": "t.yaml"}).backend == "sim"
     assert json.dumps({"backend": BackendKind.SIM, "code": ExitCode.PLANNING}) \
         == '{"backend": "sim", "code": 3}'
+
+
+def test_a_failure_kind_names_its_exit_code():
+    kinds = [error_kind(e) for e in (PlanningError("x"), BackendError("x"), TaskSpecError("x"))]
+    assert kinds == ["planning", "execution", "invalid"] == [k.value for k in (
+        FailureKind.PLANNING, FailureKind.EXECUTION, FailureKind.INVALID)]
+    assert [EXIT_CODES[k] for k in kinds] == [ExitCode.PLANNING, ExitCode.EXECUTION,
+                                              ExitCode.INVALID]

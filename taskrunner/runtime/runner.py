@@ -38,7 +38,7 @@ from taskrunner.errors import (
     PlanningError,
     TaskrunnerError,
 )
-from taskrunner.kinds import ExitCode
+from taskrunner.kinds import ExitCode, FailureKind
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -67,10 +67,10 @@ def error_kind(exc: TaskrunnerError) -> str:
     maps it: a planning failure (``PlanningError``), an execution one (``BackendError``),
     else invalid input (``InputError``, ``UnknownNameError``, ``SceneError``, …)."""
     if isinstance(exc, PlanningError):
-        return "planning"
+        return FailureKind.PLANNING.value
     if isinstance(exc, BackendError):
-        return "execution"
-    return "invalid"
+        return FailureKind.EXECUTION.value
+    return FailureKind.INVALID.value
 
 
 CANCELLED = "CANCELLED"
