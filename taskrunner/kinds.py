@@ -84,6 +84,9 @@ class EventKind(StrEnum):
     schedule), other (its step), bodies, at, distance."""
     MESSAGE = "message"
     """Anything else worth showing (a warning, a retry)."""
+    CHECKPOINT = "checkpoint"
+    """A leaf has finished: what a resumed run continues from (its place in the tree, the
+    scene, which arm holds what); see :mod:`taskrunner.runtime.checkpoint`."""
     RUN_FINISHED = "run_finished"
     """The run ended; status succeeded / failed / cancelled."""
 

@@ -25,7 +25,7 @@ def test_the_values_are_those_records_and_scripts_already_hold():
                                             "interrupted"]
     assert [k.value for k in EventKind] == [
         "run_started", "node_started", "node_finished", "planned", "motion", "physics",
-        "wait", "message", "run_finished"]
+        "wait", "message", "checkpoint", "run_finished"]
     assert [r.value for r in StopReason] == ["ik", "collision", "jump"]
 
 
