@@ -23,7 +23,9 @@ file:line) when:
 - a joint lags its trajectory by more than ``tracking_tolerance`` (finger joints are
   exempt: a finger blocked by what it grasps is the point of closing);
 - a contact on the robot, other than a hand on a free object, pushes harder than
-  ``contact_force_limit`` (an unplanned collision).
+  ``contact_force_limit`` (an unplanned collision);
+- a link of one robot touches a link of another (two arms of a cell), however lightly:
+  the message names both links and their robots.
 
 The task's scene is bound with :meth:`bind_scene` (the runner's context does it): the
 backend then builds its world with the scene's objects, learns what the task believes
@@ -355,6 +357,9 @@ class MujocoBackend(BaseBackend):
                               if model.body(b).name not in self._objects}
         self._hand_bodies = {mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, link)
                              for link in cell.hand_links} - {-1}
+        # The robot of each link body, in a cell of several (links of two robots touch).
+        self._robot_of = {b: cell.link_robots[model.body(b).name] for b in self._robot_bodies
+                          if model.body(b).name in cell.link_robots}
         data.qpos[self._qadr] = self._positions
         if old is not None:  # a rebuild: the objects that were there stay where they were
             for name, body in self._objects.items():
@@ -617,6 +622,15 @@ class MujocoBackend(BaseBackend):
             robot1, robot2 = b1 in self._robot_bodies, b2 in self._robot_bodies
             if not (robot1 or robot2):
                 continue
+            if robot1 and robot2:
+                first, second = self._robot_of.get(b1), self._robot_of.get(b2)
+                if first != second and first is not None and second is not None:
+                    if not self.failures:
+                        self.failures.append(
+                            f"contact between robots: {model.body(b1).name!r} ({first}) "
+                            f"touched {model.body(b2).name!r} ({second}) at {data.time:.3f} s "
+                            f"of physics")
+                    continue
             other = b2 if robot1 else b1
             link = b1 if robot1 else b2
             other_geom = contact.geom2 if robot1 else contact.geom1

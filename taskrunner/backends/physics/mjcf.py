@@ -46,8 +46,11 @@ log = logging.getLogger(__name__)
 
 WORLD = "world"
 # contype / conaffinity bits: robot geoms (2) touch world geoms (1) but not each other.
+# In a cell of several robots each robot has a bit of its own (2, 4, 8 …): its links touch
+# the world and the other robots' links, never its own (``_contact_bits``).
 _ROBOT_BITS = ('contype="2"', 'conaffinity="1"')
 _WORLD_BITS = ('contype="1"', 'conaffinity="3"')
+_MAX_ROBOTS = 30  # contype bits 1..30 (bit 0: the world)
 _MIN_MASS = 1e-3  # kg: a moving link with neither <inertial> nor collision geometry
 _MIN_INERTIA = 1e-6  # kg m^2
 
@@ -130,6 +133,9 @@ class PhysicsCell:
         frame_links: frames that are not links (tool frames) -> the link each is fixed to.
         link_inertias: for moving links without ``<inertial>``, the mass and inertia of
             their collision geometry (:mod:`taskrunner.backends.physics.inertia`).
+        link_robots: in a cell of several robots, the robot (instance name) of each
+            link: links of two robots touch each other in the model, and any contact
+            between them is a failure of the run (the backend names both links).
     """
 
     name: str
@@ -142,13 +148,14 @@ class PhysicsCell:
     grasp_modes: Mapping[str, str] = field(default_factory=dict)
     frame_links: Mapping[str, str] = field(default_factory=dict)
     link_inertias: Mapping[str, LinkInertia] = field(default_factory=dict)
+    link_robots: Mapping[str, str] = field(default_factory=dict)
 
     def with_objects(self, objects: Iterable[PhysicsObject]) -> PhysicsCell:
         """The same cell with ``objects`` as its objects."""
         return PhysicsCell(self.name, self.urdf_xml, tuple(objects), self.hand_links,
                            self.gripper_joints, dict(self.grasp_frames), dict(self.mimic),
                            dict(self.grasp_modes), dict(self.frame_links),
-                           dict(self.link_inertias))
+                           dict(self.link_inertias), dict(self.link_robots))
 
 
 def physics_cell(cell: Cell, link_density: float = DEFAULT_LINK_DENSITY) -> PhysicsCell:
@@ -207,8 +214,31 @@ def physics_cell(cell: Cell, link_density: float = DEFAULT_LINK_DENSITY) -> Phys
         log.warning("robot %r: %d link(s) without <inertial> weighed from their collision "
                     "geometry at %g kg/m³ (mujoco backend): %s", robot, len(names),
                     link_density, ", ".join(names))
+    link_robots: dict[str, str] = {}
+    if len(model.instances) > 1:
+        for link in model.link_names:
+            owner = next((name for prefix, name in prefixes if link.startswith(prefix)), None)
+            if owner is not None and link != WORLD:
+                link_robots[link] = owner
     return PhysicsCell(cell.name, model.urdf_xml, tuple(objects), frozenset(hands),
-                       frozenset(fingers), frames, mimic, modes, aliases, inertias)
+                       frozenset(fingers), frames, mimic, modes, aliases, inertias,
+                       link_robots)
+
+
+def _contact_bits(cell: PhysicsCell) -> tuple[dict[str, tuple[str, str]], tuple[str, str]]:
+    """contype / conaffinity of each robot's links, and of the world's geoms: one bit per
+    robot, so that links of two robots touch and links of one robot do not."""
+    robots = sorted(set(cell.link_robots.values()))
+    if len(robots) < 2:
+        return {}, _WORLD_BITS
+    if len(robots) > _MAX_ROBOTS:
+        raise BackendError(f"cell {cell.name!r}: the mujoco backend models at most "
+                           f"{_MAX_ROBOTS} robots (got {len(robots)})")
+    bit = {robot: 2 << i for i, robot in enumerate(robots)}
+    every = sum(bit.values())
+    per_robot = {robot: (f'contype="{b}"', f'conaffinity="{1 | (every & ~b)}"')
+                 for robot, b in bit.items()}
+    return per_robot, ('contype="1"', f'conaffinity="{1 | every}"')
 
 
 def _geometry_shape(geometry: ET.Element) -> Shape | None:
@@ -409,6 +439,7 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
             attached.setdefault(obj.frame, []).append(obj)
     actuated: list[str] = []
     gravcomp = ' gravcomp="1"' if options.gravity_compensation else ""
+    robot_bits, world_bits = _contact_bits(cell)
 
     def body(joint: ET.Element, depth: int) -> list[str]:
         child = joint.find("child")
@@ -438,10 +469,11 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
         elif kind != "fixed":
             raise BackendError(f"URDF joint {jname!r}: type {kind!r} is not supported "
                                "by the mujoco backend")
+        bits = robot_bits.get(cell.link_robots.get(name, ""), _ROBOT_BITS)
         out.extend(pad + "  " + line for line in _link_body(name, link, meshes, kind != "fixed",
-                                                             cell.link_inertias.get(name)))
+                                                             cell.link_inertias.get(name), bits))
         for obj in attached.get(name, []):
-            out.append(pad + "  " + _static_geom(obj, meshes))
+            out.append(pad + "  " + _static_geom(obj, meshes, world_bits))
         for sub in children.get(name, []):
             out.extend(body(sub, depth + 1))
         out.append(f"{pad}</body>")
@@ -452,14 +484,14 @@ def cell_mjcf(cell: PhysicsCell, options: MjcfOptions, cache: Path) -> str:
         world_lines.extend(body(joint, 2))
     for obj in cell.objects:
         if not obj.movable and obj.frame == WORLD:
-            world_lines.append("    " + _static_geom(obj, meshes))
+            world_lines.append("    " + _static_geom(obj, meshes, world_bits))
     for obj in cell.objects:
         if obj.movable:
             physics = options.object_physics.get(obj.name) or obj.physics or options.default_object
             inertia = (f'mass="{physics.mass:.10g}"' if physics.mass is not None
                        else f'density="{physics.density:.10g}"')
             geom = _shape_geom(obj.shape, meshes, 'pos="0 0 0"',
-                               f'name="{_esc(obj.name)}" {_WORLD_BITS[0]} {_WORLD_BITS[1]} '
+                               f'name="{_esc(obj.name)}" {world_bits[0]} {world_bits[1]} '
                                f'condim="4" friction="{_fmt(physics.friction)}" {inertia} '
                                f'solref="{2 * options.timestep:.6g} 1"')
             world_lines.append(
@@ -500,7 +532,8 @@ def weld_name(link: str, obj: str) -> str:
 
 
 def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool,
-               estimated: LinkInertia | None = None) -> list[str]:
+               estimated: LinkInertia | None = None,
+               bits: tuple[str, str] = _ROBOT_BITS) -> list[str]:
     lines: list[str] = []
     if link is None:
         return lines
@@ -536,17 +569,18 @@ def _link_body(name: str, link: ET.Element | None, meshes: _Meshes, moving: bool
         if shape is None:
             continue
         lines.append(_shape_geom(shape, meshes, _origin(collision),
-                                 f'name="{_esc(name)}/{k}" {_ROBOT_BITS[0]} {_ROBOT_BITS[1]} '
+                                 f'name="{_esc(name)}/{k}" {bits[0]} {bits[1]} '
                                  'condim="4" friction="1 0.005 0.0001" group="3" '
                                  'density="0"'))
     return lines
 
 
-def _static_geom(obj: PhysicsObject, meshes: _Meshes) -> str:
+def _static_geom(obj: PhysicsObject, meshes: _Meshes,
+                 bits: tuple[str, str] = _WORLD_BITS) -> str:
     quat = (obj.quat[3], obj.quat[0], obj.quat[1], obj.quat[2])
     friction = "" if obj.physics is None else f' friction="{_fmt(obj.physics.friction)}"'
     return _shape_geom(obj.shape, meshes, f'pos="{_fmt(obj.xyz)}" quat="{_fmt(quat)}"',
-                       f'name="{_esc(obj.name)}" {_WORLD_BITS[0]} {_WORLD_BITS[1]}{friction}')
+                       f'name="{_esc(obj.name)}" {bits[0]} {bits[1]}{friction}')
 
 
 def compiled_model(xml: str, cache: Path) -> tuple[Any, bool]:
