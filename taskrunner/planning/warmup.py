@@ -28,6 +28,7 @@ that could run code.
 
 from __future__ import annotations
 
+import logging
 import os
 import subprocess
 import sys
@@ -141,11 +142,24 @@ class CompiledKernels:
         return False
 
     def update(self, planner: MotionPlanner) -> bool:
-        """Switch ``planner`` to the kernels if they are compiled now; whether it uses them."""
+        """Switch ``planner`` to the kernels if they are compiled now; whether it uses them.
+        A background compilation that ended without them is logged (a warning, once): the
+        planner goes on with coal alone."""
         if planner.compiled:
             return True
         if not self._ready():
+            process = self.process
+            if process is not None and process.poll() is not None:
+                self.process = None  # reaped
+                if process.returncode != 0:
+                    logging.getLogger(__name__).warning(
+                        "the background compilation of the planner's kernels failed (exit "
+                        "code %s); planning goes on with coal alone (as exact, slower); "
+                        "`run-task warm-up` compiles them in the foreground and says why",
+                        process.returncode)
             return False
+        if self.process is not None:
+            self.process.poll()  # reaped if it has ended
         self._load(planner)
         return True
 

@@ -68,3 +68,21 @@ def _refuse(name: str):  # type: ignore[no-untyped-def]
         pytest.fail(f"Scene.{name} (compiled kernels) used while they compile")
 
     return refuse
+
+
+def test_a_failed_background_compilation_is_logged_and_planning_goes_on_with_coal(
+        shelf_scene, caplog):
+    import subprocess
+    import sys
+
+    failing = subprocess.Popen([sys.executable, "-c", "raise SystemExit(3)"])
+    kernels = CompiledKernels(ready=lambda: False, start=lambda: failing)
+    planner = MotionPlanner(shelf_scene)
+    assert kernels.prepare(planner) is False
+    failing.wait()
+    with caplog.at_level("WARNING", logger="taskrunner.planning.warmup"):
+        assert kernels.update(planner) is False
+        assert kernels.update(planner) is False  # said once
+    said = [r.getMessage() for r in caplog.records if "background compilation" in r.getMessage()]
+    assert len(said) == 1 and "exit code 3" in said[0]
+    assert planner.compiled is False and kernels.process is None
