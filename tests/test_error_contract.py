@@ -16,6 +16,7 @@ from __future__ import annotations
 import ast
 import builtins
 import re
+from functools import cache
 from pathlib import Path
 
 import taskrunner
@@ -113,6 +114,7 @@ def test_the_package_raises_only_its_own_errors():
     assert not stale, f"allowed raises that are no longer there: {sorted(stale)}"
 
 
+@cache
 def _exception_classes() -> dict[str, tuple[str, list[str]]]:
     """Every class of the package: name -> (``module:line``, names of its bases)."""
     classes: dict[str, tuple[str, list[str]]] = {}

@@ -11,6 +11,7 @@ when that is a module, else to ``taskrunner.a``.
 from __future__ import annotations
 
 import ast
+from functools import cache
 from pathlib import Path
 
 import taskrunner
@@ -80,6 +81,7 @@ def _top_level_imports(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
     return found
 
 
+@cache
 def import_graph() -> dict[str, set[str]]:
     """Module -> the taskrunner modules its import runs."""
     modules = _modules()
