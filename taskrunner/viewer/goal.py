@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,8 +26,14 @@ from taskrunner.kinematics.ik import IkSolver
 from taskrunner.kinematics.ik_types import IkOptions
 from taskrunner.robot.cell import Cell
 from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.shapes import Shape
+from taskrunner.types import Pose
 
-__all__ = ["GoalSolver", "GoalState"]
+__all__ = ["GoalSolver", "GoalState", "Obstacle"]
+
+Obstacle = tuple[str, Shape, Pose]
+"""An object added to the scene for one check: name, shape (:mod:`taskrunner.shapes`),
+world pose."""
 
 _MAX_SOLVERS = 16  # (group, link) pairs kept per cell
 
@@ -77,7 +83,8 @@ class GoalSolver:
         self._lock = threading.Lock()
 
     def solve_pose(self, group: str, xyz: Sequence[float], quat: Sequence[float],
-                   link: str | None, seed: Mapping[str, float]) -> GoalState:
+                   link: str | None, seed: Mapping[str, float],
+                   obstacles: Iterable[Obstacle] = ()) -> GoalState:
         """The group's joints that put ``link`` (default: its tip) at the world pose
         ``xyz`` (m), ``quat`` (x, y, z, w; normalised here), searched from ``seed``.
         Unreachable: the seed's joints, with IK's reason.
@@ -104,10 +111,11 @@ class GoalSolver:
             except IkFailedError as exc:
                 q, failure = q_seed, str(exc)
             return self._checked(spec.name, solver.frame, q, reachable=failure is None,
-                                 reason=failure)
+                                 reason=failure, obstacles=obstacles)
 
     def check_joints(self, group: str, joints: Mapping[str, float],
-                     seed: Mapping[str, float], link: str | None = None) -> GoalState:
+                     seed: Mapping[str, float], link: str | None = None,
+                     obstacles: Iterable[Obstacle] = ()) -> GoalState:
         """The goal ``joints`` of ``group`` (the seed's values for the group's other
         joints) checked: limits, collisions, and ``link``'s (default: the tip's) pose.
 
@@ -127,7 +135,8 @@ class GoalSolver:
         frame = link or spec.tip_link or spec.joint_names[-1]
         model.frame_id(frame)
         with self._lock:
-            return self._checked(spec.name, frame, q, reachable=True, reason=None)
+            return self._checked(spec.name, frame, q, reachable=True, reason=None,
+                                 obstacles=obstacles)
 
     # ------------------------------------------------------------------ helpers
     def _seed_state(self, seed: Mapping[str, float]) -> np.ndarray:
@@ -144,14 +153,33 @@ class GoalSolver:
             solver = self._solvers[key] = IkSolver(self.cell.model, group, link)
         return solver
 
+    def scene_with(self, obstacles: Iterable[Obstacle]) -> Scene:
+        """The cell's scene (shared: do not change it) or, with obstacles, a copy with
+        them added.
+
+        Raises:
+            InputError: an obstacle named as an object of the cell or another obstacle.
+        """
+        if self._scene is None:
+            self._scene = scene_from_cell(self.cell)
+        extra = list(obstacles)
+        if not extra:
+            return self._scene
+        scene = self._scene.copy()
+        for name, shape, pose in extra:
+            if name in scene.object_names:
+                raise InputError(f"'obstacles': name {name!r} is taken by another object "
+                                 "of the scene")
+            scene.add_object(name, shape, pose)
+        return scene
+
     def _checked(self, group: str, link: str, q: np.ndarray, reachable: bool,
-                 reason: str | None) -> GoalState:
+                 reason: str | None, obstacles: Iterable[Obstacle] = ()) -> GoalState:
         model = self.cell.model
         spec = model.group(group)
         bad = model.limit_violations(q)
-        if self._scene is None:
-            self._scene = scene_from_cell(self.cell)
-        contacts = self._scene.collisions(q)
+        scene = self.scene_with(obstacles)
+        contacts = scene.collisions(q)
         if reason is None and bad:
             reason = "outside the joint limits: " + "; ".join(bad)
         if reason is None and contacts:
@@ -159,7 +187,7 @@ class GoalSolver:
                               for c in contacts[:4])
             more = f" and {len(contacts) - 4} more" if len(contacts) > 4 else ""
             reason = (f"the goal is in collision: {pairs}{more}"
-                      f"{self._scene.geometry_note(contacts[:4])}")
+                      f"{scene.geometry_note(contacts[:4])}")
         pose = frame_pose(model, q, link, self._data)
         quat = pin.Quaternion(pose.rotation)
         return GoalState(

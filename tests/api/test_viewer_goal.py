@@ -148,3 +148,53 @@ def test_the_task_tree_carries_the_tasks_objects_before_planning(client):
     assert objects["cube"]["pose"]["xyz"] == pytest.approx([0.19, 0.04, 0.7625])
     assert "table" in objects  # the cell's own objects too
     assert answer["scene"]["joints"]
+
+
+def _block_at(xyz: list[float], name: str = "block") -> dict:
+    return {"name": name, "shape": "box", "size": [0.04, 0.04, 0.04], "xyz": xyz}
+
+
+def test_an_obstacle_added_on_the_page_is_in_the_goal_check_the_plan_and_the_run(client):
+    goal = _goal_off_home(client, -0.05)
+    block = _block_at(goal["xyz"])
+    # the goal's tool is inside the block: the check names it, the plan is refused
+    blocked = client.post(CELL + "/goal", json={"group": "arm", "joints": goal["joints"],
+                                                "obstacles": [block]}).json()
+    assert not blocked["ok"] and "block" in blocked["reason"]
+    plan = {"cell": "servo_arm_table", "group": "arm", "joints": goal["joints"],
+            "backend": "mock"}
+    refused = client.post("/viewer/plan", json={**plan, "obstacles": [block]})
+    assert refused.status_code == 422 and "block" in refused.text
+    refused = client.post(CELL + "/execute", json={
+        "group": "arm", "joints": goal["joints"], "backend": "mock", "obstacles": [block]})
+    assert refused.status_code == 422 and "block" in refused.text
+    # elsewhere, it is planned around and the run's scene holds it
+    aside = _block_at([0.0, 0.15, 0.8], "pillar")
+    planned = client.post("/viewer/plan", json={**plan, "obstacles": [aside]})
+    assert planned.status_code == 200, planned.text
+    assert planned.json()["joint_names"] and planned.json()["duration"] > 0
+    body = {"group": "arm", "joints": goal["joints"], "backend": "mock", "obstacles": [aside]}
+    answer = client.post(CELL + "/execute", json=body)
+    assert answer.status_code == 202, answer.text
+    run_id = answer.json()["run_id"]
+    assert wait_until_done(client, run_id)["status"] == "succeeded"
+    first = client.get(f"/viewer/runs/{run_id}/replay").json()["first_scene"]
+    pillar = next(o for o in first["objects"] if o["name"] == "pillar")
+    assert pillar["pose"]["xyz"] == pytest.approx([0.0, 0.15, 0.8])
+
+
+@pytest.mark.parametrize(("obstacles", "expected"), [
+    ([_block_at([0.3, 0.0, 1.0], "table")], "taken"),
+    ([_block_at([0.3, 0.0, 1.0]), _block_at([0.3, 0.1, 1.0])], "unique"),
+    ([{"name": "b", "shape": "box", "radius": 0.1, "xyz": [0, 0, 1]}], "a box takes size"),
+    ([{"name": "b", "shape": "cylinder", "radius": 0.1, "xyz": [0, 0, 1]}], "length"),
+    ([{"name": "b", "shape": "mesh", "xyz": [0, 0, 1]}], "shape"),
+    ([{"name": "b", "shape": "sphere", "radius": 1e6, "xyz": [0, 0, 1]}], "radius"),
+    ([{"name": "../b", "shape": "sphere", "radius": 0.1, "xyz": [0, 0, 1]}], "name"),
+    ([_block_at([0.3, 0.0, 1.0], f"b{k}") for k in range(33)], "obstacles"),
+])
+def test_a_hostile_obstacle_is_refused_naming_the_field(reader, obstacles, expected):
+    answer = reader.post(CELL + "/goal", json={"group": "arm", "joints": {"Revolute 1": 0.8},
+                                               "obstacles": obstacles})
+    assert answer.status_code == 422, answer.text
+    assert expected in answer.text

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
 from typing import Annotated
 
 from fastapi import APIRouter, Depends, Response
@@ -19,7 +20,8 @@ from taskrunner.api.settings import Settings
 from taskrunner.planning.request import JointGoal, PlannerOptions, PlanRequest, PoseGoal
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.scene import scene_from_cell
-from taskrunner.types import pose_from_xyz_rpy
+from taskrunner.shapes import Shape
+from taskrunner.types import Pose, pose_from_xyz_rpy
 
 __all__ = ["router"]
 
@@ -50,14 +52,18 @@ async def plan(body: PlanBody, cells: Annotated[CellRegistry, Depends(get_cells)
     return Response(answer, media_type="application/json")
 
 
-def _plan(body: PlanBody, cells: CellRegistry, deadline: float, limit: float) -> bytes:
+def _plan(body: PlanBody, cells: CellRegistry, deadline: float, limit: float,
+          obstacles: Sequence[tuple[str, Shape, Pose]] = ()) -> bytes:
     """The JSON of :class:`PlanResponse`, without validating it field by field: a slow
     arm's trajectory has thousands of samples, and validating or encoding each float
-    here cost the server more than planning them."""
+    here cost the server more than planning them. ``obstacles`` (name, shape, world
+    pose) are added to the cell's objects for this plan only (the web view's)."""
     session = cells.by_id(body.cell)
     model = session.cell.model
     group = model.group(body.group)
     scene = scene_from_cell(session.cell)
+    for name, shape, pose in obstacles:
+        scene.add_object(name, shape, pose)
     state = session.backend(body.backend).joint_state()
     scene.set_state(dict(zip(state.names, state.positions)))
     if body.to is not None:  # resolved here: a worker's model lacks poses taught since

@@ -17,8 +17,10 @@ first point is off the current state.
 from __future__ import annotations
 
 import json
+import math
 import threading
-from typing import Annotated, Any, cast
+import time
+from typing import Annotated, Any, Literal, cast
 
 from fastapi import APIRouter, Depends, Request, Response, status
 from pydantic import Field, model_validator
@@ -27,8 +29,16 @@ from starlette.concurrency import run_in_threadpool
 from taskrunner.api.admission import Admission
 from taskrunner.api.auth import require_read, require_write
 from taskrunner.api.cells import CellRegistry, CellSession, PoseConflictError
-from taskrunner.api.dependencies import get_cells, get_checking, get_manager, get_settings, get_work
+from taskrunner.api.dependencies import (
+    get_cells,
+    get_checking,
+    get_manager,
+    get_planning,
+    get_settings,
+    get_work,
+)
 from taskrunner.api.requestwork import RequestWork, load_request
+from taskrunner.api.routers.plan import _plan
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
     MAX_JOINTS,
@@ -36,14 +46,18 @@ from taskrunner.api.schemas import (
     ErrorBody,
     Integer,
     Number,
+    PlanBody,
+    PlanResponse,
     RunAccepted,
     _Request,
 )
 from taskrunner.api.settings import Settings
-from taskrunner.errors import InvalidStateError
-from taskrunner.viewer.goal import GoalSolver
+from taskrunner.errors import InputError, InvalidStateError
+from taskrunner.tasks.nodes import ObjectSpec
+from taskrunner.tree.compiler import object_shape
+from taskrunner.viewer.goal import GoalSolver, Obstacle
 
-__all__ = ["START_TOLERANCE", "router"]
+__all__ = ["MAX_OBSTACLES", "START_TOLERANCE", "router"]
 
 router = APIRouter(tags=["viewer"])
 _ERRORS: dict[int | str, dict[str, Any]] = {
@@ -51,6 +65,10 @@ _ERRORS: dict[int | str, dict[str, Any]] = {
     422: {"model": ErrorBody}, 503: {"model": ErrorBody}}
 _NAME = Field(min_length=1, max_length=128)
 _REACH_M = 100.0  # no cell is larger: a coordinate beyond this is a mistake
+_SIZE_M = 10.0  # no obstacle is larger
+MAX_OBSTACLES = 32
+"""Most obstacles one request may add."""
+_OBJECT_NAME = r"^[A-Za-z_][A-Za-z0-9_\-]{0,63}$"
 
 START_TOLERANCE = 0.01
 """rad or m: how far the arm may be from a plan's first point for Execute (MoveIt's
@@ -74,6 +92,63 @@ class GoalPose(_Request):
         return self
 
 
+class ObstacleBody(_Request):
+    """A box, cylinder or sphere the page adds to the cell for its goals, plans and
+    Executes (the fields of a task file's object, the pose as a world xyz and quat)."""
+
+    name: str = Field(pattern=_OBJECT_NAME)
+    shape: Literal["box", "cylinder", "sphere"]
+    size: list[Number] | None = Field(default=None, min_length=3, max_length=3,
+                                      description="a box's full lengths (m)")
+    radius: Number | None = Field(default=None, gt=0, le=_SIZE_M / 2, description="m")
+    length: Number | None = Field(default=None, gt=0, le=_SIZE_M,
+                                  description="a cylinder's, along its z (m)")
+    xyz: list[Number] = Field(min_length=3, max_length=3, description="m, world frame")
+    quat: list[Number] = Field(default=[0.0, 0.0, 0.0, 1.0], min_length=4, max_length=4,
+                               description="x, y, z, w (normalised by the server)")
+
+    @model_validator(mode="after")
+    def _fields_of_shape(self) -> ObstacleBody:
+        wanted = {"box": {"size"}, "cylinder": {"radius", "length"}, "sphere": {"radius"}}
+        given = {f for f in ("size", "radius", "length") if getattr(self, f) is not None}
+        if given != wanted[self.shape]:
+            raise ValueError(f"a {self.shape} takes {' and '.join(sorted(wanted[self.shape]))}"
+                             f" (got {', '.join(sorted(given)) or 'none'})")
+        if self.size is not None and not all(0 < v <= _SIZE_M for v in self.size):
+            raise ValueError(f"'size' must be lengths in (0, {_SIZE_M:g}] m (got {self.size})")
+        if any(abs(v) > _REACH_M for v in self.xyz):
+            raise ValueError(f"'xyz' must be within {_REACH_M:g} m of the world origin "
+                             f"(got {self.xyz})")
+        if any(abs(v) > 1.0 + 1e-6 for v in self.quat) or sum(v * v for v in self.quat) < 1e-12:
+            raise ValueError(f"'quat' must be a unit quaternion x, y, z, w (got {self.quat})")
+        return self
+
+    def task_object(self) -> dict[str, Any]:
+        """The obstacle as a task file's object."""
+        norm = math.sqrt(sum(v * v for v in self.quat))
+        out: dict[str, Any] = {"name": self.name, "shape": self.shape}
+        for field in ("size", "radius", "length"):
+            if getattr(self, field) is not None:
+                out[field] = getattr(self, field)
+        out["pose"] = {"xyz": list(self.xyz), "quat": [v / norm for v in self.quat]}
+        return out
+
+
+def _obstacles(bodies: list[ObstacleBody]) -> list[Obstacle]:
+    """The obstacles as scene objects, through the task language's own object model."""
+    names = [b.name for b in bodies]
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise InputError(f"'obstacles': names must be unique (given twice: {', '.join(twice)})")
+    specs = [ObjectSpec.model_validate(b.task_object()) for b in bodies]
+    return [(spec.name, object_shape(spec), spec.pose.to_pose()) for spec in specs]
+
+
+def _obstacles_field() -> Any:
+    return Field(default_factory=list, max_length=MAX_OBSTACLES,
+                 description="boxes, cylinders, spheres added to the cell for this request")
+
+
 class GoalBody(_Request):
     """A goal state of one group: a link pose (solved by IK) or joint values."""
 
@@ -83,6 +158,7 @@ class GoalBody(_Request):
     seed: dict[str, Number] = Field(
         default_factory=dict, max_length=MAX_JOINTS,
         description="joint values IK starts from and the other joints keep (rad or m)")
+    obstacles: list[ObstacleBody] = _obstacles_field()
 
     @model_validator(mode="after")
     def _one_goal(self) -> GoalBody:
@@ -103,6 +179,13 @@ class ExecuteBody(_Request):
     start: dict[str, Number] | None = Field(
         default=None, max_length=MAX_JOINTS,
         description="the plan's first point: refused (409) if the arm is elsewhere")
+    obstacles: list[ObstacleBody] = _obstacles_field()
+
+
+class ViewerPlanBody(PlanBody):
+    """``POST /plan``'s body, with the page's obstacles."""
+
+    obstacles: list[ObstacleBody] = _obstacles_field()
 
 
 def _solver(request: Request, cell_id: str, session: CellSession) -> GoalSolver:
@@ -134,13 +217,37 @@ def _goal(cell_id: str, body: GoalBody, request: Request,
           cells: CellRegistry) -> dict[str, Any]:
     session = cells.by_id(cell_id)
     solver = _solver(request, cell_id, session)
+    obstacles = _obstacles(body.obstacles)
     if body.pose is not None:
         state = solver.solve_pose(body.group, body.pose.xyz, body.pose.quat, body.pose.link,
-                                  body.seed)
+                                  body.seed, obstacles)
     else:
         assert body.joints is not None
-        state = solver.check_joints(body.group, body.joints, body.seed)
+        state = solver.check_joints(body.group, body.joints, body.seed, obstacles=obstacles)
     return state.as_dict()
+
+
+@router.post("/viewer/plan", response_model=PlanResponse, dependencies=[Depends(require_read)],
+             responses={**_ERRORS, 413: {"model": ErrorBody}})
+async def plan_with_obstacles(body: ViewerPlanBody,
+                              cells: Annotated[CellRegistry, Depends(get_cells)],
+                              settings: Annotated[Settings, Depends(get_settings)],
+                              planning: Annotated[Admission, Depends(get_planning)]
+                              ) -> Response:
+    """``POST /plan`` with the page's ``obstacles`` added to the cell for this plan (the
+    same planner, limits and admission: ``max_planners``, ``plan_timeout_s``)."""
+    obstacles = _obstacles(body.obstacles)
+    for name, _, _ in obstacles:
+        if name in {o.name for o in cells.by_id(body.cell).cell.objects}:
+            raise InputError(f"'obstacles': name {name!r} is taken by an object of the cell")
+    async with planning.slot():
+        limit = settings.plan_timeout_s
+        work = RequestWork("inprocess", limit, 0, 1, setting="plan_timeout_s",
+                           what="the plan took longer than {s} s")
+        deadline = time.monotonic() + limit
+        answer = await run_in_threadpool(work.call, _plan, body, cells, deadline, limit,
+                                         obstacles)
+    return Response(answer, media_type="application/json")
 
 
 @router.post("/viewer/cells/{cell_id}/execute", status_code=status.HTTP_202_ACCEPTED,
@@ -170,7 +277,8 @@ async def execute(cell_id: str, body: ExecuteBody, request: Request, response: R
 def _execute_spec(cell_id: str, body: ExecuteBody, request: Request, cells: CellRegistry,
                   settings: Settings, work: RequestWork) -> tuple[Any, str]:
     session = cells.by_id(cell_id)
-    state = _solver(request, cell_id, session).check_joints(body.group, body.joints, {})
+    state = _solver(request, cell_id, session).check_joints(
+        body.group, body.joints, {}, obstacles=_obstacles(body.obstacles))
     if state.reason is not None:
         raise InvalidStateError(f"the goal cannot be planned to: {state.reason}")
     if body.start is not None:
@@ -179,9 +287,13 @@ def _execute_spec(cell_id: str, body: ExecuteBody, request: Request, cells: Cell
     if body.velocity_scaling is not None:
         step["velocity_scaling"] = body.velocity_scaling
     # JSON is YAML: names and numbers travel quoted, never spliced into YAML text.
-    text = json.dumps({"task": "goal_from_view",
-                       "description": f"Move {state.group} to the goal set in the web view.",
-                       "cell": cell_id, "steps": [{"go": step}]}, indent=1)
+    task: dict[str, Any] = {"task": "goal_from_view",
+                            "description": f"Move {state.group} to the goal set in the web view.",
+                            "cell": cell_id}
+    if body.obstacles:
+        task["objects"] = [b.task_object() for b in body.obstacles]
+    task["steps"] = [{"go": step}]
+    text = json.dumps(task, indent=1)
     spec, _, _ = work.call(load_request, settings.folder_policy(), settings.tasks_dir, None,
                            text, {})
     return spec.model_copy(update={"cell": cells.path_of(cell_id)}), text
