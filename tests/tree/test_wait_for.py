@@ -1,0 +1,99 @@
+"""``wait_for`` in a run and in the check: a step of one branch starts, on the schedule's
+clock, when the named step of another branch has finished (one rule,
+:mod:`taskrunner.tree.schedule`)."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from taskrunner.backends.mock import MockBackend
+from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.tasks import load_task
+from taskrunner.tree.check import check_task
+from taskrunner.tree.expect import arm_conflicts
+from taskrunner.tree.schedule import MotionSchedule
+
+ASSEMBLY = DATA_ROOT / "tasks" / "assembly_panda.yaml"
+PAIR = DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml"
+LEFT, RIGHT = ((1, 0),), ((1, 1),)
+
+
+def run(path: Path, tmp_path: Path) -> Runner:
+    spec = load_task(path, {})
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = MockBackend(names, dict(zip(names, cell.start_state())))
+    runner = Runner(spec, cell, backend, InProcessPlanner(),
+                    RunOptions(seed=0, runs_dir=tmp_path / "runs"))
+    runner.run()
+    return runner
+
+
+def test_a_lane_that_waited_for_a_step_starts_its_motions_no_earlier_than_its_end():
+    schedule = MotionSchedule()
+    instance = schedule.new_instance()
+    assert schedule.earliest(RIGHT) == 0.0
+    assert schedule.finish_step(LEFT, "base down") == 0.0  # nothing moved yet: from the start
+    schedule.finished[(instance, "base down")] = 4.5
+    schedule.not_before(RIGHT, 4.5)
+    assert schedule.earliest(RIGHT) == 4.5
+    assert schedule.earliest(((1, 1), (2, 0))) == 4.5  # a parallel inside the branch too
+    assert schedule.earliest(LEFT) == 0.0  # not the other branch
+    schedule.not_before(RIGHT, 2.0)  # an earlier wait does not undo a later one
+    assert schedule.earliest(RIGHT) == 4.5
+
+
+def test_the_stacking_panda_starts_its_place_when_the_base_is_down(tmp_path):
+    runner = run(ASSEMBLY, tmp_path)
+    events = runner.record.events
+    assert runner.record.status == "succeeded", runner.record.error
+    motions = [e for e in events if e.kind == "motion"]
+
+    def span(line: int) -> tuple[float, float]:
+        mine = [e for e in motions if e.location == f"{ASSEMBLY}:{line}"]
+        assert mine, line
+        return (min(e.data["start"] for e in mine),
+                max(e.data["start"] + e.data["trajectory"]["duration"] for e in mine))
+
+    base_down, stack = span(21), span(25)  # the left Panda's place, the right one's
+    assert stack[0] >= base_down[1] - 1e-4  # (a record rounds durations to 0.1 ms)
+    waits = [e for e in events if e.kind == "wait" and e.data.get("step") == "base down"]
+    assert waits[0].data.get("hold") and waits[-1].data["until"] == pytest.approx(base_down[1], abs=1e-4)
+    # The right Panda's pick ran while the left one carried the base.
+    assert span(24)[0] < base_down[0]
+    assert arm_conflicts(runner.scene.robot, events) == []
+
+
+def test_the_check_schedules_the_stacking_after_the_base_is_down():
+    report = check_task(ASSEMBLY)
+    assert report.ok, report.problems
+    notes = [n.message for n in report.notes]
+    assert any(f"{ASSEMBLY}:25 waits until step 'base down' has finished, at " in n
+               for n in notes), notes
+
+
+def test_a_step_waiting_for_a_step_its_branch_skipped_fails_at_its_line(tmp_path):
+    # The fallback's first branch succeeds (the arm is at Candle already), so the step
+    # named 'reach' never runs: the right arm's step cannot start, and says why.
+    path = tmp_path / "skipped.yaml"
+    path.write_text(textwrap.dedent(f"""\
+        task: skipped
+        cell: {PAIR}
+        steps:
+          - parallel:
+              - fallback:
+                  - go: {{group: left_arm, to: Candle}}
+                  - go: {{group: left_arm, to: HandOff, name: reach}}
+              - sequence:
+                  - go: {{group: right_arm, to: HandOff, wait_for: {{step: reach}}}}
+        """))
+    runner = run(path, tmp_path)
+    assert runner.record.status == "failed"
+    assert f"{path}:9: 'wait_for': the branch of step 'reach' ended without it finishing" \
+        in runner.record.error
