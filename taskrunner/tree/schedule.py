@@ -25,6 +25,10 @@ they part at the same instance of a ``parallel`` in different branches; otherwis
 follows the other, so a motion never starts before the motions of the lanes it follows
 have ended.
 
+*Waits between branches.* A step with ``wait_for`` (:mod:`taskrunner.tree.waiting`) sets
+a *floor* under its lane (:meth:`MotionSchedule.not_before`): the lane's next motions start
+no earlier than the named step's last motion ended (:meth:`MotionSchedule.finish_step`).
+
 *The clock.* Seconds of task time. A motion starts at the earliest when every motion it
 follows has ended (planning counts as no time: what a mock run, which plays no time,
 shows) and, on a backend that plays motions in time, not before now
