@@ -1,7 +1,8 @@
 """Plan and execute from the page, as in RViz's MotionPlanning panel: on a fresh server,
 the servo arm's tool-frame handle is dragged with the mouse (solved by IK on the server
-as it moves), Plan draws the trajectory's trail, Execute runs it on the mock backend,
-and the arm drawn on the page moves to the goal. The Task view shows the task's objects
+as it moves), an obstacle is added, Plan draws the trajectory's trail, Execute runs it on
+the mock backend, and the arm drawn on the page moves to the goal; a joint is jogged and
+the state taught; a goal dragged into the table turns red with the reason. The Task view shows the task's objects
 before anything is planned."""
 
 from __future__ import annotations
@@ -48,6 +49,13 @@ def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screensh
     assert all(abs(ghost[j] - goal[j]) < 1e-6 for j in joints)
     assert all(abs(page.evaluate(f"window.__viewer.stage.jointValue({j!r})") - robot_before[j])
                < 1e-6 for j in joints)
+    # an obstacle added on the page: drawn, and sent with the checks, the plan and the run
+    answers = page.evaluate(_ANSWERS)
+    page.click("button[data-add='box']")
+    page.wait_for_function(f"{_ANSWERS} > {answers} && window.__viewer.plan.answer.ok")
+    box = page.evaluate("window.__viewer.plan.obstacles[0]")
+    drawn = page.evaluate("window.__viewer.stage.objectWorld('box_1')")
+    assert max(abs(a - b) for a, b in zip(drawn, box["xyz"])) < 1e-6
     page.click("#plan-plan")
     page.wait_for_function("window.__viewer.plan.planned", timeout=30_000)
     assert page.evaluate("window.__viewer.goal.trail.geometry.attributes.position.count") > 2
@@ -63,6 +71,8 @@ def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screensh
     assert [float(v) for v in shown] == [round(goal[j], 3) for j in joints]
     detail = page.server.api(f"/runs/{run['id']}")
     assert detail["backend"] == "mock" and detail["task"] == "goal_from_view"
+    first = page.server.api(f"/viewer/runs/{run['id']}/replay")["first_scene"]
+    assert "box_1" in [o["name"] for o in first["objects"]]
     shot(page, screenshots, "plan_servo_arm_executed")
     # jog: one joint of the robot a step further; teach: its state as a named pose
     before = page.evaluate("window.__viewer.stage.jointValue('Revolute 1')")

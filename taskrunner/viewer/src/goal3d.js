@@ -33,6 +33,23 @@ export class GoalView {
       if (!e.value && this.onDragEnd) this.onDragEnd();
     });
     this.handle.addEventListener('objectChange', () => { if (this.onDrag) this.onDrag(this.pose()); });
+    // a second handle for the obstacle being moved (translate and turn)
+    this.objectHandle = new TransformControls(stage.camera, stage.renderer.domElement);
+    this.objectHandle.setSize(0.6);
+    this.objectHandle.addEventListener('change', () => stage.render());
+    this.objectHandle.addEventListener('dragging-changed', (e) => {
+      stage.controls.enabled = !e.value;
+      this.movingObject = e.value;
+    });
+    this.objectHandle.addEventListener('objectChange', () => {
+      const o = this.objectHandle.object;
+      if (o && this.onObjectMoved) {
+        this.onObjectMoved(o.name.replace(/^object:/, ''), [o.position.x, o.position.y, o.position.z],
+          [o.quaternion.x, o.quaternion.y, o.quaternion.z, o.quaternion.w]);
+      }
+    });
+    this.movingObject = false;
+    this.onObjectMoved = null;
     this.dragging = false;
     this.onDrag = null;
     this.onDragEnd = null;
@@ -57,10 +74,20 @@ export class GoalView {
     this.stage.root.add(this.ghost);
     this.stage.root.add(this.target);
     this.stage.scene.add(this.handle.getHelper());
+    this.stage.scene.add(this.objectHandle.getHelper());
+  }
+
+  // Put the obstacle handle on an object of the stage (null: none).
+  moveObject(name) {
+    const obj = name ? this.stage.objects.get(name) : null;
+    if (obj) this.objectHandle.attach(obj); else this.objectHandle.detach();
+    this.stage.render();
   }
 
   unload() {
     this.handle.detach();
+    this.objectHandle.detach();
+    this.objectHandle.getHelper().removeFromParent();
     this.handle.getHelper().removeFromParent();
     this.target.removeFromParent();
     if (this.ghost) this.ghost.removeFromParent();
@@ -78,6 +105,7 @@ export class GoalView {
     this.handle.getHelper().visible = on && Boolean(this.tip);
     if (this.trail) this.trail.visible = on;
     this.handle.enabled = on && Boolean(this.tip);
+    if (!on) this.objectHandle.detach();
     this.stage.render();
   }
 

@@ -8,6 +8,7 @@
 import { get, post, request } from './api.js';
 
 const POLL_MS = 120;
+const SESSION_OBSTACLES = new Map(); // cell id -> the obstacles added on this page
 const JOG_RAD = 0.05;   // a jog step of a revolute joint (rad)
 const JOG_M = 0.005;    // of a prismatic one (m)
 
@@ -33,7 +34,9 @@ export class PlanPanel {
     this.pending = null;
     this.timer = null;
     this.closed = false;
-    this.info = { state: this, answers: 0 };
+    if (!SESSION_OBSTACLES.has(cell.id)) SESSION_OBSTACLES.set(cell.id, []);
+    this.obstacles = SESSION_OBSTACLES.get(cell.id);
+    this.info = { state: this, answers: 0, obstacles: this.obstacles };
     debug.plan = this.info;
   }
 
@@ -45,6 +48,8 @@ export class PlanPanel {
   close() {
     this.closed = true;
     clearTimeout(this.timer);
+    this.goal.onObjectMoved = null;
+    this.goal.moveObject(null);
     this.goal.onDrag = null;
     this.goal.onDragEnd = null;
     this.goal.setVisible(false);
@@ -111,10 +116,84 @@ export class PlanPanel {
     teach.addEventListener('click', () => this.ui.guarded(() => this.doTeach(teachName.value.trim())));
     side.append(el('div', { className: 'row-ctl' }, teachName, teach));
     side.append(el('h2', { textContent: 'Goal joints (the sliders set the goal, not the robot; ± jogs the robot)' }), this.slidersBox);
+    this.obstacleBox = el('div', { id: 'obstacles' });
+    const adders = ['box', 'cylinder', 'sphere'].map((shape) => {
+      const b = el('button', { type: 'button', textContent: `+ ${shape}` });
+      b.dataset.add = shape;
+      b.addEventListener('click', () => this.addObstacle(shape));
+      return b;
+    });
+    side.append(el('h2', { textContent: 'Obstacles (this page only; planned around, sent with Execute)' }),
+      el('div', { className: 'row-ctl' }, ...adders), this.obstacleBox);
+    this.goal.onObjectMoved = (name, xyz, quat) => {
+      const o = this.obstacles.find((x) => x.name === name);
+      if (!o) return;
+      o.xyz = xyz;
+      o.quat = quat;
+      this.obstaclesChanged(false);
+    };
+    this.drawObstacles();
     this.goal.onDrag = (pose) => { if (this.mode !== 'joints') this.ask({ pose }); };
     this.goal.setVisible(true);
     await this.readState(true);
     this.selectGroup(this.group.name);
+  }
+
+  // ------------------------------------------------------------ obstacles
+  addObstacle(shape) {
+    let k = this.obstacles.length + 1;
+    while (this.obstacles.some((o) => o.name === `${shape}_${k}`)) k++;
+    const at = this.answer ? this.answer.xyz : [0.3, 0, 1];
+    const o = { name: `${shape}_${k}`, shape, xyz: [at[0], at[1] + 0.12, at[2]], quat: [0, 0, 0, 1] };
+    if (shape === 'box') o.size = [0.05, 0.05, 0.05];
+    else if (shape === 'cylinder') { o.radius = 0.025; o.length = 0.1; } else o.radius = 0.03;
+    this.obstacles.push(o);
+    this.selected = o.name;
+    this.obstaclesChanged(true);
+  }
+
+  obstaclesChanged(rebuild) {
+    this.drawObstacles(rebuild);
+    this.plan = null;
+    this.goal.clearTrail();
+    this.ask({ joints: this.groupValues(this.goalJoints) });
+  }
+
+  sceneObjects() {
+    const shapeOf = (o) => (o.shape === 'box' ? { type: 'box', size: o.size }
+      : o.shape === 'cylinder' ? { type: 'cylinder', radius: o.radius, length: o.length }
+        : { type: 'sphere', radius: o.radius });
+    return [...this.cell.objects,
+      ...this.obstacles.map((o) => ({ name: o.name, shape: shapeOf(o), pose: { xyz: o.xyz, quat: o.quat } }))];
+  }
+
+  drawObstacles(rebuild = true) {
+    if (!this.goal.movingObject) this.stage.setObjects(this.sceneObjects());
+    if (!rebuild) return;
+    const { el } = this.ui;
+    this.obstacleBox.textContent = '';
+    for (const o of this.obstacles) {
+      const dims = o.shape === 'box' ? o.size.map((v, i) => ['x', 'y', 'z'][i] + ' ' + v)
+        : o.shape === 'cylinder' ? [`r ${o.radius}`, `length ${o.length}`] : [`r ${o.radius}`];
+      const size = el('input', { value: dims.join(', '), size: 16, title: 'm' });
+      size.addEventListener('change', () => {
+        const numbers = (size.value.match(/[0-9.]+(e-?[0-9]+)?/g) || []).map(Number);
+        if (o.shape === 'box' && numbers.length === 3) o.size = numbers;
+        else if (o.shape === 'cylinder' && numbers.length === 2) [o.radius, o.length] = numbers;
+        else if (o.shape === 'sphere' && numbers.length === 1) [o.radius] = numbers;
+        this.obstaclesChanged(true);
+      });
+      const move = el('input', { type: 'radio', name: 'obstacle-move', checked: this.selected === o.name, title: 'move it with the handle' });
+      move.addEventListener('change', () => { this.selected = o.name; this.goal.moveObject(o.name); });
+      const remove = el('button', { type: 'button', textContent: '✕', title: 'remove' });
+      remove.addEventListener('click', () => {
+        this.obstacles.splice(this.obstacles.indexOf(o), 1);
+        if (this.selected === o.name) this.selected = null;
+        this.obstaclesChanged(true);
+      });
+      this.obstacleBox.append(el('label', { className: 'row obstacle' }, move, el('span', { textContent: o.name }), size, remove));
+    }
+    this.goal.moveObject(this.obstacles.some((o) => o.name === this.selected) ? this.selected : null);
   }
 
   groupValues(values) {
@@ -195,7 +274,7 @@ export class PlanPanel {
     const goal = this.pending;
     this.pending = null;
     this.inflight = true;
-    const body = { group: this.group.name, seed: this.groupValues(this.goalJoints) };
+    const body = { group: this.group.name, seed: this.groupValues(this.goalJoints), obstacles: this.obstacles };
     if (goal.pose) body.pose = { xyz: goal.pose.xyz, quat: goal.pose.quat, link: this.goal.tip };
     else body.joints = goal.joints;
     try {
@@ -268,8 +347,9 @@ export class PlanPanel {
     const scaling = Number(this.scaling.value);
     try {
       await this.readState(false);
-      const plan = await post('/plan', {
+      const plan = await post('/viewer/plan', {
         cell: this.cell.id, group: this.group.name, joints: this.groupValues(this.goalJoints),
+        obstacles: this.obstacles,
         backend: this.backend, velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5,
       });
       this.plan = plan;
@@ -287,7 +367,7 @@ export class PlanPanel {
     const scaling = Number(this.scaling.value);
     const accepted = await post(`/viewer/cells/${encodeURIComponent(this.cell.id)}/execute`, {
       group: this.group.name, joints: this.groupValues(this.goalJoints), backend: this.backend,
-      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5, start,
+      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5, start, obstacles: this.obstacles,
     });
     this.run = { id: accepted.run_id, status: 'running', done: false };
     this.info.run = this.run;
@@ -335,7 +415,7 @@ export class PlanPanel {
     const scaling = Number(this.scaling.value);
     const accepted = await post(`/viewer/cells/${encodeURIComponent(this.cell.id)}/execute`, {
       group: this.group.name, joints, backend: this.backend,
-      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5,
+      velocity_scaling: scaling > 0 && scaling <= 1 ? scaling : 0.5, obstacles: this.obstacles,
     });
     this.run = { id: accepted.run_id, status: 'running', done: false, jog: name };
     this.info.run = this.run;
