@@ -48,6 +48,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from taskrunner.commands.examples import cmd_examples
+from taskrunner.commands.resume import add_resume_parser, cmd_resume
 from taskrunner.commands.robots import cmd_collision_matrix, cmd_demo, cmd_info, cmd_plan
 from taskrunner.commands.server import cmd_serve, cmd_view
 from taskrunner.commands.servos import cmd_bus_sim, cmd_firmware_sim, cmd_hw
@@ -71,7 +72,8 @@ DEFAULT_CELL = "servo_arm_table"  # a shipped cell (taskrunner/data/robots/cells
 EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = (
     ExitCode.OK, ExitCode.INVALID, ExitCode.PLANNING, ExitCode.EXECUTION, ExitCode.CANCELLED)
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
-            "firmware-sim", "bus-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export")
+            "firmware-sim", "bus-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export",
+            "resume")
 
 
 def _add_robot_options(parser: argparse.ArgumentParser) -> None:
@@ -339,6 +341,7 @@ def _parser() -> argparse.ArgumentParser:
     add_export_parser(sub)
     run.add_argument("--no-check", action="store_true",
                      help="skip the check run before anything moves (run-task check)")
+    add_resume_parser(sub)
     check = sub.add_parser("check", help="check a task file; nothing moves")
     check.add_argument("file", help="task file (YAML), or a shipped example's name")
     check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
@@ -492,7 +495,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "demo": cmd_demo, "info": cmd_info, "plan": cmd_plan,
                 "firmware-sim": cmd_firmware_sim, "bus-sim": cmd_bus_sim, "hw": cmd_hw,
                 "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep,
-                "warm-up": cmd_warm_up, "export": cmd_export}
+                "warm-up": cmd_warm_up, "export": cmd_export, "resume": cmd_resume}
     try:
         _apply_robot_options(args)
         return commands[args.command](args)

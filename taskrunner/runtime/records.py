@@ -73,6 +73,9 @@ class RunRecord:
         warm_up_s: seconds spent before the run started compiling the planner's kernels
             (the first run on a machine, :mod:`taskrunner.planning.warmup`); not task
             time. None: none was needed.
+        task_sha256: hash of ``task_text``; ``tree_sha256``: of the compiled tree's
+            shape (:mod:`taskrunner.runtime.checkpoint`); what a resume checks.
+        resumes: the id of the run this one resumes (``run-task resume``), if any.
     """
 
     run_id: str
@@ -88,6 +91,9 @@ class RunRecord:
     started: str = field(default_factory=lambda: datetime.now(UTC).isoformat())
     finished: str | None = None
     warm_up_s: float | None = None
+    task_sha256: str = ""
+    tree_sha256: str = ""
+    resumes: str | None = None
     events: list[RunEvent] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:

@@ -26,6 +26,7 @@ import uuid
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import py_trees
 from py_trees.common import Status
@@ -42,6 +43,7 @@ from taskrunner.kinds import ExitCode, FailureKind
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
+from taskrunner.runtime.checkpoint import Checkpointer, text_sha256, tree_sha256
 from taskrunner.runtime.events import EventLog
 from taskrunner.runtime.records import RecordFile, RunRecord, new_run_id
 from taskrunner.runtime.replay import scene_data
@@ -53,6 +55,9 @@ from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import check_task_end
 from taskrunner.tree.start import start_mismatch, task_start
 from taskrunner.tree.timeout import TaskTimeout
+
+if TYPE_CHECKING:
+    from taskrunner.runtime.resume import ResumePlan
 
 __all__ = ["CANCELLED", "EXIT_CODES", "RunOptions", "Runner", "task_scene", "tree_text"]
 
@@ -157,7 +162,10 @@ class Runner:
     """Runs one task on one backend (see the module docstring)."""
 
     def __init__(self, spec: TaskSpec, cell: Cell, backend: Backend, planner: PlanService,
-                 options: RunOptions | None = None, events: EventLog | None = None) -> None:
+                 options: RunOptions | None = None, events: EventLog | None = None,
+                 resume: ResumePlan | None = None) -> None:
+        """``resume``: continue the run it was made from (:mod:`taskrunner.runtime.resume`):
+        the scene restored and the tree brought to where that run stopped."""
         self.spec = spec
         self.cell = cell
         self.backend = backend
@@ -186,6 +194,15 @@ class Runner:
             parameters={k: p.value for k, p in spec.parameters.items()},
             task_text=spec.path.read_text(encoding="utf-8") if spec.path else "")
         self.events.subscribe(self.record.events.append)
+        self.record.task_sha256 = text_sha256(self.record.task_text)
+        self.record.tree_sha256 = tree_sha256(self.tree)
+        # After the record's subscriber: a checkpoint is kept after its node_finished.
+        self.checkpointer = Checkpointer(self.tree, self.ctx, self.events)
+        self.resume_notes: list[str] = []
+        if resume is not None:
+            self.resume_notes = resume.apply(self)
+            self.record.resumes = resume.run_id
+            self._start_problem = None  # it starts where the run it resumes stopped
         self.failure_kind: str | None = None
         self.expectations_met: bool | None = None
 
@@ -262,8 +279,10 @@ class Runner:
                          status="running", task=self.spec.name, cell=self.cell.name,
                          backend=self.options.backend_name,
                          parameters=dict(self.record.parameters),
-                         scene=scene_data(self.scene.snapshot()))
+                         scene=scene_data(self.scene.snapshot()), resumes=self.record.resumes)
         self._open_record()
+        for note in self.resume_notes:
+            self.events.emit("message", note, resumes=self.record.resumes)
         period = 1.0 / self.options.tick_hz
         status = Status.RUNNING
         try:

@@ -51,6 +51,7 @@ if TYPE_CHECKING:
     from taskrunner.planning.service import InProcessPlanner
     from taskrunner.planning.worker import PlanningWorker
     from taskrunner.runtime.prestart import EarlyWorker
+    from taskrunner.runtime.resume import ResumePlan
     from taskrunner.tasks.spec import TaskSpec
     from taskrunner.tree.check import CheckReport
 
@@ -308,8 +309,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   firmware_speedup: float = 1.0, home: bool = False,
                   check: bool = True, early: EarlyWorker | None = None,
                   loaded: CheckReport | None = None,
-                  watch: Sequence[Callable[[Runner], AbstractContextManager[object]]] = ()
-                  ) -> int:
+                  watch: Sequence[Callable[[Runner], AbstractContextManager[object]]] = (),
+                  resume: ResumePlan | None = None) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
@@ -322,6 +323,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     cell the check loaded instead of loading them again (the same objects a second load
     gives: the check changes neither). ``watch``: each called with the runner, the run
     goes inside the context it returns (a live feed; an export when the run has ended).
+    ``resume``: continue the run it was made from (:mod:`taskrunner.runtime.resume`;
+    ``check`` is then not done: the task is not at its start); mock and sim start where
+    that run left the arm.
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -354,8 +358,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                 from taskrunner.planning.service import InProcessPlanner
 
                 planner_service = InProcessPlanner()
+            start = resume.start_state(cell) if resume is not None else task_start(spec, cell).q
             machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home,
-                                   start=task_start(spec, cell).q)
+                                   start=start)
         except BaseException:
             planner_service.close()
             raise
@@ -367,7 +372,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
             events = EventLog()
             runner = Runner(spec, cell, machine, planner_service,
                             RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
-                            events=events)
+                            events=events, resume=resume)
             runner.record.warm_up_s = warm_up_s
             if not live:
                 def log(event: RunEvent) -> None:

@@ -1,0 +1,345 @@
+"""Resuming a run that stopped (a fault, an operator's stop, a killed process) from where it
+stopped, with the world as it is now.
+
+A run's record holds a checkpoint after every leaf that finished
+(:mod:`taskrunner.runtime.checkpoint`). :func:`plan_resume` reads them and refuses what
+cannot be resumed safely; :meth:`ResumePlan.apply` makes a new :class:`Runner`'s tree
+and scene those of the moment the run stopped:
+
+1. **The task**: the task file's text must hash as the record's (``task_sha256``) and the
+   compiled tree must have the same shape (``tree_sha256``: an include, the cell or a
+   parameter changed it otherwise). Otherwise refused: run the task anew.
+2. **The position**: the new tree is ticked through the recorded outcomes of the leaves
+   that finished, in order: each such leaf returns its recorded status at once, doing and
+   saying nothing, so every ``retry``, ``repeat``, ``fallback``, ``parallel`` and
+   sequence reaches the state it had, by its own logic. The leaf that did not finish (the
+   leaf that failed, when the run failed) is the first to run again, from its start: a
+   motion is planned again from where the arm is now. A pick, place or hand-over resumed
+   part of the way through first rebuilds what its earlier leaves worked out (its grasps,
+   its release pose: each of its ``MoveToGoal`` leaves' goals computed again in the
+   scene they started in), so an interrupted approach goes on to the same grasp.
+3. **The world**: the scene is the last checkpoint's (objects, what each arm holds, the
+   allowances with their reasons) with the robot's joints as the backend reports them
+   (joints moved since: a ``message`` says which, and the next motion is planned from
+   there). Held objects: on mock and sim (kinematic, nothing is dropped) as recorded;
+   elsewhere the operator says, per held object, ``held`` (still in the gripper),
+   ``released`` (no longer: detached where the scene has it) or ``objects`` (lying at a
+   pose); a held object nobody vouches for is refused, naming the three options.
+
+``from_step`` (a step's name, or its ``file:line``) resumes at the first time the run
+reached that step instead (the world stays as it is now); a step the run never reached
+is refused.
+
+What is not carried over: the run's clock (a ``timeout:`` around the resumed step and the
+task's ``duration`` expectation count the new run only), and the task-end expectations
+that look at every motion (``collision_free``) see the new run's motions only.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from py_trees.common import Status
+
+from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.runtime.checkpoint import (
+    Checkpoint,
+    checkpoints_of,
+    held_objects,
+    preorder,
+    restore_scene,
+    scene_state,
+    text_sha256,
+    tree_sha256,
+)
+from taskrunner.tree.behaviours import MoveToGoal, TaskLeaf
+from taskrunner.tree.grasps import end_lift_off
+from taskrunner.types import Pose
+
+if TYPE_CHECKING:
+    from taskrunner.robot.cell import Cell
+    from taskrunner.runtime.records import RunRecord
+    from taskrunner.runtime.runner import Runner
+    from taskrunner.tasks.spec import TaskSpec
+
+__all__ = ["ResumeOptions", "ResumePlan", "plan_resume"]
+
+KINEMATIC = ("mock", "sim")
+"""Backends whose world is the scene itself: nothing falls out of a gripper there."""
+
+JOINT_MOVED = 1e-3  # rad or m: a joint further than this from its checkpoint has moved
+
+
+@dataclass(frozen=True)
+class ResumeOptions:
+    """What the operator says about the world, and where to resume.
+
+    Attributes:
+        objects: objects lying at a pose now (world frame), held before or not.
+        released: held objects no longer held (detached where the scene has them).
+        held: held objects confirmed still in their gripper.
+        from_step: resume at this step (its name, or ``file:line``) instead.
+    """
+
+    objects: Mapping[str, Pose] = field(default_factory=dict)
+    released: tuple[str, ...] = ()
+    held: tuple[str, ...] = ()
+    from_step: str | None = None
+
+
+def _refuse(record: RunRecord, reason: str) -> InputError:
+    return InputError(f"cannot resume run {record.run_id}: {reason}")
+
+
+@dataclass
+class ResumePlan:
+    """What :func:`plan_resume` found in a record: the outcomes to replay, the world to
+    start from. Apply it to a new runner with ``Runner(..., resume=plan)``."""
+
+    record: RunRecord
+    backend: str
+    options: ResumeOptions
+    replay: list[Checkpoint]
+    world: Checkpoint | None
+    stop_joints: dict[str, float]
+
+    @property
+    def run_id(self) -> str:
+        return self.record.run_id
+
+    def start_state(self, cell: Cell) -> np.ndarray:
+        """Every joint of the cell where the run left the arm (for a simulated backend
+        started afresh: mock and sim begin there)."""
+        names = cell.model.joint_names
+        known = {n: v for n, v in self.stop_joints.items() if n in names}
+        return cell.model.state_with(cell.start_state(), known)
+
+    # ------------------------------------------------------------------ applying
+    def apply(self, runner: Runner) -> list[str]:
+        """Bring ``runner`` (new, not started) to where the run stopped; returns what it
+        says about it (``message`` events of the new run).
+
+        Raises:
+            InputError: the tree is not the one the record ran, a checkpoint names a
+                leaf it does not have, or the world is not known well enough.
+        """
+        record = self.record
+        if record.tree_sha256 and tree_sha256(runner.tree) != record.tree_sha256:
+            raise _refuse(record, "the task compiles to another tree than the one it ran "
+                          "(an included file, the cell or a parameter changed); run it anew")
+        nodes = list(preorder(runner.tree))
+        leaves: dict[int, TaskLeaf] = {}
+        for point in self.replay:
+            node = nodes[point.leaf] if point.leaf is not None and point.leaf < len(nodes) \
+                else None
+            if not isinstance(node, TaskLeaf) or node.name != point.node:
+                raise _refuse(record, f"its checkpoint {point.seq} ({point.node!r}) names "
+                              "no leaf of this task's tree")
+            leaves[point.leaf] = node  # type: ignore[index]
+        start_scene = scene_state(runner.scene)
+        notes = [f"resuming run {record.run_id} ({record.status}): "
+                 f"{len(self.replay)} finished steps kept"]
+        if self.world is not None:
+            restore_scene(runner.scene, self.world.scene)
+        runner.ctx.sync_from_backend()  # the joints as they are now
+        notes += self._moved_joints(runner)
+        notes += self._reconcile(runner)
+        self._rebuild_goals(runner, leaves, start_scene)
+        outcomes: dict[int, list[Status]] = {}
+        for point in self.replay:
+            outcomes.setdefault(point.leaf, []).append(Status(point.status))  # type: ignore[arg-type]
+        for index, statuses in outcomes.items():
+            _Replayed(leaves[index], statuses).install()
+        if self.replay:
+            last = self.replay[-1]
+            notes.append(f"continuing after {last.node!r}"
+                         + (f" ({last.location})" if last.location else ""))
+        return notes
+
+    def _moved_joints(self, runner: Runner) -> list[str]:
+        if self.world is None:
+            return []
+        recorded = self.world.scene.get("joints", {})
+        now = dict(zip(runner.scene.robot.joint_names, runner.scene.state.tolist()))
+        moved = [f"{n} {now[n] - v:+.4f}" for n, v in recorded.items()
+                 if n in now and abs(now[n] - v) > JOINT_MOVED]
+        if not moved:
+            return []
+        return ["joints not where the last finished step left them (planned from where "
+                "they are): " + ", ".join(moved[:8]) + (" …" if len(moved) > 8 else "")]
+
+    def _reconcile(self, runner: Runner) -> list[str]:
+        """The held objects of the checkpoint against what the operator says (module
+        text, point 3); the scene edited to match."""
+        scene, record, options = runner.scene, self.record, self.options
+        held = held_objects(runner.ctx)
+        said = [*options.objects, *options.released, *options.held]
+        for name in said:
+            if name not in scene.object_names:
+                raise _refuse(record, f"no object {name!r} in its scene (objects: "
+                              f"{', '.join(scene.object_names) or 'none'})")
+        for name in (*options.released, *options.held):
+            if name not in held:
+                raise _refuse(record, f"{name!r} was not held when it stopped "
+                              f"(held: {', '.join(held) or 'nothing'}); drop --released/"
+                              f"--held {name}")
+        notes: list[str] = []
+        for name, arm in held.items():
+            if name in options.released or name in options.objects:
+                scene.detach_object(name)
+                end_lift_off(scene, name)  # as a detach step does
+                notes.append(f"{name!r} no longer held by {arm!r} (the operator says so)")
+            elif name in options.held:
+                notes.append(f"{name!r} still held by {arm!r} (the operator says so)")
+            elif self.backend in KINEMATIC:
+                notes.append(f"{name!r} still held by {arm!r} (the {self.backend} backend "
+                             "drops nothing)")
+            else:
+                raise _refuse(record, f"{name!r} was held by {arm!r} when it stopped and "
+                              f"the {self.backend} backend cannot tell whether it still is: "
+                              f"pass --held {name} if it is, --released {name} if it is not, "
+                              f"or --object {name}=X,Y,Z[,QX,QY,QZ,QW] where it lies")
+        for name, pose in options.objects.items():
+            scene.move_object(name, pose)
+            notes.append(f"{name!r} at {tuple(round(v, 4) for v in pose.xyz)} (the operator "
+                         "says so)")
+        return notes
+
+    def _rebuild_goals(self, runner: Runner, leaves: dict[int, TaskLeaf],
+                       start_scene: dict[str, Any]) -> None:
+        """Compute again the goals of the replayed ``MoveToGoal`` leaves of a subtree the
+        run was part of the way through (what a pick, place or hand-over keeps for its
+        later leaves), each in the scene it started in."""
+        last: dict[int, int] = {}
+        for position, point in enumerate(self.replay):
+            last[point.leaf] = position  # type: ignore[index]
+        index = {node.id: i for i, node in enumerate(preorder(runner.tree))}
+        for leaf_index, position in last.items():
+            leaf = leaves[leaf_index]
+            parent = leaf.parent
+            if not isinstance(leaf, MoveToGoal) or parent is None \
+                    or self.replay[position].status != Status.SUCCESS.value:
+                continue
+            after = parent.children[parent.children.index(leaf) + 1:]
+            if not after or all(last.get(index[s.id], -1) > position for s in after):
+                continue  # the subtree went past it: nothing later needs its goals
+            before = self.replay[position - 1].scene if position > 0 else start_scene
+            scene = runner.scene.copy()
+            restore_scene(scene, before)
+            shadow = dataclasses.replace(runner.ctx, scene=scene)
+            try:
+                leaf.goal_list(shadow)
+            except TaskrunnerError as exc:
+                raise _refuse(self.record, f"the goals of {leaf.name!r} ({leaf.location}) "
+                              f"cannot be computed again: {exc}") from None
+
+
+class _Replayed:
+    """A finished leaf ticked again on resume: it returns its recorded outcomes one
+    after another, at once, doing and saying nothing; then it is itself again.
+
+    Its ``initialise``, ``update`` and ``terminate`` are shadowed on the instance while
+    outcomes are left (py_trees calls them through the instance), not changed in its
+    class.
+    """
+
+    HOOKS = ("initialise", "update", "terminate")
+
+    def __init__(self, leaf: TaskLeaf, outcomes: list[Status]) -> None:
+        self.leaf = leaf
+        self.outcomes = list(outcomes)
+
+    def install(self) -> None:
+        for hook in self.HOOKS:
+            setattr(self.leaf, hook, getattr(self, hook))
+
+    def initialise(self) -> None:
+        pass
+
+    def update(self) -> Status:
+        return self.outcomes[0]
+
+    def terminate(self, new_status: Status) -> None:
+        if new_status not in (Status.SUCCESS, Status.FAILURE):
+            return  # reset by its parent: not one of its outcomes
+        self.outcomes.pop(0)
+        if not self.outcomes:
+            for hook in self.HOOKS:
+                delattr(self.leaf, hook)
+
+
+# ----------------------------------------------------------------------------- planning
+def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None = None
+                ) -> ResumePlan:
+    """Read what resuming ``record`` takes, with ``spec`` loaded from its task file with
+    its parameters; refuse what cannot be resumed safely.
+
+    Raises:
+        InputError: the run succeeded or still runs, it has no checkpoints (recorded
+            before they were kept), its task file changed, or ``from_step`` is not a step
+            it reached; each message says what to do instead.
+    """
+    options = options or ResumeOptions()
+    if record.status == "succeeded":
+        raise _refuse(record, "it succeeded: there is nothing left to do")
+    if record.status == "running":
+        raise _refuse(record, "it is still running (cancel it first, or wait for its end)")
+    if not record.task_sha256:
+        raise _refuse(record, "its record has no checkpoints (recorded by an older "
+                      "version); run the task anew")
+    text = spec.path.read_text(encoding="utf-8") if spec.path is not None else ""
+    if text_sha256(text) != record.task_sha256:
+        raise _refuse(record, f"the task file {record.task_file} changed since it ran; "
+                      "restore it as it was (the record keeps its text in 'task_text') or "
+                      "run the task anew")
+    points = checkpoints_of(record)
+    for point in points:
+        if point.leaf is None:
+            raise _refuse(record, f"its checkpoint {point.seq} cannot tell which leaf "
+                          f"{point.node!r} was (two leaves of that name at "
+                          f"{point.location}); run the task anew")
+    world = points[-1] if points else None
+    replay = list(points)
+    if record.status == "failed" and replay and replay[-1].status == Status.FAILURE.value:
+        replay.pop()  # the leaf whose failure ended the run runs again
+    if options.from_step is not None:
+        replay = _until_step(record, replay, options.from_step)
+    return ResumePlan(record, record.backend, options, replay, world, _stop_joints(record))
+
+
+def _until_step(record: RunRecord, points: list[Checkpoint], step: str) -> list[Checkpoint]:
+    """The checkpoints before the first that belongs to ``step`` (name or file:line)."""
+    def matches(point: Checkpoint) -> bool:
+        where = point.location or ""
+        short = f"{Path(where.rsplit(':', 1)[0]).name}:{where.rsplit(':', 1)[-1]}" \
+            if ":" in where else where
+        names = [point.node, *(p.get("name", "") for p in point.position)]
+        return step in (where, short) or step in names \
+            or point.node.startswith(f"{step}: ")
+
+    for position, point in enumerate(points):
+        if matches(point):
+            return points[:position]
+    started = [e for e in record.events if e.kind == "node_started"
+               and (e.node == step or (e.location or "").endswith(step))]
+    if started:
+        return points  # the step the run stopped in
+    steps = dict.fromkeys(p.location or p.node for p in points)
+    raise _refuse(record, f"--from {step!r}: no step of that name or file:line was reached "
+                  f"(steps it reached: {', '.join(steps) or 'none'})")
+
+
+def _stop_joints(record: RunRecord) -> dict[str, float]:
+    """The joints where the run left the arm: its final scene's, else its last
+    checkpoint's, else its first scene's."""
+    for event in reversed(record.events):
+        if event.kind in ("run_finished", "checkpoint", "run_started"):
+            joints = (event.data.get("scene") or {}).get("joints")
+            if joints:
+                return {str(n): float(v) for n, v in joints.items()}
+    return {}
