@@ -14,8 +14,8 @@ __all__ = ["BackendKind", "EventKind", "ExitCode", "FailureKind", "RunStatus", "
 
 
 class BackendKind(StrEnum):
-    """The backend that executes a run's motions: mock, sim, mujoco (physics), or the servo
-    arm over serial or http."""
+    """The backend that executes a run's motions: mock, sim, mujoco (physics), the servo
+    arm over serial or http, or bus servos (the SO-101's Feetech bus)."""
 
     MOCK = "mock"
     """Reaches every target at once (tests, dry runs)."""
@@ -27,6 +27,9 @@ class BackendKind(StrEnum):
     """The servo arm's ESP32 over USB serial."""
     HTTP = "http"
     """The servo arm's ESP32 over WiFi/HTTP."""
+    FEETECH = "feetech"
+    """Feetech bus servos (the SO-101's STS3215) on one USB adapter or several, from the
+    cell's hardware file and LeRobot's calibration."""
 
 
 class RunStatus(StrEnum):
