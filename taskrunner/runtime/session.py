@@ -64,7 +64,9 @@ _FRAME_PERIOD = 0.1  # s between frames of the live tree
 
 def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
                  url: str | None = None, firmware_speedup: float = 1.0,
-                 home: bool = False, start: np.ndarray | None = None) -> Backend:
+                 home: bool = False, start: np.ndarray | None = None,
+                 calibration: str | None = None, hardware: str | Path | None = None
+                 ) -> Backend:
     """A backend driving every joint of the cell.
 
     mock, sim and mujoco (physics, :mod:`taskrunner.backends.physics`; ``speed`` None:
@@ -76,7 +78,10 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     the cell's ``<cell>.hardware.yaml`` next to the cell file (which board channels drive
     which robot's servos; each robot's own hardware.yaml for the rest).
     ``firmware_speedup`` matches a host build of the firmware run faster than real time
-    (``run-task firmware-sim --speedup``).
+    (``run-task firmware-sim --speedup``). feetech drives bus servos (the SO-101) where
+    they are, on the buses of the cell's ``<cell>.hardware.yaml`` (or ``hardware``), with
+    ``port`` and ``calibration`` overriding its ports and LeRobot calibration files
+    (:mod:`taskrunner.backends.feetech.hardware`).
 
     Raises:
         InputError: a speed that is not a positive number, a servo backend on a cell
@@ -98,6 +103,8 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
         return SimBackend(names, initial, SimOptions(speed=1.0 if speed is None else speed))
     if kind == "mujoco":
         return _mujoco_backend(cell, speed, initial)
+    if kind == "feetech":
+        return _feetech_backend(cell, port, calibration, hardware)
     if kind not in BACKENDS:
         raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
@@ -146,6 +153,26 @@ def _mujoco_backend(cell: Cell, speed: float | None, start: dict[str, float]) ->
         raise
     return MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
                          MujocoOptions(speed=speed))
+
+
+def _feetech_backend(cell: Cell, port: str | None, calibration: str | None,
+                     hardware: str | Path | None) -> Backend:
+    """Bus servos on the buses of the cell's hardware file (``hardware``: another one)."""
+    from taskrunner.backends.feetech.hardware import CellRobot, open_feetech_backend
+
+    if hardware is None:
+        if cell.path is None:
+            raise InputError(f"the feetech backend needs a hardware file for cell "
+                             f"{cell.name!r} (--hardware FILE): the cell was not loaded from "
+                             "a file")
+        hardware = cell.path.parent / f"{cell.path.stem}.hardware.yaml"
+        if not hardware.is_file():
+            raise InputError(f"the feetech backend drives cell {cell.name!r} through the buses "
+                             f"its hardware file names: {hardware} does not exist (see "
+                             "cells/so101_table.hardware.yaml; or --hardware FILE)")
+    return open_feetech_backend(hardware, [CellRobot(r.name, r.prefix)
+                                           for r in cell.model.instances],
+                                cell.model.joint_names, port=port, calibration=calibration)
 
 
 def servo_calibration(cell: Cell) -> ServoCalibration:
@@ -306,6 +333,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   speed: float | None = None, seed: int = 0, runs_dir: Path | None = None,
                   live: bool = False, worker: bool = True, out: TextIO | None = None,
                   port: str | None = None, url: str | None = None,
+                  calibration: str | None = None, hardware: str | None = None,
                   firmware_speedup: float = 1.0, home: bool = False,
                   check: bool = True, early: EarlyWorker | None = None,
                   loaded: CheckReport | None = None,
@@ -360,7 +388,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                 planner_service = InProcessPlanner()
             start = resume.start_state(cell) if resume is not None else task_start(spec, cell).q
             machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home,
-                                   start=start)
+                                   start=start, calibration=calibration, hardware=hardware)
         except BaseException:
             planner_service.close()
             raise
