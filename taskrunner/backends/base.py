@@ -372,8 +372,10 @@ class BaseBackend(ABC):
         return False
 
     def _finish(self, execution: TrajectoryExecution, status: ExecutionStatus, message: str,
-                error: BackendError | None = None) -> None:
-        """End ``execution`` with its joints where they are now and free them."""
+                error: BackendError | None = None,
+                data: Mapping[str, object] | None = None) -> None:
+        """End ``execution`` with its joints where they are now and free them. ``data``:
+        what the backend measured (:attr:`ExecutionResult.data`)."""
         for name in execution.trajectory.names:
             if self._moving.get(name) is execution:
                 del self._moving[name]
@@ -381,7 +383,7 @@ class BaseBackend(ABC):
             self._executions.remove(execution)
         final = JointState(execution.trajectory.names, self._positions[execution.columns])
         execution.complete(ExecutionResult(status, self._now() - execution.start_time,
-                                           final, message), error)
+                                           final, message, dict(data or {})), error)
 
     def _check_start(self, trajectory: JointTrajectory, columns: np.ndarray) -> None:
         start = trajectory.positions[0]

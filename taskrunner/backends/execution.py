@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import threading
 import time
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Literal
 
 import numpy as np
@@ -35,12 +36,15 @@ class ExecutionResult:
         duration: wall-clock seconds from ``execute`` to the end (on the backend's clock).
         final: positions of the trajectory's joints at the end (rad or m), as reported.
         message: what happened, for a log or a tree's feedback message.
+        data: what the backend measured, JSON-ready, kept in the run's record (a servo
+            bus: ``tracking``, the tracking error per joint); empty when it measures none.
     """
 
     status: ExecutionStatus
     duration: float
     final: JointState
     message: str
+    data: Mapping[str, object] = field(default_factory=dict)
 
 
 def sample_positions(trajectory: JointTrajectory, t: float) -> np.ndarray:

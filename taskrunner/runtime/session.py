@@ -65,8 +65,8 @@ _FRAME_PERIOD = 0.1  # s between frames of the live tree
 def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = None,
                  url: str | None = None, firmware_speedup: float = 1.0,
                  home: bool = False, start: np.ndarray | None = None,
-                 calibration: str | None = None, hardware: str | Path | None = None
-                 ) -> Backend:
+                 calibration_file: str | None = None,
+                 hardware: str | Path | None = None) -> Backend:
     """A backend driving every joint of the cell.
 
     mock, sim and mujoco (physics, :mod:`taskrunner.backends.physics`; ``speed`` None:
@@ -80,7 +80,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     ``firmware_speedup`` matches a host build of the firmware run faster than real time
     (``run-task firmware-sim --speedup``). feetech drives bus servos (the SO-101) where
     they are, on the buses of the cell's ``<cell>.hardware.yaml`` (or ``hardware``), with
-    ``port`` and ``calibration`` overriding its ports and LeRobot calibration files
+    ``port`` and ``calibration_file`` overriding its ports and LeRobot calibration files
     (:mod:`taskrunner.backends.feetech.hardware`).
 
     Raises:
@@ -104,7 +104,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if kind == "mujoco":
         return _mujoco_backend(cell, speed, initial)
     if kind == "feetech":
-        return _feetech_backend(cell, port, calibration, hardware)
+        return _feetech_backend(cell, port, calibration_file, hardware)
     if kind not in BACKENDS:
         raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
@@ -388,7 +388,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                 planner_service = InProcessPlanner()
             start = resume.start_state(cell) if resume is not None else task_start(spec, cell).q
             machine = make_backend(backend, cell, speed, port, url, firmware_speedup, home,
-                                   start=start, calibration=calibration, hardware=hardware)
+                                   start=start, calibration_file=calibration,
+                                   hardware=hardware)
         except BaseException:
             planner_service.close()
             raise

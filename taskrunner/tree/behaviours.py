@@ -249,11 +249,15 @@ class _Executes(TaskLeaf):
         return self.handle is not None or self.pending is not None or self.held is not None
 
     def finish_data(self) -> dict[str, object]:
-        """How far the motion got: ``executed.until`` (s of trajectory), for a replay."""
+        """How far the motion got: ``executed.until`` (s of trajectory), for a replay;
+        with what the backend measured (``executed.tracking`` of a servo bus)."""
         if self.handle is None:
             return {}
-        return {"executed": {"until": round(float(self.handle.progress), 4),
-                             "status": str(self.handle.status)}}
+        executed: dict[str, object] = {"until": round(float(self.handle.progress), 4),
+                                       "status": str(self.handle.status)}
+        result = self.handle.result
+        executed.update(getattr(result, "data", None) or {})
+        return {"executed": executed}
 
     def poll_execution(self) -> Status:
         if self.held is not None:

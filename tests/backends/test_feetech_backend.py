@@ -16,13 +16,14 @@ import pytest
 from taskrunner.backends.feetech import (
     SO101_MOTORS,
     BusEmulator,
+    BusMotors,
     FaultKind,
     FeetechBackend,
     FeetechBus,
     FeetechOptions,
     LeRobotCalibration,
+    calibrated_servos,
     load_lerobot_calibration,
-    so101_servos,
 )
 from taskrunner.errors import BackendError, BusFaultError, ExecutionCancelledError
 from taskrunner.types import JointTrajectory
@@ -36,7 +37,7 @@ REPLY_TIMEOUT = 0.06
 
 @pytest.fixture
 def emulator() -> Iterator[BusEmulator]:
-    with BusEmulator(so101_servos(seed=1)) as emu:
+    with BusEmulator(calibrated_servos(_arm(), {"shoulder_lift": -0.2, "elbow_flex": 0.3})) as emu:
         yield emu
 
 
@@ -46,8 +47,8 @@ def _arm() -> LeRobotCalibration:
 
 def _backend(emulator: BusEmulator, reply_timeout: float = REPLY_TIMEOUT,
              **options: object) -> FeetechBackend:
-    return FeetechBackend(_arm(), FeetechBus(emulator.port, reply_timeout=reply_timeout),
-                          FeetechOptions(**options))  # type: ignore[arg-type]
+    return FeetechBackend([BusMotors(FeetechBus(emulator.port, reply_timeout=reply_timeout),
+                                     _arm())], FeetechOptions(**options))  # type: ignore[arg-type]
 
 
 def _move(backend: FeetechBackend, delta: list[float], duration: float) -> JointTrajectory:
@@ -183,5 +184,6 @@ def test_a_trajectory_outside_the_calibrated_range_is_refused(emulator: BusEmula
 
 def test_a_silent_servo_at_connect_is_named(emulator: BusEmulator) -> None:
     emulator.inject("drop", 5)
-    with pytest.raises(BusFaultError, match=r"joint 'wrist_roll' \(servo 5\) does not answer"):
+    with pytest.raises(BusFaultError, match=r"joint 'wrist_roll' \(servo 5 on bus '/dev/.*'\) does "
+                       r"not answer"):
         _backend(emulator)

@@ -23,9 +23,11 @@ import select
 import threading
 import time
 import tty
-from collections.abc import Sequence
+from collections import deque
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
+from taskrunner.backends.feetech.calibration import LeRobotCalibration
 from taskrunner.backends.feetech.protocol import (
     BROADCAST_ID,
     REGISTERS,
@@ -37,7 +39,7 @@ from taskrunner.backends.feetech.protocol import (
 )
 from taskrunner.errors import ArgumentError
 
-__all__ = ["FAULTS", "BusEmulator", "ServoModel", "so101_servos"]
+__all__ = ["FAULTS", "BusEmulator", "ServoModel", "SyncWrite", "calibrated_servos", "so101_servos"]
 
 MODEL_STS3215 = 777
 MAX_SPEED = 3400.0  # ticks/s: about 300°/s, the STS3215 at 12 V without load
@@ -48,6 +50,16 @@ _DT = 0.001  # s, model step
 FAULTS = ("drop", "corrupt", "wrong_id", "stall", "overload", "overheat", "voltage", "unplug")
 _FLAG_FAULTS = {"overload": StatusFlag.OVERLOAD, "overheat": StatusFlag.OVERHEAT,
                 "voltage": StatusFlag.VOLTAGE}
+
+
+@dataclass(frozen=True)
+class SyncWrite:
+    """A SYNC WRITE the emulator received: when (``time.monotonic()``), to which register
+    block (its first address: 41 for the goals), for which servos."""
+
+    time: float
+    address: int
+    servo_ids: tuple[int, ...]
 
 
 @dataclass
@@ -180,6 +192,31 @@ class ServoModel:
             self.load = 0.0
 
 
+_SO101_GRAVITY = {"shoulder_lift": 0.35, "elbow_flex": 0.2, "wrist_flex": 0.08}
+
+
+def calibrated_servos(calibration: LeRobotCalibration,
+                      positions: Mapping[str, float] | None = None) -> list[ServoModel]:
+    """Servos as a calibrated arm has them: each one's Homing_Offset the calibration's,
+    standing at ``positions`` (rad, by joint; missing joints: 0, the middle of their
+    range), gravity on an SO-101's shoulder, elbow and wrist (by the joint's name, a
+    prefix such as ``left_`` allowed)."""
+    positions = positions or {}
+    servos = []
+    for motor in calibration.motors:
+        offset = calibration.entries[motor.joint].homing_offset
+        present = calibration.to_ticks(motor.joint, float(positions.get(motor.joint, 0.0)))
+        gravity = next((g for name, g in _SO101_GRAVITY.items()
+                        if motor.joint.endswith(name)), 0.0)
+        servo = ServoModel(motor.servo_id, actual=float((present + offset) % 4096),
+                           gravity=gravity, gravity_zero=float((1024 + offset) % 4096))
+        servo.put("Homing_Offset", offset)
+        servo.put("Goal_Position", servo.present())
+        servo.sync_present()
+        servos.append(servo)
+    return servos
+
+
 def so101_servos(seed: int = 0) -> list[ServoModel]:
     """The SO-101's six STS3215 (IDs 1-6) near the middle of their range; gravity on the
     shoulder, elbow and wrist; ``seed`` varies the starting ticks a little."""
@@ -207,6 +244,8 @@ class BusEmulator:
         self.port = ""
         self.injected_at: float | None = None  # time.monotonic() of the last inject()
         self.packets = 0  # instruction packets received
+        # the last SYNC WRITEs received, oldest first (about half an hour at 60 Hz)
+        self.sync_writes: deque[SyncWrite] = deque(maxlen=100_000)
         self._faults: dict[str, set[int]] = {}
         self._master = -1
         self._slave = -1
@@ -333,6 +372,8 @@ class BusEmulator:
         if code == Instruction.SYNC_WRITE and servo_id == BROADCAST_ID and len(params) >= 2:
             address, length = params[0], params[1]
             body = params[2:]
+            self.sync_writes.append(SyncWrite(time.monotonic(), address,
+                                              tuple(body[0:len(body):length + 1])))
             for k in range(0, len(body) - length, length + 1):
                 target = self.servos.get(body[k])
                 if target is not None:
