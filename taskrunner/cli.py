@@ -229,7 +229,8 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
     return run_task_file(path, backend=args.backend, parameters=parameters,
                          speed=args.speed, seed=args.seed, runs_dir=runs_dir,
                          live=sys.stdout.isatty() and not args.plain, worker=not args.in_process,
-                         port=args.port, url=args.url, firmware_speedup=args.firmware_speedup,
+                         port=args.port, url=args.url, calibration=args.calibration,
+                         hardware=args.hardware, firmware_speedup=args.firmware_speedup,
                          home=args.home, check=False, early=early,
                          loaded=report, watch=_watches(args))
 
@@ -315,8 +316,15 @@ def _parser() -> argparse.ArgumentParser:
                      default="mock", help="where the motion goes (mock); mujoco: physics, "
                      "pip install 'mujoco>=3.2,<4' 'trimesh>=4.0,<6'")
     run.add_argument("--port", help="serial port of the ESP32 (serial backend; default: "
-                                    "the robot's hardware.yaml)")
+                                    "the robot's hardware.yaml); feetech: of the bus (a "
+                                    "pair on two buses: BUS=PORT,BUS=PORT)")
     run.add_argument("--url", help="the ESP32's /api/command URL (http backend)")
+    run.add_argument("--calibration", default=None, metavar="FILE",
+                     help="feetech: LeRobot's calibration file (default: the hardware file's; "
+                          "a pair: ROBOT=FILE,ROBOT=FILE)")
+    run.add_argument("--hardware", default=None, metavar="FILE",
+                     help="feetech: the buses and IDs of the cell's arms (default: "
+                          "<cell>.hardware.yaml next to the cell file)")
     run.add_argument("--home", action="store_true",
                      help="serial/http: home the servos before the task starts")
     run.add_argument("--firmware-speedup", type=float, default=1.0,
@@ -378,6 +386,9 @@ def _parser() -> argparse.ArgumentParser:
                     help="with --robot: LeRobot's calibration file (calibrate writes it)")
     bus_sim = sub.add_parser("bus-sim", help="emulate the SO-101's Feetech servo bus on a pty")
     bus_sim.add_argument("--seed", type=int, default=0, help="varies the servos' start (0)")
+    bus_sim.add_argument("--calibration", default=None, metavar="FILE[,FILE]",
+                         help="servos calibrated as these LeRobot files say (their IDs), "
+                              "at rest; two files: two arms on one bus")
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
     demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL),
                       help=f"cell or robot: a path or a shipped cell's name ({DEFAULT_CELL})")

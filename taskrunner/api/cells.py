@@ -78,7 +78,9 @@ class CellSession:
     def backend(self, kind: str) -> Backend:
         """The cell's backend of ``kind``, made on first use: mock and sim at the cell's
         start state, serial and http on the servos of the cell's one robot (its
-        hardware.yaml; the port and URL the server is set up with) where they are.
+        hardware.yaml; the port and URL the server is set up with) where they are,
+        feetech on the buses of the cell's ``<cell>.hardware.yaml`` (its ports and
+        calibration files; the server's servo port is the ESP32's, not used).
 
         Raises:
             InputError: a servo backend the cell or the server is not set up for.
@@ -92,7 +94,8 @@ class CellSession:
                     raise InputError("this server drives no servos over http: its "
                                      "'servo_url' setting (TASKRUNNER_SERVO_URL) is not set")
                 self.backends[kind] = make_backend(
-                    kind, self.cell, self.speeds.get(kind), port=self.servo_port,
+                    kind, self.cell, self.speeds.get(kind),
+                    port=self.servo_port if kind != "feetech" else None,
                     url=self.servo_url, firmware_speedup=self.firmware_speedup)
             return self.backends[kind]
 

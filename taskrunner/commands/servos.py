@@ -91,7 +91,7 @@ def cmd_bus_sim(args: argparse.Namespace) -> int:
     """Serve the SO-101's Feetech bus on a pty until standard input ends."""
     from taskrunner.backends.feetech.commands import run_bus_sim
 
-    return run_bus_sim(seed=args.seed)
+    return run_bus_sim(seed=args.seed, calibration=args.calibration)
 
 
 def cmd_hw(args: argparse.Namespace) -> int:

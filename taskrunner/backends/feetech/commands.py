@@ -2,6 +2,8 @@
 
 ``bus-sim`` prints the pty's path, then reads commands on standard input until it ends
 (or a signal): ``inject KIND [ID]`` (:data:`~.emulator.FAULTS`), ``clear``, ``quit``.
+With ``--calibration FILE[,FILE]`` its servos are calibrated arms (the files' IDs and
+homing offsets) resting folded; two files: two arms on one bus (IDs 1-6 and 7-12).
 """
 
 from __future__ import annotations
@@ -20,7 +22,14 @@ from taskrunner.backends.feetech.calibration import (
     Motor,
     load_lerobot_calibration,
 )
-from taskrunner.backends.feetech.emulator import FAULTS, BusEmulator, so101_servos
+from taskrunner.backends.feetech.emulator import (
+    FAULTS,
+    SO101_FOLDED,
+    BusEmulator,
+    ServoModel,
+    calibrated_servos,
+    so101_servos,
+)
 from taskrunner.errors import ArgumentError, InputError, UnknownNameError
 
 __all__ = ["ARMS", "LEROBOT_CALIBRATION_HINT", "arm_motors", "run_bus_sim", "run_hw"]
@@ -41,11 +50,42 @@ def arm_motors(robot: str) -> tuple[Motor, ...]:
     return ARMS[robot]
 
 
-def run_bus_sim(seed: int = 0, out: TextIO | None = None, inp: TextIO | None = None) -> int:
-    """Serve the SO-101's six servos on a pty until standard input ends or ``quit``."""
+def calibrated_arms(files: str) -> list[ServoModel]:
+    """The servos of SO-101s calibrated as LeRobot's files (comma-separated) say, folded.
+
+    Raises:
+        InputError: a file that is missing or invalid, a motor missing from it, or an ID
+            that two files give.
+    """
+    servos: list[ServoModel] = []
+    for k, name in enumerate(f.strip() for f in files.split(",") if f.strip()):
+        entries = load_lerobot_calibration(name)
+        prefix = f"arm{k}_"
+        missing = [m.joint for m in SO101_MOTORS if m.joint not in entries]
+        if missing:
+            raise InputError(f"no calibration for motor(s) {missing} (an SO-101's file names "
+                             f"{[m.joint for m in SO101_MOTORS]})", name)
+        motors = tuple(Motor(prefix + m.joint, entries[m.joint].id, m.mode, m.lower, m.upper)
+                       for m in SO101_MOTORS)
+        taken = {s.servo_id for s in servos}
+        twice = sorted(taken & {m.servo_id for m in motors})
+        if twice:
+            raise InputError(f"IDs {twice} are another file's too: two arms on one bus need "
+                             "IDs apart (1-6 and 7-12)", name)
+        calibration = LeRobotCalibration(
+            motors, {prefix + j: e for j, e in entries.items()}, Path(name))
+        servos += calibrated_servos(calibration, {prefix + j: q for j, q in SO101_FOLDED.items()})
+    return servos
+
+
+def run_bus_sim(seed: int = 0, out: TextIO | None = None, inp: TextIO | None = None,
+                calibration: str | None = None) -> int:
+    """Serve the SO-101's six servos on a pty until standard input ends or ``quit``
+    (``calibration``: see :func:`calibrated_arms`; else uncalibrated, near the middle)."""
     out = out or sys.stdout
     inp = inp or sys.stdin
-    with BusEmulator(so101_servos(seed)) as emulator:
+    servos = calibrated_arms(calibration) if calibration else so101_servos(seed)
+    with BusEmulator(servos) as emulator:
         print(emulator.port, file=out, flush=True)
         print(f"# STS bus: servos {sorted(emulator.servos)} at 1 Mbaud; commands: "
               f"inject {'|'.join(FAULTS)} [ID], clear, quit", file=out, flush=True)

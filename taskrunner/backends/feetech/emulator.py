@@ -39,7 +39,8 @@ from taskrunner.backends.feetech.protocol import (
 )
 from taskrunner.errors import ArgumentError
 
-__all__ = ["FAULTS", "BusEmulator", "ServoModel", "SyncWrite", "calibrated_servos", "so101_servos"]
+__all__ = ["FAULTS", "SO101_FOLDED", "BusEmulator", "ServoModel", "SyncWrite", "calibrated_servos",
+           "so101_servos"]
 
 MODEL_STS3215 = 777
 MAX_SPEED = 3400.0  # ticks/s: about 300°/s, the STS3215 at 12 V without load
@@ -192,6 +193,10 @@ class ServoModel:
             self.load = 0.0
 
 
+SO101_FOLDED = {"shoulder_pan": 0.0, "shoulder_lift": -1.7, "elbow_flex": 1.5,
+                "wrist_flex": 0.9, "wrist_roll": 0.0, "gripper": -0.17453}
+"""Where an unpowered SO-101 rests, folded on its stops (rad): the SRDF's ``rest`` with the
+gripper ``closed``."""
 _SO101_GRAVITY = {"shoulder_lift": 0.35, "elbow_flex": 0.2, "wrist_flex": 0.08}
 
 
