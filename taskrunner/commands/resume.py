@@ -8,9 +8,12 @@ from __future__ import annotations
 import argparse
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from taskrunner.errors import InputError
-from taskrunner.types import Pose
+
+if TYPE_CHECKING:
+    from taskrunner.types import Pose  # pinocchio: imported when a pose is parsed
 
 __all__ = ["add_resume_parser", "cmd_resume", "parse_object_pose"]
 
@@ -60,6 +63,8 @@ def parse_object_pose(text: str) -> tuple[str, Pose]:
         raise InputError(f"'--object' must be NAME=X,Y,Z or NAME=X,Y,Z,QX,QY,QZ,QW "
                          f"(got {text!r})")
     quat = tuple(numbers[3:]) if len(numbers) == 7 else (0.0, 0.0, 0.0, 1.0)
+    from taskrunner.types import Pose
+
     return name, Pose(tuple(numbers[:3]), quat)  # type: ignore[arg-type]
 
 
