@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from taskrunner.backends.base import Backend
 from taskrunner.planning.service import InProcessPlanner
@@ -19,6 +20,9 @@ from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.tasks.spec import TaskSpec
+
+if TYPE_CHECKING:
+    from taskrunner.runtime.resume import ResumeOptions
 
 __all__ = ["RunResult", "TaskRun", "start_run"]
 
@@ -140,6 +144,36 @@ class TaskRun:
                     return
             if not new and self.done():
                 return
+
+    def resume(self, options: ResumeOptions | None = None, *, runs_dir: Path | None = None,
+               on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
+        """A new run continuing this one, ended (failed, cancelled), from where it stopped,
+        on the same backend (the joints as it reports them) and with the same planner
+        (see :mod:`taskrunner.runtime.resume`; its record's ``resumes`` is this run's id).
+
+        Args:
+            options: what the operator says about held objects, and ``from_step``.
+            runs_dir: where the new record goes (default: where this run's went).
+            on_event: called with every event of the new run.
+
+        Raises:
+            InputError: refused (the run still runs or succeeded, its task file changed,
+                a held object's state is unknown on this backend), with what to do.
+        """
+        from taskrunner.runtime.resume import plan_resume
+
+        old = self._runner
+        plan = plan_resume(old.record, old.spec, options)
+        events = EventLog()
+        if on_event is not None:
+            events.subscribe(on_event)
+        runner = Runner(old.spec, old.cell, old.backend, old.ctx.planner,
+                        replace(old.options, runs_dir=runs_dir or old.options.runs_dir),
+                        events=events, resume=plan)
+        runner.record.task_text = old.record.task_text
+        run = TaskRun(runner)
+        run._start()
+        return run
 
     def add_done_callback(self, callback: Callable[[], object]) -> None:
         """Call ``callback()`` when the run ends (at once if it has)."""

@@ -292,8 +292,8 @@ def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None
     if not record.task_sha256:
         raise _refuse(record, "its record has no checkpoints (recorded by an older "
                       "version); run the task anew")
-    text = spec.path.read_text(encoding="utf-8") if spec.path is not None else ""
-    if text_sha256(text) != record.task_sha256:
+    text = spec.path.read_text(encoding="utf-8") if spec.path is not None else None
+    if text is not None and text_sha256(text) != record.task_sha256:
         raise _refuse(record, f"the task file {record.task_file} changed since it ran; "
                       "restore it as it was (the record keeps its text in 'task_text') or "
                       "run the task anew")

@@ -194,7 +194,6 @@ class Runner:
             parameters={k: p.value for k, p in spec.parameters.items()},
             task_text=spec.path.read_text(encoding="utf-8") if spec.path else "")
         self.events.subscribe(self.record.events.append)
-        self.record.task_sha256 = text_sha256(self.record.task_text)
         self.record.tree_sha256 = tree_sha256(self.tree)
         # After the record's subscriber: a checkpoint is kept after its node_finished.
         self.checkpointer = Checkpointer(self.tree, self.ctx, self.events)
@@ -275,6 +274,8 @@ class Runner:
         """
         if self._start_problem is not None:
             raise InputError(self._start_problem, self.spec.scene)
+        self.record.task_sha256 = text_sha256(self.record.task_text)  # as run (set late by
+        # start_run for a task without a file)
         self.events.emit("run_started", f"task {self.spec.name!r} on cell {self.cell.name!r}",
                          status="running", task=self.spec.name, cell=self.cell.name,
                          backend=self.options.backend_name,

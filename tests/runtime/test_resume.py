@@ -1,0 +1,240 @@
+"""Resuming a stopped run from its record: pick_place, handoff and stack stopped by an
+injected fault at several points (on sim, fast), a run killed with SIGKILL, refusals."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+from taskrunner.backends.sim import SimBackend, SimOptions
+from taskrunner.cli import main
+from taskrunner.commands.resume import parse_object_pose
+from taskrunner.errors import InputError
+from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.checkpoint import checkpoints_of, restore_scene, scene_state
+from taskrunner.runtime.records import load_record
+from taskrunner.runtime.resume import ResumeOptions, plan_resume
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.taskrun import start_run
+from taskrunner.tasks import load_task
+from taskrunner.tree.start import task_start
+
+TASKS = DATA_ROOT / "tasks"
+SPEED = 50.0  # sim: trajectory seconds per wall second
+
+
+def sim_runner(path: Path, runs_dir: Path, plan=None, start=None):
+    spec = load_task(path, plan.record.parameters if plan is not None else None)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    q = start if start is not None else (plan.start_state(cell) if plan is not None
+                                         else task_start(spec, cell).q)
+    backend = SimBackend(names, dict(zip(names, q)), SimOptions(speed=SPEED))
+    runner = Runner(spec, cell, backend, InProcessPlanner(),
+                    RunOptions(seed=1, runs_dir=runs_dir, backend_name="sim"), resume=plan)
+    return runner, backend
+
+
+def run_with_fault(path: Path, runs_dir: Path, node: str) -> Path:
+    """Run ``path`` on sim; when the motion of ``node`` has been going for a moment, the
+    backend stops every motion (a servo fault): the run fails there. The record's path."""
+    runner, backend = sim_runner(path, runs_dir)
+
+    def fault(event):
+        if event.kind == "motion" and event.node == node:
+            threading.Timer(0.01, backend.stop).start()  # mid-motion
+
+    runner.events.subscribe(fault)
+    try:
+        record = runner.run()
+    finally:
+        backend.close()
+    assert record.status == "failed", record.error
+    assert record.error and "execution failed" in record.error
+    return runs_dir / f"{record.run_id}.json"
+
+
+def resume(record_path: Path, runs_dir: Path, options: ResumeOptions | None = None):
+    record = load_record(record_path)
+    spec = load_task(record.task_file, record.parameters)
+    plan = plan_resume(record, spec, options)
+    runner, backend = sim_runner(Path(record.task_file), runs_dir, plan)
+    try:
+        return record, runner.run(), runner
+    finally:
+        backend.close()
+
+
+@pytest.mark.parametrize(("task", "node"), [
+    ("pick_place", "pick cube: approach"),        # during a motion, reaching for the cube
+    ("pick_place", "place cube: to pre-place"),   # with the object held
+    ("handoff", "handoff bar: right_arm approaches"),  # between two arms, held by one
+    ("stack", "place cube_c: descend"),           # the second cube, set on the first
+])
+def test_a_run_stopped_by_a_fault_resumes_where_it_stopped_and_meets_its_expectations(
+        tmp_path, task, node):
+    stopped = run_with_fault(TASKS / f"{task}.yaml", tmp_path, node)
+    first, record, runner = resume(stopped, tmp_path)
+    assert record.status == "succeeded", record.error
+    assert runner.expectations_met is True
+    assert record.resumes == first.run_id
+    started = [e.node for e in record.events if e.kind == "node_started"]
+    assert started[0] == node  # the leaf that did not finish runs again, nothing before it
+    # The new record can be resumed in turn: it has its checkpoints.
+    assert checkpoints_of(record) and record.task_sha256 == first.task_sha256
+
+
+def test_taskrun_resume_continues_on_the_same_backend_from_where_the_arm_stopped(tmp_path):
+    spec = load_task(TASKS / "pick_place.yaml")
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    backend = SimBackend(names, dict(zip(names, task_start(spec, cell).q)),
+                         SimOptions(speed=SPEED))
+
+    def fault(event):  # during a place, letting go of the cube
+        if event.kind == "motion" and event.node == "place cube: open":
+            threading.Timer(0.01, backend.stop).start()
+
+    try:
+        run = start_run(spec, cell, backend, backend_name="sim", runs_dir=tmp_path,
+                        on_event=fault)
+        first = run.wait(60)
+        assert first.status == "failed"
+        stopped_at = backend.joint_state().positions.copy()
+        resumed = run.resume().wait(60)
+    finally:
+        backend.close()
+    assert resumed.ok, resumed.error
+    assert resumed.record.resumes == first.run_id
+    assert resumed.events[0].data["scene"]["joints"] == pytest.approx(
+        dict(zip(names, stopped_at.round(5))), abs=1e-5)
+    assert [e.node for e in resumed.events if e.kind == "node_started"][0] == "place cube: open"
+
+
+def test_a_run_killed_with_sigkill_mid_motion_resumes_from_its_journal(tmp_path, capsys):
+    command = [sys.executable, "-m", "taskrunner.cli", "run", "pick_place", "--backend",
+               "sim", "--speed", str(SPEED / 10), "--runs-dir", str(tmp_path), "--plain",
+               "--in-process", "--no-check"]
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    journal = None
+    deadline = time.monotonic() + 120
+    try:
+        while time.monotonic() < deadline and process.poll() is None:
+            found = list(tmp_path.glob("*.events.jsonl"))
+            if found:
+                journal = found[0]
+                kinds = [json.loads(line) for line in journal.read_text().splitlines()
+                         if line.endswith("}")]
+                if any(k.get("kind") == "motion" and k.get("node") == "pick cube: retreat"
+                       for k in kinds):
+                    time.sleep(0.05)  # mid-motion, the cube in the gripper
+                    os.kill(process.pid, signal.SIGKILL)
+                    break
+            time.sleep(0.02)
+    finally:
+        process.wait(30)
+    assert process.returncode == -signal.SIGKILL, process.stderr.read()  # type: ignore[union-attr]
+    assert journal is not None and load_record(journal).status == "interrupted"
+    code = main(["resume", str(journal), "--plain", "--in-process", "--speed", str(SPEED)])
+    out = capsys.readouterr().out
+    assert code == 0, out
+    assert "'cube' still held by 'arm'" in out
+    assert "▶ pick cube: retreat" in out and "▶ pick cube: approach" not in out
+    assert "expectations met" in out
+
+
+@pytest.fixture(scope="module")
+def held_record(tmp_path_factory) -> Path:
+    """pick_place stopped by a fault while the arm carries the cube."""
+    runs = tmp_path_factory.mktemp("runs")
+    return run_with_fault(TASKS / "pick_place.yaml", runs, "place cube: to pre-place")
+
+
+def test_resuming_after_the_task_file_changed_is_refused_saying_what_to_do(tmp_path):
+    text = (TASKS / "pick_place.yaml").read_text()
+    path = tmp_path / "pick_place.yaml"
+    path.write_text(text.replace("../robots/cells/", f"{DATA_ROOT}/robots/cells/"))
+    stopped = run_with_fault(path, tmp_path, "pick cube: to pre-grasp")
+    path.write_text(path.read_text().replace("retreat: 0.05}", "retreat: 0.06}", 1))
+    with pytest.raises(InputError, match="changed since it ran; restore it as it was .* "
+                                         "or run the task anew"):
+        plan_resume(load_record(stopped), load_task(path))
+    assert main(["resume", str(stopped), "--plain", "--in-process"]) == 2
+
+
+def test_a_held_object_a_servo_backend_cannot_see_is_refused_naming_the_three_options(
+        held_record):
+    record = load_record(held_record)
+    record.backend = "serial"  # a servo arm's gripper says nothing of the cube
+    spec = load_task(record.task_file, record.parameters)
+    plan = plan_resume(record, spec)
+    with pytest.raises(InputError, match=r"'cube' was held by 'arm' .* cannot tell whether "
+                                         r"it still is: pass --held cube .*--released cube"
+                                         r".*--object cube="):
+        sim_runner(Path(record.task_file), held_record.parent, plan)
+    # Said by the operator: resumed (the scene keeps it in the gripper).
+    confirmed = plan_resume(record, spec, ResumeOptions(held=("cube",)))
+    runner, backend = sim_runner(Path(record.task_file), held_record.parent, confirmed)
+    backend.close()
+    assert runner.scene.object("cube").attached_to is not None
+    assert any("still held by 'arm' (the operator says so)" in n for n in runner.resume_notes)
+
+
+def test_the_operator_says_a_held_object_fell_and_the_place_fails_cleanly(held_record,
+                                                                           tmp_path):
+    fallen = ResumeOptions(objects={"cube": parse_object_pose("cube=0.2,0.0,0.7625")[1]})
+    first, record, runner = resume(held_record, tmp_path, fallen)
+    assert runner.scene.object("cube").attached_to is None
+    assert record.status == "failed"
+    assert "'cube' is not held by arm 'arm'" in (record.error or "")
+
+
+def test_resuming_a_succeeded_run_or_an_unknown_object_is_refused(held_record, tmp_path):
+    record = load_record(held_record)
+    spec = load_task(record.task_file, record.parameters)
+    with pytest.raises(InputError, match="no object 'cuboid'"):
+        resume(held_record, tmp_path, ResumeOptions(released=("cuboid",)))
+    record.status = "succeeded"
+    with pytest.raises(InputError, match="it succeeded: there is nothing left to do"):
+        plan_resume(record, spec)
+
+
+def test_from_step_rewinds_to_a_step_the_run_reached_and_refuses_one_it_did_not(
+        held_record):
+    record = load_record(held_record)
+    spec = load_task(record.task_file, record.parameters)
+    plan = plan_resume(record, spec, ResumeOptions(from_step="pick cube"))
+    assert [p.node for p in plan.replay] == ["go arm"]
+    line = next(p.location for p in checkpoints_of(record) if p.node.startswith("pick"))
+    by_line = plan_resume(record, spec, ResumeOptions(from_step=Path(line).name))
+    assert [p.node for p in by_line.replay] == [p.node for p in plan.replay]
+    with pytest.raises(InputError, match="--from 'go left': no step of that name"):
+        plan_resume(record, spec, ResumeOptions(from_step="go left"))
+
+
+def test_a_checkpoint_scene_comes_back_exactly_with_attachments_and_reasons(held_record):
+    record = load_record(held_record)
+    point = checkpoints_of(record)[-1]
+    assert point.held == {"cube": "arm"}
+    assert [e["name"] for e in point.position] == ["pick_place", "place cube"]
+    runner, backend = sim_runner(Path(record.task_file), held_record.parent)
+    backend.close()
+    restore_scene(runner.scene, point.scene)
+    assert scene_state(runner.scene) == point.scene
+
+
+def test_an_object_pose_is_three_or_seven_numbers():
+    name, pose = parse_object_pose("cube=0.1,0.2,0.3,0,0,1,0")
+    assert name == "cube" and pose.xyz == (0.1, 0.2, 0.3) and pose.quat == (0, 0, 1, 0)
+    with pytest.raises(InputError, match=r"'--object' must be NAME=X,Y,Z .*\(got 'cube=1,2'\)"):
+        parse_object_pose("cube=1,2")
