@@ -44,7 +44,7 @@ def test_so101_gripper_poses_are_lerobots_percentages_of_the_urdf_range(so101):
     closed = so101.named_state("gripper", "closed").as_dict()["gripper"]
     opened = so101.named_state("gripper", "open").as_dict()["gripper"]
     assert 100 * (closed - lower) / (upper - lower) == pytest.approx(0.0, abs=1e-3)
-    assert 100 * (opened - lower) / (upper - lower) == pytest.approx(40.3, abs=0.1)
+    assert 100 * (opened - lower) / (upper - lower) == pytest.approx(19.5, abs=0.1)
 
 
 def test_so101_ships_every_mesh_its_urdf_names_and_its_licence():
