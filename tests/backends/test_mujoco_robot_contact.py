@@ -1,5 +1,7 @@
-"""The mujoco backend fails a motion in which two robots' links touch, naming both links
-(issue 25): arms of one cell are bodies to each other, an arm's own links are not."""
+"""Two robots on the mujoco backend (issue 25): a motion in which two robots' links touch
+fails, naming both links (arms of one cell are bodies to each other, an arm's own links
+are not); the shipped two-Panda assembly, whose stacking waits for the base to be down,
+runs on it with the arms apart."""
 
 from __future__ import annotations
 
@@ -7,8 +9,12 @@ import numpy as np
 import pytest
 
 from taskrunner.errors import BackendError
+from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.tasks import load_task
+from taskrunner.tree.expect import arm_conflicts
 from taskrunner.types import JointTrajectory
 
 mujoco = pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install "
@@ -18,6 +24,7 @@ from taskrunner.backends.physics import MujocoBackend, MujocoOptions, physics_ce
 from taskrunner.backends.physics.mjcf import MjcfOptions, cell_mjcf  # noqa: E402
 
 PAIR = DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml"
+ASSEMBLY = DATA_ROOT / "tasks" / "assembly_panda.yaml"
 # Both arms reaching down to the middle of the table: their grippers meet there.
 MIDDLE = [1.5708, -0.7, -0.9, -0.6, -1.5708]
 
@@ -58,3 +65,34 @@ def test_two_arms_driven_into_each_other_fail_the_motion_naming_both_links(tmp_p
     assert "contact between robots" in message
     left, right = message.index("(left)"), message.index("(right)")
     assert "'left_" in message[:left] and "'right_" in message[left:right]
+
+
+def test_the_assembly_stacks_when_the_base_is_down_with_the_arms_apart(tmp_path):
+    spec = load_task(ASSEMBLY, {})
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    with MujocoBackend(names, physics_cell(cell), dict(zip(names, cell.start_state())),
+                       MujocoOptions(cache_dir=str(tmp_path))) as backend:
+        runner = Runner(spec, cell, backend, InProcessPlanner(),
+                        RunOptions(seed=0, runs_dir=tmp_path / "runs", backend_name="mujoco"))
+        record = runner.run()
+    assert record.status == "succeeded", record.error  # expectations met, no robot contact
+    events = record.events
+    motions = [e for e in events if e.kind == "motion"]
+
+    def span(line: int) -> tuple[float, float]:  # when the motions really ran ('sent')
+        mine = [e for e in motions if e.location == f"{ASSEMBLY}:{line}"]
+        assert mine, line
+        return (min(e.data["sent"] for e in mine),
+                max(e.data["sent"] + e.data["trajectory"]["duration"] for e in mine))
+
+    base_down, stack = span(21), span(25)  # the left Panda's place, the right one's
+    assert stack[0] >= base_down[1] - 1e-4  # (a record rounds durations to 0.1 ms)
+    # On the schedule's clock (admitted starts), the stacking's floor is the base's end.
+    admitted_end = max(e.data["start"] + e.data["trajectory"]["duration"] for e in motions
+                       if e.location == f"{ASSEMBLY}:21")
+    waits = [e for e in events if e.kind == "wait" and e.data.get("step") == "base down"]
+    assert waits[0].data.get("hold") and waits[-1].data["until"] == pytest.approx(
+        admitted_end, abs=1e-4)
+    assert span(24)[0] < base_down[0]  # the right Panda picked while the left one carried
+    assert arm_conflicts(runner.scene.robot, events) == []

@@ -7,8 +7,6 @@ from __future__ import annotations
 import textwrap
 from pathlib import Path
 
-import pytest
-
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import DATA_ROOT
@@ -16,10 +14,9 @@ from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.tasks import load_task
 from taskrunner.tree.check import check_task
-from taskrunner.tree.expect import arm_conflicts
 from taskrunner.tree.schedule import MotionSchedule
 
-ASSEMBLY = DATA_ROOT / "tasks" / "assembly_panda.yaml"
+ASSEMBLY = DATA_ROOT / "tasks" / "assembly_panda.yaml"  # run on mujoco: tests/backends
 PAIR = DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml"
 LEFT, RIGHT = ((1, 0),), ((1, 1),)
 
@@ -47,27 +44,6 @@ def test_a_lane_that_waited_for_a_step_starts_its_motions_no_earlier_than_its_en
     assert schedule.earliest(LEFT) == 0.0  # not the other branch
     schedule.not_before(RIGHT, 2.0)  # an earlier wait does not undo a later one
     assert schedule.earliest(RIGHT) == 4.5
-
-
-def test_the_stacking_panda_starts_its_place_when_the_base_is_down(tmp_path):
-    runner = run(ASSEMBLY, tmp_path)
-    events = runner.record.events
-    assert runner.record.status == "succeeded", runner.record.error
-    motions = [e for e in events if e.kind == "motion"]
-
-    def span(line: int) -> tuple[float, float]:
-        mine = [e for e in motions if e.location == f"{ASSEMBLY}:{line}"]
-        assert mine, line
-        return (min(e.data["start"] for e in mine),
-                max(e.data["start"] + e.data["trajectory"]["duration"] for e in mine))
-
-    base_down, stack = span(21), span(25)  # the left Panda's place, the right one's
-    assert stack[0] >= base_down[1] - 1e-4  # (a record rounds durations to 0.1 ms)
-    waits = [e for e in events if e.kind == "wait" and e.data.get("step") == "base down"]
-    assert waits[0].data.get("hold") and waits[-1].data["until"] == pytest.approx(base_down[1], abs=1e-4)
-    # The right Panda's pick ran while the left one carried the base.
-    assert span(24)[0] < base_down[0]
-    assert arm_conflicts(runner.scene.robot, events) == []
 
 
 def test_the_check_schedules_the_stacking_after_the_base_is_down():
