@@ -37,3 +37,21 @@ def test_so101_pick_place_carries_the_cube_by_friction_to_its_spot(tmp_path):
     assert cube.xyz == pytest.approx((0.22, -0.05, 0.7625), abs=0.005)
     physics = [e for e in record.events if e.kind == "physics"]
     assert physics and not any(e.data.get("grasps") for e in physics)  # no weld held it
+
+
+def test_so101_pair_hands_the_bar_over_and_lays_it_down_by_friction(tmp_path):
+    spec = load_task(DATA_ROOT / "tasks" / "handoff_so101.yaml", {})
+    cell = load_cell(spec.cell)
+    start = dict(zip(cell.model.joint_names, cell.start_state()))
+    backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                            MujocoOptions(cache_dir=str(tmp_path / "cache"), speed=50.0))
+    try:
+        record = Runner(spec, cell, backend, InProcessPlanner(),
+                        RunOptions(backend_name="mujoco", runs_dir=tmp_path / "runs")).run()
+        bar = backend.object_poses()["bar"]
+    finally:
+        backend.close()
+    assert record.status == "succeeded", record.error
+    # Lying on its side (its centre 12.5 mm up) at the spot in front of the right arm.
+    assert bar.xyz == pytest.approx((0.10, 0.0, 0.7625), abs=0.015)
+    assert bar.xyz[2] == pytest.approx(0.7625, abs=0.002)
