@@ -389,6 +389,12 @@ def _parser() -> argparse.ArgumentParser:
     bus_sim.add_argument("--calibration", default=None, metavar="FILE[,FILE]",
                          help="servos calibrated as these LeRobot files say (their IDs), "
                               "at rest; two files: two arms on one bus")
+    bus_sim.add_argument("--speedup", type=float, default=1.0,
+                         help="the servos move this many times faster than real time (tests; "
+                              "run-task FILE --backend feetech --firmware-speedup the same)")
+    bus_sim.add_argument("--log", default=None, metavar="FILE",
+                         help="append a line per SYNC WRITE received (model time, monotonic "
+                              "time, address, IDs): the rate a backend streams at")
     demo = sub.add_parser("demo", help="load a cell, solve IK, check collisions, plan")
     demo.add_argument("cell", nargs="?", default=str(DEFAULT_CELL),
                       help=f"cell or robot: a path or a shipped cell's name ({DEFAULT_CELL})")

@@ -91,7 +91,8 @@ def cmd_bus_sim(args: argparse.Namespace) -> int:
     """Serve the SO-101's Feetech bus on a pty until standard input ends."""
     from taskrunner.backends.feetech.commands import run_bus_sim
 
-    return run_bus_sim(seed=args.seed, calibration=args.calibration)
+    return run_bus_sim(seed=args.seed, calibration=args.calibration, speedup=args.speedup,
+                       log=args.log)
 
 
 def cmd_hw(args: argparse.Namespace) -> int:

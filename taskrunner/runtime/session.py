@@ -104,7 +104,7 @@ def make_backend(kind: str, cell: Cell, speed: float | None, port: str | None = 
     if kind == "mujoco":
         return _mujoco_backend(cell, speed, initial)
     if kind == "feetech":
-        return _feetech_backend(cell, port, calibration_file, hardware)
+        return _feetech_backend(cell, port, calibration_file, hardware, firmware_speedup)
     if kind not in BACKENDS:
         raise ArgumentError(f"'backend' must be one of {', '.join(BACKENDS)} (got {kind!r})")
     robots = cell.model.instances
@@ -156,8 +156,10 @@ def _mujoco_backend(cell: Cell, speed: float | None, start: dict[str, float]) ->
 
 
 def _feetech_backend(cell: Cell, port: str | None, calibration: str | None,
-                     hardware: str | Path | None) -> Backend:
-    """Bus servos on the buses of the cell's hardware file (``hardware``: another one)."""
+                     hardware: str | Path | None, speedup: float) -> Backend:
+    """Bus servos on the buses of the cell's hardware file (``hardware``: another one);
+    ``speedup``: an emulator's (``run-task bus-sim --speedup``), 1 for real servos."""
+    from taskrunner.backends.feetech import FeetechOptions
     from taskrunner.backends.feetech.hardware import CellRobot, open_feetech_backend
 
     if hardware is None:
@@ -172,7 +174,8 @@ def _feetech_backend(cell: Cell, port: str | None, calibration: str | None,
                              "cells/so101_table.hardware.yaml; or --hardware FILE)")
     return open_feetech_backend(hardware, [CellRobot(r.name, r.prefix)
                                            for r in cell.model.instances],
-                                cell.model.joint_names, port=port, calibration=calibration)
+                                cell.model.joint_names, port=port, calibration=calibration,
+                                options=FeetechOptions(time_scale=speedup))
 
 
 def servo_calibration(cell: Cell) -> ServoCalibration:

@@ -74,6 +74,9 @@ class FeetechOptions:
         stall_load: load (fraction of the maximum torque) that, held for ``stall_cycles``
             cycles while the goal is not reached, is a stall.
         stall_cycles: see ``stall_load``.
+        time_scale: trajectory seconds per wall-clock second: 1 on real servos; an
+            emulator run faster than real time (``run-task bus-sim --speedup``) matches
+            it. ``rate_hz`` and ``settle_timeout`` count the trajectory's seconds.
     """
 
     rate_hz: float = 60.0
@@ -86,6 +89,7 @@ class FeetechOptions:
     max_tracking_error: float | None = 0.35
     stall_load: float = 0.95
     stall_cycles: int = 2
+    time_scale: float = 1.0
 
     def __post_init__(self) -> None:
         check_option("rate_hz", self.rate_hz, lambda v: 50 <= v <= 1000, "in [50, 1000] Hz")
@@ -103,6 +107,7 @@ class FeetechOptions:
         check_option("stall_load", self.stall_load, lambda v: 0 < v <= 1, "in (0, 1]")
         check_option("stall_cycles", self.stall_cycles, lambda v: v >= 1 and v == int(v),
                      "an integer >= 1")
+        check_option("time_scale", self.time_scale, lambda v: 0 < v <= 100, "in (0, 100]")
 
 
 @dataclass
@@ -348,7 +353,7 @@ class FeetechBackend(BaseBackend):
     # -- the cycle ------------------------------------------------------------------------
 
     def _run(self) -> None:
-        period = 1.0 / self._options.rate_hz
+        period = 1.0 / (self._options.rate_hz * self._options.time_scale)  # wall s
         next_cycle = time.monotonic()
         while not self._halt.is_set():
             try:
@@ -408,7 +413,7 @@ class FeetechBackend(BaseBackend):
         if stream.started is None:
             stream.started = now
         trajectory, execution = stream.execution.trajectory, stream.execution
-        elapsed = min(now - stream.started, execution.duration)
+        elapsed = min((now - stream.started) * self._options.time_scale, execution.duration)
         q = sample_positions(trajectory, float(trajectory.times[0]) + elapsed)
         for name, value in zip(trajectory.names, q):
             b, motor = self._where[name]
@@ -434,7 +439,8 @@ class FeetechBackend(BaseBackend):
             return
         final = execution.trajectory.positions[-1]
         gaps = np.abs(final - self._positions[execution.columns])
-        late = time.monotonic() - stream.started - execution.duration
+        late = (time.monotonic() - stream.started) * self._options.time_scale \
+            - execution.duration
         if np.all(gaps <= self._options.settle_tolerance):
             self._end_stream(stream)
             self._finish(execution, "succeeded",

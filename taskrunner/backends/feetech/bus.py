@@ -258,6 +258,7 @@ class FeetechBus:
                  later: Sequence[int] = ()) -> Packet:
         """The reply of ``servo_id``; ``later``: the servos expected to answer after it (a
         reply from one of them means ``servo_id`` said nothing)."""
+        drained = False
         while True:
             packet, used = parse_packet(self._rx)
             del self._rx[:used]
@@ -274,6 +275,17 @@ class FeetechBus:
                                       f"the reply to {what} came from ID {packet.servo_id}")
                 return packet
             remaining = deadline - time.monotonic()
+            if remaining <= 0 and not drained:
+                # A thread kept from running past the deadline (a busy host) may find the
+                # reply already waiting: take what the port holds once before saying none.
+                drained = True
+                try:
+                    waiting = int(getattr(self._serial, "in_waiting", 0) or 0)
+                    self._rx += self._serial.read(waiting) if waiting else b""
+                except (pyserial.SerialException, OSError, TypeError) as exc:
+                    raise self._fault(FaultKind.UNPLUGGED, None, f"read failed ({exc})") from None
+                if waiting:
+                    continue
             if remaining <= 0:
                 raise self._fault(FaultKind.NO_REPLY, servo_id,
                                   f"no reply to {what} within {1000 * self._timeout:.0f} ms")

@@ -8,6 +8,7 @@ homing offsets) resting folded; two files: two arms on one bus (IDs 1-6 and 7-12
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import threading
 from collections.abc import Callable
@@ -79,32 +80,42 @@ def calibrated_arms(files: str) -> list[ServoModel]:
 
 
 def run_bus_sim(seed: int = 0, out: TextIO | None = None, inp: TextIO | None = None,
-                calibration: str | None = None) -> int:
+                calibration: str | None = None, speedup: float = 1.0,
+                log: str | None = None) -> int:
     """Serve the SO-101's six servos on a pty until standard input ends or ``quit``
-    (``calibration``: see :func:`calibrated_arms`; else uncalibrated, near the middle)."""
+    (``calibration``: see :func:`calibrated_arms`; else uncalibrated, near the middle;
+    ``speedup``: the servos' time scale; ``log``: a file that gets a line per SYNC WRITE).
+    """
     out = out or sys.stdout
     inp = inp or sys.stdin
     servos = calibrated_arms(calibration) if calibration else so101_servos(seed)
-    with BusEmulator(servos) as emulator:
-        print(emulator.port, file=out, flush=True)
-        print(f"# STS bus: servos {sorted(emulator.servos)} at 1 Mbaud; commands: "
-              f"inject {'|'.join(FAULTS)} [ID], clear, quit", file=out, flush=True)
-        for line in inp:
-            words = line.split()
-            if not words:
-                continue
-            try:
-                if words[0] == "quit":
-                    break
-                if words[0] == "clear":
-                    emulator.clear()
-                elif words[0] == "inject" and len(words) in (2, 3):
-                    emulator.inject(words[1], int(words[2]) if len(words) == 3 else None)
-                else:
-                    raise ArgumentError(f"unknown command {line.strip()!r}")
-                print(f"ok {line.strip()}", file=out, flush=True)
-            except (ArgumentError, ValueError) as exc:
-                print(f"err {exc}", file=out, flush=True)
+    with contextlib.ExitStack() as stack:
+        stream = stack.enter_context(open(log, "a", encoding="utf-8")) if log else None
+        emulator = stack.enter_context(BusEmulator(servos, speedup, stream))
+        return _serve_commands(emulator, out, inp)
+
+
+def _serve_commands(emulator: BusEmulator, out: TextIO, inp: TextIO) -> int:
+    """Print the pty's path, then answer commands on ``inp`` until it ends or ``quit``."""
+    print(emulator.port, file=out, flush=True)
+    print(f"# STS bus: servos {sorted(emulator.servos)} at 1 Mbaud; commands: "
+          f"inject {'|'.join(FAULTS)} [ID], clear, quit", file=out, flush=True)
+    for line in inp:
+        words = line.split()
+        if not words:
+            continue
+        try:
+            if words[0] == "quit":
+                break
+            if words[0] == "clear":
+                emulator.clear()
+            elif words[0] == "inject" and len(words) in (2, 3):
+                emulator.inject(words[1], int(words[2]) if len(words) == 3 else None)
+            else:
+                raise ArgumentError(f"unknown command {line.strip()!r}")
+            print(f"ok {line.strip()}", file=out, flush=True)
+        except (ArgumentError, ValueError) as exc:
+            print(f"err {exc}", file=out, flush=True)
     return 0
 
 

@@ -10,9 +10,13 @@ Protection_Time), status flags in every reply. Faults are injected with
 ``stall`` (the output blocked), ``overload`` / ``overheat`` / ``voltage`` (the servo's
 flag, torque cut as the servo does), ``unplug`` (the pty closes, as a pulled USB adapter).
 
-Time is the wall clock (``time.monotonic``): the model is advanced in 1 ms steps up to now
-whenever a packet arrives and every few milliseconds otherwise. Units: ticks (4096 a turn,
-0.088°), ticks/s.
+Time is the wall clock (``time.monotonic``) times ``time_scale`` (1: real time; 2: the
+servos move twice as fast, for tests, with the backend's ``time_scale`` the same): the
+model is advanced in 1 ms steps of its own time up to now whenever a packet arrives and
+every few milliseconds otherwise. Every SYNC WRITE received is logged
+(:attr:`BusEmulator.sync_writes`, and a file with ``log``), with the model's time, so the
+rate a backend streams at can be measured on the bus's side. Units: ticks (4096 a turn,
+0.088°), ticks/s, s.
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ import tty
 from collections import deque
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TextIO
 
 from taskrunner.backends.feetech.calibration import LeRobotCalibration
 from taskrunner.backends.feetech.protocol import (
@@ -55,10 +60,12 @@ _FLAG_FAULTS = {"overload": StatusFlag.OVERLOAD, "overheat": StatusFlag.OVERHEAT
 
 @dataclass(frozen=True)
 class SyncWrite:
-    """A SYNC WRITE the emulator received: when (``time.monotonic()``), to which register
-    block (its first address: 41 for the goals), for which servos."""
+    """A SYNC WRITE the emulator received: when (``time.monotonic()``, and ``clock``: the
+    model's time, s), to which register block (its first address: 41 for the goals), for
+    which servos."""
 
     time: float
+    clock: float
     address: int
     servo_ids: tuple[int, ...]
 
@@ -239,13 +246,22 @@ class BusEmulator:
 
     Args:
         servos: one model per ID (default: :func:`so101_servos`).
+        time_scale: model seconds per wall-clock second.
+        log: a text stream that gets one line per SYNC WRITE received: model time (s),
+            ``time.monotonic()``, start address, IDs (comma-separated).
 
     Use as a context manager, or :meth:`start` / :meth:`stop`; :attr:`port` is the pty's
     path once started.
     """
 
-    def __init__(self, servos: Sequence[ServoModel] | None = None) -> None:
+    def __init__(self, servos: Sequence[ServoModel] | None = None, time_scale: float = 1.0,
+                 log: TextIO | None = None) -> None:
+        if not 0 < time_scale <= 100:
+            raise ArgumentError(f"'time_scale' must be in (0, 100] (got {time_scale!r})")
         self.servos = {s.servo_id: s for s in (servos or so101_servos())}
+        self.time_scale = float(time_scale)
+        self.clock = 0.0  # model time, s
+        self._log = log
         self.port = ""
         self.injected_at: float | None = None  # time.monotonic() of the last inject()
         self.packets = 0  # instruction packets received
@@ -330,8 +346,9 @@ class BusEmulator:
 
     def _advance(self) -> None:
         now = time.monotonic()
-        elapsed = min(now - self._last, 0.5)
+        elapsed = min(now - self._last, 0.5) * self.time_scale
         self._last = now
+        self.clock += elapsed
         for servo in self.servos.values():
             servo.advance(elapsed)
             servo.sync_present()
@@ -377,8 +394,13 @@ class BusEmulator:
         if code == Instruction.SYNC_WRITE and servo_id == BROADCAST_ID and len(params) >= 2:
             address, length = params[0], params[1]
             body = params[2:]
-            self.sync_writes.append(SyncWrite(time.monotonic(), address,
-                                              tuple(body[0:len(body):length + 1])))
+            record = SyncWrite(time.monotonic(), self.clock, address,
+                               tuple(body[0:len(body):length + 1]))
+            self.sync_writes.append(record)
+            if self._log is not None:
+                self._log.write(f"{record.clock:.6f} {record.time:.6f} {address} "
+                                f"{','.join(map(str, record.servo_ids))}\n")
+                self._log.flush()
             for k in range(0, len(body) - length, length + 1):
                 target = self.servos.get(body[k])
                 if target is not None:
