@@ -93,7 +93,7 @@ def test_several_errors_in_several_steps_are_reported_together(task_file: Callab
         """)
     assert load_problems(path) == [
         (5, "'pick' needs 'object'"),
-        (7, "'unit' is not a field of 'wait'; fields: 'name', 'seconds'"),
+        (7, "'unit' is not a field of 'wait'; fields: 'name', 'seconds', 'wait_for'"),
         (8, "'move' needs one of 'pose' or 'by'"),
         (9, "'gripper' takes only one of 'arm' or 'group' (got 'arm' and 'group')"),
     ]
