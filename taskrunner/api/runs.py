@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from taskrunner.api.cells import BACKENDS, CellRegistry, CellSession
 from taskrunner.api.detail import DEFAULT_LIMIT, RunDetailCache, RunListCache, StoredDetails
@@ -35,6 +35,9 @@ from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
 from taskrunner.tasks import check_names, raise_for_problems
 from taskrunner.tasks.names import moved_groups
 from taskrunner.tasks.spec import TaskSpec
+
+if TYPE_CHECKING:
+    from taskrunner.runtime.resume import ResumePlan
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
 
@@ -134,8 +137,11 @@ class RunManager:
 
     # ----------------------------------------------------------------- starting
     def start(self, spec: TaskSpec, backend: str, seed: int = 0, task_text: str | None = None,
-              task_file: str | None = None, speed: float | None = None) -> LiveRun:
-        """Check ``spec``'s names against its cell, claim its joints and start it.
+              task_file: str | None = None, speed: float | None = None,
+              resume: ResumePlan | None = None) -> LiveRun:
+        """Check ``spec``'s names against its cell, claim its joints and start it
+        (``resume``: continuing the run it was planned from, see
+        :mod:`taskrunner.runtime.resume`).
 
         Raises:
             TaskSpecError: the task names what its cell does not have (every problem).
@@ -165,7 +171,7 @@ class RunManager:
             runner = Runner(spec, session.cell, machine, planner,
                             RunOptions(tick_hz=self.tick_hz, seed=seed, backend_name=backend,
                                        planner_times=True),
-                            events=EventLog())
+                            events=EventLog(), resume=resume)
         except BaseException:
             with self._lock:
                 self._claims.pop(id(claim), None)

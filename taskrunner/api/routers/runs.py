@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Header, HTTPException, Query, Response, status
+from pydantic import BaseModel, ConfigDict, Field
 from starlette.concurrency import run_in_threadpool
 
 from taskrunner.api.admission import Admission, ControlExecutor
@@ -21,7 +23,12 @@ from taskrunner.api.dependencies import (
     get_work,
 )
 from taskrunner.api.detail import DEFAULT_LIMIT, MAX_LIMIT
-from taskrunner.api.requestwork import RequestWork, load_request, precheck_request
+from taskrunner.api.requestwork import (
+    RequestWork,
+    inline_path,
+    load_request,
+    precheck_request,
+)
 from taskrunner.api.runs import RunManager
 from taskrunner.api.schemas import (
     ErrorBody,
@@ -34,6 +41,7 @@ from taskrunner.api.schemas import (
 from taskrunner.api.settings import Settings
 from taskrunner.api.store import RunStore
 from taskrunner.api.streams import EventStream, RunStreams
+from taskrunner.errors import InputError
 from taskrunner.tasks.problem import raise_for_problems
 
 __all__ = ["router"]
@@ -134,6 +142,72 @@ async def cancel_run(run_id: str, manager: Annotated[RunManager, Depends(get_man
         live = await control.run(manager.cancel, run_id)
     return RunAccepted(run_id=run_id, status=live.record.status,  # type: ignore[arg-type]
                        url=f"/runs/{run_id}")
+
+
+class RunResume(BaseModel):
+    """What the operator says about the world when resuming (see ``run-task resume``)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    objects: dict[str, list[float]] = Field(
+        default_factory=dict, max_length=64,
+        description="objects lying at a pose now: name -> [x, y, z] or [x, y, z, qx, qy, "
+                    "qz, qw] (m, world frame)")
+    released: list[str] = Field(default_factory=list, max_length=64,
+                                description="held objects no longer held")
+    held: list[str] = Field(default_factory=list, max_length=64,
+                            description="held objects confirmed still in their gripper")
+    from_step: str | None = Field(default=None, max_length=255,
+                                  description="resume at this step (name or file:line)")
+
+
+@router.post("/{run_id}/resume", status_code=status.HTTP_202_ACCEPTED,
+             response_model=RunAccepted, dependencies=[Depends(require_write)],
+             responses=_ERRORS)
+async def resume_run(run_id: str, body: RunResume, response: Response,
+                     settings: Annotated[Settings, Depends(get_settings)],
+                     manager: Annotated[RunManager, Depends(get_manager)],
+                     cells: Annotated[CellRegistry, Depends(get_cells)],
+                     work: Annotated[RequestWork, Depends(get_work)],
+                     checking: Annotated[Admission, Depends(get_checking)]) -> RunAccepted:
+    """Continue an ended run (failed, cancelled, interrupted) from where it stopped, with
+    the arm where the cell's backend reports it: a new run whose record ``resumes`` this
+    one. Refused with 422 and what to do when it cannot be resumed safely (its task file
+    changed, a held object's state unknown on this backend: say ``held``, ``released``
+    or ``objects``); 409 if its arm is in use."""
+    from taskrunner.runtime.resume import ResumeOptions, plan_resume
+    from taskrunner.types import Pose
+
+    poses = {}
+    for name, values in body.objects.items():
+        if len(values) not in (3, 7):
+            raise InputError(f"'objects.{name}' must be [x, y, z] or [x, y, z, qx, qy, qz, "
+                             f"qw] (got {len(values)} numbers)")
+        poses[name] = Pose(tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0, 0.0, 1.0))  # type: ignore[arg-type]
+    record = await run_in_threadpool(manager.record, run_id)
+    options = ResumeOptions(objects=poses, released=tuple(body.released),
+                            held=tuple(body.held), from_step=body.from_step)
+    task_file = Path(record.task_file)
+    task: str | None = None  # None: inline YAML, its text as the record keeps it
+    if task_file != inline_path(settings.tasks_dir):
+        try:
+            task = str(task_file.resolve().relative_to(settings.tasks_dir.resolve()))
+        except ValueError:
+            raise InputError(f"cannot resume run {run_id}: its task file {task_file} is "
+                             "not in the server's tasks folder") from None
+    async with checking.slot():
+        spec, loaded_file, text = await run_in_threadpool(
+            work.call, load_request, settings.folder_policy(), settings.tasks_dir,
+            task, record.task_text if task is None else None, record.parameters)
+    cell = (cells.path_of(record.cell) if "/" not in record.cell else Path(record.cell))
+    spec = spec.model_copy(update={"cell": cell})
+    plan = plan_resume(record, spec, options)
+    live = await run_in_threadpool(
+        lambda: manager.start(spec, record.backend, task_text=text, task_file=loaded_file,
+                              resume=plan))
+    url = f"/runs/{live.run_id}"
+    response.headers["Location"] = url
+    return RunAccepted(run_id=live.run_id, status=RunStatus.RUNNING, url=url)
 
 
 async def _events_start(run_id: str, manager: Annotated[RunManager, Depends(get_manager)],

@@ -1,0 +1,40 @@
+"""POST /runs/{id}/resume: a cancelled run continued from where it stopped; refusals."""
+
+from __future__ import annotations
+
+import time
+
+from apitest import wait_until_done
+
+
+def test_a_cancelled_run_resumes_from_where_it_stopped_and_a_finished_one_is_refused(client):
+    started = client.post("/runs", json={"task": "pick_place", "backend": "sim", "speed": 20,
+                                         "check": False})
+    assert started.status_code == 202, started.text
+    run_id = started.json()["run_id"]
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:  # until the cube is in the gripper
+        events = client.get(f"/runs/{run_id}", params={"limit": 1000}).json()["events"]
+        if any(e["kind"] == "checkpoint" and e["data"].get("held") for e in events):
+            break
+        time.sleep(0.02)
+    assert client.post(f"/runs/{run_id}/cancel").status_code == 202
+    assert wait_until_done(client, run_id)["status"] == "cancelled"
+
+    resumed = client.post(f"/runs/{run_id}/resume", json={})
+    assert resumed.status_code == 202, resumed.text
+    new_id = resumed.json()["run_id"]
+    run = wait_until_done(client, new_id, timeout=60)
+    assert run["status"] == "succeeded", run.get("error")
+    first = run["events"][0]
+    assert first["kind"] == "run_started" and first["data"]["resumes"] == run_id
+    notes = [e["message"] for e in run["events"] if e["kind"] == "message"]
+    assert any("'cube' still held by 'arm'" in n for n in notes)
+    assert "expectations met" in notes
+
+    again = client.post(f"/runs/{new_id}/resume", json={})
+    assert again.status_code == 422
+    assert "it succeeded: there is nothing left to do" in again.json()["detail"]
+    assert client.post("/runs/nope/resume", json={}).status_code == 404
+    bad = client.post(f"/runs/{run_id}/resume", json={"objects": {"cube": [1, 2]}})
+    assert bad.status_code == 422 and "'objects.cube' must be [x, y, z]" in bad.json()["detail"]
