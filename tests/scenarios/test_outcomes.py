@@ -12,7 +12,8 @@ from taskrunner.tasks import HandoffStep, PlaceStep, walk_steps
 
 # Examples of the 5-DOF servo arm: their places check the turn about z, not the tilt.
 SERVO_ARM = {"handoff.yaml", "pick_place.yaml", "stack_three.yaml", "fallback_servo.yaml",
-             "pick_place_so101.yaml", "handoff_so101.yaml"}  # and the 5-joint SO-101
+             "pick_place_so101.yaml", "handoff_so101.yaml",  # and the 5-joint SO-101
+             "tray_pair.yaml"}
 # Places with a wider tolerance of their own (mm): the SO-101 lets go of the bar it lays down
 # up to 1.5 cm above the table (held up to 10 degrees off level by its five joints).
 OWN_TOLERANCE_MM = {"handoff_so101.yaml": 15.0}
