@@ -20,7 +20,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import ExecutionHandle
-from taskrunner.errors import ScheduleConflictError, TaskrunnerError
+from taskrunner.errors import BackendError, ScheduleConflictError, TaskrunnerError
 from taskrunner.planning.cartesian import (
     CartesianOptions,
     CartesianResult,
@@ -228,7 +228,10 @@ class _Executes(TaskLeaf):
 
     def _send(self, trajectory: JointTrajectory) -> Status:
         self.pending = None
-        self.handle = self.ctx.backend.execute(trajectory)
+        try:
+            self.handle = self.ctx.backend.execute(trajectory)
+        except BackendError as exc:  # refused, or stopped on a fault since the last motion
+            return self.fail(f"execution failed: {exc}", kind="execution")
         self.ctx.clock.track(self.handle)
         snapshot = self.ctx.scene.snapshot()
         start = self.admission.start if self.admission is not None else 0.0
