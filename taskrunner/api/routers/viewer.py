@@ -98,6 +98,17 @@ def view_cell(cell_id: str, request: Request,
     return JSONResponse(body)
 
 
+@router.get("/viewer/cells/{cell_id}/collision", dependencies=[Depends(require_read)],
+            responses=_ERRORS)
+def view_collision(cell_id: str, cells: Annotated[CellRegistry, Depends(get_cells)]
+                   ) -> JSONResponse:
+    """The robots' collision geometry as the planner checks it (each robot's exact
+    meshes, convex hulls or primitives), each shape in its link's frame."""
+    from taskrunner.viewer.collision import describe_collision
+
+    return JSONResponse(describe_collision(cells.by_id(cell_id).cell))
+
+
 def _mesh_roots(request: Request, cells: CellRegistry) -> MeshRoots:
     """The mesh folders of the cells loaded now (cells load, never unload)."""
     state = request.app.state

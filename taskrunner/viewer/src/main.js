@@ -9,6 +9,8 @@ import { PlanPanel } from './planpanel.js';
 import { Timeline, sample } from './timeline.js';
 import { drawPlot } from './plot.js';
 import { TreeView, shortLocation } from './tree.js';
+import { TreeGraph } from './graph.js';
+import { Gantt } from './gantt.js';
 
 const $ = (id) => document.getElementById(id);
 const el = (tag, props, ...children) => {
@@ -75,9 +77,77 @@ async function showCell(cellId) {
   goal.unload();
   stage.loadCell(cell);
   stage.setFrames($('frames').checked);
+  stage.setLabels($('labels').checked);
+  if ($('collision').checked) await showCollision(true);
   return cell;
 }
 $('frames').addEventListener('change', () => stage.setFrames($('frames').checked));
+$('labels').addEventListener('change', () => stage.setLabels($('labels').checked));
+$('fit').addEventListener('click', () => stage.fitView());
+
+// The planner's collision geometry, fetched once per cell shown.
+async function showCollision(on) {
+  if (on && !stage.collision && state.cellId) {
+    const cellId = state.cellId;
+    const data = await get(`/viewer/cells/${encodeURIComponent(cellId)}/collision`);
+    if (state.cellId !== cellId) return;
+    stage.setCollision(data);
+    debug.collision = data;
+  }
+  stage.setCollisionVisible(on);
+}
+$('collision').addEventListener('change', () => guarded(() => showCollision($('collision').checked)));
+
+// ------------------------------------------------------------------ tree: list or graph
+// The list in the side panel, or the graph under the 3D view (the choice kept in the tab).
+function treePanel(box) {
+  const list = new TreeView(box);
+  const graph = new TreeGraph($('graph-pane'), (node) => selectMotionOf(node));
+  debug.graph = graph;
+  const buttons = ['list', 'graph'].map((m) => el('button', { type: 'button', textContent: m, id: `tree-${m}` }));
+  const setMode = (mode) => {
+    sessionStorage.setItem('taskrunner.treeMode', mode);
+    buttons.forEach((b) => b.classList.toggle('active', b.textContent === mode));
+    box.hidden = mode === 'graph';
+    $('graph-pane').hidden = mode !== 'graph';
+    $('stage').classList.toggle('split', mode === 'graph');
+    stage.resize();
+    if (mode === 'graph') graph.home();
+  };
+  buttons.forEach((b) => b.addEventListener('click', () => setMode(b.textContent)));
+  const toggle = el('span', { className: 'tree-mode' }, ...buttons);
+  return {
+    list, graph, toggle,
+    start() { setMode(sessionStorage.getItem('taskrunner.treeMode') || 'list'); },
+    show(tree) { list.show(tree); graph.show(tree); },
+    showFromEvents(name, events) { list.showFromEvents(name, events); graph.show(list.root); },
+    apply(e) { list.apply(e); graph.apply(e); },
+    pinProblems(problems) { list.pinProblems(problems); },
+  };
+}
+
+function closeGraph() {
+  $('stage').classList.remove('split');
+  $('graph-pane').hidden = true;
+  $('graph-pane').textContent = '';
+  debug.graph = null;
+}
+
+// The timeline at a motion: by its event's seq, or the last of a tree node.
+function selectMotion(index) {
+  const tl = state.timeline;
+  if (!tl || index < 0) return;
+  setPlaying(false);
+  state.selected = index;
+  applyTime(tl.motions[index].start);
+}
+function selectMotionOf(node) {
+  const tl = state.timeline;
+  if (!tl) return;
+  let found = -1;
+  tl.motions.forEach((m, i) => { if (m.node === node.name && (m.location || null) === (node.location || null)) found = i; });
+  selectMotion(found);
+}
 
 // ------------------------------------------------------------------ timeline
 function setTimeline(replay) {
@@ -85,6 +155,7 @@ function setTimeline(replay) {
   state.time = 0;
   state.selected = -1;
   $('timeline').hidden = !replay;
+  if (!replay) { $('gantt').hidden = true; $('gantt').textContent = ''; state.gantt = null; }
   renderMotions();
   applyTime(0);
   stage.resize();
@@ -191,10 +262,12 @@ async function viewTask(taskName) {
   const previewButton = el('button', { type: 'button', textContent: 'plan only (preview)' });
   const summary = el('div', { className: 'banner', textContent: 'compiling…' });
   const treeBox = el('div');
-  side.append(el('h2', { textContent: 'Task' }), picker, el('div', { className: 'row-ctl' }, checkButton, previewButton), summary, treeBox);
+  const tree = treePanel(treeBox);
+  side.append(el('h2', { textContent: 'Task' }), picker, el('div', { className: 'row-ctl' }, checkButton, previewButton), summary,
+    el('h2', {}, 'Tree', tree.toggle), treeBox);
   setTimeline(null);
   if (!name) { summary.textContent = 'no tasks'; return; }
-  const tree = new TreeView(treeBox);
+  tree.start();
   const compiled = await post('/viewer/tasks/tree', { task: name });
   tree.show(compiled.tree);
   summary.textContent = `cell ${compiled.cell}`;
@@ -235,15 +308,20 @@ async function viewRun(runId) {
   const cancel = el('button', { type: 'button', textContent: 'cancel run', hidden: true });
   const treeBox = el('div', { id: 'run-tree' });
   const log = el('div', { id: 'log' });
-  side.append(el('h2', { textContent: `Run ${runId}` }), summary, cancel, el('h2', { textContent: 'Tree' }), treeBox,
+  const tree = treePanel(treeBox);
+  side.append(el('h2', { textContent: `Run ${runId}` }), summary, cancel, el('h2', {}, 'Tree', tree.toggle), treeBox,
     el('h2', { textContent: 'Events' }), log);
   cancel.addEventListener('click', () => guarded(async () => { await post(`/runs/${runId}/cancel`); }));
   const detail = await get(`/runs/${encodeURIComponent(runId)}`);
-  const tree = new TreeView(treeBox);
-  debug.tree = tree;
+  debug.tree = tree.list;
+  tree.start();
   let compiled = null;
   try { compiled = (await get(`/viewer/runs/${encodeURIComponent(runId)}/tree`)).tree; } catch (e) { compiled = null; }
-  await showCell(detail.cell);
+  const cell = await showCell(detail.cell);
+  const gantt = new Gantt($('gantt'), cell, (seq) => {
+    if (state.timeline) selectMotion(state.timeline.motions.findIndex((m) => m.seq === seq));
+  });
+  debug.gantt = gantt;
   const describe = (status, error) => {
     summary.textContent = `${detail.task} on ${detail.cell} (${detail.backend}): ${status}` + (error ? ` — ${error}` : '');
     summary.className = `banner status-${status}`;
@@ -259,21 +337,27 @@ async function viewRun(runId) {
   };
   if (detail.status !== 'running') {
     const replay = await get(`/viewer/runs/${encodeURIComponent(runId)}/replay`);
-    if (compiled) tree.show(compiled); else tree.showFromEvents(detail.task, detail.events);
-    detail.events.forEach((e) => { tree.apply(e); logLine(e); });
-    debug.successOrder = tree.successOrder;
+    const events = await allEvents(runId, detail);
+    if (compiled) tree.show(compiled); else tree.showFromEvents(detail.task, events);
+    events.forEach((e) => { tree.apply(e); logLine(e); });
+    debug.successOrder = tree.list.successOrder;
     describe(detail.status, detail.error);
     setTimeline(replay);
+    state.gantt = gantt;
+    events.forEach((e) => gantt.apply(e));
+    gantt.render();
     applyTime(replay.motions.length ? state.timeline.duration : 0);
     return;
   }
   // live: the tree and the timeline grow from the event stream
   if (compiled) tree.show(compiled); else tree.showFromEvents(detail.task, []);
-  debug.successOrder = tree.successOrder;
+  debug.successOrder = tree.list.successOrder;
+  debug.runLive = true;
   describe('running');
   cancel.hidden = false;
   const replay = { motions: [], first_scene: null, final_scene: null };
   setTimeline(replay);
+  state.gantt = gantt;
   const controller = new AbortController();
   state.live = controller;
   state.follow = $('follow').checked;
@@ -281,6 +365,7 @@ async function viewRun(runId) {
   const motions = replay.motions;
   await followEvents(runId, (e) => {
     tree.apply(e);
+    if (state.gantt === gantt) gantt.apply(e);
     logLine(e);
     if (e.kind === 'run_started') replay.first_scene = e.data.scene || null;
     else if (e.kind === 'motion') motions.push({ seq: e.seq, node: e.node, location: e.location, time: e.time, trajectory: e.data.trajectory, scene: e.data.scene, executed: null });
@@ -308,6 +393,19 @@ async function viewRun(runId) {
     }
   }, controller.signal);
   if (state.live === controller) state.live = null;
+}
+
+// A recorded run's events, every page of them (GET /runs/{id} answers up to 1000).
+async function allEvents(runId, detail) {
+  const events = [...detail.events];
+  let more = detail.events_more;
+  while (more && events.length) {
+    const since = events[events.length - 1].seq;
+    const page = await get(`/runs/${encodeURIComponent(runId)}?since=${since}&limit=10000`);
+    events.push(...page.events);
+    more = page.events_more && page.events.length > 0;
+  }
+  return events;
 }
 
 async function viewRuns() {
@@ -349,6 +447,7 @@ async function viewRuns() {
 async function route() {
   if (state.live) { state.live.abort(); state.live = null; }
   if (state.panel) { state.panel.close(); state.panel = null; }
+  closeGraph();
   setPlaying(false);
   const [, view = 'cell', arg = ''] = location.hash.split('/');
   state.view = view;

@@ -7,6 +7,8 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
 import { ColladaLoader } from 'three/examples/jsm/loaders/ColladaLoader.js';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
+import { ConvexGeometry } from 'three/examples/jsm/geometries/ConvexGeometry.js';
+import { CSS2DObject, CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import URDFLoader from 'urdf-loader';
 import { getBinary } from './api.js';
 
@@ -19,6 +21,10 @@ export class CellView {
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.setClearColor(0xf2f4f7);
     container.appendChild(this.renderer.domElement);
+    // Frame labels: HTML over the canvas, placed by the same camera.
+    this.labelRenderer = new CSS2DRenderer();
+    this.labelRenderer.domElement.className = 'frame-labels';
+    container.appendChild(this.labelRenderer.domElement);
     this.scene = new THREE.Scene();
     this.root = new THREE.Group();
     this.root.rotation.x = -Math.PI / 2; // z-up to y-up
@@ -35,6 +41,12 @@ export class CellView {
     this.controls.target.set(0, 0.8, 0);
     this.controls.update();
     this.controls.addEventListener('change', () => this.render());
+    this.controls.addEventListener('start', () => { this.userMoved = true; });
+    this.userMoved = false;
+    this.collision = null;       // the planner's geometry, drawn under each link
+    this.showCollision = false;
+    this.labels = [];
+    this.showLabels = false;
     this.robot = null;
     this.objects = new Map();
     this.frames = [];
@@ -49,6 +61,7 @@ export class CellView {
     const w = this.container.clientWidth || 640;
     const h = this.container.clientHeight || 480;
     this.renderer.setSize(w, h, false);
+    this.labelRenderer.setSize(w, h);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
     this.render();
@@ -60,6 +73,7 @@ export class CellView {
     requestAnimationFrame(() => {
       this._pending = false;
       this.renderer.render(this.scene, this.camera);
+      this.labelRenderer.render(this.scene, this.camera);
       if (this.robot && this.onFirstFrame) {
         const cb = this.onFirstFrame;
         this.onFirstFrame = null;
@@ -74,7 +88,9 @@ export class CellView {
     this.clear();
     this.cell = cell;
     const manager = new THREE.LoadingManager();
-    manager.onLoad = () => this.render();
+    // Meshes in: fit the view to the robots as drawn, unless the user has moved it.
+    manager.onLoad = () => { if (!this.userMoved) this.fitView(); this.render(); };
+    this.userMoved = false;
     const loader = new URDFLoader(manager);
     loader.workingPath = '/viewer/';
     loader.loadMeshCb = (path, mgr, done) => loadMesh(path, mgr, done, () => this.render());
@@ -84,7 +100,130 @@ export class CellView {
     for (const [name, value] of Object.entries(cell.start || {})) this.setJoint(name, value);
     this.setObjects(cell.objects || []);
     this.buildFrames();
-    this.frameRobots();
+    this.buildLabels();
+    this.frameRobots();  // the viewing direction, then the robots' box fitted
+    this.fitView();
+  }
+
+  // Fit the view to the robots' bounding box (their drawn links, the meshes once
+  // loaded; the links that hang below the world's fixed joints, not a floor or table of
+  // the merged URDF), from the current viewing direction.
+  fitView() {
+    if (!this.robot) return;
+    this.scene.updateMatrixWorld(true);
+    const box = this.robotBox();
+    if (box.isEmpty()) { this.frameRobots(); return; }
+    const sphere = box.getBoundingSphere(new THREE.Sphere());
+    const radius = Math.max(sphere.radius, 0.05);
+    const fov = THREE.MathUtils.degToRad(this.camera.fov);
+    const fit = Math.min(fov, 2 * Math.atan(Math.tan(fov / 2) * this.camera.aspect));
+    const distance = (1.3 * radius) / Math.sin(fit / 2);
+    const dir = this.camera.position.clone().sub(this.controls.target);
+    if (dir.lengthSq() < 1e-9) dir.set(0.35, 0.55, 1);
+    dir.normalize();
+    this.controls.target.copy(sphere.center);
+    this.camera.position.copy(sphere.center).addScaledVector(dir, distance);
+    this.controls.minDistance = radius * 0.2;
+    this.controls.maxDistance = radius * 20;
+    this.camera.near = Math.max(0.001, distance / 100);
+    this.camera.far = distance * 50;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.render();
+  }
+
+  // The box of every link of a robot (from the link each first moving joint hangs on,
+  // down): visuals where they are loaded, link origins always.
+  robotBox() {
+    const box = new THREE.Box3();
+    const at = new THREE.Vector3();
+    const seen = new Set();
+    const add = (link) => {
+      if (seen.has(link)) return;
+      seen.add(link);
+      box.expandByPoint(link.getWorldPosition(at));
+      for (const child of link.children) {
+        if (child.isURDFVisual) box.expandByObject(child);
+      }
+    };
+    for (const joint of Object.values(this.robot.joints)) {
+      if (joint.jointType === 'fixed') continue;
+      if (joint.parent && joint.parent.isURDFLink) add(joint.parent);
+      joint.traverse((o) => { if (o.isURDFLink) add(o); });
+    }
+    return box;
+  }
+
+  // The planner's collision geometry (GET /viewer/cells/{id}/collision): each shape
+  // under its link, translucent, drawn when the toggle is on.
+  setCollision(data) {
+    if (this.collision) for (const g of this.collision) g.removeFromParent();
+    this.collision = [];
+    if (!this.robot || !data) return;
+    const material = new THREE.MeshStandardMaterial({ color: 0xe0702a, transparent: true, opacity: 0.45,
+      depthWrite: false, roughness: 0.8 });
+    for (const entry of data.links) {
+      const link = this.robot.links[entry.link];
+      if (!link) continue;
+      for (const spec of entry.shapes) {
+        const mesh = collisionMesh(spec, material);
+        if (!mesh) continue;
+        const holder = new THREE.Group();
+        holder.name = 'collision:' + entry.link;
+        holder.userData.kind = entry.kind;
+        holder.position.set(...spec.pose.xyz);
+        holder.quaternion.set(...spec.pose.quat);
+        holder.add(mesh);
+        holder.visible = this.showCollision;
+        link.add(holder);
+        this.collision.push(holder);
+      }
+    }
+    this.render();
+  }
+
+  setCollisionVisible(on) {
+    this.showCollision = on;
+    for (const g of this.collision || []) g.visible = on;
+    this.render();
+  }
+
+  // Labelled frames: each group's tool frame and each robot's base (the links under the
+  // world), bigger axes and their names.
+  buildLabels() {
+    for (const l of this.labels) l.removeFromParent();
+    this.labels = [];
+    if (!this.robot || !this.cell) return;
+    const named = new Map();
+    for (const joint of Object.values(this.robot.joints)) {
+      if (joint.parent !== this.robot) continue;
+      for (const child of joint.children) if (child.isURDFLink) named.set(child.urdfName, 'base');
+    }
+    for (const group of this.cell.groups || []) {
+      if (group.tip_link) named.set(group.tip_link, `tool (${group.name})`);
+    }
+    for (const [name, role] of named) {
+      const link = this.robot.links[name];
+      if (!link) continue;
+      const holder = new THREE.Group();
+      holder.name = 'label:' + name;
+      holder.add(new THREE.AxesHelper(0.08));
+      const text = document.createElement('div');
+      text.className = 'frame-label';
+      text.textContent = `${name} · ${role}`;
+      const tag = new CSS2DObject(text);
+      tag.position.set(0, 0, 0.02);
+      holder.add(tag);
+      holder.visible = this.showLabels;
+      holder.traverse((o) => { o.visible = this.showLabels; });
+      link.add(holder);
+      this.labels.push(holder);
+    }
+  }
+
+  setLabels(on) {
+    this.showLabels = on;
+    for (const l of this.labels) l.traverse((o) => { o.visible = on; });
     this.render();
   }
 
@@ -127,6 +266,9 @@ export class CellView {
 
   clear() {
     if (this.robot) this.root.remove(this.robot);
+    for (const l of this.labels) l.traverse((o) => { if (o.element) o.element.remove(); });
+    this.labels = [];
+    this.collision = null;
     for (const obj of this.objects.values()) obj.removeFromParent();
     this.objects.clear();
     this.frames = [];
@@ -222,6 +364,33 @@ function makeObject(spec) {
   group.name = 'object:' + spec.name;
   group.add(mesh);
   return group;
+}
+
+// A shape of the collision geometry as a three.js mesh (cylinders and capsules along z).
+function collisionMesh(spec, material) {
+  let geometry;
+  if (spec.type === 'box') {
+    geometry = new THREE.BoxGeometry(...spec.size);
+    if (spec.centre) geometry.translate(...spec.centre);
+  } else if (spec.type === 'sphere') geometry = new THREE.SphereGeometry(spec.radius, 20, 14);
+  else if (spec.type === 'cylinder' || spec.type === 'capsule') {
+    geometry = spec.type === 'cylinder' ? new THREE.CylinderGeometry(spec.radius, spec.radius, spec.length, 24)
+      : new THREE.CapsuleGeometry(spec.radius, spec.length, 6, 16);
+    geometry.rotateX(Math.PI / 2);
+  } else if (spec.type === 'hull') {
+    const points = [];
+    for (let i = 0; i + 2 < spec.points.length; i += 3) points.push(new THREE.Vector3(spec.points[i], spec.points[i + 1], spec.points[i + 2]));
+    if (points.length < 4) return null;
+    geometry = new ConvexGeometry(points);
+  } else if (spec.type === 'mesh') {
+    geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(spec.vertices, 3));
+    geometry.setIndex(spec.triangles);
+    geometry.computeVertexNormals();
+  } else return null;
+  const mesh = new THREE.Mesh(geometry, material);
+  mesh.renderOrder = 2;
+  return mesh;
 }
 
 export function loadMesh(path, manager, done, redraw) {

@@ -136,7 +136,8 @@ export class TreeView {
   }
 }
 
-function rollUp(entry) {
+// A composite's status from its children's ({node, children: [{status}]}).
+export function rollUp(entry) {
   const states = entry.children.map((c) => c.status);
   if (states.includes('RUNNING')) return 'RUNNING';
   if (states.includes('FAILURE') && entry.node.kind !== 'fallback') return 'FAILURE';
