@@ -72,6 +72,11 @@ export class Gantt {
         since: timed ? Number(d.since) : null, until: timed ? Number(d.until) : null,
         message: e.message, arms: null };
       if (!timed && !d.hold) return;
+      if (timed) {  // the span of a hold of this step, now known: it replaces the hold
+        const held = (w) => w.kind === 'hold' && !w.arms && w.node === e.node && w.location === e.location;
+        this.waits = this.waits.filter((w) => !held(w));
+        this.pending = this.pending.filter((w) => !held(w));
+      }
       this.waits.push(wait);
       this.pending.push(wait);
     } else if (e.kind !== 'run_finished') {
