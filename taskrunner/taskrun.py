@@ -163,7 +163,7 @@ class TaskRun:
         from taskrunner.runtime.resume import plan_resume
 
         old = self._runner
-        plan = plan_resume(old.record, old.spec, options)
+        plan = plan_resume(old.record, old.spec, options, same_world=True)
         events = EventLog()
         if on_event is not None:
             events.subscribe(on_event)

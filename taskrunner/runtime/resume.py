@@ -21,8 +21,11 @@ and scene those of the moment the run stopped:
 3. **The world**: the scene is the last checkpoint's (objects, what each arm holds, the
    allowances with their reasons) with the robot's joints as the backend reports them
    (joints moved since: a ``message`` says which, and the next motion is planned from
-   there). Held objects: on mock and sim (kinematic, nothing is dropped) as recorded;
-   elsewhere the operator says, per held object, ``held`` (still in the gripper),
+   there). Held objects: on mock and sim (kinematic, nothing is dropped) as recorded; on
+   a physics backend that ran the stopped run (``same_world``: the same process, its
+   world goes on) where the simulation has them (within :data:`HELD_GAP` of the gripper:
+   still held; else lying where they are); elsewhere the operator says, per held object,
+   ``held`` (still in the gripper),
    ``released`` (no longer: detached where the scene has it) or ``objects`` (lying at a
    pose); a held object nobody vouches for is refused, naming the three options.
 
@@ -46,6 +49,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from py_trees.common import Status
 
+from taskrunner.backends.base import ObjectTracking
 from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.runtime.checkpoint import (
     Checkpoint,
@@ -73,6 +77,7 @@ KINEMATIC = ("mock", "sim")
 """Backends whose world is the scene itself: nothing falls out of a gripper there."""
 
 JOINT_MOVED = 1e-3  # rad or m: a joint further than this from its checkpoint has moved
+HELD_GAP = 0.02  # m: a simulated object this near where its gripper holds it is still held
 
 
 @dataclass(frozen=True)
@@ -107,6 +112,7 @@ class ResumePlan:
     replay: list[Checkpoint]
     world: Checkpoint | None
     stop_joints: dict[str, float]
+    same_world: bool = False
 
     @property
     def run_id(self) -> str:
@@ -199,6 +205,20 @@ class ResumePlan:
             elif self.backend in KINEMATIC:
                 notes.append(f"{name!r} still held by {arm!r} (the {self.backend} backend "
                              "drops nothing)")
+            elif self.same_world and isinstance(runner.backend, ObjectTracking) \
+                    and name in (seen := runner.backend.object_poses()):
+                gap = float(np.linalg.norm(np.subtract(seen[name].xyz,
+                                                       scene.object_pose(name).xyz)))
+                if gap <= HELD_GAP:
+                    notes.append(f"{name!r} still held by {arm!r} (the simulated world has "
+                                 f"it {1e3 * gap:.0f} mm from where it is held)")
+                    continue
+                scene.detach_object(name)
+                end_lift_off(scene, name)
+                scene.move_object(name, seen[name])
+                notes.append(f"{name!r} no longer held by {arm!r}: the simulated world has it "
+                             f"at {tuple(round(v, 4) for v in seen[name].xyz)}, "
+                             f"{100 * gap:.0f} cm from the gripper")
             else:
                 raise _refuse(record, f"{name!r} was held by {arm!r} when it stopped and "
                               f"the {self.backend} backend cannot tell whether it still is: "
@@ -274,10 +294,11 @@ class _Replayed:
 
 
 # ----------------------------------------------------------------------------- planning
-def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None = None
-                ) -> ResumePlan:
+def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None = None,
+                same_world: bool = False) -> ResumePlan:
     """Read what resuming ``record`` takes, with ``spec`` loaded from its task file with
-    its parameters; refuse what cannot be resumed safely.
+    its parameters; refuse what cannot be resumed safely. ``same_world``: the run resumed
+    on the backend that ran it, whose simulated world (a physics backend's) went on.
 
     Raises:
         InputError: the run succeeded or still runs, it has no checkpoints (recorded
@@ -309,7 +330,8 @@ def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None
         replay.pop()  # the leaf whose failure ended the run runs again
     if options.from_step is not None:
         replay = _until_step(record, replay, options.from_step)
-    return ResumePlan(record, record.backend, options, replay, world, _stop_joints(record))
+    return ResumePlan(record, record.backend, options, replay, world, _stop_joints(record),
+                      same_world)
 
 
 def _until_step(record: RunRecord, points: list[Checkpoint], step: str) -> list[Checkpoint]:

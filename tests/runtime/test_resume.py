@@ -237,3 +237,57 @@ def test_an_object_pose_is_three_or_seven_numbers():
     assert name == "cube" and pose.xyz == (0.1, 0.2, 0.3) and pose.quat == (0, 0, 1, 0)
     with pytest.raises(InputError, match=r"'--object' must be NAME=X,Y,Z .*\(got 'cube=1,2'\)"):
         parse_object_pose("cube=1,2")
+
+
+class _SimulatedWorld(SimBackend):
+    """A sim that reports objects as a physics backend does (ObjectTracking): where the
+    test puts them."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.poses = {}
+
+    def bind_scene(self, scene, materials=None):
+        pass
+
+    def object_poses(self):
+        return dict(self.poses)
+
+    def physics_report(self):
+        return None
+
+
+@pytest.mark.parametrize("dropped", [False, True])
+def test_on_a_physics_backend_that_went_on_the_simulated_world_says_what_is_held(
+        held_record, dropped):
+    record = load_record(held_record)
+    record.backend = "mujoco"
+    spec = load_task(record.task_file, record.parameters)
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    plan = plan_resume(record, spec, same_world=True)
+    backend = _SimulatedWorld(names, dict(zip(names, plan.start_state(cell))),
+                              SimOptions(speed=SPEED))
+    vouched = plan_resume(record, spec, ResumeOptions(held=("cube",)))
+    probe, probe_backend = sim_runner(Path(record.task_file), held_record.parent, vouched)
+    probe_backend.close()
+    held_at = probe.scene.object_pose("cube")  # where the gripper holds it
+    on_table = parse_object_pose("cube=0.19,0.04,0.7625")[1]
+    backend.poses = {"cube": on_table if dropped else held_at}
+    try:
+        runner = Runner(spec, cell, backend, InProcessPlanner(), RunOptions(backend_name="mujoco"),
+                        resume=plan)
+    finally:
+        backend.close()
+    cube = runner.scene.object("cube")
+    if dropped:
+        assert cube.attached_to is None and cube.pose.xyz == pytest.approx(on_table.xyz)
+        assert any("no longer held by 'arm': the simulated world has it at (0.19, 0.04"
+                   in n for n in runner.resume_notes)
+    else:
+        assert cube.attached_to is not None
+        assert any("still held by 'arm' (the simulated world has it 0 mm" in n
+                   for n in runner.resume_notes)
+    with pytest.raises(InputError, match="the mujoco backend cannot tell whether it still is"):
+        sim_runner(Path(record.task_file), held_record.parent,
+                   plan_resume(record, spec))  # a new process: a new simulated world

@@ -201,7 +201,8 @@ async def resume_run(run_id: str, body: RunResume, response: Response,
             task, record.task_text if task is None else None, record.parameters)
     cell = (cells.path_of(record.cell) if "/" not in record.cell else Path(record.cell))
     spec = spec.model_copy(update={"cell": cell})
-    plan = plan_resume(record, spec, options)
+    # A run of this server process: its cell's backend (a physics world) went on since.
+    plan = plan_resume(record, spec, options, same_world=manager.live(run_id) is not None)
     live = await run_in_threadpool(
         lambda: manager.start(spec, record.backend, task_text=text, task_file=loaded_file,
                               resume=plan))
