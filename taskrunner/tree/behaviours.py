@@ -34,7 +34,7 @@ from taskrunner.tree.choice import choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
-from taskrunner.tree.schedule import LATE, Admission, Blocked, LaneKey
+from taskrunner.tree.schedule import LAG, LATE, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
@@ -124,10 +124,13 @@ def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
 
 
 LEAD = 0.1
-"""s of task time ahead of now a motion is admitted on a backend that plays time; one the
-tree reaches too late for that start is admitted again from then, with no lead, and sent
-when the tree next reaches it (late by about a tick at most: the ``motion`` event's
-``sent``, which the record's verifier replays)."""
+"""s of task time ahead of now a motion is admitted on a backend that plays time. One the
+tree reaches more than :data:`~taskrunner.tree.schedule.LATE` after that start (or after
+another arm's motion it relied on was taken back, cut or retimed) is admitted again,
+verified from then, with no lead, every time; one that still starts late (the clock moved
+while it was verified or sent) is verified at its real start as soon as it is sent, and
+stopped at once where it meets another arm there. The ``motion`` event's ``sent`` is its
+real start, which the record's verifier replays."""
 
 
 def _plays_time(backend: object) -> bool:
@@ -158,6 +161,8 @@ class _Executes(TaskLeaf):
         # Not admitted yet: another branch's arm rests in its way (trajectory, revision seen).
         self.held: tuple[JointTrajectory, int] | None = None
         self.lead = LEAD  # s of task time a motion is admitted ahead of now (timed backends)
+        self.fresh = False  # admitted in this tick: sent even if the clock moved meanwhile
+        self.since: float | None = None  # s: verify from here (its arm rested late since)
 
     def start(self) -> None:
         self.handle = None
@@ -166,6 +171,8 @@ class _Executes(TaskLeaf):
         self.pending = None
         self.held = None
         self.lead = LEAD
+        self.fresh = False
+        self.since = None
 
     def execute_path(self, path: JointPath, planning_time: float,
                      trajectory: JointTrajectory | None = None) -> Status:
@@ -194,8 +201,20 @@ class _Executes(TaskLeaf):
         timed = _plays_time(self.ctx.backend)
         # Where time passes, the motion is admitted a little ahead (the verification and
         # the next tick take some): it is held until then, then sent on time.
-        now = self.ctx.clock.now() + self.lead if timed else 0.0
-        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location, now)
+        clock = self.ctx.clock.now() if timed else 0.0
+        late = schedule.overdue(lane, clock) if timed else None
+        if late is not None:
+            # Another arm has not started a motion it was due to: it rests where the
+            # schedule has it moving. Held until its branch has admitted it again.
+            if self.held is None:
+                self.ctx.events.emit("wait", f"{self.location or 'this motion'} holds: "
+                                     f"{late.location or 'another branch'} is late",
+                                     node=self.name, location=self.location, hold=True,
+                                     other=late.location, late=True)
+            self.held = (trajectory, schedule.changes)
+            return Status.RUNNING
+        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location,
+                               clock + self.lead, since=self.since)
         if isinstance(found, Blocked):
             refusal = schedule.refusal(lane, found, self.location)
             if refusal is not None:
@@ -208,10 +227,11 @@ class _Executes(TaskLeaf):
                                      at=round(found.conflict.time, 6),
                                      distance=round(found.conflict.distance, 6))
             schedule.holding[lane] = found.lane
-            self.held = (trajectory, schedule.revision)
+            self.held = (trajectory, schedule.changes)
             return Status.RUNNING
         schedule.holding.pop(lane, None)
         self.held = None
+        self.since = None
         admission = found
         self.admission = admission
         for wait in admission.waits:
@@ -223,28 +243,75 @@ class _Executes(TaskLeaf):
                 distance=round(conflict.distance, 6))
         if timed:
             self.pending = trajectory  # sent at its start (admitted again if late)
+            self.fresh = True
             return self.poll_execution()
         return self._send(trajectory)
 
     def _send(self, trajectory: JointTrajectory) -> Status:
         self.pending = None
+        timed = _plays_time(self.ctx.backend)
+        before = self.ctx.clock.now() if timed else 0.0
         try:
-            self.handle = self.ctx.backend.execute(trajectory)
+            handle = self.ctx.backend.execute(trajectory)
         except BackendError as exc:  # refused, or stopped on a fault since the last motion
             return self.fail(f"execution failed: {exc}", kind="execution")
-        self.ctx.clock.track(self.handle)
+        self.handle = handle
+        started = self.ctx.clock.track(handle, since=before)
         snapshot = self.ctx.scene.snapshot()
         start = self.admission.start if self.admission is not None else 0.0
+        sent = started if timed else start
+        conflict = None
+        if timed and self.admission is not None:
+            # Where it really started: verified there if that is not where it was admitted.
+            self.admission, conflict = self.ctx.schedule.confirm(
+                self.ctx.scene, self.admission, sent, lambda: float(handle.progress))
+        shown = trajectory
+        if conflict is not None:  # it meets another arm from there: stopped at once
+            handle.cancel()
+            shown = self._cut_short()
         lane = lane_of(self)
-        self.ctx.executed.append(ExecutedMotion(self.name, self.location, trajectory, snapshot,
+        self.ctx.executed.append(ExecutedMotion(self.name, self.location, shown, snapshot,
                                                 lane, start))
-        sent = self.ctx.clock.now() if _plays_time(self.ctx.backend) else start
         verified = self.admission.seconds if self.admission is not None else 0.0
-        self.ctx.events.emit("motion", f"{trajectory.duration:.2f} s", node=self.name,
+        self.ctx.events.emit("motion", f"{shown.duration:.2f} s", node=self.name,
                              location=self.location, start=round(start, 6),
                              sent=round(sent, 6), verify_time=round(verified, 6),
-                             lane=[list(k) for k in lane], **motion_data(trajectory, snapshot))
+                             lane=[list(k) for k in lane], **motion_data(shown, snapshot))
+        if conflict is not None:
+            return self._go_on(trajectory, f"started {sent - start:.3f} s late, it would "
+                               f"meet another arm: {conflict.describe()}")
         return Status.RUNNING
+
+    def _cut_short(self) -> JointTrajectory:
+        """The motion was cancelled: the scene and the schedule take the arm where it
+        stopped; returns the trajectory up to there (what really moved)."""
+        assert self.handle is not None and self.trajectory is not None
+        self.ctx.sync_from_backend()
+        progress = min(float(self.handle.progress), self.handle.trajectory.duration)
+        self._stopped()
+        return _cut(self.handle.trajectory, progress)
+
+    def _go_on(self, trajectory: JointTrajectory, why: str) -> Status:
+        """The motion was stopped short (stop-and-go): the rest of it, from where the arm
+        stands, is timed from rest and admitted again (held or delayed as the schedule
+        says); a "wait" event says why."""
+        assert self.handle is not None
+        progress = float(self.handle.progress)
+        self.ctx.events.emit("wait", f"{self.location or 'this motion'} stops {progress:.2f} s "
+                             f"into its trajectory: {why}", node=self.name,
+                             location=self.location, hold=True, stopped=round(progress, 6))
+        self.handle = None
+        self.admission = None
+        self.lead = 0.0
+        self.since = self.ctx.clock.now()
+        rest = _rest(trajectory, progress)
+        if rest is None:
+            return Status.SUCCESS
+        try:
+            timed = parameterize_path(self.ctx.scene.robot, rest, self.timing)
+            return self._admit(timed)
+        except TaskrunnerError as exc:
+            return self.fail(str(exc))
 
     @property
     def moving(self) -> bool:
@@ -263,11 +330,11 @@ class _Executes(TaskLeaf):
         return {"executed": executed}
 
     def poll_execution(self) -> Status:
+        schedule = self.ctx.schedule
         if self.held is not None:
             trajectory, seen = self.held
-            schedule = self.ctx.schedule
             blocker = schedule.holding.get(lane_of(self))
-            if schedule.revision == seen and (blocker is None or schedule.lane_running(blocker)):
+            if schedule.changes == seen and (blocker is None or schedule.lane_running(blocker)):
                 return Status.RUNNING  # nothing has moved on yet
             try:
                 return self._admit(trajectory)
@@ -275,13 +342,18 @@ class _Executes(TaskLeaf):
                 return self.fail(str(exc))
         if self.pending is not None:
             assert self.admission is not None
+            fresh, self.fresh = self.fresh, False
             now = self.ctx.clock.now()
             if now < self.admission.start:
                 return Status.RUNNING
             try:
-                if now > self.admission.start + LATE and self.lead > 0.0:
-                    # Verified for another start: verified again from now, sent at once.
-                    self.ctx.schedule.withdraw(self.admission)
+                if not fresh and (now > self.admission.start + LATE
+                                  or schedule.stale(self.admission)
+                                  or schedule.overdue(lane_of(self), now) is not None):
+                    # Verified for another start, or against a promise since broken:
+                    # verified again from now (its arm rested here since its start).
+                    self.since = min(self.admission.start, now)
+                    schedule.withdraw(self.admission)
                     trajectory, self.pending = self.pending, None
                     self.lead = 0.0
                     return self._admit(trajectory)
@@ -291,7 +363,7 @@ class _Executes(TaskLeaf):
         assert self.handle is not None
         if not self.handle.done():
             self.ctx.sync_from_backend()
-            return Status.RUNNING
+            return self._monitor()
         self.ctx.sync_from_backend(finished=(self.name, self.location))
         self.ctx.clock.update()
         try:
@@ -300,6 +372,40 @@ class _Executes(TaskLeaf):
             self._stopped()
             return self.fail(f"execution failed: {exc}", kind="execution")
         return Status.SUCCESS
+
+    def _monitor(self) -> Status:
+        """While the motion runs (stop-and-go): an arm further behind its schedule than
+        :data:`~taskrunner.tree.schedule.LAG` is put where it really is; a motion
+        verified against a promise since broken (an arm retimed, a motion taken back or
+        cut) is verified again from now, and stopped where it would meet another arm."""
+        schedule, admission, handle = self.ctx.schedule, self.admission, self.handle
+        if admission is None or admission.entry is None or handle is None \
+                or not _plays_time(self.ctx.backend):
+            return Status.RUNNING
+        now = self.ctx.clock.now()
+        entry = admission.entry
+        behind = min(now, entry.motion.end) - entry.motion.start - float(handle.progress)
+        if behind > LAG and handle.progress < entry.motion.trajectory.duration:
+            self.admission = admission = schedule.retime(admission, now - float(handle.progress))
+            self.ctx.events.emit("message", f"{self.location or 'this motion'} runs "
+                                 f"{behind:.2f} s behind its schedule: the other arms' "
+                                 f"motions are verified again", node=self.name,
+                                 location=self.location, lag=round(behind, 6))
+        stop = schedule.stops.get(id(admission.entry))
+        if stop is None and schedule.stale(admission):
+            try:
+                self.admission, conflict = schedule.recheck(self.ctx.scene, admission, now)
+            except TaskrunnerError as exc:
+                return self.fail(str(exc), kind="execution")
+            if conflict is not None and conflict.motions[0] is not None:
+                stop = conflict
+        if stop is None:
+            return Status.RUNNING
+        trajectory = handle.trajectory
+        handle.cancel()
+        self._cut_short()
+        return self._go_on(trajectory, f"another arm is not where its schedule had it: "
+                           f"{stop.describe()}")
 
     def abort(self) -> None:
         if self.pending is not None and self.admission is not None:
@@ -633,3 +739,29 @@ class Wait(TaskLeaf):
 
     def update(self) -> Status:
         return Status.SUCCESS if time.monotonic() >= self.until else Status.RUNNING
+
+
+def _cut(trajectory: JointTrajectory, until: float) -> JointTrajectory:
+    """``trajectory`` up to ``until`` s of it, ending there (what a stopped motion moved)."""
+    times, positions = trajectory.times, trajectory.positions
+    keep = times < until
+    end = np.array([np.interp(until, times, positions[:, j]) for j in range(positions.shape[1])])
+    new_times = np.append(times[keep], max(until, 1e-6))
+    rows = np.vstack([positions[keep], end])
+    if len(new_times) < 2:
+        new_times, rows = np.array([0.0, 1e-6]), np.vstack([end, end])
+    zeros = np.zeros_like(rows)
+    return JointTrajectory(trajectory.names, new_times, rows, zeros, zeros)
+
+
+def _rest(trajectory: JointTrajectory, after: float) -> JointPath | None:
+    """The waypoints of ``trajectory`` after ``after`` s of it, from where it was then
+    (None: nothing is left)."""
+    times, positions = trajectory.times, trajectory.positions
+    if after >= float(times[-1]):
+        return None
+    here = np.array([np.interp(after, times, positions[:, j]) for j in range(positions.shape[1])])
+    rows = np.vstack([here, positions[times > after]])
+    if np.max(np.abs(rows[-1] - rows[0])) < 1e-9 and len(rows) <= 2:
+        return None
+    return JointPath(trajectory.names, rows)

@@ -40,11 +40,23 @@ class TaskClock:
         self._motions: dict[int, tuple[ExecutionHandle, float]] = {}  # id -> (handle, progress)
         self._lock = threading.Lock()
 
-    def track(self, handle: ExecutionHandle) -> None:
-        """Count ``handle``'s motion from its first sample on (call right after execute)."""
+    def track(self, handle: ExecutionHandle, since: float | None = None) -> float:
+        """Count ``handle``'s motion from its first sample on (call right after execute);
+        returns when it started on this clock (s).
+
+        A backend with a thread of its own may have played the motion on before
+        ``execute`` returned (a loaded machine, a fast simulator): that progress is counted
+        once, as time since ``since`` (the clock's reading just before ``execute``;
+        default its last reading), not again after, so every motion's start and end keep
+        their place against the others' on this clock.
+        """
         with self._lock:
+            before = self._now if since is None else since
             self._advance()
-            self._motions[id(handle)] = (handle, 0.0)
+            progress = float(handle.progress)
+            self._now = max(self._now, before + progress)
+            self._motions[id(handle)] = (handle, progress)
+            return self._now - progress
 
     def now(self) -> float:
         """Task time (s) since the clock was made."""

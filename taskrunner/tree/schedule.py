@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -60,7 +60,7 @@ from taskrunner.errors import InvalidStateError, ScheduleConflictError
 from taskrunner.scene import Scene
 from taskrunner.types import JointTrajectory
 
-__all__ = ["CLEARANCE", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "Wait",
+__all__ = ["CLEARANCE", "LAG", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "Wait",
            "concurrent"]
 
 CLEARANCE = 0.005
@@ -72,6 +72,12 @@ well under a millimetre on these arms)."""
 LATE = 0.005
 """s of task time: a motion sent later than this after its admitted start is admitted
 again (a tick late on a fast simulator)."""
+
+LAG = 0.05
+"""s of task time: an arm running further behind its schedule than this (its backend's
+progress against the run's clock) is put where it really is on the schedule, and every
+motion verified against where it should have been is verified again: held, or stopped
+where it is running, when it would now meet it (stop-and-go)."""
 
 LaneKey = tuple[tuple[int, int], ...]
 """A lane: ``(parallel instance, branch index)`` pairs from the tree's root."""
@@ -90,11 +96,23 @@ def concurrent(a: LaneKey, b: LaneKey) -> bool:
 
 @dataclass(frozen=True)
 class Committed:
-    """A motion on the schedule: its lane, timing, and the step it is of."""
+    """A motion on the schedule: its lane, timing, and the step it is of.
+
+    Attributes:
+        sent: it was sent to the backend, at ``motion.start`` (its real start).
+        seen: the schedule's :attr:`~MotionSchedule.retractions` when it was verified:
+            a motion of another lane taken back or stopped since may have been what kept
+            it clear, so it is verified again before it is sent.
+        progress: s of its trajectory the backend has played (once sent): how far
+            behind its schedule the arm runs (:meth:`MotionSchedule.lagging`).
+    """
 
     lane: LaneKey
     motion: TimedMotion
     location: str | None
+    sent: bool = False
+    seen: int = 0
+    progress: Callable[[], float] | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -167,6 +185,13 @@ class MotionSchedule:
     floors: dict[LaneKey, float] = field(default_factory=dict)
     """s: the earliest start of a lane's (and its inner lanes') next motions, set where a
     step of it waited for another branch's step."""
+    retractions: int = 0
+    """How many committed motions were taken back (:meth:`withdraw`) or cut short
+    (:meth:`stop`, :meth:`confirm`): promises other motions may have relied on."""
+    stops: dict[int, Conflict] = field(default_factory=dict)
+    """Motions asked to stop (by ``id`` of their entry), and the conflict why: a late arm
+    rests where a running motion was verified to pass after it had gone (stop-and-go)."""
+    _changes: int = 0
     _instances: int = 0
     _branches: dict[int, Callable[[int], bool]] = field(default_factory=dict)
 
@@ -180,8 +205,42 @@ class MotionSchedule:
 
     @property
     def revision(self) -> int:
-        """How many motions were committed: a held motion is admitted again when it grows."""
+        """How many motions were committed."""
         return len(self.committed)
+
+    @property
+    def changes(self) -> int:
+        """How many times the schedule changed (a motion committed, taken back, cut or
+        sent late): a held motion is admitted again when it grows."""
+        return self._changes
+
+    def overdue(self, lane: LaneKey, now: float) -> Committed | None:
+        """A motion of a lane concurrent with ``lane`` due more than :data:`LATE` before
+        ``now`` (s) and not sent: its arm rests where the schedule has it moving."""
+        late = [c for c in self.committed if concurrent(c.lane, lane) and not c.sent
+                and c.motion.start + LATE < now]
+        return min(late, key=lambda c: c.motion.start) if late else None
+
+    def lagging(self, lane: LaneKey, now: float, tolerance: float) -> tuple[Committed, float] | None:
+        """A sent motion of a lane concurrent with ``lane`` whose arm runs more than
+        ``tolerance`` s behind its schedule at ``now`` (s), and by how much."""
+        worst: tuple[Committed, float] | None = None
+        for c in self.committed:
+            if not (c.sent and c.progress is not None and concurrent(c.lane, lane)):
+                continue
+            due = min(now, c.motion.end) - c.motion.start
+            if due <= 0.0:
+                continue
+            behind = due - float(c.progress())
+            if behind > tolerance and (worst is None or behind > worst[1]):
+                worst = (c, behind)
+        return worst
+
+    def stale(self, admission: Admission) -> bool:
+        """Whether a motion admitted but not sent must be verified again: a motion of
+        another lane was taken back or cut since (it may have kept this one clear)."""
+        entry = admission.entry
+        return entry is not None and entry.seen != self.retractions
 
     def lane_running(self, lane: LaneKey) -> bool:
         """Whether the branch ``lane`` has not ended (it may commit more motions)."""
@@ -231,13 +290,17 @@ class MotionSchedule:
         self.floors[lane] = max(self.floors.get(lane, 0.0), at)
 
     def admit(self, scene: Scene, lane: LaneKey, trajectory: JointTrajectory,
-              location: str | None, now: float = 0.0) -> Admission | Blocked:
+              location: str | None, now: float = 0.0,
+              since: float | None = None) -> Admission | Blocked:
         """Put a motion of ``lane`` on the schedule, at the earliest time it keeps the
         clearance from every concurrent lane (module text), and commit it.
 
         Args:
             scene: the bodies as they are now (the motion's arm at its start).
             now: the earliest start the backend allows (s; 0 for one that plays no time).
+            since: s, verify from here (default: the start): where a motion is admitted
+                again after it was late, its arm rests at its start from now until the
+                new start, and other arms may have been promised that place by then.
 
         Returns:
             The admission (committed), or :class:`Blocked` (nothing committed) when the
@@ -260,8 +323,9 @@ class MotionSchedule:
             before = tuple(c.motion for c in self.committed if c.lane == lane)
             lanes = [Lane("this motion", (*before, mine))] + _lanes(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
+            begin = start if since is None else min(since, start)
             try:
-                found = verify_lanes(scene, lanes, (start, horizon), options)
+                found = verify_lanes(scene, lanes, (begin, horizon), options)
             except InvalidStateError as exc:
                 raise ScheduleConflictError(f"cannot run beside the other branches: "
                                             f"{exc}") from None
@@ -271,6 +335,15 @@ class MotionSchedule:
             if conflict is None:
                 least = found.min_distance
                 break
+            if conflict.time < start and conflict.motions[0] is None:
+                # The arm resting, late, where another's running motion was promised the
+                # place: waiting longer cannot help; that motion has to stop (stop-and-go).
+                runner = _blocking(others, conflict)
+                if runner is not None and runner.sent:
+                    self.stops[id(runner)] = conflict
+                    self._changes += 1
+                last = runner or _last(others, conflict)
+                return Blocked(conflict, last.lane, last.location)
             blocking = _blocking(others, conflict)
             if blocking is None:
                 last = _last(others, conflict)
@@ -280,9 +353,80 @@ class MotionSchedule:
         else:
             raise ScheduleConflictError(f"still meets another branch's arm after "
                                         f"{len(waits)} waits")
-        entry = Committed(lane, TimedMotion(trajectory, start, location), location)
+        entry = Committed(lane, TimedMotion(trajectory, start, location), location,
+                          seen=self.retractions)
         self.committed.append(entry)
+        self._changes += 1
         return Admission(start, tuple(waits), queries, seconds, least, entry)
+
+    def confirm(self, scene: Scene, admission: Admission, at: float,
+                progress: Callable[[], float] | None = None
+                ) -> tuple[Admission, Conflict | None]:
+        """The admitted motion was sent, and started at ``at`` (s, on the run's clock).
+
+        Within :data:`LATE` of its admitted start it is on time. Later, it was verified
+        for another start: it is verified again where it really is (its arm resting at
+        its start until ``at``, then moving) against the other lanes' committed motions.
+
+        Args:
+            progress: s of its trajectory the backend has played, when asked.
+
+        Returns:
+            The admission as sent (its entry at its real start), and the conflict it
+            meets there (None: clear): the caller then stops it at once (:meth:`stop`).
+        """
+        entry = admission.entry
+        assert entry is not None
+        sent = Committed(entry.lane, TimedMotion(entry.motion.trajectory, at, entry.location),
+                         entry.location, sent=True, seen=entry.seen, progress=progress)
+        conflict = None
+        if at - admission.start > LATE:
+            others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
+            if others:
+                before = tuple(c.motion for c in self.committed
+                               if c.lane == entry.lane and c is not entry)
+                lanes = [Lane("this motion", (*before, sent.motion))] + _lanes(others)
+                horizon = max([sent.motion.end] + [c.motion.end for c in others])
+                conflict = verify_lanes(scene, lanes, (min(admission.start, at), horizon),
+                                        SpacetimeOptions(clearance=self.clearance)).conflict
+            self.retractions += 1  # its admitted start was a promise others may have used
+        self.committed = [sent if c is entry else c for c in self.committed]
+        self._changes += 1
+        return replace(admission, start=at, entry=sent), conflict
+
+    def retime(self, admission: Admission, start: float) -> Admission:
+        """The sent motion runs behind its schedule (an arm that lags: physics, servos):
+        it is put where it really is, as started at ``start`` (s). The motions verified
+        against where it should have been are verified again (:meth:`recheck`)."""
+        entry = admission.entry
+        assert entry is not None
+        moved = Committed(entry.lane, TimedMotion(entry.motion.trajectory, start,
+                                                  entry.location),
+                          entry.location, entry.sent, entry.seen, entry.progress)
+        self.committed = [moved if c is entry else c for c in self.committed]
+        self.retractions += 1
+        self._changes += 1
+        return replace(admission, start=start, entry=moved)
+
+    def recheck(self, scene: Scene, admission: Admission, now: float
+                ) -> tuple[Admission, Conflict | None]:
+        """Verify a sent, running motion again from ``now`` (s) on, against the other
+        lanes as they are committed now (a motion it relied on was taken back, cut or
+        retimed since): the conflict ahead, None when it stays clear."""
+        entry = admission.entry
+        assert entry is not None
+        fresh = replace(entry, seen=self.retractions)
+        self.committed = [fresh if c is entry else c for c in self.committed]
+        admission = replace(admission, entry=fresh)
+        others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
+        horizon = max([entry.motion.end] + [c.motion.end for c in others])
+        if not others or now >= horizon:
+            return admission, None
+        before = tuple(c.motion for c in self.committed if c.lane == entry.lane)
+        lanes = [Lane("this motion", before)] + _lanes(others)
+        found = verify_lanes(scene, lanes, (now, horizon),
+                             SpacetimeOptions(clearance=self.clearance))
+        return admission, found.conflict
 
     def stop(self, admission: Admission, progress: float) -> None:
         """The admitted motion stopped ``progress`` s into its trajectory (cancelled, or
@@ -292,13 +436,18 @@ class MotionSchedule:
             return
         cut = TimedMotion(_cut(entry.motion.trajectory, max(progress, 0.0)),
                           entry.motion.start, entry.motion.label)
-        self.committed = [Committed(c.lane, cut, c.location) if c is entry else c
-                          for c in self.committed]
+        self.committed = [Committed(c.lane, cut, c.location, c.sent, c.seen) if c is entry
+                          else c for c in self.committed]
+        self.stops.pop(id(entry), None)
+        self.retractions += 1
+        self._changes += 1
 
     def withdraw(self, admission: Admission) -> None:
         """Take an admitted motion off the schedule (it was not sent at its start: it is
         admitted again from when it is)."""
         self.committed = [c for c in self.committed if c is not admission.entry]
+        self.retractions += 1
+        self._changes += 1
 
 
 def _cut(trajectory: JointTrajectory, until: float) -> JointTrajectory:
