@@ -82,6 +82,11 @@ def warm_up_kernels(robot: str | Path | None = None,
     if not ready and on_compile is not None:
         on_compile()
     started = time.perf_counter()
+    if not ready:
+        # Another process compiling them into this cache (a first run's, in the
+        # background): wait for it rather than compile the same kernels beside it.
+        while (pid := compiling_pid()) is not None and pid != os.getpid():
+            time.sleep(0.2)
     # The mesh-only kernel first: the warm-up's mark, once there, covers every kernel.
     _warm_geometry_kernels()
     warm_kernels(scene.path_verifier(), scene.state)

@@ -86,3 +86,31 @@ def test_a_failed_background_compilation_is_logged_and_planning_goes_on_with_coa
     said = [r.getMessage() for r in caplog.records if "background compilation" in r.getMessage()]
     assert len(said) == 1 and "exit code 3" in said[0]
     assert planner.compiled is False and kernels.process is None
+
+
+def test_one_compilation_per_cache_its_process_found_by_its_lock(tmp_path, monkeypatch):
+    import subprocess
+    import sys
+
+    from taskrunner.planning.warmup import compile_in_background, compiling_pid
+
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path))
+    assert compiling_pid() is None
+    # A process holding the cache's lock as the background compilation does.
+    holder = subprocess.Popen(
+        [sys.executable, "-c",
+         "import fcntl, os, sys\n"
+         "handle = open(sys.argv[1], 'a+b')\n"
+         "fcntl.flock(handle, fcntl.LOCK_EX)\n"
+         "handle.truncate(0); handle.write(str(os.getpid()).encode()); handle.flush()\n"
+         "print('held', flush=True)\n"
+         "sys.stdin.read()\n",
+         str(tmp_path / "compiling.lock")],
+        stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    try:
+        assert holder.stdout is not None and holder.stdout.readline().strip() == "held"
+        assert compiling_pid() == holder.pid
+        assert compile_in_background() is None  # no second compilation into this cache
+    finally:
+        holder.communicate("", timeout=10)
+    assert compiling_pid() is None
