@@ -203,11 +203,13 @@ class Checkpointer:
             found = [leaf for leaf in found if leaf.status == Status.RUNNING] or found
         self.count += 1
         leaf = found[0]
+        held = held_objects(self.ctx)
+        holding = ", ".join(f"{arm} holds {name!r}" for name, arm in held.items())
         self.events.emit(
-            "checkpoint", "", node=event.node, location=event.location, status=event.status,
+            "checkpoint", f"after {event.node}: {holding or 'nothing held'}",
+            node=event.node, location=event.location, status=event.status,
             leaf=self.index[leaf.id] if len(found) == 1 else None, done=self.count,
-            position=position(leaf), scene=scene_state(self.ctx.scene),
-            held=held_objects(self.ctx))
+            position=position(leaf), scene=scene_state(self.ctx.scene), held=held)
 
 
 @dataclass(frozen=True)
