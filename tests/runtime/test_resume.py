@@ -94,6 +94,48 @@ def test_a_run_stopped_by_a_fault_resumes_where_it_stopped_and_meets_its_expecta
     assert checkpoints_of(record) and record.task_sha256 == first.task_sha256
 
 
+LOOPS = """\
+task: loops
+cell: {cell}
+steps:
+  - fallback:
+      - go: {{group: arm, pose: {{xyz: [1.5, 0, 1.0]}}}}   # out of reach: fails
+      - go: {{group: arm, to: home}}
+  - repeat:
+      times: 3
+      do:
+        - go: {{group: arm, to: Candle}}
+        - go: {{group: arm, to: home}}
+"""
+
+
+def test_a_fallbacks_branch_and_a_repeats_round_are_where_the_run_left_them(tmp_path):
+    path = tmp_path / "loops.yaml"
+    path.write_text(LOOPS.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
+    runner, backend = sim_runner(path, tmp_path)
+    candles = []
+
+    def fault(event):  # in the second round, on the way to Candle
+        if event.kind == "motion" and event.location.endswith(":10"):
+            candles.append(event)
+            if len(candles) == 2:
+                threading.Timer(0.01, backend.stop).start()
+
+    runner.events.subscribe(fault)
+    try:
+        first = runner.run()
+    finally:
+        backend.close()
+    assert first.status == "failed"
+    _, record, resumed = resume(tmp_path / f"{first.run_id}.json", tmp_path)
+    assert record.status == "succeeded", record.error
+    lines = [e.location.rsplit(":", 1)[1] for e in record.events if e.kind == "node_started"]
+    assert lines == ["10", "11", "10", "11"]  # the rest of round 2, then round 3; no fallback
+    points = checkpoints_of(record)
+    assert [p["repeat"] for p in points[0].position if "repeat" in p] == [1]
+    assert [p["repeat"] for p in points[-1].position if "repeat" in p] == [2]
+
+
 def test_taskrun_resume_continues_on_the_same_backend_from_where_the_arm_stopped(tmp_path):
     spec = load_task(TASKS / "pick_place.yaml")
     cell = load_cell(spec.cell)
