@@ -149,7 +149,7 @@ class ResumePlan:
             leaves[point.leaf] = node  # type: ignore[index]
         start_scene = scene_state(runner.scene)
         notes = [f"resuming run {record.run_id} ({record.status}): "
-                 f"{len(self.replay)} finished steps kept"]
+                 f"the outcomes of its {len(self.replay)} finished leaves kept"]
         if self.world is not None:
             restore_scene(runner.scene, self.world.scene)
         runner.ctx.sync_from_backend()  # the joints as they are now
