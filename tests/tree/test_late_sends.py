@@ -1,0 +1,209 @@
+"""Motions sent later than the schedule admitted them, and arms that lag their schedule
+(:mod:`taskrunner.tree.schedule`): replayed on one fake clock, so the lateness is
+injected, not hoped for, and every run is the same.
+
+A loaded machine running the simulator fast shows two things: ``execute`` returns after
+the simulator has already played part of the motion, and a motion starts well after its
+admitted start. The backend here does either on the sends the test names; the run's
+record must then still pass the independent space-time verifier, and no motion may run
+where it was not verified.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from taskrunner.backends.mock import MockBackend, MockOptions
+from taskrunner.planning.service import InProcessPlanner
+from taskrunner.resources import DATA_ROOT
+from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.runner import Runner, RunOptions
+from taskrunner.scene import scene_from_cell
+from taskrunner.tasks import load_task
+from taskrunner.tree.clock import TaskClock
+from taskrunner.tree.expect import arm_conflicts
+from taskrunner.tree.schedule import LATE, Admission, MotionSchedule
+from taskrunner.types import JointTrajectory
+
+TRAY_PAIR = DATA_ROOT / "tasks" / "tray_pair.yaml"
+SPEED = 20.0  # trajectory seconds per (fake) wall second: one 10 ms tick is 0.2 s of task time
+
+
+class _Wall:
+    """The fake wall clock every part of the run reads (s)."""
+
+    def __init__(self) -> None:
+        self.t = 0.0
+
+    def __call__(self) -> float:
+        return self.t
+
+
+class _LoadedMock(MockBackend):
+    """A mock that plays motions at ``SPEED`` on the fake wall clock, and on the sends
+    numbered in ``ahead`` returns only after ``delay`` s of wall time (the motion already
+    played meanwhile), on those in ``late`` starts the motion only after ``delay``."""
+
+    def __init__(self, names, start, wall: _Wall, ahead=(), late=(), delay=0.0) -> None:
+        super().__init__(names, start, MockOptions(speed=SPEED), clock=wall)
+        self.wall, self.ahead, self.late, self.delay = wall, set(ahead), set(late), delay
+        self.sends = 0
+
+    def execute(self, trajectory):  # type: ignore[no-untyped-def]
+        self.sends += 1
+        if self.sends in self.late:
+            self.wall.t += self.delay
+        handle = super().execute(trajectory)
+        if self.sends in self.ahead:
+            self.wall.t += self.delay
+        return handle
+
+
+class _FakeTimeRunner(Runner):
+    """Ticks at 100 Hz of the fake wall clock, with no real sleep."""
+
+    wall: _Wall
+
+    def _pause(self, seconds: float) -> None:
+        self.wall.t += 0.01
+
+
+def run_loaded(tmp_path: Path, **faults) -> _FakeTimeRunner:
+    spec = load_task(TRAY_PAIR, {})
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    wall = _Wall()
+    backend = _LoadedMock(names, dict(zip(names, cell.start_state())), wall, **faults)
+    runner = _FakeTimeRunner(spec, cell, backend, InProcessPlanner(),
+                             RunOptions(seed=0, runs_dir=tmp_path / "runs"))
+    runner.wall = wall
+    runner.ctx.clock = TaskClock(wall=wall)
+    runner.run()
+    return runner
+
+
+def motions(runner: Runner) -> list:
+    return [e for e in runner.record.events if e.kind == "motion"]
+
+
+def lanes_in_order(runner: Runner) -> None:
+    """Per lane, every motion recorded as starting after the one before it ended."""
+    by_lane: dict[tuple, list[tuple[float, float]]] = {}
+    for e in motions(runner):
+        duration = float(e.data["trajectory"]["times"][-1])
+        by_lane.setdefault(tuple(map(tuple, e.data["lane"])), []).append(
+            (float(e.data["sent"]), duration))
+    for lane, timed in by_lane.items():
+        for (s0, d0), (s1, _) in zip(timed, timed[1:]):
+            assert s1 >= s0 + d0 - 1e-3, (lane, s0, d0, s1)
+
+
+def test_a_send_that_returns_after_the_simulator_played_on_keeps_its_real_start(tmp_path):
+    # Every third send returns 25 ms (0.5 s of task time) after the motion started: its
+    # record used to start it 0.5 s late, before the next motion of its arm ended.
+    runner = run_loaded(tmp_path, ahead=range(3, 40, 3), delay=0.025)
+    assert runner.record.status == "succeeded", runner.record.error
+    lanes_in_order(runner)
+    assert arm_conflicts(runner.scene.robot, runner.record.events) == []
+
+
+def test_a_motion_started_late_is_verified_at_its_real_start_never_sent_unverified(tmp_path):
+    # Every second send starts 0.6 s of task time after it was admitted (a loaded
+    # machine): each is verified again where it really started, and stopped there at
+    # once if that meets the other arm; the record passes the independent verifier.
+    runner = run_loaded(tmp_path, late=range(2, 40, 2), delay=0.03)
+    assert runner.record.status == "succeeded", runner.record.error
+    sent = motions(runner)
+    late = [e for e in sent if e.data["sent"] - e.data["start"] > LATE]
+    assert late, "the injected delays made no motion late"
+    lanes_in_order(runner)
+    assert arm_conflicts(runner.scene.robot, runner.record.events) == []
+
+
+# ------------------------------------------------------------------ the rule on its own
+P = [1.5708, -0.7, -0.9, -0.6, -1.5708]  # reaching to the middle: the two arms overlap there
+CANDLE = [1.5708, -1.5708, -1.5708, -1.5708, -1.5708]
+LEFT, RIGHT = ((1, 0),), ((1, 1),)
+
+
+@pytest.fixture(scope="module")
+def scene():
+    return scene_from_cell(load_cell(DATA_ROOT / "robots/cells/servo_arm_pair.yaml"))
+
+
+def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> JointTrajectory:
+    times = np.linspace(0.0, duration, 21)
+    rows = np.array([np.add(a, s * np.subtract(b, a)) for s in np.linspace(0.0, 1.0, 21)])
+    return JointTrajectory(tuple(f"{side}_Revolute {i}" for i in range(1, 6)), times, rows,
+                           np.zeros_like(rows), np.zeros_like(rows))
+
+
+def in_and_out(scene) -> tuple[MotionSchedule, Admission, Admission, Admission]:
+    """The right arm reaches to the middle (0-2 s) and backs out (2-4 s); the left arm's
+    reach there waits until it has left (4 s)."""
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    reach = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:1")
+    back = schedule.admit(scene, RIGHT, line("right", P, CANDLE), "t.yaml:2")
+    left = schedule.admit(scene, LEFT, line("left", CANDLE, P), "t.yaml:3")
+    assert isinstance(reach, Admission) and isinstance(back, Admission)
+    assert isinstance(left, Admission) and left.start == pytest.approx(4.0)
+    return schedule, reach, back, left
+
+
+def test_a_motion_sent_within_late_of_its_start_is_on_time_and_not_verified_again(scene):
+    schedule, reach, _, _ = in_and_out(scene)
+    sent, conflict = schedule.confirm(scene, reach, LATE / 2)
+    assert conflict is None and sent.entry is not None and sent.entry.sent
+    assert sent.start == LATE / 2 and schedule.retractions == 0
+
+
+def test_a_motion_sent_late_is_verified_where_it_really_started(scene):
+    schedule, reach, back, left = in_and_out(scene)
+    schedule.confirm(scene, reach, 0.0)
+    # Backing out 1.5 s late is still clear of the left arm (in from 4 s); 2 s late,
+    # the two meet on the way: found where it really started.
+    assert schedule.confirm(scene, back, 3.5)[1] is None
+    schedule, reach, back, left = in_and_out(scene)
+    late, conflict = schedule.confirm(scene, back, 4.0)
+    assert conflict is not None and conflict.motions == ("t.yaml:2", "t.yaml:3")
+    assert conflict.time > 4.0 and conflict.distance < schedule.clearance + 1e-5
+    assert late.entry is not None and late.entry.motion.start == 4.0
+    assert schedule.stale(left)  # the left arm's reach relied on the old start
+
+
+def test_another_arm_overdue_holds_a_motion_until_its_branch_admits_it_again(scene):
+    schedule, reach, back, _ = in_and_out(scene)
+    schedule.confirm(scene, reach, 0.0)
+    assert schedule.overdue(LEFT, 2.0 + LATE / 2) is None
+    assert schedule.overdue(LEFT, 2.5) is back.entry  # due at 2 s, not sent
+    schedule.withdraw(back)
+    assert schedule.overdue(LEFT, 2.5) is None
+
+
+def test_a_lagging_arm_stops_the_motion_that_relied_on_its_schedule(scene):
+    schedule, reach, back, left = in_and_out(scene)
+    schedule.confirm(scene, reach, 0.0)
+    back, _ = schedule.confirm(scene, back, 2.0, progress=lambda: 0.3)
+    left, _ = schedule.confirm(scene, left, 4.0)
+    # At 4.5 s the right arm has played 0.3 s of its 2 s back-out, due by 4 s: 1.7 s behind.
+    found = schedule.lagging(LEFT, 4.5, 0.05)
+    assert found is not None and found[0] is back.entry and found[1] == pytest.approx(1.7)
+    schedule.retime(back, 4.5 - 0.3)
+    assert schedule.stale(left)
+    left, conflict = schedule.recheck(scene, left, 4.5)
+    assert conflict is not None and conflict.motions[0] is not None  # stop the left arm
+    assert not schedule.stale(left)
+
+
+def test_a_running_motion_clear_of_a_slightly_lagging_arm_goes_on(scene):
+    schedule, reach, back, left = in_and_out(scene)
+    schedule.confirm(scene, reach, 0.0)
+    back, _ = schedule.confirm(scene, back, 2.0)
+    left, _ = schedule.confirm(scene, left, 5.0)  # the left arm started a second later
+    schedule.retime(back, 2.3)  # the right arm 0.3 s behind: out by 4.3 s
+    _, conflict = schedule.recheck(scene, left, 5.0)
+    assert conflict is None
