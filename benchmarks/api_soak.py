@@ -453,11 +453,11 @@ def main() -> int:
         "cpus": os.cpu_count(), "load": [round(v, 2) for v in os.getloadavg()],
     }
     checks = {
-        "flat_memory": growth <= args.rss_growth_mib,
+        "flat_memory": bool(growth <= args.rss_growth_mib),
         "no_process_leak": end.processes <= baseline.processes,
         "no_fd_leak": end.total_fds <= baseline.total_fds + args.fd_slack,
-        "cancel_p99": bool(cancel_ms) and np.percentile(cancel_ms, 99) <= TARGET_CANCEL_P99_MS
-        and effective == len(cancel_ms),
+        "cancel_p99": bool(bool(cancel_ms) and np.percentile(cancel_ms, 99) <= TARGET_CANCEL_P99_MS
+                           and effective == len(cancel_ms)),
     }
     result["met"] = checks
     print(f"\n{'kind':>8} {'n':>6} {'p50 ms':>8} {'p99 ms':>8}  codes")
