@@ -224,7 +224,7 @@ def load_record(path: str | Path) -> RunRecord:
 
     Raises:
         FileNotFoundError: neither the record nor its journal exists.
-        ValueError: the journal has no record head (not written by a RecordFile).
+        InputError: the journal has no record head (not written by a RecordFile).
     """
     path = Path(path)
     if path.name.endswith(".events.jsonl"):

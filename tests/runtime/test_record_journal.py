@@ -6,6 +6,7 @@ import json
 
 import pytest
 
+from taskrunner.errors import InputError
 from taskrunner.runtime.events import EventLog
 from taskrunner.runtime.records import (
     RecordFile,
@@ -65,7 +66,7 @@ def test_a_record_of_the_earlier_layout_still_merges_its_journal(tmp_path):
     assert again.status == "running"  # another host: its writer may live
     assert [e.kind for e in again.events] == ["run_started"]
     path.unlink()
-    with pytest.raises(ValueError, match="no record head"):
+    with pytest.raises(InputError, match="no record head"):
         load_record(path)
     journal_path(path).unlink()
     with pytest.raises(FileNotFoundError):
