@@ -163,6 +163,7 @@ class _Executes(TaskLeaf):
         self.lead = LEAD  # s of task time a motion is admitted ahead of now (timed backends)
         self.fresh = False  # admitted in this tick: sent even if the clock moved meanwhile
         self.since: float | None = None  # s: verify from here (its arm rested late since)
+        self.lagged = False  # its motion was retimed: it ran behind its schedule
 
     def start(self) -> None:
         self.handle = None
@@ -173,6 +174,7 @@ class _Executes(TaskLeaf):
         self.lead = LEAD
         self.fresh = False
         self.since = None
+        self.lagged = False
 
     def execute_path(self, path: JointPath, planning_time: float,
                      trajectory: JointTrajectory | None = None) -> Status:
@@ -386,11 +388,15 @@ class _Executes(TaskLeaf):
         entry = admission.entry
         behind = min(now, entry.motion.end) - entry.motion.start - float(handle.progress)
         if behind > LAG and handle.progress < entry.motion.trajectory.duration:
+            first = admission.entry is not None and admission.entry.motion.start == \
+                admission.start and not self.lagged
             self.admission = admission = schedule.retime(admission, now - float(handle.progress))
-            self.ctx.events.emit("message", f"{self.location or 'this motion'} runs "
-                                 f"{behind:.2f} s behind its schedule: the other arms' "
-                                 f"motions are verified again", node=self.name,
-                                 location=self.location, lag=round(behind, 6))
+            self.lagged = True
+            if first:  # once a motion: it is retimed each time it falls LAG further behind
+                self.ctx.events.emit("message", f"{self.location or 'this motion'} runs "
+                                     f"{behind:.2f} s behind its schedule: the other arms' "
+                                     f"motions are verified again", node=self.name,
+                                     location=self.location, lag=round(behind, 6))
         stop = schedule.stops.get(id(admission.entry))
         if stop is None and schedule.stale(admission):
             try:

@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from taskrunner.backends.mock import MockBackend, MockOptions
+from taskrunner.collision.spacetime import Lane, verify_lanes
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
@@ -207,3 +208,42 @@ def test_a_running_motion_clear_of_a_slightly_lagging_arm_goes_on(scene):
     schedule.retime(back, 2.3)  # the right arm 0.3 s behind: out by 4.3 s
     _, conflict = schedule.recheck(scene, left, 5.0)
     assert conflict is None
+
+
+class _LaggingMock(_LoadedMock):
+    """The right arm plays its motions at half the speed it was sent them at (a physics
+    arm that cannot follow): it falls behind its schedule while the left keeps to it."""
+
+    def _refresh(self) -> None:
+        now = self._now()
+        for execution in list(self._executions):
+            slow = 0.5 if execution.trajectory.names[0].startswith("right") else 1.0
+            self._step(execution, (now - execution.start_time) * SPEED * slow)
+
+
+def test_a_lagging_arm_makes_the_cell_slower_and_the_schedule_follows_it(tmp_path):
+    spec = load_task(TRAY_PAIR, {})
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    wall = _Wall()
+    backend = _LaggingMock(names, dict(zip(names, cell.start_state())), wall)
+    runner = _FakeTimeRunner(spec, cell, backend, InProcessPlanner(),
+                             RunOptions(seed=0, runs_dir=tmp_path / "runs"))
+    runner.wall, runner.ctx.clock = wall, TaskClock(wall=wall)
+    runner.run()
+    assert runner.record.status == "succeeded", runner.record.error
+    events = runner.record.events
+    lagged = [e for e in events if e.kind == "message" and "behind its schedule" in e.message]
+    assert lagged and all(e.location.endswith(("tray_pair.yaml:21", "tray_pair.yaml:22"))
+                          for e in lagged)
+    assert any(e.kind == "wait" and e.data.get("hold") for e in events)
+    # The schedule, retimed to where the arms were, keeps them apart all along.
+    schedule = runner.ctx.schedule
+    by_instance: dict[int, dict[tuple, list]] = {}
+    for c in schedule.committed:
+        if c.lane:
+            by_instance.setdefault(c.lane[0][0], {}).setdefault(c.lane, []).append(c.motion)
+    for lanes in by_instance.values():
+        found = verify_lanes(scene_from_cell(cell),  # the robots alone: links against links
+                             [Lane(str(k), tuple(m)) for k, m in lanes.items()])
+        assert found.conflict is None, found.conflict.describe()
