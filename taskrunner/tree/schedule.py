@@ -34,11 +34,16 @@ follows has ended (planning counts as no time: what a mock run, which plays no t
 shows) and, on a backend that plays motions in time, not before now
 (:class:`~taskrunner.tree.clock.TaskClock`). Where a motion was admitted to start later
 than now, its leaf holds it until then; one reached more than :data:`LATE` after its
-admitted start (ticks are coarse on a fast simulator) is admitted again from then and
-sent when next reached, late by about a tick at most (the ``motion`` event's ``sent`` is
-when it really started, and what the record's verifier replays). What it does
-not yet cover: an arm that *lags* its trajectory (physics, servos) while the other keeps
-to its own (a monitor holding the other arm: issue 25's stop-and-go).
+admitted start, or after a motion it relied on was taken back, cut or retimed
+(:attr:`MotionSchedule.retractions`), is admitted again from then, every time. Once sent,
+its real start (:meth:`~taskrunner.tree.clock.TaskClock.track`) is what the schedule
+keeps (:meth:`MotionSchedule.confirm`): verified again there when it is late, and stopped
+at once where it meets another arm. A motion is held while another arm is overdue
+(:meth:`MotionSchedule.overdue`). An arm that *lags* its trajectory (physics, servos) by
+more than :data:`LAG` is retimed where it really is, and the motions verified against it
+are verified again (:meth:`MotionSchedule.recheck`): held, or stopped and their rest
+admitted again (stop-and-go), so a late arm makes the cell slower. What it does not yet
+measure: lag in joint space (a backend whose progress runs on while its arm trails).
 """
 
 from __future__ import annotations
