@@ -34,14 +34,20 @@ def test_goal_is_tracked_at_the_speed_and_acceleration_limits() -> None:
     assert servo.present() == 2000 and servo.velocity == 0.0
 
 
-def test_backlash_leaves_the_output_behind_after_a_reversal() -> None:
+def test_backlash_is_lost_motion_on_a_reversal_and_the_output_ends_at_the_goal() -> None:
     servo = _servo(actual=2048.0)  # no gravity: the output rests where the gears left it
+    servo.put("Goal_Velocity", 100)  # ticks/s: the gap (11.4 ticks) takes about 0.11 s
     servo.put("Goal_Position", 2300)
-    servo.advance(1.0)
-    assert servo.motor == 2300 and servo.actual == pytest.approx(2300 - TICKS_PER_DEGREE / 2)
+    servo.advance(3.0)
+    # the loop closes on the output's encoder: the output at the goal, the motor ahead
+    assert servo.actual == pytest.approx(2300) and servo.present() == 2300
+    assert servo.motor == pytest.approx(2300 + TICKS_PER_DEGREE / 2)
     servo.put("Goal_Position", 2100)
-    servo.advance(1.0)
-    assert servo.actual == pytest.approx(2100 + TICKS_PER_DEGREE / 2)
+    servo.advance(0.08)  # the motor turns back through the gap, the output waits
+    assert servo.motor < 2300 and servo.actual == pytest.approx(2300)
+    servo.advance(3.0)
+    assert servo.actual == pytest.approx(2100) and servo.present() == 2100
+    assert servo.motor == pytest.approx(2100 - TICKS_PER_DEGREE / 2)
 
 
 def test_gravity_loads_the_servo_and_holds_the_output_on_one_side() -> None:
@@ -49,7 +55,9 @@ def test_gravity_loads_the_servo_and_holds_the_output_on_one_side() -> None:
     servo.put("Goal_Position", 2048)
     servo.advance(0.2)
     assert servo.load == pytest.approx(0.3, abs=0.01)
-    assert servo.actual == pytest.approx(2048 - TICKS_PER_DEGREE / 2)
+    # the output held at the goal, the gears pushing up against gravity across the gap
+    assert servo.actual == pytest.approx(2048)
+    assert servo.motor == pytest.approx(2048 + TICKS_PER_DEGREE / 2)
 
 
 def test_a_stall_trips_the_overload_protection_after_its_time() -> None:

@@ -84,7 +84,7 @@ class FeetechOptions:
     speed: int = 0
     acceleration: int = 0
     start_tolerance: float = 0.05
-    settle_tolerance: float = 0.035
+    settle_tolerance: float = 0.015
     settle_timeout: float = 1.0
     max_tracking_error: float | None = 0.35
     stall_load: float = 0.95

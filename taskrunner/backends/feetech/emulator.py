@@ -2,8 +2,9 @@
 
 :class:`BusEmulator` answers PING, READ, WRITE, SYNC WRITE and SYNC READ on a pty for a
 :class:`ServoModel` per ID, the way STS3215 servos do: registers at the manual's addresses,
-the goal tracked at the Goal_Velocity and Acceleration limits, a 12-bit encoder after the
-homing offset, about 1° of gear backlash, a load from gravity and acceleration, the
+the goal tracked at the Goal_Velocity and Acceleration limits, a 12-bit encoder on the
+output shaft after the homing offset (the loop closes there), about 1° of gear backlash
+(lost motion on a reversal), a load from gravity and acceleration, the
 overload protection (torque cut after the load stays over Overload_Torque for
 Protection_Time), status flags in every reply. Faults are injected with
 :meth:`BusEmulator.inject`: ``drop`` (no reply), ``corrupt`` (bad checksum), ``wrong_id``,
@@ -149,7 +150,10 @@ class ServoModel:
         """Advance ``elapsed`` seconds in steps of at most 1 ms: the motor toward the goal
         at the speed and acceleration limits, the gears, the load, the protection."""
         torque = bool(self.get("Torque_Enable")) and not self.flags
-        goal = float((self.get("Goal_Position") + self.offset()) % 4096)
+        # the goal in the output's unwrapped ticks: the servo controls in Present_Position's
+        # range (0-4095 after the homing offset) and never turns through its ends
+        present = (self.actual - self.offset()) % 4096
+        goal = self.actual + (self.get("Goal_Position") - present)
         speed = min(abs(self.get("Goal_Velocity")) or MAX_SPEED, MAX_SPEED)
         acc_units = self.get("Acceleration")
         acc = acc_units * ACCELERATION_UNIT if acc_units else MAX_ACCELERATION
@@ -174,13 +178,16 @@ class ServoModel:
             if not torque:
                 self.motor = self.actual  # limp: the gears rest where the output is
         else:
-            distance = goal - self.motor
+            # The STS3215's magnetic encoder is on the output shaft and its loop closes
+            # there: the output ends at the goal, the backlash is lost motion on a reversal
+            # (the motor crosses the gap while the output waits), not an offset at rest.
+            distance = goal - self.actual
             wanted = math.copysign(min(speed, math.sqrt(2 * acc * abs(distance))), distance)
             change = max(-acc * dt, min(acc * dt, wanted - self.velocity))
             self.velocity += change
             step = self.velocity * dt
             if abs(step) >= abs(distance):
-                self.motor, self.velocity = goal, 0.0
+                self.motor, self.velocity = self.motor + distance, 0.0
             else:
                 self.motor += step
         gravity = self.gravity * math.sin(2 * math.pi * (self.actual - self.gravity_zero) / 4096)

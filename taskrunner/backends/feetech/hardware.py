@@ -5,7 +5,7 @@ file with ``--hardware FILE``)::
 
     protocol: feetech
     buses:
-      left: {port: /dev/ttyACM0}            # baud: 1000000 (the SO-101's) unless given
+      left: {port: /dev/ttyACM0}            # baud: 1000000, reply_timeout: 0.04 (s)
       right: {port: /dev/ttyACM1}
     robots:                                 # the cell's robots, by name
       left: {bus: left, calibration: ~/.cache/huggingface/lerobot/calibration/robots/so101_follower/left.json}
@@ -41,9 +41,10 @@ __all__ = ["ArmOnBus", "BusPort", "CellRobot", "FeetechHardware", "load_feetech_
            "open_feetech_backend", "parse_overrides"]
 
 _TOP_KEYS = frozenset({"protocol", "buses", "robots"})
-_BUS_KEYS = frozenset({"port", "baud"})
+_BUS_KEYS = frozenset({"port", "baud", "reply_timeout"})
 _ROBOT_KEYS = frozenset({"bus", "ids", "calibration", "arm"})
 DEFAULT_BAUD = 1_000_000
+DEFAULT_REPLY_TIMEOUT = 0.04  # s: a servo answers in well under 1 ms; USB adds a few
 
 
 @dataclass(frozen=True)
@@ -56,11 +57,13 @@ class CellRobot:
 
 @dataclass(frozen=True)
 class BusPort:
-    """A bus of the hardware file: its name, port and baud rate."""
+    """A bus of the hardware file: its name, port, baud rate and how long a reply may take
+    (s; past it, the servo's silence is a fault)."""
 
     name: str
     port: str
     baud: int = DEFAULT_BAUD
+    reply_timeout: float = DEFAULT_REPLY_TIMEOUT
 
 
 @dataclass(frozen=True)
@@ -130,7 +133,12 @@ def load_feetech_hardware(path: str | Path, robots: Sequence[CellRobot]) -> Feet
         if isinstance(baud, bool) or not isinstance(baud, int) or baud <= 0:
             raise _fail(f"bus {name!r}: 'baud' must be a positive integer (got {baud!r})",
                         path, entry, "baud")
-        buses.append(BusPort(str(name), port, baud))
+        timeout = entry.get("reply_timeout", DEFAULT_REPLY_TIMEOUT)
+        if isinstance(timeout, bool) or not isinstance(timeout, (int, float)) \
+                or not 0 < timeout <= 1:
+            raise _fail(f"bus {name!r}: 'reply_timeout' must be in (0, 1] s (got {timeout!r})",
+                        path, entry, "reply_timeout")
+        buses.append(BusPort(str(name), port, baud, float(timeout)))
     by_name = {r.name: r for r in robots}
     node = data["robots"]
     for name in node:
@@ -239,8 +247,7 @@ def read_calibrations(hardware: FeetechHardware, overrides: Mapping[str, str]
 def open_feetech_backend(path: str | Path, robots: Sequence[CellRobot],
                          joint_names: Sequence[str], port: str | None = None,
                          calibration: str | None = None,
-                         options: FeetechOptions | None = None,
-                         reply_timeout: float = 0.04) -> FeetechBackend:
+                         options: FeetechOptions | None = None) -> FeetechBackend:
     """The Feetech backend of a cell: its hardware file read, the calibrations read, the
     buses opened, the servos pinged and checked.
 
@@ -251,7 +258,6 @@ def open_feetech_backend(path: str | Path, robots: Sequence[CellRobot],
         port: ``--port`` (see :func:`parse_overrides`), by bus name.
         calibration: ``--calibration``, by robot name.
         options: see :class:`FeetechOptions`.
-        reply_timeout: s to wait for a servo's reply.
 
     Raises:
         YamlError / InputError: the hardware file, a calibration file, a joint of the cell
@@ -282,7 +288,7 @@ def open_feetech_backend(path: str | Path, robots: Sequence[CellRobot],
                                         calibrations[arms[0].robot].path if len(arms) == 1
                                         else None)
             opened = FeetechBus(ports.get(bus.name, bus.port), bus.baud,
-                                reply_timeout=reply_timeout)
+                                reply_timeout=bus.reply_timeout)
             links.append(BusMotors(opened, merged, bus.name))
     except BaseException:
         for link in links:
