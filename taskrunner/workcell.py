@@ -230,25 +230,31 @@ class Workcell:
 
     def connect(self, kind: BackendKind | str = "mock", *, speed: float | None = None,
                 port: str | None = None, url: str | None = None,
-                firmware_speedup: float = 1.0, home: bool = False) -> Backend:
+                firmware_speedup: float = 1.0, home: bool = False,
+                calibration: str | None = None, hardware: str | None = None) -> Backend:
         """Create the backend that executes this cell's motions, and use it from now on.
 
         The backend is built from the cell the way ``run-task --backend`` builds it: mock
         and sim drive every joint and start at the cell's start state; serial and http
         drive the servos of the cell's one robot through its ``hardware.yaml`` and start
-        where the servos are. The current state then becomes the backend's. A backend
-        connected before is closed.
+        where the servos are; feetech drives bus servos (the SO-101) on the buses of the
+        cell's ``<cell>.hardware.yaml``. The current state then becomes the backend's. A
+        backend connected before is closed.
 
         Args:
             kind: ``"mock"`` (motions complete at once, or replay at ``speed``),
                 ``"sim"`` (a controller playing trajectories in real time, ``speed``
-                times faster), ``"serial"`` or ``"http"`` (the ESP32 firmware).
+                times faster), ``"serial"`` or ``"http"`` (the ESP32 firmware),
+                ``"feetech"`` (bus servos).
             speed: replay speed, a multiple of real time (mock: None jumps to the end).
             port: serial device (default: the one in ``hardware.yaml``).
             url: the ESP32's ``/api/command`` URL (http).
             firmware_speedup: a host build of the firmware running this much faster
                 than real time (``run-task firmware-sim --speedup``).
             home: send the servos home before the first motion (serial, http).
+            calibration: feetech: LeRobot's calibration file (a pair: ``ROBOT=FILE,…``;
+                default the hardware file's).
+            hardware: feetech: another hardware file than ``<cell>.hardware.yaml``.
 
         Raises:
             ValueError: an unknown ``kind``.
@@ -258,7 +264,8 @@ class Workcell:
         """
         if kind not in BACKENDS:
             raise ArgumentError(f"'kind' must be one of {', '.join(BACKENDS)} (got {kind!r})")
-        backend = make_backend(kind, self._cell, speed, port, url, firmware_speedup, home)
+        backend = make_backend(kind, self._cell, speed, port, url, firmware_speedup, home,
+                               calibration_file=calibration, hardware=hardware)
         self.disconnect()
         self._backend, self._backend_kind = backend, kind
         self.sync()
