@@ -239,7 +239,8 @@ def read_calibrations(hardware: FeetechHardware, overrides: Mapping[str, str]
         try:
             found[arm.robot] = LeRobotCalibration(arm.motors, renamed, path)
         except InputError as exc:
-            reason = exc.reason.replace(f"'{arm.prefix}", "'") if arm.prefix else exc.reason
+            reason = exc.reason.removeprefix(f"{path}: ")  # said once, as the error's path
+            reason = reason.replace(f"'{arm.prefix}", "'") if arm.prefix else reason
             raise InputError(f"robot {arm.robot!r}: {reason}", path) from None
     return found
 
