@@ -247,6 +247,7 @@ class PlanningWorker:
             self._launch()
         else:
             self._process, self._conn = started[0], started[1]
+            self._released = False  # the process's handle closed (see close())
         _OPEN.add(self)
         if wait_ready:
             self._await_ready(start_timeout)
@@ -258,6 +259,7 @@ class PlanningWorker:
     def _launch(self) -> None:
         """Start the process; it loads the model while the caller goes on."""
         self._ready = False
+        self._released = False  # the process's handle closed (see close())
         self._conn, child = self._ctx.Pipe()
         # Not a daemon: loading a xacro robot runs xacro in a child process of its own,
         # which a daemon may not have. Closed by close(), and at exit (_close_all) before
@@ -339,7 +341,7 @@ class PlanningWorker:
             if stays(scene, request):
                 return self._answer_here(scene, request)
             self._await_ready(self._start_timeout)
-            if not self._process.is_alive():
+            if not self._alive():
                 self._start(self._start_timeout)
             if request.start is None:
                 request = replace(request, start=scene.state)
@@ -358,20 +360,29 @@ class PlanningWorker:
         """Plan and wait for the answer (the synchronous form of :meth:`submit`)."""
         return self.submit(scene, request).result(timeout)
 
+    def _alive(self) -> bool:
+        return not self._released and self._process.is_alive()
+
     def close(self) -> None:
-        """Stop the worker process (idempotent)."""
+        """Stop the worker process (idempotent); the next request starts it again."""
         _OPEN.discard(self)
         self._stays_here = None
-        if self._process.is_alive():
+        if self._alive():
             try:
                 self._cancel.value = self._pending.request_id if self._pending else _NO_CANCEL
                 self._conn.send(("stop",))
             except (OSError, BrokenPipeError):
                 pass
             self._process.join(timeout=5.0)
-            if self._process.is_alive():
+            if self._alive():
                 self._process.kill()
+                self._process.join(timeout=5.0)
         self._conn.close()
+        # The process's own handle (its sentinel pipe) is let go now, not when this object
+        # is collected: a server that opens and reaps planners keeps no descriptor of theirs.
+        if not self._released and self._process.exitcode is not None:
+            self._process.close()
+            self._released = True
 
     def __enter__(self) -> PlanningWorker:
         return self
@@ -427,7 +438,7 @@ class PlanningWorker:
                         # plan never leaves the worker planning in a stale world.
                         self._sent_scene = None
                     return
-            elif not self._process.is_alive():
+            elif not self._alive():
                 self._died(handle)
                 return
             if deadline is not None and time.perf_counter() >= deadline:

@@ -186,3 +186,32 @@ def test_a_worker_that_never_loads_is_reported():
     with pytest.raises(WorkerDiedError, match=r"did not load for panda in 0.2 s"):
         worker._await_ready(0.2)
     assert worker._process.killed
+
+
+def _open_fds() -> dict[int, str]:
+    """This process's open descriptors and what each is (the listing's own left out)."""
+    found = {}
+    for name in os.listdir("/proc/self/fd"):
+        try:
+            found[int(name)] = os.readlink(f"/proc/self/fd/{name}")
+        except FileNotFoundError:  # the listing's own descriptor, closed since
+            pass
+    return found
+
+
+def test_a_closed_worker_keeps_no_descriptor_and_starts_again_when_asked(
+        robots_dir, scene, example_robot_data):
+    # multiprocessing's shared-memory arena and resource tracker are made once per process
+    # (the first worker's cancel flag): open them first, then count.
+    PlanningWorker(robots_dir / "panda", wait_ready=False).close()
+    before = _open_fds()
+    worker = PlanningWorker(robots_dir / "panda")
+    worker.plan(scene, PlanRequest("arm", GOAL))
+    assert len(_open_fds()) > len(before)  # its pipe and its process's sentinel
+    worker.close()
+    worker.close()  # idempotent
+    # The object is still referenced: nothing of its process is left open all the same.
+    assert _open_fds().items() <= before.items()
+    assert worker.plan(scene, PlanRequest("arm", GOAL)).path.names[0] == "panda_joint1"
+    worker.close()
+    assert _open_fds().items() <= before.items()
