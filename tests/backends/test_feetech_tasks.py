@@ -148,11 +148,12 @@ def tracking_by_joint(record: dict) -> dict[str, tuple[float, float]]:
 
 
 def assert_tracked(tracking: dict[str, tuple[float, float]], joints: set[str]) -> None:
-    """Every joint reported; the servos followed: RMS within 3° (a cycle of motion, the
-    backlash on a reversal; a late cycle on a loaded host adds a peak, not an RMS),
-    every error under the backend's fault limit; a joint that did not move reads 0."""
+    """Every joint reported; the servos followed: RMS within 6° (the error is the goal sent
+    a cycle before minus the position read: about a cycle of motion, the backlash on a
+    reversal; a late cycle on a loaded host adds a peak, not an RMS), every error under
+    the backend's fault limit; a joint that did not move reads 0."""
     assert set(tracking) == joints
-    assert all(rms < 0.05 and largest < 0.35 for largest, rms in tracking.values()), tracking
+    assert all(rms < 0.1 and largest < 0.35 for largest, rms in tracking.values()), tracking
     assert sum(largest > 0.0 for largest, _ in tracking.values()) >= len(joints) - 2, tracking
 
 
