@@ -63,7 +63,10 @@ def test_a_run_on_a_fresh_cache_plans_with_coal_while_the_kernels_compile_behind
     finished = subprocess.run(
         [sys.executable, "-c", "import sys, time\n"
          "from taskrunner.planning.warmup import compiling_pid, kernels_ready\n"
-         "while compiling_pid() is not None: time.sleep(0.2)\n"
+         "idle = 0.0  # s with no compilation running (it may not hold its lock yet)\n"
+         "while not kernels_ready() and idle < 30.0:\n"
+         "    idle = 0.0 if compiling_pid() is not None else idle + 0.2\n"
+         "    time.sleep(0.2)\n"
          "sys.exit(0 if kernels_ready() else 1)"],
         env=env, timeout=900)
     assert finished.returncode == 0
