@@ -126,7 +126,9 @@ def test_fifty_trickling_clients_do_not_delay_a_cancel(tmp_path: Path):
     import threading
 
     limit_s = 3.0  # long enough to see the cancel answered while all are still held
-    app = _app(tmp_path, sim_speed=0.5)
+    # All fifty admitted (max_requests above them), so each is held until its body times
+    # out; past max_requests they would be answered 503 at once.
+    app = _app(tmp_path, sim_speed=0.5, max_requests=64)
     with served(app, http=header_timeout_protocol(10.0, limit_s)) as port:
         status, _, started, _ = _request(port, "POST", "/runs",
                                          {"yaml": GO_CANDLE, "backend": "sim", "check": False})
