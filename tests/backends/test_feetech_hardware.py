@@ -4,6 +4,7 @@ backend kind: what is read, and every mistake named with its file (and line)."""
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 
 import pytest
@@ -50,6 +51,9 @@ def test_the_shipped_hardware_files_name_buses_ids_and_calibrations() -> None:
      "    ids: [1, 2, 3]\n    calibration: c.json\n", 6, "'ids' must list 6 distinct IDs"),
     ("protocol: feetech\nbuses:\n  a: {port: /dev/x, reply_timeout: 5}\n"
      "robots: {arm: {bus: a, calibration: c.json}}\n", 3, "'reply_timeout' must be in (0, 1]"),
+    ("protocol: feetech\non_fault: drop\nbuses: {a: {port: /dev/x}}\n"
+     "robots: {arm: {bus: a, calibration: c.json}}\n", 2,
+     "'on_fault' must be 'hold' or 'torque_off' (got 'drop')"),
     ("protocol: feetech\nbuses: {a: {port: /dev/x, speed: 3}}\n"
      "robots: {arm: {bus: a, calibration: c.json}}\n", 2, "unknown key 'speed'"),
 ])
@@ -123,6 +127,29 @@ def test_servos_whose_homing_offset_is_not_the_calibrations_are_refused(tmp_path
     assert str(caught.value).startswith(f"{FIXTURE}:")
     assert ("joint 'shoulder_pan': servo 1 on bus 'arm' has Homing_Offset 0, its calibration "
             "-1470") in str(caught.value)
+
+
+def test_on_fault_torque_off_from_the_hardware_file_cuts_the_torque(tmp_path: Path) -> None:
+    from taskrunner.backends.feetech import SO101_MOTORS, LeRobotCalibration, calibrated_servos
+    from taskrunner.backends.feetech.calibration import load_lerobot_calibration
+
+    cell = load_cell(CELLS / "so101_table.yaml")
+    arm = LeRobotCalibration(SO101_MOTORS, load_lerobot_calibration(FIXTURE))
+    with BusEmulator(calibrated_servos(arm)) as emulator:
+        hardware = _table_hardware(tmp_path, emulator.port, str(FIXTURE))
+        hardware.write_text("on_fault: torque_off\n" + hardware.read_text())
+        backend = make_backend("feetech", cell, None, hardware=hardware)
+        try:
+            assert isinstance(backend, FeetechBackend)
+            emulator.inject("overheat", 2)
+            deadline = time.monotonic() + 2.0
+            while backend.fault is None and time.monotonic() < deadline:
+                time.sleep(0.01)
+            assert backend.fault is not None and backend.fault.stop == "torque off"
+        finally:
+            backend.close()
+        time.sleep(0.05)
+        assert all(s.get("Torque_Enable") == 0 for s in emulator.servos.values())
 
 
 def test_the_backend_drives_every_joint_of_the_cell(tmp_path: Path) -> None:

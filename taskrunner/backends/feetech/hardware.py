@@ -11,20 +11,21 @@ file with ``--hardware FILE``)::
       left: {bus: left, calibration: ~/.cache/huggingface/lerobot/calibration/robots/so101_follower/left.json}
       right: {bus: right, ids: [1, 2, 3, 4, 5, 6], calibration: right.json}
 
-Each robot names its bus, its servo IDs in the arm's motor order (default the arm's own,
-1-6 for the SO-101; two arms on one bus: 1-6 and 7-12, the calibration file's ``id``
-fields the same), its LeRobot calibration file (relative to this file; ``~`` expanded)
-and ``arm`` (``so101``, the default). ``--port`` and ``--calibration`` override the file:
-a path alone where there is one bus (one robot), else ``NAME=PATH`` pairs separated by
-commas.
+``on_fault: torque_off`` (default ``hold``) is the stop a fault sends (see
+:class:`~.backend.FeetechOptions`). Each robot names its bus, its servo IDs in the arm's
+motor order (default the arm's own, 1-6 for the SO-101; two arms on one bus: 1-6 and
+7-12, the calibration file's ``id`` fields the same), its LeRobot calibration file
+(relative to this file; ``~`` expanded) and ``arm`` (``so101``, the default).
+``--port`` and ``--calibration`` override the file: a path alone where there is one bus
+(one robot), else ``NAME=PATH`` pairs separated by commas.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from taskrunner.backends.feetech.backend import BusMotors, FeetechBackend, FeetechOptions
 from taskrunner.backends.feetech.bus import FeetechBus
@@ -40,7 +41,7 @@ from taskrunner.yamlfile import line_of, load_yaml
 __all__ = ["ArmOnBus", "BusPort", "CellRobot", "FeetechHardware", "load_feetech_hardware",
            "open_feetech_backend", "parse_overrides"]
 
-_TOP_KEYS = frozenset({"protocol", "buses", "robots"})
+_TOP_KEYS = frozenset({"protocol", "buses", "robots", "on_fault"})
 _BUS_KEYS = frozenset({"port", "baud", "reply_timeout"})
 _ROBOT_KEYS = frozenset({"bus", "ids", "calibration", "arm"})
 DEFAULT_BAUD = 1_000_000
@@ -86,6 +87,7 @@ class FeetechHardware:
     path: Path
     buses: tuple[BusPort, ...]
     arms: tuple[ArmOnBus, ...]
+    on_fault: Literal["hold", "torque_off"] = "hold"
 
 
 def _fail(message: str, path: Path, node: Any, key: Any = None) -> YamlError:
@@ -123,6 +125,10 @@ def load_feetech_hardware(path: str | Path, robots: Sequence[CellRobot]) -> Feet
         if not isinstance(data.get(key), dict) or not data[key]:
             raise _fail(f"'{key}' must be a mapping of {key} by name (got {data.get(key)!r})",
                         path, data, key)
+    on_fault = data.get("on_fault", "hold")
+    if on_fault not in ("hold", "torque_off"):
+        raise _fail(f"'on_fault' must be 'hold' or 'torque_off' (got {on_fault!r})", path, data,
+                    "on_fault")
     buses = []
     for name, entry in data["buses"].items():
         entry = _mapping(entry, _BUS_KEYS, f"bus {name!r}", path, data["buses"], name)
@@ -184,7 +190,7 @@ def load_feetech_hardware(path: str | Path, robots: Sequence[CellRobot]) -> Feet
             tuple(Motor(prefix + m.joint, i, m.mode, m.lower, m.upper)
                   for i, m in zip(ids, motors)),
             path.parent / Path(calibration).expanduser(), line_of(entry, "calibration")))
-    return FeetechHardware(path, tuple(buses), tuple(arms))
+    return FeetechHardware(path, tuple(buses), tuple(arms), on_fault)
 
 
 def parse_overrides(text: str | None, names: Sequence[str], what: str
@@ -258,7 +264,7 @@ def open_feetech_backend(path: str | Path, robots: Sequence[CellRobot],
         joint_names: the cell's joints: every one must be driven by a servo.
         port: ``--port`` (see :func:`parse_overrides`), by bus name.
         calibration: ``--calibration``, by robot name.
-        options: see :class:`FeetechOptions`.
+        options: see :class:`FeetechOptions`; its ``on_fault`` is the hardware file's.
 
     Raises:
         YamlError / InputError: the hardware file, a calibration file, a joint of the cell
@@ -295,4 +301,4 @@ def open_feetech_backend(path: str | Path, robots: Sequence[CellRobot],
         for link in links:
             link.bus.close()
         raise
-    return FeetechBackend(links, options)
+    return FeetechBackend(links, replace(options or FeetechOptions(), on_fault=hardware.on_fault))
