@@ -306,6 +306,9 @@ def _parser() -> argparse.ArgumentParser:
                             "robot's own choice: its cell's or robot.yaml's collision:, else auto)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
                        help="plan in a worker process per run (default) or in-process")
+    serve.add_argument("--foxglove", nargs="?", type=int, const=8765, default=None,
+                       metavar="PORT", help="stream the runs live to Foxglove, one feed per "
+                                            "cell on ws://127.0.0.1:PORT (8765), PORT+1, …")
     serve.add_argument("--log-level", default="info", help="uvicorn's log level (info)",
                        choices=("critical", "error", "warning", "info", "debug"))
     view = sub.add_parser("view", help="serve the web view on 127.0.0.1: replay a run "

@@ -62,7 +62,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                 policy=settings.folder_policy(),
                                 servo_port=settings.servo_port, servo_url=settings.servo_url,
                                 firmware_speedup=settings.firmware_speedup)
-        manager = RunManager(registry, store, tick_hz=settings.tick_hz)
+        feeds = None
+        if settings.foxglove_port is not None:  # serve --foxglove: one feed per cell
+            from taskrunner.export.cellfeeds import CellFeeds, CellFeedsOptions
+            from taskrunner.resources import cell_files
+
+            # The ports as serve printed them: every cell file of the folder, in order.
+            feeds = CellFeeds(list(cell_files(settings.cells_dir)),
+                              CellFeedsOptions(port=settings.foxglove_port))
+            app.state.feeds = feeds
+        manager = RunManager(registry, store, tick_hz=settings.tick_hz, feeds=feeds)
         work = RequestWork(settings.check_isolation, settings.check_timeout_s,
                            settings.check_memory_mb, settings.check_workers)
         work.start()
@@ -80,6 +89,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             app.state.control.close()
             work.close()
             manager.shutdown(settings.shutdown_timeout_s)
+            if feeds is not None:
+                feeds.close()
             registry.close()
             store.close()
             gc.unfreeze()  # what settle_heap froze can be collected again

@@ -37,6 +37,7 @@ from taskrunner.tasks.names import moved_groups
 from taskrunner.tasks.spec import TaskSpec
 
 if TYPE_CHECKING:
+    from taskrunner.export.cellfeeds import CellFeeds
     from taskrunner.runtime.resume import ResumePlan
 
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
@@ -80,6 +81,7 @@ class LiveRun:
     final_tree: str | None = None
     planner: Any = None
     journal: StoreJournal | None = None
+    feed: tuple[Any, Any] | None = None  # (CellFeed, its follow of this run)
     done: threading.Event = field(default_factory=threading.Event)
     detail: RunDetailCache = field(init=False, repr=False, compare=False)
 
@@ -120,13 +122,14 @@ class RunManager:
     """
 
     def __init__(self, cells: CellRegistry, store: RunStore, tick_hz: float = 100.0,
-                 keep_finished: int = 32) -> None:
+                 keep_finished: int = 32, feeds: CellFeeds | None = None) -> None:
         if keep_finished < 0:
             raise ArgumentError(f"'keep_finished' must be >= 0 (got {keep_finished})")
         self.cells = cells
         self.store = store
         self.tick_hz = tick_hz
         self.keep_finished = keep_finished
+        self.feeds = feeds  # the live Foxglove feeds (serve --foxglove), one per cell
         self._runs: dict[str, LiveRun] = {}
         # Joints claimed per run in flight (or being built): (session, joints, run id).
         self._claims: dict[int, tuple[CellSession, frozenset[str], str]] = {}
@@ -201,6 +204,10 @@ class RunManager:
                 self._runs.pop(live.run_id, None)
             session.give_planner(planner)
             raise
+        if self.feeds is not None:  # the feed only queues the run's events: never waits
+            feed = self.feeds.feed(runner.record.cell or "", session.cell)
+            if feed is not None:
+                live.feed = (feed, feed.attach(runner, joints))
         live.thread = threading.Thread(target=self._run, args=(live,), daemon=True,
                                        name=f"run-{live.run_id}")
         live.thread.start()
@@ -228,6 +235,8 @@ class RunManager:
             if self._stopping and live.record.status in ("cancelled", "running"):
                 live.record.status = "interrupted"
                 live.record.error = _STOPPED
+            if live.feed is not None:
+                live.feed[0].detach(live.feed[1])
             live.final_tree = live.runner.snapshot()
             live.session.last_scene = live.runner.scene
             live.session.give_planner(live.planner)

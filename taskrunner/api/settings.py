@@ -86,6 +86,9 @@ class Settings(BaseSettings):
             API offers no http backend). Requests never name a port or URL.
         firmware_speedup: the time scale of a host build of the firmware the servo
             backends drive (``run-task firmware-sim --speedup``); 1 for real servos.
+        foxglove_port: serve the runs live over Foxglove's WebSocket protocol, one feed
+            per cell on this port and the next ones (0: free ports; none: no feed; see
+            :mod:`taskrunner.export.cellfeeds`).
     """
 
     model_config = SettingsConfigDict(env_prefix="TASKRUNNER_", frozen=True, extra="forbid",
@@ -121,6 +124,7 @@ class Settings(BaseSettings):
     servo_port: str | None = None
     servo_url: str | None = None
     firmware_speedup: float = 1.0
+    foxglove_port: int | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -176,6 +180,16 @@ class Settings(BaseSettings):
         if number is None or number < least:
             what = "a positive integer" if least == 1 else "an integer >= 0"
             raise ValueError(f"'{info.field_name}' must be {what} (got {value!r})")
+        return number
+
+    @field_validator("foxglove_port", mode="before")
+    @classmethod
+    def _foxglove_port(cls, value: Any) -> Any:
+        if value is None or value == "":
+            return None
+        number = _integer(value)
+        if number is None or not 0 <= number <= 65535:
+            raise ValueError(f"'foxglove_port' must be a port 0..65535 (got {value!r})")
         return number
 
     @field_validator("planner_nice", mode="before")

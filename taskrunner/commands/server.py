@@ -28,6 +28,8 @@ def cmd_serve(args: argparse.Namespace) -> int:
     try:
         settings = Settings.from_env(token=args.token, planner=args.planner,
                                      data_dir=args.data_dir)
+        if args.foxglove is not None:
+            settings = settings.replaced(foxglove_port=args.foxglove)
         if args.no_auth:
             settings = settings.replaced(auth=False, token=None)
     except ValueError as exc:
@@ -45,11 +47,26 @@ def cmd_serve(args: argparse.Namespace) -> int:
         print(f"taskrunner API at {base} (docs: {base}/docs)\n"
               f"  token{made}; {reads}; for curl, paste:\n"
               f"export TASKRUNNER_TOKEN={shlex.quote(app.state.token)}", flush=True)
+    if settings.foxglove_port is not None:
+        _print_foxglove_ports(settings.cells_dir, settings.foxglove_port)
     if args.control_port is not None:
         print(f"  control port: http://{args.host}:{args.control_port} (cancel and run state "
               "only, on a listener of its own)", flush=True)
     serve(app, settings, args.host, args.port, args.log_level, control_port=args.control_port)
     return ExitCode.OK
+
+
+def _print_foxglove_ports(cells_dir: Path, port: int) -> None:
+    """Which port each cell's live Foxglove feed takes (see
+    :mod:`taskrunner.export.cellfeeds`)."""
+    from taskrunner.resources import cell_files
+
+    ids = list(cell_files(cells_dir))
+    print(f"  Foxglove: one feed per cell, open when the cell's first run starts "
+          f"(127.0.0.1 only; a cell from elsewhere takes the next port after {port + len(ids) - 1}):"
+          if port else "  Foxglove: one feed per cell on a free port (in the log)", flush=True)
+    for i, cell_id in enumerate(ids if port else ()):
+        print(f"    {cell_id}: ws://127.0.0.1:{port + i}", flush=True)
 
 
 def _records_in(folder: Path) -> list[RunRecord]:

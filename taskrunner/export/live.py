@@ -20,7 +20,7 @@ import threading
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -142,16 +142,19 @@ class FoxgloveFeed:
             rosmsg.encode_joint_state(stamp, self.cell.model.joint_names, q), log_time=stamp)
         self._channels["/tf"].log(rosmsg.encode_tf_message(transforms), log_time=stamp)
 
-    def publish_event(self, event: RunEvent, runner: Runner) -> None:
-        """Send an event as ``/rosout`` (and the scene's objects, if it carries them)."""
+    def publish_event(self, event: RunEvent, runner: Runner, logger_prefix: str = "") -> None:
+        """Send an event as ``/rosout`` (and the scene's objects, if it carries them);
+        ``logger_prefix`` goes before the logger's name (the node's)."""
         stamp = time.time_ns()
         scene = event.data.get("scene")
         if isinstance(scene, dict):
             markers, _ = scene_markers(scene.get("objects"), stamp, self.cell, self.tree.root)
             self._channels["/scene_objects"].log(rosmsg.encode_marker_array(markers),
                                                  log_time=stamp)
-        self._channels["/rosout"].log(
-            rosmsg.encode_log(log_line(event, stamp, runner.record)), log_time=stamp)
+        line = log_line(event, stamp, runner.record)
+        if logger_prefix:
+            line = replace(line, name=logger_prefix + line.name)
+        self._channels["/rosout"].log(rosmsg.encode_log(line), log_time=stamp)
 
     @contextmanager
     def follow(self, runner: Runner) -> Iterator[None]:
