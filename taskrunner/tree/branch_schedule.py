@@ -1,0 +1,125 @@
+"""A ``parallel``'s checked motions on one schedule, as a run admits them.
+
+``run-task check`` plays a parallel's branches one after another
+(:mod:`taskrunner.tree.leafcheck`); :func:`schedule_branches` then puts their motions on
+one :class:`~taskrunner.tree.schedule.MotionSchedule` by the run's own rule, a motion of
+each branch in turn, following the task's ``wait_for`` as the run's leaves follow it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from taskrunner.errors import TaskrunnerError
+from taskrunner.planning.timing import parameterize_path
+from taskrunner.scene import Scene
+from taskrunner.tree.leafcheck import Motion
+from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
+from taskrunner.types import JointPath, JointTrajectory
+
+__all__ = ["schedule_branches"]
+
+
+@dataclass(frozen=True)
+class _Queued:
+    """What comes next in a branch the check schedules: a motion (``trajectory``), a step
+    waiting for another branch's step ``name`` ("wait"), or the end of a step another
+    branch waits for ("done")."""
+
+    kind: str
+    where: str | None
+    trajectory: JointTrajectory | None = None
+    name: str = ""
+
+
+def schedule_branches(scene: Scene, branches: list[list[Motion]],
+                      waits: Sequence[tuple[int, int, int, int, str, str | None]] = ()
+                      ) -> tuple[str | None, list[str]]:
+    """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
+    of each branch in turn, as a run admits them (the scene: as the parallel starts).
+
+    Args:
+        waits: each ``wait_for`` between the branches: (branch of the waiting step, the
+            index in that branch of its first motion, branch of the step waited for, the
+            index after its last motion, that step's name, the waiting step's file:line);
+            followed as the run's leaves follow it (:mod:`taskrunner.tree.waiting`).
+
+    Returns:
+        What cannot be resolved (None: the schedule holds), and a note per wait.
+    """
+    schedule = MotionSchedule()
+    queues: dict[LaneKey, list[_Queued]] = {}
+    instance = schedule.new_instance(lambda i: bool(queues.get(((instance, i),))))
+    model = scene.robot
+    for index, motions in enumerate(branches):
+        queue = queues.setdefault(((instance, index),), [])
+        for position in range(len(motions) + 1):
+            queue += [_Queued("done", None, name=name) for _, _, b, at, name, _ in waits
+                      if (b, at) == (index, position)]
+            queue += [_Queued("wait", where, name=name) for b, at, _, _, name, where in waits
+                      if (b, at) == (index, position)]
+            if position == len(motions):
+                break
+            leaf, start, end, path = motions[position]
+            if path is None:
+                moved = np.flatnonzero(np.abs(np.asarray(end) - np.asarray(start)) > 1e-9)
+                if len(moved) == 0:
+                    continue
+                names = tuple(model.joint_names[int(i)] for i in moved)
+                path = JointPath(names, np.vstack([np.asarray(start)[moved],
+                                                   np.asarray(end)[moved]]))
+            timing = getattr(leaf, "timing", None)  # a moving leaf's own timing
+            try:
+                trajectory = parameterize_path(model, path, timing)
+            except TaskrunnerError:
+                continue  # reported by the step itself where a run would time it
+            queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory))
+    notes: list[str] = []
+    least = math.inf
+    while any(queues.values()):
+        progressed = False
+        for lane, queue in queues.items():
+            if not queue:
+                continue
+            item = queue[0]
+            if item.kind == "done":
+                schedule.finish_step(lane, item.name)
+            elif item.kind == "wait":
+                at = schedule.finished.get((instance, item.name))
+                if at is None:
+                    continue  # the other branch has not got there yet
+                if at > schedule.lane_end(lane):
+                    notes.append(f"{item.where or 'a step'} waits until step {item.name!r} "
+                                 f"has finished, at {at:.2f} s")
+                schedule.not_before(lane, at)
+            if item.kind != "motion":
+                queue.pop(0)
+                progressed = True
+                continue
+            location, motion = item.where, item.trajectory
+            assert motion is not None
+            try:
+                found = schedule.admit(scene, lane, motion, location)
+            except TaskrunnerError as exc:
+                return f"{location}: {exc}", notes
+            if isinstance(found, Blocked):
+                refusal = schedule.refusal(lane, found, location)
+                if refusal is not None:
+                    return f"{location}: {refusal}", notes
+                schedule.holding[lane] = found.lane
+                continue
+            schedule.holding.pop(lane, None)
+            queue.pop(0)
+            progressed = True
+            least = min(least, found.least)
+            notes += [wait.describe(location) for wait in found.waits]
+        if not progressed:
+            return "the branches wait for each other's arms (a deadlock)", notes
+    if math.isfinite(least):
+        notes.append(f"arms at least {1e3 * least:.1f} mm apart at every instant (as "
+                     f"scheduled, {len(schedule.committed)} motions)")
+    return None, notes
