@@ -49,11 +49,14 @@ from taskrunner.scene import Scene
 from taskrunner.scene.sweep import lever_arms
 from taskrunner.types import JointTrajectory
 
-__all__ = ["TIME_TOLERANCE", "Conflict", "Lane", "SpacetimeOptions", "SpacetimeVerification",
-           "TimedMotion", "verify_lanes"]
+__all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
+           "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "least_clearance",
+           "verify_lanes"]
 
 TIME_TOLERANCE = 1e-3
 """s: a conflict's time is where the distance first drops below the clearance, within this."""
+LEAST_TOLERANCE = 2e-4
+"""m: :func:`least_clearance` brackets the least distance between lanes this tightly."""
 _EARLY = 0.75  # a pair this far through its step is measured with the pairs due now
 _SLACK = 1e-6  # m: coal's distance tolerance, taken off every measured distance
 
@@ -198,6 +201,92 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
                                  walk.queries, time.perf_counter() - started)
 
 
+@dataclass(frozen=True)
+class LeastClearance:
+    """The least distance between two lanes' bodies over a stretch of time
+    (:func:`least_clearance`).
+
+    Attributes:
+        distance: m, measured (exact, at ``time``): the least distance is at most this
+            and at least ``lower`` (negative: the bodies penetrate that deep there).
+        lower: m, proven: no two lanes' bodies come closer than this.
+        bodies: the two bodies measured at ``distance`` (None: no pair of bodies).
+        time: s on the common clock, where ``distance`` was measured.
+        motions: the label of each body's lane's motion running then (None: it rests).
+        lanes: the two bodies' lanes.
+        distance_queries: exact pair distances computed; ``seconds`` the wall time.
+    """
+
+    distance: float
+    lower: float
+    bodies: tuple[str, str] | None
+    time: float | None
+    motions: tuple[str | None, str | None]
+    lanes: tuple[str, str] | None
+    distance_queries: int
+    seconds: float
+
+
+def least_clearance(scene: Scene, lanes: Sequence[Lane],
+                    window: tuple[float, float] | None = None,
+                    tolerance: float = LEAST_TOLERANCE) -> LeastClearance:
+    """The least distance between two lanes' bodies over ``window`` (as
+    :func:`verify_lanes`), bracketed within ``tolerance`` (m).
+
+    :func:`verify_lanes` with a clearance ``c`` proves every pair at least ``c`` apart
+    and measures exact distances on the way; the least one measured, ``m``, is an upper
+    bound of the least distance. Verifying again with ``c = m - tolerance`` either proves
+    the bracket ``[c, m]`` or measures a distance below ``c`` (a new, lower ``m``): each
+    round lowers ``m`` by more than ``tolerance``, so the rounds end. Where the lanes'
+    bodies penetrate, the deepest penetration the verifier measured is reported, proven
+    only down to 0 (``lower`` is then the distance itself: not a bound).
+
+    Raises:
+        ArgumentError: ``tolerance`` is not a positive number of metres.
+        InvalidStateError: as :func:`verify_lanes`.
+    """
+    if not (math.isfinite(tolerance) and tolerance > 0):
+        raise ArgumentError(f"'tolerance' must be a positive number of metres "
+                            f"(got {tolerance!r})")
+    started = time.perf_counter()
+    timeline = _Timeline(scene, lanes, window)
+    queries = 0
+    best: _Walk | None = None  # the walk that measured the least distance so far
+    clearance, lower, ceiling = 0.0, -math.inf, math.inf
+    while not timeline.empty:
+        walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance))
+        if not walk.pairs:
+            break
+        conflict = walk.run()
+        queries += walk.queries
+        if best is None or walk.least < best.least:
+            best = walk
+        if conflict is None:
+            lower = max(lower, clearance)
+            if best.least - lower <= tolerance or clearance + tolerance >= ceiling:
+                break
+            clearance = best.least - tolerance
+        elif clearance == 0.0:
+            # Touching or penetrating (or not even 0 proven): the deepest measured.
+            lower = min(best.least, 0.0) if conflict.proven else -math.inf
+            break
+        else:
+            if not conflict.proven:  # too close to the least distance to prove it
+                ceiling = clearance
+            clearance = max(0.0, min(best.least, clearance) - tolerance)
+    if best is None or best.least_index is None:
+        return LeastClearance(math.inf, math.inf, None, None, (None, None), None, queries,
+                              time.perf_counter() - started)
+    _, a, b = best.pairs[best.least_index]
+    owners = (int(best.owner[a]), int(best.owner[b]))
+    at = float(best.least_time or 0.0)
+    return LeastClearance(best.least, lower, best.least_pair, at,
+                          (timeline.motion_label(owners[0], at),
+                           timeline.motion_label(owners[1], at)),
+                          (timeline.lanes[owners[0]].name, timeline.lanes[owners[1]].name),
+                          queries, time.perf_counter() - started)
+
+
 class _Timeline:
     """The full state over the common clock: linear between the event times."""
 
@@ -333,6 +422,7 @@ class _Walk:
         self.least = math.inf
         self.least_pair: tuple[str, str] | None = None
         self.least_time: float | None = None
+        self.least_index: int | None = None
         self._out = np.zeros(max(1, len(pairs)))
 
     def bound_at(self, t: float) -> np.ndarray:
@@ -367,6 +457,7 @@ class _Walk:
                 self.least, self.least_pair, self.least_time = (float(d + _SLACK),
                                                                 (self.names[a], self.names[b]),
                                                                 float(t))
+                self.least_index = int(p)
         return distances.copy()
 
     def run(self) -> Conflict | None:

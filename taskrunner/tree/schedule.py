@@ -66,7 +66,7 @@ from taskrunner.scene import Scene
 from taskrunner.types import JointTrajectory
 
 __all__ = ["CLEARANCE", "LAG", "LATE", "Admission", "Blocked", "LaneKey", "MotionSchedule", "Wait",
-           "concurrent"]
+           "concurrent", "lanes_of"]
 
 CLEARANCE = 0.005
 """m: the least distance a motion keeps from the bodies of arms moving at the same time
@@ -190,6 +190,12 @@ class MotionSchedule:
     floors: dict[LaneKey, float] = field(default_factory=dict)
     """s: the earliest start of a lane's (and its inner lanes') next motions, set where a
     step of it waited for another branch's step."""
+    waits: list[tuple[str | None, Wait]] = field(default_factory=list)
+    """Every wait inserted before a motion admitted (the waiting step's file:line, the
+    wait), in order; a motion admitted again later (late, withdrawn) adds its own."""
+    step_waits: list[tuple[str | None, float, float, str]] = field(default_factory=list)
+    """Every ``wait_for`` that held a lane back: (the waiting step's file:line, s when
+    its lane could have gone on, s when it may, the name of the step waited for)."""
     retractions: int = 0
     """How many committed motions were taken back (:meth:`withdraw`) or cut short
     (:meth:`stop`, :meth:`confirm`): promises other motions may have relied on."""
@@ -290,8 +296,14 @@ class MotionSchedule:
             self.finished[(instance, name)] = at
         return at
 
-    def not_before(self, lane: LaneKey, at: float) -> None:
-        """The next motions of ``lane`` start at ``at`` s at the earliest (a ``wait_for``)."""
+    def not_before(self, lane: LaneKey, at: float, location: str | None = None,
+                   step: str | None = None) -> None:
+        """The next motions of ``lane`` start at ``at`` s at the earliest (a ``wait_for``
+        of the step at ``location`` for the step named ``step``: kept in
+        :attr:`step_waits` where it holds the lane back)."""
+        since = self.lane_end(lane)
+        if step is not None and at > since:
+            self.step_waits.append((location, since, at, step))
         self.floors[lane] = max(self.floors.get(lane, 0.0), at)
 
     def admit(self, scene: Scene, lane: LaneKey, trajectory: JointTrajectory,
@@ -326,7 +338,7 @@ class MotionSchedule:
             mine = TimedMotion(trajectory, start, location)
             # The lane's earlier motions too: where they left the joints this one holds.
             before = tuple(c.motion for c in self.committed if c.lane == lane)
-            lanes = [Lane("this motion", (*before, mine))] + _lanes(others)
+            lanes = [Lane("this motion", (*before, mine))] + lanes_of(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
             begin = start if since is None else min(since, start)
             try:
@@ -361,6 +373,7 @@ class MotionSchedule:
         entry = Committed(lane, TimedMotion(trajectory, start, location), location,
                           seen=self.retractions)
         self.committed.append(entry)
+        self.waits += [(location, wait) for wait in waits]
         self._changes += 1
         return Admission(start, tuple(waits), queries, seconds, least, entry)
 
@@ -390,7 +403,7 @@ class MotionSchedule:
             if others:
                 before = tuple(c.motion for c in self.committed
                                if c.lane == entry.lane and c is not entry)
-                lanes = [Lane("this motion", (*before, sent.motion))] + _lanes(others)
+                lanes = [Lane("this motion", (*before, sent.motion))] + lanes_of(others)
                 horizon = max([sent.motion.end] + [c.motion.end for c in others])
                 conflict = verify_lanes(scene, lanes, (min(admission.start, at), horizon),
                                         SpacetimeOptions(clearance=self.clearance)).conflict
@@ -428,7 +441,7 @@ class MotionSchedule:
         if not others or now >= horizon:
             return admission, None
         before = tuple(c.motion for c in self.committed if c.lane == entry.lane)
-        lanes = [Lane("this motion", before)] + _lanes(others)
+        lanes = [Lane("this motion", before)] + lanes_of(others)
         found = verify_lanes(scene, lanes, (now, horizon),
                              SpacetimeOptions(clearance=self.clearance))
         return admission, found.conflict
@@ -468,7 +481,9 @@ def _cut(trajectory: JointTrajectory, until: float) -> JointTrajectory:
     return JointTrajectory(trajectory.names, new_times, rows, zeros, zeros)
 
 
-def _lanes(others: Sequence[Committed]) -> list[Lane]:
+def lanes_of(others: Sequence[Committed]) -> list[Lane]:
+    """The committed motions as the verifier's lanes (``branch 0``, ``branch 1.0`` …),
+    each lane's motions in the order committed."""
     by_lane: dict[LaneKey, list[TimedMotion]] = {}
     for c in others:
         by_lane.setdefault(c.lane, []).append(c.motion)

@@ -91,7 +91,7 @@ class WaitForStep(TaskLeaf):
             return Status.RUNNING
         schedule.holding.pop(lane, None)
         since = schedule.lane_end(lane)
-        schedule.not_before(lane, at)
+        schedule.not_before(lane, at, self.location, self.step)
         self.ctx.events.emit("wait", f"{self.location or 'this step'} starts when step "
                              f"{self.step!r} has finished, at {at:.2f} s",
                              node=self.name, location=self.location, step=self.step,

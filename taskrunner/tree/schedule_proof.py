@@ -1,0 +1,167 @@
+"""What a ``parallel``'s schedule proves: the least clearance between its arms over
+time, which steps move at once, and where waits were inserted.
+
+:func:`prove_schedule` reads a :class:`~taskrunner.tree.schedule.MotionSchedule` once its
+motions are all committed (``run-task check`` schedules a parallel's branches by the run's
+own rule) and measures the committed motions again with
+:func:`~taskrunner.collision.spacetime.least_clearance`: the robots' links alone (as the
+record's verifier, :func:`~taskrunner.tree.expect.arm_conflicts`, measures them), each
+lane resting between its motions, the least distance bracketed within
+:data:`~taskrunner.collision.spacetime.LEAST_TOLERANCE`. The admission's own
+measurements only prove the schedule's clearance (5 mm); this is the distance itself,
+with the two links, the instant, and each link's step (file:line) then, so that the
+check's number can be compared with the verifier's on the run's record.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from taskrunner.collision.spacetime import LeastClearance, least_clearance
+from taskrunner.scene import Scene
+from taskrunner.tree.schedule import Committed, MotionSchedule, concurrent, lanes_of
+
+__all__ = ["Overlap", "ScheduleProof", "ScheduleWait", "prove_schedule"]
+
+
+@dataclass(frozen=True)
+class Overlap:
+    """Two steps of different branches whose motions run at the same time.
+
+    Attributes:
+        steps: each step's file:line (None: not known), in branch order.
+        start: s on the schedule's clock, where they first move together.
+        end: s, where they last do.
+        seconds: s they move together in all (their motions may overlap in pieces).
+    """
+
+    steps: tuple[str | None, str | None]
+    start: float
+    end: float
+    seconds: float
+
+
+@dataclass(frozen=True)
+class ScheduleWait:
+    """A wait the schedule inserted before a step's motion.
+
+    Attributes:
+        step: the waiting step's file:line.
+        since: s, when the motion could have started; ``until`` when it starts.
+        reason: why (the conflict it would have met, or the step waited for).
+    """
+
+    step: str | None
+    since: float
+    until: float
+    reason: str
+
+
+@dataclass(frozen=True)
+class ScheduleProof:
+    """The least clearance between the arms of a parallel over time, its overlapping
+    steps and its waits (module text).
+
+    Attributes:
+        least: the least distance between two branches' links (m), bracketed; its
+            ``motions`` are the two steps' file:lines at that instant (None: resting).
+        overlaps: the pairs of steps moving at once, in order of their first overlap.
+        waits: the waits inserted, in the order they were.
+        motions: how many motions are on the schedule; ``makespan`` when the last ends (s).
+    """
+
+    least: LeastClearance
+    overlaps: tuple[Overlap, ...]
+    waits: tuple[ScheduleWait, ...]
+    motions: int
+    makespan: float
+
+    def describe(self) -> list[str]:
+        """The proof as lines of text (``run-task check`` prints them as notes)."""
+        lines = []
+        least = self.least
+        if least.bodies is not None and math.isfinite(least.distance):
+            steps = " and ".join(m or f"{lane} at rest" for m, lane in
+                                 zip(least.motions, least.lanes or ("", "")))
+            lines.append(f"least clearance between arms {1e3 * least.distance:.1f} mm "
+                         f"(proven >= {1e3 * max(least.lower, 0.0):.1f} mm): "
+                         f"{least.bodies[0]} and {least.bodies[1]} at {least.time:.3f} s, "
+                         f"during {steps} ({self.motions} motions, {self.makespan:.2f} s)")
+        else:
+            lines.append(f"no two arms move at once ({self.motions} motions)")
+        for overlap in self.overlaps:
+            a, b = (s or "a step" for s in overlap.steps)
+            lines.append(f"{a} and {b} move at once from {overlap.start:.2f} s to "
+                         f"{overlap.end:.2f} s ({overlap.seconds:.2f} s together)")
+        for wait in self.waits:
+            lines.append(f"{wait.step or 'a step'} waits {wait.until - wait.since:.2f} s "
+                         f"(from {wait.since:.2f} s to {wait.until:.2f} s): {wait.reason}")
+        return lines
+
+    def to_dict(self) -> dict[str, Any]:
+        """The proof as JSON data (m and s; a distance that is not finite as None)."""
+        least = self.least
+
+        def number(x: float | None) -> float | None:
+            return None if x is None or not math.isfinite(x) else round(float(x), 6)
+
+        return {
+            "least_clearance": {
+                "distance": number(least.distance),
+                "lower": number(least.lower),
+                "links": list(least.bodies) if least.bodies else None,
+                "time": number(least.time),
+                "steps": list(least.motions),
+            },
+            "overlaps": [{"steps": list(o.steps), "start": number(o.start),
+                          "end": number(o.end), "seconds": number(o.seconds)}
+                         for o in self.overlaps],
+            "waits": [{"step": w.step, "since": number(w.since), "until": number(w.until),
+                       "reason": w.reason} for w in self.waits],
+            "motions": self.motions,
+            "makespan": number(self.makespan),
+        }
+
+
+def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
+    """What ``schedule`` proves (module text).
+
+    Args:
+        scene: the situation the schedule started from: its robot state sets the joints
+            no lane moves and each lane's joints before its first motion. Only its
+            robots' links are measured (objects, held or not, are not).
+    """
+    robots = Scene(scene.robot)
+    robots.set_state(scene.state)
+    committed = list(schedule.committed)
+    least = least_clearance(robots, lanes_of(committed))
+    inserted = [ScheduleWait(where, since, until, f"until step {step!r} has finished")
+                for where, since, until, step in schedule.step_waits]
+    inserted += [ScheduleWait(where, w.since, w.until,
+                              f"until {w.other or 'the other arm'} has moved: "
+                              f"{w.conflict.describe()}")
+                 for where, w in schedule.waits]
+    return ScheduleProof(least, _overlaps(committed), tuple(inserted),
+                         len(committed), max((c.motion.end for c in committed), default=0.0))
+
+
+def _overlaps(committed: Sequence[Committed]) -> tuple[Overlap, ...]:
+    """Pairs of steps (file:lines) of concurrent lanes whose motions overlap in time."""
+    found: dict[tuple[str | None, str | None], list[float]] = {}
+    ordered = sorted(committed, key=lambda c: (c.lane, c.motion.start))
+    for i, a in enumerate(ordered):
+        for b in ordered[i + 1:]:
+            if not concurrent(a.lane, b.lane):
+                continue
+            start, end = max(a.motion.start, b.motion.start), min(a.motion.end, b.motion.end)
+            if end <= start:
+                continue
+            key = (a.location, b.location)
+            seen = found.setdefault(key, [start, end, 0.0])
+            seen[0], seen[1] = min(seen[0], start), max(seen[1], end)
+            seen[2] += end - start
+    pairs = [Overlap(k, v[0], v[1], v[2]) for k, v in found.items()]
+    return tuple(sorted(pairs, key=lambda o: (o.start, o.steps[0] or "", o.steps[1] or "")))
