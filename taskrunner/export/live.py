@@ -28,7 +28,7 @@ import numpy as np
 from taskrunner.errors import ArgumentError, TaskrunnerError
 from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
-from taskrunner.export.timeline import LATCHED, TOPICS, log_line, scene_markers
+from taskrunner.export.timeline import LATCHED, TOPICS, log_line, scene_markers, task_meshes
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import RunEvent
 
@@ -148,7 +148,8 @@ class FoxgloveFeed:
         stamp = time.time_ns()
         scene = event.data.get("scene")
         if isinstance(scene, dict):
-            markers, _ = scene_markers(scene.get("objects"), stamp, self.cell, self.tree.root)
+            markers, _ = scene_markers(scene.get("objects"), stamp, self.cell, self.tree.root,
+                                       task_meshes(runner.spec))
             self._channels["/scene_objects"].log(rosmsg.encode_marker_array(markers),
                                                  log_time=stamp)
         line = log_line(event, stamp, runner.record)

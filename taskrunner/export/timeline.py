@@ -29,14 +29,15 @@ Topics (ROS 2 conventions, so Foxglove's 3D panel and RViz show them):
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from datetime import datetime
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from taskrunner.errors import InputError
+from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
 from taskrunner.export.rosmsg import LogLine, Marker, MessageType
@@ -44,8 +45,11 @@ from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.shapes import Mesh
+from taskrunner.tasks import AddObjectStep, load_task_text
+from taskrunner.tasks.spec import TaskSpec
 
-__all__ = ["LATCHED", "TOPICS", "TimedMessage", "log_line", "record_messages", "scene_markers"]
+__all__ = ["LATCHED", "TOPICS", "TimedMessage", "log_line", "record_meshes", "record_messages",
+           "scene_markers", "task_meshes"]
 
 # topic → message type, in the order channels are declared.
 TOPICS: dict[str, MessageType] = {
@@ -200,13 +204,50 @@ def _triple(values: Any) -> tuple[float, float, float]:
     return (x, y, z)
 
 
-def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str
+def task_meshes(spec: TaskSpec) -> dict[str, Mesh]:
+    """The mesh objects a task declares (its ``objects:`` and ``add_object`` steps; the
+    first declaration of a name wins), by name, their files as the task loader resolved
+    them (relative to the task file's folder)."""
+    found: dict[str, Mesh] = {}
+    declared = [*spec.objects, *(s.object for s in spec.walk() if isinstance(s, AddObjectStep))]
+    for obj in declared:
+        if obj.name not in found and obj.shape == "mesh" and obj.file:
+            found[obj.name] = Mesh(Path(obj.file), _triple(obj.scale or (1.0, 1.0, 1.0)))
+    return found
+
+
+def record_meshes(record: RunRecord) -> tuple[dict[str, Mesh], str | None]:
+    """The mesh objects of the task a record ran (:func:`task_meshes`), from the task
+    text it keeps, loaded as the task loader loads it: at its ``task_file`` (relative
+    paths start from its folder) with its parameters. Also why none could be found, if
+    so (the text missing, or not loading here)."""
+    if not record.task_text or not record.task_file:
+        return {}, "the record keeps no task text"
+    try:
+        spec = load_task_text(record.task_text, record.task_file, record.parameters or None)
+    except TaskrunnerError as exc:
+        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        return {}, f"its task text does not load here ({first})"
+    return task_meshes(spec), None
+
+
+def _mesh_uri(mesh: Mesh) -> str:
+    text = str(mesh.path)
+    return text if "://" in text else mesh.path.resolve().as_uri()
+
+
+def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str,
+                  meshes: Mapping[str, Mesh] | None = None
                   ) -> tuple[list[Marker], list[str]]:
     """The scene's objects as markers (after a DELETEALL; ``root``: the tf tree's root,
-    the world); and the objects that could not be drawn, with why."""
+    the world); and the objects that could not be drawn, with why. ``meshes``: the mesh
+    objects of the task (:func:`task_meshes`), beside those of the cell: a record names
+    a mesh by its file name only, so an object is drawn from the task's or the cell's
+    object of its name with that file name."""
     markers = [Marker(stamp_ns, root, "", 0, action=rosmsg.DELETEALL)]
     skipped = []
-    meshes = {o.name: o.shape for o in cell.objects if isinstance(o.shape, Mesh)}
+    known = {o.name: o.shape for o in cell.objects if isinstance(o.shape, Mesh)}
+    known.update(meshes or {})
     for i, obj in enumerate(objects or [], start=1):
         shape, pose = obj.get("shape") or {}, obj.get("pose") or {}
         name, kind = str(obj.get("name", "")), shape.get("type")
@@ -219,15 +260,16 @@ def scene_markers(objects: Any, stamp_ns: int, cell: Cell, root: str
         elif kind == "cylinder":
             d = 2 * float(shape["radius"])
             marker_type, scale = rosmsg.CYLINDER, (d, d, float(shape["length"]))
-        elif kind == "mesh" and name in meshes:
-            mesh = meshes[name]
-            assert isinstance(mesh, Mesh)
+        elif kind == "mesh" and name in known and known[name].path.name == \
+                Path(str(shape.get("file", ""))).name:
+            mesh = known[name]
             marker_type, scale = rosmsg.MESH_RESOURCE, _triple(mesh.scale)
-            resource = mesh.path.resolve().as_uri()
+            resource = _mesh_uri(mesh)
         else:
             skipped.append(f"object {name!r} ({kind}) not drawn: "
-                           + ("its mesh file is not in the record (only objects of the cell "
-                              "are found again)" if kind == "mesh" else "unknown shape"))
+                           + (f"its mesh file {shape.get('file')!r} is not that of an object "
+                              f"{name!r} of the task or the cell" if kind == "mesh"
+                              else "unknown shape"))
             continue
         frame = obj.get("attached_to") or pose.get("frame") or "world"
         x, y, z, w = (float(v) for v in pose.get("quat", (0, 0, 0, 1)))
@@ -279,6 +321,7 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
     """
     tree = FrameTree(cell.model)
     base_ns = int(datetime.fromisoformat(record.started).timestamp() * 1e9)
+    meshes, no_meshes = record_meshes(record)
     schedule = _schedule(record)
     for motion in schedule.motions:
         _check_joints(record, cell, motion.joints)
@@ -301,8 +344,11 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
         stamp = _stamp(base_ns, t)
         scene = event.data.get("scene")
         if event.kind in ("run_started", "motion", "run_finished") and isinstance(scene, dict):
-            markers, skipped = scene_markers(scene.get("objects"), stamp, cell, tree.root)
+            markers, skipped = scene_markers(scene.get("objects"), stamp, cell, tree.root,
+                                             meshes)
             add(t, "/scene_objects", rosmsg.encode_marker_array(markers))
+            if skipped and no_meshes:
+                skipped = [f"{reason}; the task's meshes: {no_meshes}" for reason in skipped]
             for reason in skipped:
                 add(t, "/rosout", rosmsg.encode_log(
                     LogLine(stamp, rosmsg.WARN, "taskrunner.export", reason)))
