@@ -8,7 +8,6 @@ each branch in turn, following the task's ``wait_for`` as the run's leaves follo
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -19,6 +18,7 @@ from taskrunner.planning.timing import parameterize_path
 from taskrunner.scene import Scene
 from taskrunner.tree.leafcheck import Motion
 from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
+from taskrunner.tree.schedule_proof import ScheduleProof, prove_schedule
 from taskrunner.types import JointPath, JointTrajectory
 
 __all__ = ["schedule_branches"]
@@ -37,7 +37,8 @@ class _Queued:
 
 
 def schedule_branches(scene: Scene, branches: list[list[Motion]],
-                      waits: Sequence[tuple[int, int, int, int, str, str | None]] = ()
+                      waits: Sequence[tuple[int, int, int, int, str, str | None]] = (),
+                      proofs: list[ScheduleProof] | None = None
                       ) -> tuple[str | None, list[str]]:
     """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
     of each branch in turn, as a run admits them (the scene: as the parallel starts).
@@ -47,6 +48,8 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             index in that branch of its first motion, branch of the step waited for, the
             index after its last motion, that step's name, the waiting step's file:line);
             followed as the run's leaves follow it (:mod:`taskrunner.tree.waiting`).
+        proofs: where the schedule holds, what it proves is appended here
+            (:func:`~taskrunner.tree.schedule_proof.prove_schedule`; its lines are notes).
 
     Returns:
         What cannot be resolved (None: the schedule holds), and a note per wait.
@@ -79,7 +82,6 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                 continue  # reported by the step itself where a run would time it
             queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory))
     notes: list[str] = []
-    least = math.inf
     while any(queues.values()):
         progressed = False
         for lane, queue in queues.items():
@@ -95,7 +97,7 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                 if at > schedule.lane_end(lane):
                     notes.append(f"{item.where or 'a step'} waits until step {item.name!r} "
                                  f"has finished, at {at:.2f} s")
-                schedule.not_before(lane, at)
+                schedule.not_before(lane, at, item.where, item.name)
             if item.kind != "motion":
                 queue.pop(0)
                 progressed = True
@@ -115,11 +117,11 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             schedule.holding.pop(lane, None)
             queue.pop(0)
             progressed = True
-            least = min(least, found.least)
             notes += [wait.describe(location) for wait in found.waits]
         if not progressed:
             return "the branches wait for each other's arms (a deadlock)", notes
-    if math.isfinite(least):
-        notes.append(f"arms at least {1e3 * least:.1f} mm apart at every instant (as "
-                     f"scheduled, {len(schedule.committed)} motions)")
+    proof = prove_schedule(scene, schedule)
+    notes += proof.describe()
+    if proofs is not None:
+        proofs.append(proof)
     return None, notes

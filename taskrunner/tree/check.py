@@ -80,6 +80,7 @@ from taskrunner.tree.idioms import place_target
 from taskrunner.tree.leafcheck import MAX_GOAL_STATES, LeafPlayer, Motion, leaves_of
 from taskrunner.tree.occupancy import OVERLAP_TOLERANCE
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
+from taskrunner.tree.schedule_proof import ScheduleProof
 
 __all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
 
@@ -108,6 +109,8 @@ class CheckReport:
     notes: list[Problem] = field(default_factory=list)
     task: TaskSpec | None = field(default=None, compare=False, repr=False)
     loaded_cell: Cell | None = field(default=None, compare=False, repr=False)
+    schedules: list[ScheduleProof] = field(default_factory=list)
+    """What each scheduled ``parallel`` proves (:mod:`taskrunner.tree.schedule_proof`)."""
 
     @property
     def ok(self) -> bool:
@@ -146,7 +149,8 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     ctx = TaskContext(cell, scene, None, None, seed=seed)  # type: ignore[arg-type]
     run.sequence(spec.steps, ctx)
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
-                       list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell)
+                       list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell,
+                       schedules=run.proofs)
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -271,6 +275,7 @@ class _DryRun(LeafPlayer):
         self.missing = missing
         self.problems: list[Problem] = []
         self.notes: list[Problem] = []
+        self.proofs: list[ScheduleProof] = []
         self.checked = 0
         self.stopped: TaskContext | None = None  # the situation at the first failure
         # Where each step's motions begin and end in the trace (by id of the step), and
@@ -334,7 +339,7 @@ class _DryRun(LeafPlayer):
                 waits.append((i, waiter[0] - marks[i], j, named[1] - marks[j], pair.name,
                               where))
         if len(self.problems) == problems and len(branches) > 1:
-            text, notes = schedule_branches(before, branches, waits)
+            text, notes = schedule_branches(before, branches, waits, self.proofs)
             self.notes += [_at(step, note) for note in notes]
             if text is not None:
                 self.problems.append(_at(step, f"{_describe(step)}: {text}"))

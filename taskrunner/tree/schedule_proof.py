@@ -80,7 +80,8 @@ class ScheduleProof:
     makespan: float
 
     def describe(self) -> list[str]:
-        """The proof as lines of text (``run-task check`` prints them as notes)."""
+        """The least clearance and the overlapping steps as lines of text (``run-task
+        check`` prints them as notes; it notes each wait where the schedule inserts it)."""
         lines = []
         least = self.least
         if least.bodies is not None and math.isfinite(least.distance):
@@ -96,9 +97,6 @@ class ScheduleProof:
             a, b = (s or "a step" for s in overlap.steps)
             lines.append(f"{a} and {b} move at once from {overlap.start:.2f} s to "
                          f"{overlap.end:.2f} s ({overlap.seconds:.2f} s together)")
-        for wait in self.waits:
-            lines.append(f"{wait.step or 'a step'} waits {wait.until - wait.since:.2f} s "
-                         f"(from {wait.since:.2f} s to {wait.until:.2f} s): {wait.reason}")
         return lines
 
     def to_dict(self) -> dict[str, Any]:

@@ -50,8 +50,11 @@ def test_check_schedules_the_probe_with_a_wait_and_its_least_clearance():
     notes = [n.message for n in report.notes]
     waits = [n for n in notes if " waits " in n]
     assert waits and ":17 waits" in waits[0] and ":14 has moved" in waits[0]
-    least = [n for n in notes if n.startswith("arms at least")]
+    least = [n for n in notes if n.startswith("least clearance between arms")]
     assert least and "16 motions" in least[0]
+    (proof,) = report.schedules
+    assert proof.least.distance >= 0.005  # the schedule's clearance, kept
+    assert proof.waits and proof.waits[0].step.endswith(":17")
 
 
 def test_check_refuses_an_arm_that_stays_in_the_other_branch_s_way_naming_both_lines():
