@@ -286,7 +286,8 @@ def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
 def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: str | None,
                   parameters: dict[str, Any], seed: int,
                   taught: TaughtPoses | None = None) -> dict[str, Any]:
-    """The ``/tasks/check`` answer (``ok``, ``cell``, ``steps``, ``problems``) for a
+    """The ``/tasks/check`` answer (``ok``, ``cell``, ``steps``, ``problems``, what each
+    parallel's ``schedules`` prove) for a
     task file of the tasks folder or inline YAML, checked under ``policy`` (an inline
     task is a file held in memory: ``inline.yaml`` of the tasks folder), with the
     ``taught`` poses of its cell as a run would have them."""
@@ -295,7 +296,7 @@ def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml:
     report = _check_report(policy, tasks_dir, task, yaml, parameters, seed, taught)
     problems = [problem_out(p) for p in report.problems]
     return {"ok": not problems, "cell": report.cell, "steps": report.steps,
-            "problems": problems}
+            "problems": problems, "schedules": [p.to_dict() for p in report.schedules]}
 
 
 def resolve_task_file(tasks_dir: Path, name: str) -> Path:

@@ -126,11 +126,46 @@ class CheckRequest(_TaskSource):
     pass
 
 
+class LeastClearanceOut(_Strict):
+    distance: float | None = Field(description="m, the least distance measured between "
+                                   "two branches' links (null: no two arms move at once)")
+    lower: float | None = Field(description="m, proven: the arms never come closer")
+    links: list[str] | None
+    time: float | None = Field(description="s on the parallel's schedule")
+    steps: list[str | None] = Field(description="each link's step (file:line) moving then; "
+                                    "null: that arm rests")
+
+
+class OverlapOut(_Strict):
+    steps: list[str | None]
+    start: float | None
+    end: float | None
+    seconds: float | None
+
+
+class ScheduleWaitOut(_Strict):
+    step: str | None
+    since: float | None
+    until: float | None
+    reason: str
+
+
+class ScheduleOut(_Strict):
+    """What a ``parallel``'s schedule proves (``taskrunner.tree.schedule_proof``)."""
+
+    least_clearance: LeastClearanceOut
+    overlaps: list[OverlapOut]
+    waits: list[ScheduleWaitOut]
+    motions: int
+    makespan: float | None
+
+
 class CheckResponse(_Strict):
     ok: bool
     cell: str
     steps: int
     problems: list[ProblemOut]
+    schedules: list[ScheduleOut] = []
 
 
 class ErrorBody(_Strict):

@@ -57,7 +57,7 @@ def test_check_reports_the_problems_of_inline_yaml_at_their_lines(client):
 def test_check_of_a_good_task_file_is_ok(client):
     report = client.post("/tasks/check", json={"task": "pick_place.yaml"}).json()
     assert report == {"ok": True, "cell": "servo_arm_table", "steps": report["steps"],
-                      "problems": []}
+                      "problems": [], "schedules": []}
     assert report["steps"] > 0
 
 
