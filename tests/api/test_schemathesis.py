@@ -70,7 +70,7 @@ def test_every_route_of_the_app_is_in_the_schema():
               for module in (cells, health, plan, runs, tasks, viewer, viewer_goal)
               for route in module.router.routes if isinstance(route, APIRoute)
               and route.include_in_schema for method in route.methods}
-    assert len(routes) == 22  # 12 + the web view's 10 data endpoints (its page is not an API)
+    assert len(routes) == 24  # 13 + the web view's 11 data endpoints (its page is not an API)
     operations = {(op.method.upper(), op.path) for op in
                   (result.ok() for result in SCHEMA.get_all_operations())}
     assert routes == operations
