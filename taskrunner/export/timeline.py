@@ -81,6 +81,7 @@ class _Motion:
     positions: np.ndarray       # one row per sample
     velocities: np.ndarray
     until: float                # s of trajectory executed
+    measured: bool = False      # the physics' own samples, not the trajectory sent
 
     def sample_times(self) -> np.ndarray:
         kept = self.times[self.times <= self.until]
@@ -105,6 +106,8 @@ class _Schedule:
     times: dict[int, float] = field(default_factory=dict)  # event seq → s
     motions: list[_Motion] = field(default_factory=list)
     end: float = 0.0
+    physics: list[RunEvent | None] = field(default_factory=list)  # per motion
+    measured: bool = False      # motions are the physics' samples (no velocities)
 
 
 def _trajectory(event: RunEvent) -> tuple[tuple[str, ...], np.ndarray, np.ndarray, np.ndarray]:
@@ -140,6 +143,13 @@ def _schedule(record: RunRecord) -> _Schedule:
                              float(times[-1]))
             running[event.node or ""] = motion
             out.motions.append(motion)
+            out.physics.append(None)
+        elif event.kind == "physics" and "t" in event.data:
+            # Its node's motion: the latest one of that node without a report yet.
+            for k in range(len(out.motions) - 1, -1, -1):
+                if out.motions[k].node == (event.node or "") and out.physics[k] is None:
+                    out.physics[k] = event
+                    break
         elif event.kind == "node_finished" and (event.node or "") in running:
             motion = running.pop(event.node or "")
             executed = event.data.get("executed")
@@ -152,6 +162,59 @@ def _schedule(record: RunRecord) -> _Schedule:
         cursor = max(cursor, t)
     out.end = max([cursor, *(m.t0 + m.until for m in out.motions)])
     return out
+
+
+def _measured(schedule: _Schedule) -> str | None:
+    """Put the physics' own samples (the record's ``physics`` events) in place of the
+    trajectories sent, on task time; or say why not (the trajectories are kept).
+
+    Physics time stands still between motions (each motion ends settled, and the next
+    one starts at the physics time the last ended at), and a report holds a sample
+    every ``period`` s of physics from one after its motion started (the first at most
+    ``period`` after it: the sampling clock restarts with the motion). A motion's
+    samples at physics time ``p`` so go to task time ``t0 + (p - p0)``, ``t0`` its
+    start on the task's schedule, ``p0 = max(0, p_first - period)`` its physics start;
+    the settling after its trajectory is kept up to the start of the next motion.
+    """
+    motions = schedule.motions
+    if not motions or any(report is None for report in schedule.physics):
+        missing = sum(report is None for report in schedule.physics)
+        return f"{missing} motion(s) of {len(motions)} have no physics samples"
+    order = sorted(range(len(motions)), key=lambda k: motions[k].t0)
+    for a, b in zip(order, order[1:], strict=False):
+        if motions[b].t0 < motions[a].t0 + motions[a].until - 1e-6:
+            return (f"motions {motions[a].node!r} and {motions[b].node!r} overlap in time "
+                    "(their physics reports are not one motion's each)")
+    replaced = []
+    for position, k in enumerate(order):
+        motion, report = motions[k], schedule.physics[k]
+        assert report is not None
+        data = report.data
+        try:
+            joints = tuple(str(j) for j in data["joints"])
+            p = np.asarray(data["t"], dtype=float)
+            q = np.asarray(data["q"], dtype=float).reshape(len(p), len(joints))
+            period = float(data["period"])
+        except (KeyError, TypeError, ValueError) as exc:
+            raise InputError(f"event {report.seq} (physics of {report.node!r}): it must have "
+                             f"joints, t, q and period ({exc})") from None
+        if len(p) == 0:
+            return f"the physics report of {motion.node!r} (event {report.seq}) has no samples"
+        times = p - max(0.0, float(p[0]) - period)
+        until = float(times[-1])
+        if position + 1 < len(order):
+            until = min(until, motions[order[position + 1]].t0 - motion.t0)
+        keep = times <= until + 1e-9
+        if not keep.any():
+            return f"the physics samples of {motion.node!r} begin after the next motion starts"
+        replaced.append((k, _Motion(motion.node, motion.t0, joints, times[keep], q[keep],
+                                    np.zeros((int(keep.sum()), len(joints))),
+                                    float(times[keep][-1]), measured=True)))
+    for k, motion in replaced:
+        motions[k] = motion
+    schedule.measured = True
+    schedule.end = max([schedule.end, *(m.t0 + m.until for m in motions)])
+    return None
 
 
 def _start_state(record: RunRecord, cell: Cell) -> np.ndarray:
@@ -323,6 +386,7 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
     base_ns = int(datetime.fromisoformat(record.started).timestamp() * 1e9)
     meshes, no_meshes = record_meshes(record)
     schedule = _schedule(record)
+    not_measured = _measured(schedule) if record.backend == "mujoco" else None
     for motion in schedule.motions:
         _check_joints(record, cell, motion.joints)
     out: list[tuple[int, int, TimedMessage]] = []
@@ -337,8 +401,15 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
     names = cell.model.joint_names
     for t, q, qd in _joint_samples(schedule, _start_state(record, cell), cell):
         stamp = _stamp(base_ns, t)
-        add(t, "/joint_states", rosmsg.encode_joint_state(stamp, names, q, qd))
+        # The physics reports no velocities: none is sent rather than a made-up one.
+        add(t, "/joint_states", rosmsg.encode_joint_state(
+            stamp, names, q, () if schedule.measured else qd))
         add(t, "/tf", rosmsg.encode_tf_message(tree.moving_transforms(q, stamp)))
+    if not_measured is not None:
+        add(0.0, "/rosout", rosmsg.encode_log(LogLine(
+            base_ns, rosmsg.WARN, "taskrunner.export",
+            f"/joint_states and /tf are the trajectories sent, not the physics' own "
+            f"samples: {not_measured}")))
     for event in record.events:
         t = schedule.times[event.seq]
         stamp = _stamp(base_ns, t)
