@@ -208,8 +208,9 @@ class LeastClearance:
 
     Attributes:
         distance: m, measured (exact, at ``time``): the least distance is at most this
-            and at least ``lower`` (negative: the bodies penetrate that deep there).
-        lower: m, proven: no two lanes' bodies come closer than this.
+            and at least ``lower``.
+        lower: m, proven: no two lanes' bodies come closer than this; ``-inf`` where
+            they touch (``distance`` and ``time`` are then where they first do).
         bodies: the two bodies measured at ``distance`` (None: no pair of bodies).
         time: s on the common clock, where ``distance`` was measured.
         motions: the label of each body's lane's motion running then (None: it rests).
@@ -238,8 +239,7 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
     bound of the least distance. Verifying again with ``c = m - tolerance`` either proves
     the bracket ``[c, m]`` or measures a distance below ``c`` (a new, lower ``m``): each
     round lowers ``m`` by more than ``tolerance``, so the rounds end. Where the lanes'
-    bodies penetrate, the deepest penetration the verifier measured is reported, proven
-    only down to 0 (``lower`` is then the distance itself: not a bound).
+    bodies touch, the first contact is reported (how deep they go is not measured).
 
     Raises:
         ArgumentError: ``tolerance`` is not a positive number of metres.
@@ -267,8 +267,8 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
                 break
             clearance = best.least - tolerance
         elif clearance == 0.0:
-            # Touching or penetrating (or not even 0 proven): the deepest measured.
-            lower = min(best.least, 0.0) if conflict.proven else -math.inf
+            # Touching or penetrating (or not even 0 proven): nothing is proven.
+            lower = -math.inf
             break
         else:
             if not conflict.proven:  # too close to the least distance to prove it

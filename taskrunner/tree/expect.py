@@ -55,7 +55,7 @@ from taskrunner.tree.schedule import concurrent
 from taskrunner.types import JointTrajectory
 
 __all__ = ["CheckExpectation", "StepTimer", "arm_conflicts", "check_expectation",
-           "check_task_end", "motion_collisions"]
+           "check_task_end", "motion_collisions", "record_lanes"]
 
 
 class StepTimer(py_trees.decorators.Decorator):
@@ -225,9 +225,10 @@ def _ignore_arms(scene: Scene, beside: set[str], own: set[str]) -> None:
             scene.allow_collision(a, b, reason="checked in time")
 
 
-def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
-    """Arm against arm in time, from a run's ``motion`` events (module text): one message
-    per ``parallel`` whose branches' links touch, naming both steps and the bodies."""
+def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene, list[Lane]]]:
+    """Each ``parallel`` of a run's ``motion`` events as the verifier's lanes, with the
+    scene it started in: the robots alone (links against links), their joints where the
+    record says they were when its first motion was sent; a motion at its real start."""
     instances: dict[int, dict[tuple[tuple[int, int], ...], list[TimedMotion]]] = {}
     first_state: dict[int, dict[str, float]] = {}
     for event in events:
@@ -245,13 +246,22 @@ def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
         key = tuple((int(a), int(b)) for a, b in lane)
         instances.setdefault(key[0][0], {}).setdefault(key, []).append(motion)
         first_state.setdefault(key[0][0], (event.data.get("scene") or {}).get("joints", {}))
-    misses = []
+    out = []
     for instance, lanes in instances.items():
         scene = Scene(model)  # the robots alone: links against links
         scene.set_state(model.state_with(scene.state, first_state[instance]))
+        out.append((scene, [Lane(f"branch {'.'.join(str(b) for _, b in key)}",
+                                 tuple(motions)) for key, motions in lanes.items()]))
+    return out
+
+
+def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
+    """Arm against arm in time, from a run's ``motion`` events (module text): one message
+    per ``parallel`` whose branches' links touch, naming both steps and the bodies."""
+    misses = []
+    for scene, lanes in record_lanes(model, events):
         try:
-            found = verify_lanes(scene, [Lane(f"branch {'.'.join(str(b) for _, b in key)}",
-                                              tuple(motions)) for key, motions in lanes.items()])
+            found = verify_lanes(scene, lanes)
         except TaskrunnerError as exc:
             misses.append(f"arms not verified against each other in time: {exc}")
             continue

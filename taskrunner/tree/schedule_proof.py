@@ -88,7 +88,7 @@ class ScheduleProof:
             steps = " and ".join(m or f"{lane} at rest" for m, lane in
                                  zip(least.motions, least.lanes or ("", "")))
             lines.append(f"least clearance between arms {1e3 * least.distance:.1f} mm "
-                         f"(proven >= {1e3 * max(least.lower, 0.0):.1f} mm): "
+                         f"({_proven(least.lower)}): "
                          f"{least.bodies[0]} and {least.bodies[1]} at {least.time:.3f} s, "
                          f"during {steps} ({self.motions} motions, {self.makespan:.2f} s)")
         else:
@@ -163,3 +163,8 @@ def _overlaps(committed: Sequence[Committed]) -> tuple[Overlap, ...]:
             seen[2] += end - start
     pairs = [Overlap(k, v[0], v[1], v[2]) for k, v in found.items()]
     return tuple(sorted(pairs, key=lambda o: (o.start, o.steps[0] or "", o.steps[1] or "")))
+
+
+def _proven(lower: float) -> str:
+    return (f"proven >= {1e3 * lower:.1f} mm" if math.isfinite(lower)
+            else "touching: nothing proven")
