@@ -279,7 +279,9 @@ def _closed_by_server(sock: socket.socket) -> bool:
 
 def test_a_stream_that_never_reads_is_closed_and_the_run_and_a_reader_are_unaffected(
         tmp_path, caplog):
-    app = create_app(make_settings(tmp_path / "state", stream_send_timeout_s=0.5,
+    # 2 s without taking a byte drops a client: the silent one surely (its 4 kB buffer is
+    # full at once), the reader (a thread of this busy process) not for a pause under load.
+    app = create_app(make_settings(tmp_path / "state", stream_send_timeout_s=2.0,
                                    stream_max_lag=100_000))
     with served(app, http=header_timeout_protocol(10.0)) as port:
         run_id = _request(port, "POST", "/runs",
