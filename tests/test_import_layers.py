@@ -24,8 +24,6 @@ _LONG: dict[str, str] = {
     "scene/sweep.py": "the path verifier: goes into the one collision core (issue 24 item 1)",
     "planning/planner.py": "the motion planner: its goal sampling and direct-line tries are "
                            "the seams to split along (issue 24 item 8)",
-    "tree/check.py": "the dry-run interpreter that issue 24 item 2 replaces by a check mode "
-                     "of the compiled tree",
     "backends/physics/backend.py": "the MuJoCo backend: its MJCF scene building is the seam "
                                    "(issue 24 item 8)",
 }

@@ -49,13 +49,13 @@ from pathlib import Path
 from typing import Any
 
 from py_trees.behaviour import Behaviour
+from py_trees.common import Status
 
 from taskrunner.errors import InputError, TaskrunnerError, TaskSpecError
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.tasks import (
     AddObjectStep,
-    FallbackStep,
     GoStep,
     GripperStep,
     HandoffStep,
@@ -69,15 +69,13 @@ from taskrunner.tasks import (
     TaskSpec,
     check_names,
     load_task,
-    walk_steps,
 )
 from taskrunner.tasks.waits import WaitPair, wait_pairs
-from taskrunner.tree.behaviours import TaskLeaf
-from taskrunner.tree.branch_schedule import schedule_branches
+from taskrunner.tree.checkmode import CheckMode
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.idioms import place_target
-from taskrunner.tree.leafcheck import MAX_GOAL_STATES, LeafPlayer, Motion, leaves_of
+from taskrunner.tree.leafcheck import MAX_GOAL_STATES, LeafPlayer, leaves_of
 from taskrunner.tree.occupancy import OVERLAP_TOLERANCE
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
 from taskrunner.tree.schedule_proof import ScheduleProof
@@ -146,8 +144,7 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     marked = {(p.path, p.line) for p in named}
     scene, problems, missing = _start_scene(spec, cell, marked)
     run = _DryRun(spec, cell, marked, missing)
-    ctx = TaskContext(cell, scene, None, None, seed=seed)  # type: ignore[arg-type]
-    run.sequence(spec.steps, ctx)
+    run.check(TaskContext(cell, scene, None, None, seed=seed))  # type: ignore[arg-type]
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
                        list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell,
                        schedules=run.proofs)
@@ -278,92 +275,29 @@ class _DryRun(LeafPlayer):
         self.proofs: list[ScheduleProof] = []
         self.checked = 0
         self.stopped: TaskContext | None = None  # the situation at the first failure
+        self.ctx: TaskContext  # the situation the next step starts in (set by check)
         # Where each step's motions begin and end in the trace (by id of the step), and
         # the task's wait_for: a parallel's branches are scheduled with them.
         self.spans: dict[int, tuple[int, int]] = {}
         self.waits: list[WaitPair] = wait_pairs(spec.steps)
 
-    # ------------------------------------------------------------------ composites
-    def sequence(self, steps: Iterable[StepNode], ctx: TaskContext) -> TaskContext:
-        for step in steps:
-            ctx = self.step(step, ctx)
-        return ctx
+    # ------------------------------------------------------------------ check mode
+    def check(self, ctx: TaskContext) -> None:
+        """Tick the task's tree compiled in check mode (:mod:`taskrunner.tree.checkmode`)
+        from the situation ``ctx``; it finishes in one tick."""
+        self.ctx = ctx
+        tree = compile_task(self.spec, ctx, check=CheckMode(self))
+        tree.tick_once()
+        assert tree.status == Status.SUCCESS, tree.status  # check-mode steps never wait
 
-    def step(self, step: StepNode, ctx: TaskContext) -> TaskContext:
-        mark = len(self.trace)
-        ctx = self._step(step, ctx)
-        self.spans[id(step)] = (mark, len(self.trace))
-        return ctx
+    def skips(self, step: StepNode) -> bool:
+        """Whether ``step`` names something reported already (it is not checked)."""
+        return bool(_lines(step) & self.marked or _names(step) & self.missing)
 
-    def _step(self, step: StepNode, ctx: TaskContext) -> TaskContext:
-        if isinstance(step, FallbackStep):
-            return self.fallback(step, ctx)
-        if isinstance(step, ParallelStep) and not any(
-                _lines(s) & self.marked or _names(s) & self.missing
-                for s in walk_steps(step.children)):
-            compiled = self.compile(step, ctx)  # reports what only the whole can get wrong
-            leaves = leaves_of(compiled) if compiled is not None else []
-            if leaves and all(isinstance(leaf, TaskLeaf) for leaf in leaves):
-                # Its go steps became one motion of the arms together: play it as the run does.
-                return self.leaf(step, ctx, leaves)
-            if compiled is not None:
-                return self.parallel(step, ctx)
-        if step.children:
-            return self.sequence(step.children, ctx)
-        return self.leaf(step, ctx)
-
-    def parallel(self, step: ParallelStep, ctx: TaskContext) -> TaskContext:
-        """A ``parallel`` whose branches move at once: each branch checked in turn (each
-        starts where the one before left the scene), then their motions put on one
-        schedule by the run's own rule (:mod:`taskrunner.tree.schedule`), a motion of
-        each branch in turn: where a motion must wait for another branch's arm, a note
-        says so; where waiting cannot resolve a conflict, a problem names both steps.
-        A ``go`` is scheduled as the straight joint line to its goal state (the path a
-        planner tries first), a straight move as its Cartesian path."""
-        before = ctx.scene.copy()
-        problems = len(self.problems)
-        branches: list[list[Motion]] = []
-        marks: list[int] = []
-        for child in step.children:
-            marks.append(len(self.trace))
-            ctx = self.step(child, ctx)
-            branches.append(self.trace[marks[-1]:])
-        # wait_for between these branches: where in its branch a step waits, and where
-        # the step it waits for ends.
-        waits: list[tuple[int, int, int, int, str, str | None]] = []
-        for pair in self.waits:
-            waiter, named = self.spans.get(id(pair.waiter)), self.spans.get(id(pair.named))
-            if pair.parallel is step and waiter is not None and named is not None:
-                i, j = pair.waiter_branch, pair.named_branch
-                where = str(pair.waiter.loc) if pair.waiter.loc is not None else None
-                waits.append((i, waiter[0] - marks[i], j, named[1] - marks[j], pair.name,
-                              where))
-        if len(self.problems) == problems and len(branches) > 1:
-            text, notes = schedule_branches(before, branches, waits, self.proofs)
-            self.notes += [_at(step, note) for note in notes]
-            if text is not None:
-                self.problems.append(_at(step, f"{_describe(step)}: {text}"))
-                self.tainted = True
-        return ctx
-
-    def fallback(self, step: FallbackStep, ctx: TaskContext) -> TaskContext:
-        """The first branch without problems ends the fallback; when every branch has
-        some, all are reported. A branch starts where the one before stopped (at its
-        first problem), as in a run."""
-        outer, tainted = self.problems, self.tainted
-        tried: list[tuple[list[Problem], TaskContext]] = []
-        start = ctx
-        for branch in step.steps:
-            self.problems, self.tainted, self.stopped = [], tainted, None
-            end = self.step(branch, replace(start, scene=start.scene.copy()))
-            tried.append((self.problems, end))
-            if not self.problems:
-                self.problems = outer
-                return end
-            start = self.stopped or end
-        self.problems = outer + [p for found, _ in tried for p in found]
+    def problem(self, step: StepNode, message: str) -> None:
+        """Report ``message`` at ``step``'s line; the situation is then tainted."""
+        self.problems.append(_at(step, f"{_describe(step)}: {message}"))
         self.tainted = True
-        return tried[0][1]
 
     # ------------------------------------------------------------------ leaf steps
     def compile(self, step: StepNode, ctx: TaskContext) -> Behaviour | None:
@@ -378,7 +312,7 @@ class _DryRun(LeafPlayer):
     def leaf(self, step: StepNode, ctx: TaskContext,
              leaves: list[Behaviour] | None = None) -> TaskContext:
         """Check one step (a leaf, or a parallel compiled into ``leaves``)."""
-        if _lines(step) & self.marked or _names(step) & self.missing:
+        if self.skips(step):
             # Its problem is reported already; what it would leave is unknown.
             if isinstance(step, AddObjectStep):
                 self.missing.add(step.object.name)
@@ -403,8 +337,7 @@ class _DryRun(LeafPlayer):
                                                 f"{_achieved(self.outcome, step, ctx)}"))
                 return end
             text, start, ctx = failure.text, failure.leaf, failure.ctx
-        self.problems.append(_at(step, f"{_describe(step)}: {text}"))
-        self.tainted = True
+        self.problem(step, text)
         if self.stopped is None:  # where a run stops: a fallback's next branch starts there
             self.stopped = replace(ctx, scene=ctx.scene.copy())
         if finish and not self.force(leaves[start:], ctx):

@@ -10,6 +10,12 @@ against the other branches' before it is sent (:mod:`taskrunner.tree.schedule`).
 with ``wait_for`` is preceded by a leaf holding its branch until the step it names (in
 another branch) is followed by one recording that it has finished
 (:mod:`taskrunner.tree.waiting`); such steps are never joined into one ``go`` motion.
+
+In check mode (``check=``, :mod:`taskrunner.tree.checkmode`) the same walk builds the tree
+``run-task check`` ticks: its composites are the same py_trees composites, each leaf step
+(and each ``fallback`` and ``parallel``) is what the check mode makes of it, the body of
+``retry``, ``repeat`` and ``timeout`` runs once, and ``wait_for`` holds nothing (the check
+puts a parallel's motions on one schedule instead).
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol
 
 import pinocchio as pin
 import py_trees
@@ -70,17 +76,36 @@ from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.tree.waiting import StepFinished, WaitForStep
 from taskrunner.types import Pose
 
-__all__ = ["compile_task", "object_shape", "planner_options", "timing_options"]
+__all__ = ["CheckHooks", "compile_task", "object_shape", "planner_options", "timing_options"]
 
 
-def compile_task(spec: TaskSpec, ctx: TaskContext) -> Behaviour:
-    """The behaviour tree of ``spec``; its leaves act on ``ctx``.
+class CheckHooks(Protocol):
+    """What the check mode makes of the steps it checks (:mod:`taskrunner.tree.checkmode`)."""
+
+    def leaf(self, step: StepNode) -> Behaviour:
+        """A step without sub-steps."""
+
+    def fallback(self, step: FallbackStep, branches: list[Behaviour]) -> Behaviour:
+        """A ``fallback`` of the compiled ``branches``."""
+
+    def parallel(self, step: ParallelStep, branches: list[Behaviour]) -> Behaviour:
+        """A ``parallel`` of the compiled ``branches`` (its children in document order)."""
+
+    def span(self, step: StepNode, behaviour: Behaviour) -> Behaviour:
+        """Any step, compiled."""
+
+
+def compile_task(spec: TaskSpec, ctx: TaskContext, check: CheckHooks | None = None
+                 ) -> Behaviour:
+    """The behaviour tree of ``spec``; its leaves act on ``ctx``; ``check``: the tree of
+    the check mode (module docstring).
 
     Raises:
         TaskSpecError: a step that names something the cell does not have, with file:line.
     """
     pairs = wait_pairs(spec.steps)
-    waits = _Waits({id(p.waiter): p.name for p in pairs}, {id(p.named): p.name for p in pairs})
+    waits = _Waits({id(p.waiter): p.name for p in pairs}, {id(p.named): p.name for p in pairs},
+                   check)
     children = _compile_list(spec.steps, ctx, waits)
     return py_trees.composites.Sequence(spec.name, memory=True, children=children)
 
@@ -92,6 +117,7 @@ class _Waits:
 
     waiting: Mapping[int, str] = field(default_factory=dict)
     waited: Mapping[int, str] = field(default_factory=dict)
+    check: CheckHooks | None = None  # the check mode's (compile_task)
 
     def joins(self, step: StepNode) -> bool:
         """Whether ``step`` takes part in a wait (so stays a branch of its own)."""
@@ -107,7 +133,7 @@ def _compile_list(steps: tuple[StepNode, ...], ctx: TaskContext,
     before it (a :class:`StepTimer` around that step's behaviour)."""
     out: list[Behaviour] = []
     for step in steps:
-        if isinstance(step, ExpectStep):
+        if isinstance(step, ExpectStep) and waits.check is None:
             timer = None
             if step.step_duration is not None and out:  # (none before: names.py reports it)
                 timer = StepTimer(out[-1], ctx)
@@ -169,6 +195,8 @@ def object_shape(spec):  # type: ignore[no-untyped-def]
 
 def _compile(step: StepNode, ctx: TaskContext, waits: _Waits = _NO_WAITS) -> Behaviour:
     behaviour = _compile_step(step, ctx, waits)
+    if waits.check is not None:
+        return waits.check.span(step, behaviour)
     if not waits.joins(step):
         return behaviour
     children = [behaviour]
@@ -184,6 +212,21 @@ def _compile(step: StepNode, ctx: TaskContext, waits: _Waits = _NO_WAITS) -> Beh
 
 def _compile_step(step: StepNode, ctx: TaskContext, waits: _Waits) -> Behaviour:
     name, where = step.label, _where(step)
+    if waits.check is not None:
+        match step:
+            case FallbackStep():
+                return waits.check.fallback(step, _compile_list(step.children, ctx, waits))
+            case ParallelStep():
+                return waits.check.parallel(step, [_compile(c, ctx, waits)
+                                                   for c in step.children])
+            case RetryStep():
+                return py_trees.decorators.Retry(name, _body(step, ctx, waits), num_failures=1)
+            case RepeatStep():
+                return py_trees.decorators.Repeat(name, _body(step, ctx, waits), num_success=1)
+            case TimeoutStep():
+                return _body(step, ctx, waits)  # nothing takes task time in check mode
+            case _ if not step.children:
+                return waits.check.leaf(step)
     match step:
         case SequenceStep() | IncludeStep():
             return py_trees.composites.Sequence(
