@@ -29,7 +29,10 @@ from taskrunner.runtime.session import make_backend, servo_calibration
 from taskrunner.tasks import load_task
 
 ROOT = Path(__file__).resolve().parents[2]
-SPEEDUP = 50.0
+# Firmware seconds per wall-clock second. At 50 a streaming reply had 50 ms of wall time
+# before the servos ran out of points, which a loaded machine missed ("no reply within
+# 50 ms"); at 10 the margin is five times that, and a task costs a few seconds more.
+SPEEDUP = 10.0
 
 
 @pytest.fixture(scope="module")
