@@ -167,7 +167,7 @@ class TaskRun:
         events = EventLog()
         if on_event is not None:
             events.subscribe(on_event)
-        runner = Runner(old.spec, old.cell, old.backend, old.ctx.planner,
+        runner = Runner(old.spec, old.cell, old.backend, old.ctx.plan_service(),
                         replace(old.options, runs_dir=runs_dir or old.options.runs_dir),
                         events=events, resume=plan)
         runner.record.task_text = old.record.task_text

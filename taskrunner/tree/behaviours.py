@@ -254,7 +254,7 @@ class _Executes(TaskLeaf):
         timed = _plays_time(self.ctx.backend)
         before = self.ctx.clock.now() if timed else 0.0
         try:
-            handle = self.ctx.backend.execute(trajectory)
+            handle = self.ctx.motion_backend().execute(trajectory)
         except BackendError as exc:  # refused, or stopped on a fault since the last motion
             return self.fail(f"execution failed: {exc}", kind="execution")
         self.handle = handle
@@ -506,7 +506,7 @@ class MoveToGoal(_Executes):
             if isinstance(found, StagedGoals) and not found.complete:
                 self._rest = (found, request)
                 request = replace(request, options=replace(options, direct_only=True))
-            self.ticket = self.ctx.planner.submit(self.ctx.scene, request)
+            self.ticket = self.ctx.plan_service().submit(self.ctx.scene, request)
         except TaskrunnerError as exc:
             self.fail(str(exc))
 
@@ -538,7 +538,8 @@ class MoveToGoal(_Executes):
         self._rest = None
         try:
             goal = _resolve_named(found.all(), self.ctx.scene.robot, self.group)
-            self.ticket = self.ctx.planner.submit(self.ctx.scene, replace(request, goal=goal))
+            self.ticket = self.ctx.plan_service().submit(self.ctx.scene,
+                                                         replace(request, goal=goal))
         except TaskrunnerError as exc:
             return self.fail(str(exc))
         return self.update()  # an in-process planner has answered already

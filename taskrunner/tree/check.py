@@ -6,20 +6,22 @@
 1. the loader's problems (unknown verbs or fields, wrong types, parameters, includes);
    when there are any, nothing else is checked;
 2. the names the cell does not have (:func:`~taskrunner.tasks.check_names`);
-3. a kinematic dry run of the steps in document order, on the scene the task starts in.
+3. a kinematic dry run on the scene the task starts in: the task's tree compiled as for
+   a run and ticked in check mode (:mod:`taskrunner.tree.checkmode`): its composites are
+   the run's py_trees composites, its steps plan but do not move.
 
-The dry run compiles each leaf step as a run does (:func:`compile_task`: pick, place and
-hand-over are the very subtrees of :mod:`taskrunner.tree.idioms`) and plays the leaves
-without OMPL and without a backend. A ``MoveToGoal`` goal becomes goal states as the
-planner makes them (named and joint targets; IK for poses, seeded like the run) and is
-checked for collisions; ``MoveStraight`` runs the :class:`CartesianPlanner` and times the
-path (toppra) as a run does before it moves; ``MoveJoints`` checks its joint-space line;
-``SceneAction`` edits the scene. A place whose target is inside another object is a
-problem too (a run lets a 5-DOF arm's object touch the world while it is set down). The
-robot then *is* at the state reached, so later steps are checked in the situation
-earlier ones leave: a picked object is attached where it was grasped, a placed one sits
-where it was released. What needs a planner is not checked: the joint-space path of a
-``go`` or of the motion to a pre-grasp.
+Each leaf step is compiled as a run compiles it (:func:`compile_task`: pick, place and
+hand-over are the very subtrees of :mod:`taskrunner.tree.idioms`) and its leaves played
+without OMPL and without a backend (:mod:`taskrunner.tree.leafcheck`). A ``MoveToGoal``
+goal becomes goal states as the planner makes them (named and joint targets; IK for
+poses, seeded like the run) and is checked for collisions; ``MoveStraight`` runs the
+:class:`CartesianPlanner` and times the path (toppra) as a run does before it moves;
+``MoveJoints`` checks its joint-space line; ``SceneAction`` edits the scene. A place
+whose target is inside another object is a problem too (a run lets a 5-DOF arm's object
+touch the world while it is set down). The robot then *is* at the state reached, so
+later steps are checked in the situation earlier ones leave: a picked object is attached
+where it was grasped, a placed one sits where it was released. What needs a planner is
+not checked: the joint-space path of a ``go`` or of the motion to a pre-grasp.
 
 Of several goal states (the IK searches are seeded as in the run, so they are the run's)
 the dry run follows the first collision-free one; when the rest of the step fails from
@@ -36,7 +38,7 @@ branches' problems only when every branch has some (each branch starts where the
 before stopped, as in a run); the body of ``retry``, ``timeout`` and ``repeat`` is
 checked once; a ``parallel`` of ``go`` steps is the one motion a run makes of it, other
 parallels are checked child by child, then their motions put on one schedule by the run's
-own rule (:mod:`taskrunner.tree.schedule`): waits become notes, a conflict that waiting
+own rule (:mod:`taskrunner.tree.branch_schedule`): waits become notes, a conflict that waiting
 cannot resolve a problem naming both lines.
 """
 
@@ -144,7 +146,7 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     marked = {(p.path, p.line) for p in named}
     scene, problems, missing = _start_scene(spec, cell, marked)
     run = _DryRun(spec, cell, marked, missing)
-    run.check(TaskContext(cell, scene, None, None, seed=seed))  # type: ignore[arg-type]
+    run.check(TaskContext(cell, scene, seed=seed))  # no planner, no backend: nothing moves
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
                        list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell,
                        schedules=run.proofs)

@@ -17,7 +17,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.backends.base import Backend, ObjectTracking
-from taskrunner.errors import UnknownNameError
+from taskrunner.errors import BackendError, PlanningError, UnknownNameError
 from taskrunner.planning.cartesian import CartesianPlanner
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
@@ -118,9 +118,14 @@ class ExecutedMotion:
 
 @dataclass
 class TaskContext:
-    """The shared state of one run.
+    """The shared state of one run, or of one check (``run-task check`` ticks the task's
+    tree in check mode, :mod:`taskrunner.tree.checkmode`: its leaves plan but do not move).
 
     Attributes:
+        planner: the run's plan service; None in a check's context (see
+            :meth:`plan_service`).
+        backend: the run's execution backend; None in a check's context (see
+            :meth:`motion_backend`).
         timing: default time parameterization (scaling from the robot unless set).
         seed: seeds every planner call of the run (each call adds its own offset).
         executed: every trajectory sent to the backend, in order.
@@ -138,8 +143,8 @@ class TaskContext:
 
     cell: Cell
     scene: Scene
-    planner: PlanService
-    backend: Backend
+    planner: PlanService | None = None
+    backend: Backend | None = None
     events: EventLog = field(default_factory=EventLog)
     timing: TimingOptions = field(default_factory=TimingOptions)
     seed: int = 0
@@ -151,6 +156,27 @@ class TaskContext:
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
     _cartesian: dict[int, tuple[Scene, CartesianPlanner]] = field(default_factory=dict)
+
+    def plan_service(self) -> PlanService:
+        """The run's plan service.
+
+        Raises:
+            PlanningError: a check's context (it has none: the check plans no motion).
+        """
+        if self.planner is None:
+            raise PlanningError("a check's context has no plan service (its leaves do not "
+                                "plan the motions they check)")
+        return self.planner
+
+    def motion_backend(self) -> Backend:
+        """The run's execution backend.
+
+        Raises:
+            BackendError: a check's context (it has none: nothing moves in a check).
+        """
+        if self.backend is None:
+            raise BackendError("a check's context has no backend (nothing moves in a check)")
+        return self.backend
 
     def arm(self, name: str) -> Arm:
         if name not in self._arms:
@@ -175,11 +201,12 @@ class TaskContext:
         """Make the scene's robot state what the backend reports. ``finished``: the node
         (name, file:line) whose motion just ended: a physics backend's report of it
         becomes a ``physics`` event."""
-        state = self.backend.joint_state()
+        backend = self.motion_backend()
+        state = backend.joint_state()
         self.scene.set_state(dict(zip(state.names, state.positions)))
-        if isinstance(self.backend, ObjectTracking):  # physics: objects go where they really are
-            self.backend.bind_scene(self.scene, self.materials)
-            report = self.backend.physics_report() if finished is not None else None
+        if isinstance(backend, ObjectTracking):  # physics: objects go where they really are
+            backend.bind_scene(self.scene, self.materials)
+            report = backend.physics_report() if finished is not None else None
             if report is not None and finished is not None:
                 message = f"{len(report.get('t', ()))} samples of joints and objects"
                 for grasp in report.get("grasps", ()):  # grasp_mode weld
@@ -191,7 +218,7 @@ class TaskContext:
             # While a motion runs, moves under 0.1 mm are skipped; when it has ended (the
             # physics paused) objects take their exact poses, so what is planned next does
             # not depend on when the tree last looked.
-            for name, pose in self.backend.object_poses().items():
+            for name, pose in backend.object_poses().items():
                 if name in self.scene and not self.scene.object(name).attached \
                         and _moved(self.scene.object(name).pose, pose, exact=finished is not None):
                     self.scene.move_object(name, pose)
