@@ -32,6 +32,7 @@ import py_trees
 from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
+from taskrunner.scene import Scene
 from taskrunner.tasks import FallbackStep, ParallelStep, Problem, StepNode, walk_steps
 from taskrunner.tasks.waits import WaitPair
 from taskrunner.tree.behaviours import TaskLeaf
@@ -188,7 +189,7 @@ class ScheduledParallel(py_trees.decorators.Decorator):
                  checker: Checker) -> None:
         super().__init__(name=f"{step.label} (schedule)", child=child)
         self.step, self.joint, self.checker = step, joint, checker
-        self.before = checker.ctx.scene
+        self.before: Scene | None = None  # the scene as the parallel starts
         self.count = 0
 
     def initialise(self) -> None:
@@ -213,6 +214,7 @@ class ScheduledParallel(py_trees.decorators.Decorator):
                 where = str(pair.waiter.loc) if pair.waiter.loc is not None else None
                 waits.append((i, waiter[0] - spans[i][0], j, named[1] - spans[j][0],
                               pair.name, where))
+        assert self.before is not None
         text, notes = schedule_branches(self.before, branches, waits, c.proofs)
         c.notes += [_at(step, note) for note in notes]
         if text is not None:
