@@ -5,6 +5,16 @@ firmware's clock (keeping ``buffered_ms`` above a lead), polls ``STATUS`` for pr
 positions (commanded angles converted back to joints), and ends the execution when the
 firmware is idle after the last point. Cancel is ``STOP`` (the servos stay where they are).
 
+*Arms at once on one board.* The firmware has one queue and one clock, so trajectories of
+disjoint joints (two arms of a pair, a ``parallel``'s branches) share one stream: each
+is a part of it, started at the stream's time of the last point queued when it arrived
+(about ``lead_ms`` of firmware time after now: points already queued cannot change),
+and every point carries each running part's servos where that part is then, the other
+servos where they were last commanded. A part's progress is the firmware's playback time
+less its start (0 until it has begun), so a late start shows as an arm behind its
+schedule. Cancelling one part sends ``STOP`` (the queue is cleared, every servo stays
+where it is) and streams the other parts on from where they stopped.
+
 While a trajectory streams, every reply has a short deadline (``stream_reply_timeout``,
 and never later than when the servos would run out of queued points), with no retries:
 a stalled, silent or slow link fails the motion within a fraction of a second instead of
@@ -27,14 +37,14 @@ from typing import Any
 import numpy as np
 
 from taskrunner.backends.base import BaseBackend, TrajectoryExecution, check_option
-from taskrunner.backends.calibration import ServoCalibration
+from taskrunner.backends.calibration import ServoCalibration, round_degrees
+from taskrunner.backends.execution import sample_positions
 from taskrunner.backends.servo_protocol import (
     ServoLink,
     StreamPoint,
     Transport,
     error_code,
     parse_traj_reply,
-    plan_points,
 )
 from taskrunner.errors import BackendBusyError, BackendError, UnknownNameError
 from taskrunner.types import JointTrajectory
@@ -95,18 +105,66 @@ class ServoOptions:
 
 
 @dataclass
-class _Stream:
+class _Part:
+    """One trajectory on the stream's timeline: its first sample at ``start_ms``."""
+
     execution: TrajectoryExecution
-    points: list[StreamPoint]
-    next: int = 0
+    start_ms: float
+    owners: list[tuple[int, int]]  # (column of the trajectory, servo)
+
+    @property
+    def end_ms(self) -> float:
+        return self.start_ms + 1000.0 * self.execution.duration
+
+
+@dataclass
+class _Stream:
+    """The firmware's queue: its timeline (ms from the stream's first point) and the
+    parts on it. ``sent_ms`` is the time of the last point queued (``sent_at`` rounded
+    as the firmware has it), ``degrees`` the angles it commanded."""
+
+    parts: list[_Part]
+    degrees: np.ndarray
+    sent_ms: float = 0.0
+    sent_at: int = 0
+    next: int = 0  # points sent
     buffered_ms: int = 0
     buffered_at: float = 0.0  # wall time of the last buffered_ms
     underruns: int = 0
     watchdog_stops: int = 0  # the firmware's count when the stream began
 
+    def pending(self) -> bool:
+        """Whether a part has points left to queue."""
+        return any(p.end_ms - self.sent_ms >= 0.5 for p in self.parts)
+
+    def next_point(self, tick_ms: int, calibration: ServoCalibration) -> StreamPoint:
+        """The next point: a tick after the last, or a part's end if sooner (the grid of
+        :func:`~taskrunner.backends.servo_protocol.plan_points` for one part)."""
+        t_ms = self.sent_ms + tick_ms
+        for part in self.parts:
+            if part.end_ms - self.sent_ms >= 0.5:
+                t_ms = min(t_ms, part.end_ms)
+        at = max(round(t_ms), self.sent_at + 1)
+        degrees = np.array(self.degrees, dtype=float)
+        for part in self.parts:
+            if part.start_ms > t_ms:
+                continue
+            trajectory = part.execution.trajectory
+            elapsed = min(t_ms - part.start_ms, 1000.0 * part.execution.duration) / 1000.0
+            q = sample_positions(trajectory, float(trajectory.times[0]) + elapsed)
+            for j, servo in part.owners:
+                degrees[servo] = float(calibration.raw_degrees(trajectory.names[j], q[j]))
+        return StreamPoint(at, at - self.sent_at, round_degrees(degrees))
+
+    def progress(self, part: _Part, buffered: int) -> float:
+        """s of ``part`` the servos have played, ``buffered`` ms still queued."""
+        played = self.sent_at - buffered - part.start_ms
+        return min(max(played / 1000.0, 0.0), part.execution.duration)
+
 
 class ServoBackend(BaseBackend):
-    """Executes trajectories on the servo firmware over ``transport`` (one at a time).
+    """Executes trajectories on the servo firmware over ``transport`` (several at once
+    when their joints differ: one stream, module text).
 
     Args:
         joint_names: joints driven; each must be calibrated.
@@ -174,15 +232,11 @@ class ServoBackend(BaseBackend):
 
         Raises:
             TrajectoryRejectedError: out of range (names joint and time), or see base.
-            BackendBusyError: another trajectory is running (the firmware has one queue).
+            BackendBusyError: one of its joints moves under another trajectory.
             BackendError: the link is down or the backend closed.
         """
         self._calibration.check_trajectory_in_range(trajectory)
-        with self._lock:
-            if self._executions:
-                raise BackendBusyError("the servo firmware streams one trajectory at a time; "
-                                       "another one is running")
-            return super().execute(trajectory)
+        return super().execute(trajectory)
 
     def command(self, line: str, wait: float | None = 30.0) -> dict[str, Any]:
         """Send one bench command (``HOME``, ``ZERO``, ``SPEED:n``, ``MOVE:a1,…``) while no
@@ -228,16 +282,29 @@ class ServoBackend(BaseBackend):
     # -- BaseBackend hooks (under self._lock) ---------------------------------------------
 
     def _begin(self, execution: TrajectoryExecution) -> None:
-        base = np.array(self._status["pos"], dtype=float)
-        points = plan_points(execution.trajectory, self._calibration, base, self._tick_ms)
-        self._stream = _Stream(execution, points,
-                               watchdog_stops=int(self._status.get("watchdog_stops", 0)))
+        trajectory, calibration = execution.trajectory, self._calibration
+        owners = [(j, calibration.servo_of(n)) for j, n in enumerate(trajectory.names)
+                  if n in calibration.servo_joint_names]
+        stream = self._stream
+        if stream is None:
+            self._stream = _Stream([_Part(execution, 0.0, owners)],
+                                   np.array(self._status["pos"], dtype=float),
+                                   watchdog_stops=int(self._status.get("watchdog_stops", 0)))
+        else:  # beside the parts running: from the last point queued on
+            stream.parts.append(_Part(execution, stream.sent_ms, owners))
         self._wake.notify_all()
 
     def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
         if execution.finished:
             return
-        if self._stream is not None and self._stream.execution is execution:
+        stream = self._stream
+        others: list[tuple[_Part, float]] = []
+        if stream is not None:
+            played = stream.sent_at - stream.buffered_ms - (
+                (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
+                if stream.next else 0.0)
+            others = [(p, played - p.start_ms) for p in stream.parts
+                      if p.execution is not execution and not p.execution.finished]
             self._stream = None  # the worker sends no more points of it
         try:
             self._send_stop()
@@ -245,6 +312,14 @@ class ServoBackend(BaseBackend):
             self._finish(execution, "failed", f"{message}: STOP failed ({exc})", exc)
             return
         super()._cancel(execution, message)
+        if others and stream is not None:
+            # STOP cleared the queue: the other parts go on from where they are.
+            self._stream = _Stream([_Part(p.execution, -max(done, 0.0), p.owners)
+                                    for p, done in others],
+                                   np.array(self._status["pos"], dtype=float),
+                                   underruns=stream.underruns,
+                                   watchdog_stops=int(self._status.get("watchdog_stops", 0)))
+            self._wake.notify_all()
 
     # -- internals ------------------------------------------------------------------------
 
@@ -298,24 +373,25 @@ class ServoBackend(BaseBackend):
             self._fail(BackendError(f"servo backend worker died: {exc!r}"))
 
     def _should_send(self, stream: _Stream) -> bool:
-        if stream.next >= len(stream.points):
+        if not stream.pending():
             return False
         drained = (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
         return stream.next == 0 or stream.buffered_ms - drained < self._options.lead_ms
 
     def _reply_deadline(self, stream: _Stream | None) -> float | None:
         """Seconds to wait for a reply now: None (the transport's own) outside a stream."""
-        if stream is None or stream.execution.finished:
+        if stream is None or all(p.execution.finished for p in stream.parts):
             return None
         timeout = self._options.stream_reply_timeout
-        if 0 < stream.next < len(stream.points):  # more to send: the servos must not starve
+        if stream.next > 0 and stream.pending():  # more to send: the servos must not starve
             drained = (time.monotonic() - stream.buffered_at) * 1000.0 * self._options.time_scale
             runout = (stream.buffered_ms - drained) / 1000.0 / self._options.time_scale
             timeout = min(timeout, max(runout, _MIN_STREAM_TIMEOUT))
         return timeout
 
     def _send_point(self, stream: _Stream) -> None:
-        point = stream.points[stream.next]
+        with self._lock:
+            point = stream.next_point(self._tick_ms, self._calibration)
         result = self._link.exchange(point.line, guard=lambda: self._stream is stream,
                                      timeout=self._reply_deadline(stream))
         if result is None:
@@ -330,11 +406,15 @@ class ServoBackend(BaseBackend):
             if stream.next > 0 and queued == 1:
                 stream.underruns += 1
             stream.next += 1
+            stream.sent_ms = min([stream.sent_ms + self._tick_ms]
+                                 + [p.end_ms for p in stream.parts
+                                    if p.end_ms - stream.sent_ms >= 0.5])
+            stream.sent_at, stream.degrees = point.at_ms, point.degrees
             stream.buffered_ms, stream.buffered_at = buffered, time.monotonic()
             if self._stream is stream:
-                sent_ms = point.at_ms
-                progress = max(0.0, (sent_ms - buffered) / 1000.0)
-                stream.execution.set_progress(min(progress, stream.execution.duration))
+                for part in stream.parts:
+                    if not part.execution.finished:
+                        part.execution.set_progress(stream.progress(part, buffered))
 
     def _poll_status(self) -> None:
         with self._lock:
@@ -347,26 +427,38 @@ class ServoBackend(BaseBackend):
         with self._lock:
             self._apply_status(status, sequence)
             stream = self._stream
-            if stream is None or stream.execution.finished:
+            if stream is None or all(p.execution.finished for p in stream.parts):
                 return
             if int(status.get("watchdog_stops", 0)) > stream.watchdog_stops:
                 raise BackendError(
                     "the firmware's watchdog stopped the servos (it heard nothing from the "
                     f"host for {self._version.get('watchdog_ms')} ms of firmware time) at "
                     f"{status.get('pos')} deg")
+            buffered = int(status.get("buffered_ms", 0))
             if stream.next > 0:
-                sent_ms = stream.points[stream.next - 1].at_ms
-                buffered = int(status.get("buffered_ms", 0))
                 stream.buffered_ms, stream.buffered_at = buffered, time.monotonic()
-                progress = (sent_ms - buffered) / 1000.0
-                stream.execution.set_progress(min(max(progress, 0.0), stream.execution.duration))
-            if stream.next >= len(stream.points) and not status.get("moving", True):
-                self._stream = None
-                stream.execution.set_progress(stream.execution.duration)
+                for part in stream.parts:
+                    if not part.execution.finished:
+                        part.execution.set_progress(stream.progress(part, buffered))
+            idle = not stream.pending() and not status.get("moving", True)
+            for part in list(stream.parts):
+                # A part ends when its last point has played: the firmware idle after the
+                # stream's last point, or, while a part ending later still runs, played
+                # past its end.
+                queued = part.end_ms - stream.sent_ms < 0.5
+                played = (stream.next > 0 and stream.sent_at - buffered >= round(part.end_ms)
+                          and any(p.end_ms > part.end_ms and not p.execution.finished
+                                  for p in stream.parts))
+                if part.execution.finished or not (queued and (idle or played)):
+                    continue
+                part.execution.set_progress(part.execution.duration)
                 message = "trajectory executed"
                 if stream.underruns:
                     message += f" ({stream.underruns} underrun(s): the motion was delayed)"
-                self._finish(stream.execution, "succeeded", message)
+                self._finish(part.execution, "succeeded", message)
+            stream.parts = [p for p in stream.parts if not p.execution.finished]
+            if not stream.parts:
+                self._stream = None
 
 
 def _decode_status(link: ServoLink, data: str) -> dict[str, Any]:
