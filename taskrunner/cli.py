@@ -223,6 +223,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
                        help="override a task parameter (repeatable)")
     check.add_argument("--seed", type=int, default=0, help="IK and planner seed (0)")
+    check.add_argument("--json", action="store_true",
+                       help="print the report as JSON (as /tasks/check answers, with notes)")
     check.add_argument("--data-dir", default=None,
                        help="the API's data folder, for poses it taught (TASKRUNNER_DATA_DIR, "
                             "else ./state)")

@@ -53,6 +53,19 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     with _taught_poses(args).active():
         report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
+    if getattr(args, "json", False):
+        import json
+
+        def problem(p: object) -> dict[str, object]:
+            path, line = getattr(p, "path", None), getattr(p, "line", None)
+            return {"file": str(path) if path is not None else None, "line": line,
+                    "message": getattr(p, "message", str(p)), "text": str(p)}
+
+        print(json.dumps({"ok": report.ok, "cell": report.cell, "steps": report.steps,
+                          "problems": [problem(p) for p in report.problems],
+                          "notes": [problem(n) for n in report.notes],
+                          "schedules": [s.to_dict() for s in report.schedules]}, indent=2))
+        return ExitCode.OK if report.ok else ExitCode.INVALID
     for note in report.notes:
         print(f"note: {note}")
     if report.problems:

@@ -62,3 +62,21 @@ def test_the_check_s_least_clearance_is_the_verifier_s_on_the_run_s_record(path,
         # Each link's step then, as the record has it (the instants may differ: a
         # gripper's recorded motion is its controller's, not the check's estimate).
         assert proof.least.motions == found.motions
+
+
+def test_run_task_check_json_prints_the_schedule_s_proof(capsys):
+    import json
+
+    from taskrunner.cli import main
+
+    assert main(["check", "--json", str(HANDOFF_OVERLAP)]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["ok"] is True and report["cell"] == "servo_arm_pair"
+    (schedule,) = report["schedules"]
+    least = schedule["least_clearance"]
+    assert least["lower"] <= least["distance"] and len(least["links"]) == 2
+    assert [s.rsplit(":", 1)[1] for s in least["steps"]] == ["21", "22"]
+    # The right arm's go (line 22) waits for the left arm's pick (line 21) to pass.
+    (wait,) = schedule["waits"]
+    assert wait["step"].endswith(":22") and wait["until"] > wait["since"]
+    assert any(n["text"].endswith(n["message"]) for n in report["notes"])
