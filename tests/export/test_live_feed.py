@@ -5,7 +5,6 @@
 from __future__ import annotations
 
 import io
-import json
 import struct
 import threading
 import time
@@ -13,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from rosbags.typesys import Stores, get_typestore
+from foxglove_client import HUMBLE, subscribe
 from websockets.sync.client import connect
 
 from taskrunner.errors import ArgumentError
@@ -21,25 +20,6 @@ from taskrunner.export.live import FoxgloveFeed, FoxgloveFeedOptions
 from taskrunner.resources import DATA_ROOT, resolve_cell
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.session import run_task_file
-
-HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
-
-
-def _subscribe(ws: Any, topics: list[str]) -> dict[int, tuple[str, str]]:
-    """Read the server's hello and channels; subscribe to ``topics``: subscription id →
-    (topic, schema name)."""
-    channels: dict[str, dict[str, Any]] = {}
-    deadline = time.monotonic() + 10
-    while not set(topics) <= set(channels) and time.monotonic() < deadline:
-        message = json.loads(ws.recv(timeout=10))
-        if message["op"] == "advertise":
-            channels.update({c["topic"]: c for c in message["channels"]})
-    subscriptions = {i: channels[t] for i, t in enumerate(topics, start=1)}
-    ws.send(json.dumps({"op": "subscribe", "subscriptions": [
-        {"id": i, "channelId": c["id"]} for i, c in subscriptions.items()]}))
-    for channel in subscriptions.values():
-        assert (channel["encoding"], channel["schemaEncoding"]) == ("cdr", "ros2msg")
-    return {i: (c["topic"], c["schemaName"]) for i, c in subscriptions.items()}
 
 
 def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
@@ -49,7 +29,7 @@ def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
     with FoxgloveFeed(cell, FoxgloveFeedOptions(port=0, rate_hz=50)) as feed:
         def client() -> None:
             with connect(feed.url, subprotocols=["foxglove.sdk.v1"]) as ws:
-                subscriptions = _subscribe(ws, ["/joint_states", "/robot_description"])
+                subscriptions = subscribe(ws, ["/joint_states", "/robot_description"])
                 ready.set()
                 while not done.is_set():
                     try:
