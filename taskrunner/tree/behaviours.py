@@ -480,14 +480,23 @@ class MoveToGoal(_Executes):
             goals = goals_key(found)
         return choice_key(ctx.scene, self.group, self.name, goals, seed)
 
+    def request_goals(self, ctx: TaskContext
+                      ) -> tuple[Goal | tuple[Goal, ...] | StagedGoals, PlannerOptions,
+                                 tuple[Hashable, ...] | None]:
+        """What a plan of this leaf asks for in ``ctx``, as the run and the check both
+        compute it: the goal(s) (a staged list as it is), the options with the request's
+        seed (the context's next), and the key of the goal state chosen (None: one goal
+        state only)."""
+        found = self._goal(ctx)
+        options = replace(self.options, seed=ctx.next_seed())
+        return found, options, self.choice_key(ctx, found, options.seed)
+
     def start(self) -> None:
         super().start()
         self.ticket = None
         self._rest = None
         try:
-            found: Goal | tuple[Goal, ...] | StagedGoals = self._goal(self.ctx)
-            options = replace(self.options, seed=self.ctx.next_seed())
-            key = self.choice_key(self.ctx, found, options.seed)
+            found, options, key = self.request_goals(self.ctx)
             picked = chosen(self.ctx.scene.robot, key) if key is not None else None
             if picked is not None:
                 # The goal state the check followed to the end of its step: that one only.
@@ -602,6 +611,19 @@ class MoveStraight(_Executes):
                                      options=self.fallback)
         return result
 
+    def timed(self, ctx: TaskContext, path: JointPath) -> JointTrajectory | None:
+        """``path`` timed as the leaf times it before it moves: by the joint limits, and by
+        pilz_cartesian_limits.yaml's if the robot has it (None: no link to time it by,
+        the plain timing is then the backend send's).
+
+        Raises:
+            TaskrunnerError: the path cannot be timed.
+        """
+        model = ctx.scene.robot
+        link = self.link if self.link and model.has_link(self.link) else None
+        link = link or model.group(self.group).tip_link
+        return time_cartesian_path(model, path, link, self.timing) if link is not None else None
+
     def start(self) -> None:
         super().start()
         started = time.perf_counter()
@@ -615,12 +637,7 @@ class MoveStraight(_Executes):
                                      f"{100 * result.fraction:.0f} % ({result.message})")
             return
         try:
-            # Timed by the joint limits, and by pilz_cartesian_limits.yaml's if the robot has it.
-            model = self.ctx.scene.robot
-            link = self.link if self.link and model.has_link(self.link) else None
-            link = link or model.group(self.group).tip_link
-            trajectory = (time_cartesian_path(model, result.path, link, self.timing)
-                          if link is not None else None)
+            trajectory = self.timed(self.ctx, result.path)
             self.outcome = self.execute_path(result.path, time.perf_counter() - started,
                                              trajectory)
         except TaskrunnerError as exc:
@@ -632,10 +649,15 @@ class MoveStraight(_Executes):
         return self.outcome
 
 
+JOINT_STEP = 0.01
+"""rad between the collision checks of a :class:`MoveJoints` line."""
+
+
 class MoveJoints(_Executes):
     """Move joints straight in joint space to target values (a gripper opening or closing).
 
-    The motion is checked for collisions every 0.01 rad unless ``check`` is False.
+    The motion is checked for collisions every :data:`JOINT_STEP` rad unless ``check`` is
+    False.
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext,
@@ -645,27 +667,42 @@ class MoveJoints(_Executes):
         self.values, self.check = values, check
         self.outcome: Status = Status.RUNNING
 
+    def target(self, ctx: TaskContext) -> tuple[tuple[str, ...], np.ndarray, list[str]]:
+        """The joints moved, the state the leaf moves to from ``ctx``'s scene state, and
+        how that state breaks the joint limits (empty: it does not)."""
+        target = self.values(ctx)
+        goal = ctx.scene.robot.state_with(ctx.scene.state, target)
+        return tuple(target), goal, ctx.scene.robot.limit_violations(goal)
+
+    @staticmethod
+    def first_collision(ctx: TaskContext, start: np.ndarray, goal: np.ndarray
+                        ) -> np.ndarray | None:
+        """The first state in collision of the straight joint line from ``start`` to
+        ``goal``, checked every :data:`JOINT_STEP` rad (mimic joints following), or None."""
+        model, scene = ctx.scene.robot, ctx.scene
+        steps = max(1, int(np.ceil(np.max(np.abs(goal - start)) / JOINT_STEP)))
+        for t in np.linspace(0.0, 1.0, steps + 1)[1:]:
+            q = model.apply_mimic(start + t * (goal - start))
+            if scene.in_collision(q):
+                return q
+        return None
+
     def start(self) -> None:
         super().start()
         scene, model = self.ctx.scene, self.ctx.scene.robot
         try:
-            target = self.values(self.ctx)
-            names = tuple(target)
-            idx = model.indices(names)
             start = scene.state
-            goal = model.state_with(start, target)
-            bad = model.limit_violations(goal)
+            names, goal, bad = self.target(self.ctx)
+            idx = model.indices(names)
             if bad:
                 self.outcome = self.fail("target outside the joint limits: " + "; ".join(bad))
                 return
             if self.check:
-                steps = max(1, int(np.ceil(np.max(np.abs(goal - start)) / 0.01)))
-                for t in np.linspace(0.0, 1.0, steps + 1)[1:]:
-                    q = model.apply_mimic(start + t * (goal - start))
-                    if scene.in_collision(q):
-                        pairs = ", ".join(f"{c.a}–{c.b}" for c in scene.collisions(q)[:3])
-                        self.outcome = self.fail(f"moving {', '.join(names)} collides: {pairs}")
-                        return
+                q = self.first_collision(self.ctx, start, goal)
+                if q is not None:
+                    pairs = ", ".join(f"{c.a}–{c.b}" for c in scene.collisions(q)[:3])
+                    self.outcome = self.fail(f"moving {', '.join(names)} collides: {pairs}")
+                    return
             path = JointPath(names, np.vstack([start[idx], goal[idx]]))
             self.outcome = self.execute_path(path, 0.0)
         except TaskrunnerError as exc:

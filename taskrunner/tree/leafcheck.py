@@ -37,9 +37,8 @@ from taskrunner.errors import (
 )
 from taskrunner.kinematics import IkSolver
 from taskrunner.planning.cartesian import CartesianPlanner
-from taskrunner.planning.planner import interpolate_path, pose_goal_states
+from taskrunner.planning.planner import pose_goal_states
 from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
-from taskrunner.planning.timing import parameterize_path
 from taskrunner.robot.cell import Cell
 from taskrunner.robot.model import Group
 from taskrunner.scene import Contact, Scene
@@ -58,7 +57,6 @@ __all__ = ["MAX_GOAL_STATES", "LeafFailure", "LeafPlayer", "Motion", "describe_p
 MAX_GOAL_STATES = 8
 """Goal states of one ``MoveToGoal`` tried, in the planner's order, to see whether any
 lets the rest of its step succeed."""
-_JOINT_STEP = 0.01  # rad between the collision checks of a MoveJoints line, as in a run
 
 Motion = tuple[Behaviour, np.ndarray, np.ndarray, JointPath | None]
 """A motion the check made: the leaf, its start and end states, and its path (None: the
@@ -200,17 +198,17 @@ class LeafPlayer:
         lead, word = (f"{stage}: " if stage else ""), _goal_word(stage)
         start = scene.state
         try:
-            found = leaf.goal_list(ctx)
+            # The run's own request (its seed the context's next), so IK finds what the
+            # run finds.
+            found, options, key = leaf.request_goals(ctx)
             goals = found.all() if isinstance(found, StagedGoals) else found
             group = model.group(leaf.group)
-            seed = ctx.next_seed()  # as MoveToGoal draws it, so IK finds what the run finds
-            key = leaf.choice_key(ctx, found, seed)
             if not self.tainted and scene.in_collision(start):
                 return f"{lead}start state in collision ({describe_pairs(scene.collisions(start), scene)})"
             valid: list[np.ndarray] = []
             rejected: list[np.ndarray] = []
             for q in self.candidates(goals if isinstance(goals, tuple) else (goals,), group,
-                                     start, replace(leaf.options, seed=seed), scene):
+                                     start, options, scene):
                 bad = model.limit_violations(q)
                 if bad:
                     return f"{lead}goal outside the joint limits: " + "; ".join(bad)
@@ -271,24 +269,21 @@ class LeafPlayer:
 
     def apply(self, leaf: Behaviour, stage: str | None, ctx: TaskContext) -> str | None:
         """Play a leaf that has no goal states to choose; what failed, or None."""
-        scene, model = ctx.scene, ctx.scene.robot
+        scene = ctx.scene
         try:
             if isinstance(leaf, MoveStraight):
                 return self.straight(leaf, stage, ctx)
             if isinstance(leaf, MoveJoints):
                 start = scene.state
-                goal = model.state_with(start, leaf.values(ctx))
+                _, goal, bad = leaf.target(ctx)  # the run's own target and checks
                 what = {"open": "opening the gripper", "close": "closing the gripper"}.get(
                     stage or "", stage or "gripper motion")
-                bad = model.limit_violations(goal)
                 if bad:
                     return f"{what}: target outside the joint limits: " + "; ".join(bad)
                 if leaf.check and not (self.tainted and scene.in_collision(start)):
-                    line = interpolate_path(np.vstack([start, goal]), _JOINT_STEP)
-                    for k in range(1, len(line)):
-                        q = model.apply_mimic(line[k].copy())
-                        if scene.in_collision(q):
-                            return f"{what} collides ({describe_pairs(scene.collisions(q))})"
+                    q = leaf.first_collision(ctx, start, goal)
+                    if q is not None:
+                        return f"{what} collides ({describe_pairs(scene.collisions(q))})"
                 self.trace.append((leaf, start, goal, None))
                 scene.set_state(goal)
             elif isinstance(leaf, SceneAction):
@@ -319,7 +314,7 @@ class LeafPlayer:
             reason = re.sub(r" \(and (\d+ more pair\(s\))\)", r", and \1", reason)
             return f"{name}{sep}{verb} at {percent} ({reason})"
         try:  # a run times the path before it moves; toppra can fail where IK did not
-            parameterize_path(ctx.scene.robot, result.path, leaf.timing)
+            leaf.timed(ctx, result.path)  # the run's own timing
         except TaskrunnerError as exc:
             return f"{name}{sep}cannot be timed ({exc})"
         self.trace.append((leaf, ctx.scene.state, result.end, result.path))
@@ -348,7 +343,7 @@ class LeafPlayer:
                         leaf.group, list(leaf.waypoints(ctx)), link=leaf.link, options=options)
                     scene.set_state(result.end)
                 elif isinstance(leaf, MoveJoints):
-                    scene.set_state(scene.robot.state_with(scene.state, leaf.values(ctx)))
+                    scene.set_state(leaf.target(ctx)[1])
                 elif isinstance(leaf, SceneAction):
                     leaf.action(ctx)
             except (_Unreachable, IkFailedError):
