@@ -326,6 +326,7 @@ class IkSolver:
         matrix = se3.homogeneous.reshape(-1)
         if not math.isfinite(np.dot(matrix, matrix)):
             raise InputError(f"'target' must be finite (got {se3})")
+        _check_rotation(se3.rotation)
         if position_only is None:
             position_only = self.group.position_only_ik
         return position_only, se3, se3.translation.copy()
@@ -402,6 +403,28 @@ class IkSolver:
             f"attempt(s), {iterations} iterations, {elapsed * 1e3:.1f} ms",
             best_error=residual,
         )
+
+
+ROTATION_TOLERANCE = 1e-6
+"""How far (Frobenius norm of ``RᵀR - I``) a target's rotation part may be from
+orthonormal: a matrix that is not a rotation (scaled, sheared, a reflection) has no
+SE3 log error, and the descent's residual would be meaningless (inf or nan)."""
+
+
+def _check_rotation(rotation: np.ndarray) -> None:
+    """Raise InputError unless ``rotation`` is a proper rotation (orthonormal, det +1)."""
+    (a, b, c), (d, e, f), (g, h, i) = rotation.tolist()
+    # RᵀR - I, entry by entry (Python floats: cheaper than numpy's calls on a 3x3).
+    off = ((a * a + d * d + g * g - 1.0) ** 2 + (b * b + e * e + h * h - 1.0) ** 2
+           + (c * c + f * f + i * i - 1.0) ** 2
+           + 2.0 * ((a * b + d * e + g * h) ** 2 + (a * c + d * f + g * i) ** 2
+                    + (b * c + e * f + h * i) ** 2))
+    det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+    if off > ROTATION_TOLERANCE**2 or det <= 0.0:
+        raise InputError(
+            "'target' must be a pose whose rotation is a proper rotation matrix "
+            f"(orthonormal, determinant +1; got one {math.sqrt(off):.3g} from orthonormal, "
+            f"determinant {det:.3g})")
 
 
 def default_attempts(settings: KinematicsSettings) -> int:

@@ -67,7 +67,7 @@ Lift = Callable[[int, pin.SE3], np.ndarray]
 
 SAMPLES = 8  # position-only IK solutions per distinct point
 KEEP = 6  # joint goals returned
-FIXED_POINT_ROUNDS = 3
+FIXED_POINT_ROUNDS = 6
 FREE_TURN_WEIGHT = 0.1  # weight of a grasp's turn about its closing axis (see orientation_error)
 LIFT_PARTS = (1.0, 0.75, 0.5, 0.25)
 """Parts of a short arm's lift tried in turn for each candidate, nearest the wanted
@@ -573,6 +573,7 @@ def _compute_approximations(model: RobotModel, group: str, link: str,
     local, exact = _LOCAL, _EXACT
     out: list[tuple[Approximation, pin.SE3]] = []
     failure: IkFailedError | None = None
+    misses: list[float] = []  # the point's distance from its target where a re-aim failed
     targets: dict[tuple[float, ...], list[int]] = {}
     for i, pose in enumerate(wanted):
         spot = pose.translation + pose.rotation @ offset
@@ -591,7 +592,7 @@ def _compute_approximations(model: RobotModel, group: str, link: str,
             found = []
             for k, s in enumerate(solutions):
                 aimed = _aimed(fk, roll, grasping, s.q, wanted[i], goal, offset, solver, local,
-                               None if turned is None else turned[k])
+                               None if turned is None else turned[k], misses)
                 if aimed is not None:
                     found.append(candidate(aimed[0], i, aimed[1]))
             out += found
@@ -603,16 +604,115 @@ def _compute_approximations(model: RobotModel, group: str, link: str,
             try:
                 q = solver.solve_near(wanted[i], seed_q=best, options=exact)
             except IkFailedError:
+                # Not reachable exactly (a pose a degree off the arm's reach, as an object
+                # held a little askew asks for): the nearest orientation the arm allows
+                # with the point held, rather than whichever random sample was nearest.
+                nearer = _nearest_orientation(fk, solver, best, wanted[i], goal, offset,
+                                              grasping, local)
+                if nearer is not None:
+                    out.append(candidate(nearer[0], i, nearer[1]))
                 continue
             out.append(candidate(q, i))
     if not out:
         if failure is not None:
             raise failure
+        # Position-only solutions were found, but none could be re-aimed so that the
+        # point (away from the frame's origin) is on its target: the nearest miss is the
+        # residual (an IkFailedError always has one: a missing one read as nan).
+        residual = min(misses) if misses else math.inf
+        xyz = ", ".join(f"{v:.4f}" for v in next(iter(targets)))
         raise IkFailedError(f"no state of group {group!r} puts the point "
-                            f"{np.round(offset, 4).tolist()} of {link!r} at "
-                            f"{np.round(next(iter(targets)), 4).tolist()} (m, world)")
+                            f"{np.round(offset, 4).tolist()} (m) of frame {link!r}, target "
+                            f"position ({xyz}) (m, world): best residual {residual:.4g} m "
+                            "after re-aiming every position-only solution",
+                            best_error=residual)
     out.sort(key=lambda a: a[0].angle)
     return out
+
+
+def _nearest_orientation(fk: _Frames, solver: IkSolver, q: np.ndarray, pose: pin.SE3,
+                         goal: np.ndarray, offset: np.ndarray, grasping: bool,
+                         local: IkOptions) -> tuple[np.ndarray, pin.SE3] | None:
+    """The state nearest ``q`` that keeps ``offset`` (``link``'s frame, m) at ``goal``
+    (world, m) with the frame's orientation as near ``pose``'s as the arm allows, and the
+    frame's pose there; None where it is no nearer than ``q``.
+
+    A descent of the orientation error (:func:`orientation_error`, a grasp's turn about
+    its closing axis weighted as there) within the states that hold the point: damped
+    Gauss-Newton steps projected on the null space of the point's Jacobian (both by
+    finite differences over the solved joints), each followed by a position-only re-aim
+    of the point and kept only where the error drops; halved where it does not. For an
+    arm of fewer than six joints this is the pose's nearest reachable neighbour (a 5-DOF
+    arm's tool a degree off vertical gives the vertical state, not a random posture).
+    """
+    indices = np.asarray(solver.group.joint_indices)
+    names = solver.group.joint_names
+    lower = np.array([solver.model.lower[k] for k in indices])
+    upper = np.array([solver.model.upper[k] for k in indices])
+    weights = np.array([1.0, FREE_TURN_WEIGHT if grasping else 1.0, 1.0])
+    wanted_t = pose.rotation.T
+
+    def error(frame: pin.SE3) -> np.ndarray:
+        return weights * pin.log3(wanted_t @ frame.rotation)
+
+    def reaimed(values: np.ndarray) -> tuple[np.ndarray, pin.SE3] | None:
+        for _ in range(FIXED_POINT_ROUNDS + 1):
+            frame = fk(values)
+            target = goal - frame.rotation @ offset
+            miss = target - frame.translation
+            if float(miss @ miss) <= local.tolerance**2:
+                return values, frame
+            try:
+                values = solver.solve_near(target, seed_q=values, options=local)
+            except IkFailedError:
+                return None
+        return None
+
+    frame = fk(q)
+    start_angle = angle = orientation_error(frame, pose, grasping)
+    if len(names) < 2:
+        return None
+    current = np.array(q, dtype=float)
+    eye = np.eye(len(indices))
+    for _ in range(REFINE_ROUNDS):
+        if angle < REFINE_DONE:
+            break
+        e = error(frame)
+        point = frame.translation + frame.rotation @ offset
+        jp = np.empty((3, len(indices)))
+        jr = np.empty((3, len(indices)))
+        for k, index in enumerate(indices):
+            moved = current.copy()
+            moved[index] += _FD_STEP
+            there = fk(moved)
+            jp[:, k] = (there.translation + there.rotation @ offset - point) / _FD_STEP
+            jr[:, k] = (error(there) - e) / _FD_STEP
+        null = eye - np.linalg.pinv(jp, rcond=1e-6) @ jp
+        a = jr @ null
+        step = -null @ (a.T @ np.linalg.solve(a @ a.T + _REFINE_DAMPING * np.eye(3), e))
+        improved = False
+        for _ in range(4):  # the step, then halves of it
+            values = current.copy()
+            values[indices] = np.clip(current[indices] + step, lower, upper)
+            found = reaimed(values)
+            if found is not None:
+                there_angle = orientation_error(found[1], pose, grasping)
+                if there_angle < angle - 1e-9:
+                    current, frame, angle = found[0], found[1], there_angle
+                    improved = True
+                    break
+            step = step / 2
+        if not improved:
+            break
+    if angle >= start_angle - 1e-9:
+        return None
+    return current, frame
+
+
+REFINE_ROUNDS = 30  # descent steps of _nearest_orientation
+REFINE_DONE = 1e-6  # rad: an orientation this near needs no further step
+_REFINE_DAMPING = 1e-6
+_FD_STEP = 1e-7  # rad (or m) of a finite difference
 
 
 def _offset(fk: _Frames, q: np.ndarray, offset: np.ndarray) -> np.ndarray:
@@ -622,11 +722,12 @@ def _offset(fk: _Frames, q: np.ndarray, offset: np.ndarray) -> np.ndarray:
 
 def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.ndarray,
            pose: pin.SE3, goal: np.ndarray, offset: np.ndarray, solver: IkSolver,
-           local: IkOptions, rotation: np.ndarray | None = None
-           ) -> tuple[np.ndarray, pin.SE3 | None] | None:
+           local: IkOptions, rotation: np.ndarray | None = None,
+           misses: list[float] | None = None) -> tuple[np.ndarray, pin.SE3 | None] | None:
     """``q`` with the wrist rolled toward ``pose`` and the point re-aimed at ``goal``, and
     the frame's pose there where it was computed (else None); None where the point cannot
-    be re-aimed. ``rotation``: the frame's orientation at ``q``, if known.
+    be re-aimed, its nearest miss (m) then appended to ``misses``. ``rotation``: the
+    frame's orientation at ``q``, if known.
 
     The rounds stop at their fixed point: once the point is within the IK tolerance of
     ``goal`` after a roll, a re-aim would leave the state as it is, and so would the next
@@ -646,11 +747,18 @@ def _aimed(fk: _Frames, roll: tuple[int, float] | None, grasping: bool, q: np.nd
             return q, frame
         try:
             q = solver.solve_near(target, seed_q=q, options=local)
-        except IkFailedError:
+        except IkFailedError as exc:
+            if misses is not None:
+                misses.append(math.sqrt(float(miss @ miss)) if exc.best_error is None
+                              else exc.best_error)
             return None
     frame = fk(q)
     miss = np.linalg.norm(frame.translation + frame.rotation @ offset - goal)
-    return (q, frame) if miss < 1e-4 else None
+    if miss < 1e-4:
+        return q, frame
+    if misses is not None:
+        misses.append(float(miss))
+    return None
 
 
 def _rolled(fk: _Frames, roll: tuple[int, float], q: np.ndarray, pose: pin.SE3,
