@@ -480,13 +480,10 @@ class MoveToGoal(_Executes):
             goals = goals_key(found)
         return choice_key(ctx.scene, self.group, self.name, goals, seed)
 
-    def request_goals(self, ctx: TaskContext
-                      ) -> tuple[Goal | tuple[Goal, ...] | StagedGoals, PlannerOptions,
-                                 tuple[Hashable, ...] | None]:
-        """What a plan of this leaf asks for in ``ctx``, as the run and the check both
-        compute it: the goal(s) (a staged list as it is), the options with the request's
-        seed (the context's next), and the key of the goal state chosen (None: one goal
-        state only)."""
+    def request_goals(self, ctx: TaskContext) -> tuple[Goal | tuple[Goal, ...] | StagedGoals,
+                                                       PlannerOptions, tuple[Hashable, ...] | None]:
+        """What a plan of this leaf asks for in ``ctx`` (the run's and the check's): its goals,
+        the options seeded with the context's next seed, the key of its choice (or None)."""
         found = self._goal(ctx)
         options = replace(self.options, seed=ctx.next_seed())
         return found, options, self.choice_key(ctx, found, options.seed)
@@ -612,13 +609,9 @@ class MoveStraight(_Executes):
         return result
 
     def timed(self, ctx: TaskContext, path: JointPath) -> JointTrajectory | None:
-        """``path`` timed as the leaf times it before it moves: by the joint limits, and by
-        pilz_cartesian_limits.yaml's if the robot has it (None: no link to time it by,
-        the plain timing is then the backend send's).
-
-        Raises:
-            TaskrunnerError: the path cannot be timed.
-        """
+        """``path`` timed as the leaf times it before it moves (the run's and the check's): by
+        the joint limits, and by pilz_cartesian_limits.yaml's if the robot has it (None: no
+        link to time it by). Raises TaskrunnerError where it cannot be timed."""
         model = ctx.scene.robot
         link = self.link if self.link and model.has_link(self.link) else None
         link = link or model.group(self.group).tip_link
@@ -649,15 +642,13 @@ class MoveStraight(_Executes):
         return self.outcome
 
 
-JOINT_STEP = 0.01
-"""rad between the collision checks of a :class:`MoveJoints` line."""
+JOINT_STEP = 0.01  # rad between the collision checks of a MoveJoints line
 
 
 class MoveJoints(_Executes):
     """Move joints straight in joint space to target values (a gripper opening or closing).
 
-    The motion is checked for collisions every :data:`JOINT_STEP` rad unless ``check`` is
-    False.
+    The motion is checked for collisions every ``JOINT_STEP`` rad unless ``check`` is False.
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext,
@@ -668,17 +659,15 @@ class MoveJoints(_Executes):
         self.outcome: Status = Status.RUNNING
 
     def target(self, ctx: TaskContext) -> tuple[tuple[str, ...], np.ndarray, list[str]]:
-        """The joints moved, the state the leaf moves to from ``ctx``'s scene state, and
-        how that state breaks the joint limits (empty: it does not)."""
+        """The joints moved, the state they move to from ``ctx``'s, its joint-limit breaches."""
         target = self.values(ctx)
         goal = ctx.scene.robot.state_with(ctx.scene.state, target)
         return tuple(target), goal, ctx.scene.robot.limit_violations(goal)
 
     @staticmethod
-    def first_collision(ctx: TaskContext, start: np.ndarray, goal: np.ndarray
-                        ) -> np.ndarray | None:
+    def first_collision(ctx: TaskContext, start: np.ndarray, goal: np.ndarray) -> np.ndarray | None:
         """The first state in collision of the straight joint line from ``start`` to
-        ``goal``, checked every :data:`JOINT_STEP` rad (mimic joints following), or None."""
+        ``goal``, checked every ``JOINT_STEP`` rad (mimic joints following), or None."""
         model, scene = ctx.scene.robot, ctx.scene
         steps = max(1, int(np.ceil(np.max(np.abs(goal - start)) / JOINT_STEP)))
         for t in np.linspace(0.0, 1.0, steps + 1)[1:]:
