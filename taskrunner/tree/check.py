@@ -145,7 +145,7 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     named = check_names(spec, cell)
     marked = {(p.path, p.line) for p in named}
     scene, problems, missing = _start_scene(spec, cell, marked)
-    run = _DryRun(spec, cell, marked, missing)
+    run = _TaskCheck(spec, cell, marked, missing)
     run.check(TaskContext(cell, scene, seed=seed))  # no planner, no backend: nothing moves
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
                        list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell,
@@ -260,9 +260,11 @@ def _achieved(outcome: Outcome, step: StepNode, ctx: TaskContext) -> str:
     return text
 
 
-# ----------------------------------------------------------------------------- dry run
-class _DryRun(LeafPlayer):
-    """Plays the compiled steps kinematically, collecting problems (module docstring)."""
+# ----------------------------------------------------------------------------- the check
+class _TaskCheck(LeafPlayer):
+    """The check of one task (module docstring): its problems and notes, the situation the
+    next step starts in, and the step-level checks its check-mode tree calls
+    (:class:`~taskrunner.tree.checkmode.Checker`)."""
 
     def __init__(self, spec: TaskSpec, cell: Cell, marked: set[Any], missing: set[str]
                  ) -> None:
