@@ -60,6 +60,7 @@ def test_the_run_adopts_the_early_worker_and_plans_with_it():
     assert early.take(cell_path) is None  # taken once
     early.close()  # a no-op once adopted
     assert process.is_alive()
+    pid = process.pid
     with PlanningWorker(cell_path, started=started) as worker:
         cell = load_cell(cell_path)
         scene = scene_from_cell(cell)
@@ -70,7 +71,8 @@ def test_the_run_adopts_the_early_worker_and_plans_with_it():
         assert worker.load_time > 0
         assert np.allclose(result.path.waypoints[-1][group.joint_indices],
                            list(goal.values()), atol=1e-9)
-    assert not process.is_alive()
+    # Stopped and reaped by the worker's close (which also let go of its handle).
+    assert not Path(f"/proc/{pid}").exists()
 
 
 @pytest.mark.slow
