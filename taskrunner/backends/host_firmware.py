@@ -7,6 +7,7 @@ sources: an edited source tree builds afresh, an unchanged one is built once.
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
 import shutil
@@ -57,13 +58,19 @@ def build_host_firmware(build_dir: Path | None = None, jobs: int | None = None,
     build_dir = build_dir.resolve()
     build_dir.mkdir(parents=True, exist_ok=True)
     jobs = jobs or max(1, min(os.cpu_count() or 1, 8))
-    try:
-        built = subprocess.run(
-            ["make", "-s", "--no-print-directory", "-j", str(jobs), "-C", str(source),
-             f"BUILD={build_dir}", "host"],
-            capture_output=True, text=True, timeout=timeout_s, check=False)
-    except subprocess.TimeoutExpired:
-        raise InputError(f"building the host firmware took over {timeout_s:.0f} s") from None
+    # One build at a time per folder: two processes starting at once on a new machine
+    # (two `run-task firmware-sim`, parallel test workers) would write the same objects
+    # and link the binary while the other runs it. The second waits, then finds it built.
+    with open(build_dir / ".build.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            built = subprocess.run(
+                ["make", "-s", "--no-print-directory", "-j", str(jobs), "-C", str(source),
+                 f"BUILD={build_dir}", "host"],
+                capture_output=True, text=True, timeout=timeout_s, check=False)
+        except subprocess.TimeoutExpired:
+            raise InputError(f"building the host firmware took over {timeout_s:.0f} s") \
+                from None
     if built.returncode != 0:
         raise InputError(f"building the host firmware failed:\n{built.stderr[-2000:]}")
     binary = build_dir / HOST_BINARY_NAME
