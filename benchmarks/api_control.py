@@ -146,7 +146,9 @@ def main() -> int:
     args = parser.parse_args()
 
     port = free_port()
-    control = free_port() if args.control_port else port
+    control = port
+    while args.control_port and control == port:  # two free ports, not the same one twice
+        control = free_port()
     with tempfile.TemporaryDirectory() as state:
         server = start_server(port, state,
                               env={"TASKRUNNER_OPEN_READS": "1" if args.open_reads else "0"},

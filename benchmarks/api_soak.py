@@ -359,7 +359,9 @@ def main() -> int:
     args = parser.parse_args()
 
     port = free_port()
-    control = free_port() if args.control_port else port
+    control = port
+    while args.control_port and control == port:  # two free ports, not the same one twice
+        control = free_port()
     context = multiprocessing.get_context("spawn")
     with tempfile.TemporaryDirectory() as state:
         log_path = Path(state) / "server.log"
