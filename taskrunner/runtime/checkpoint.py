@@ -216,7 +216,9 @@ class Checkpointer:
 class Checkpoint:
     """One ``checkpoint`` event read back: ``leaf`` (pre-order index; None: the leaf
     could not be told from another of the same name and file:line), its ``status``, the
-    ``scene`` after it, ``held`` objects (object: arm), ``seq`` of the event."""
+    ``scene`` after it, ``held`` objects (object: arm), ``seq`` of the event;
+    ``run_id``: the run that finished the leaf, when not the record's own (a resumed
+    run's record repeats the checkpoints it replayed)."""
 
     seq: int
     leaf: int | None
@@ -226,11 +228,12 @@ class Checkpoint:
     scene: dict[str, Any]
     held: dict[str, str]
     position: list[dict[str, Any]]
+    run_id: str | None = None
 
 
 def checkpoints_of(record: RunRecord) -> list[Checkpoint]:
     """The checkpoints of a record, in order."""
     return [Checkpoint(e.seq, e.data.get("leaf"), e.node or "", e.location, e.status or "",
                        e.data.get("scene") or {}, dict(e.data.get("held") or {}),
-                       list(e.data.get("position") or []))
+                       list(e.data.get("position") or []), e.data.get("replayed"))
             for e in record.events if e.kind == "checkpoint"]

@@ -67,6 +67,7 @@ from taskrunner.types import Pose
 
 if TYPE_CHECKING:
     from taskrunner.robot.cell import Cell
+    from taskrunner.runtime.events import EventLog
     from taskrunner.runtime.records import RunRecord
     from taskrunner.runtime.runner import Runner
     from taskrunner.tasks.spec import TaskSpec
@@ -161,11 +162,24 @@ class ResumePlan:
             outcomes.setdefault(point.leaf, []).append(Status(point.status))  # type: ignore[arg-type]
         for index, statuses in outcomes.items():
             _Replayed(leaves[index], statuses).install()
+        runner.checkpointer.count = len(self.replay)  # its own checkpoints count on
         if self.replay:
             last = self.replay[-1]
             notes.append(f"continuing after {last.node!r}"
                          + (f" ({last.location})" if last.location else ""))
         return notes
+
+    def emit_replayed(self, events: EventLog) -> None:
+        """Put the replayed leaves' checkpoints in the new run's record (``checkpoint``
+        events with ``replayed``: the id of the run that finished them), before any of
+        its own: the record of a resumed run is resumable alone, without the records
+        before it."""
+        for done, point in enumerate(self.replay, start=1):
+            events.emit("checkpoint", f"after {point.node} (replayed from run "
+                        f"{self.run_id})", node=point.node, location=point.location,
+                        status=point.status, leaf=point.leaf, done=done,
+                        position=point.position, scene=point.scene, held=point.held,
+                        replayed=point.run_id or self.run_id)
 
     def _moved_joints(self, runner: Runner) -> list[str]:
         if self.world is None:
@@ -200,6 +214,14 @@ class ResumePlan:
                 scene.detach_object(name)
                 end_lift_off(scene, name)  # as a detach step does
                 notes.append(f"{name!r} no longer held by {arm!r} (the operator says so)")
+            elif name in options.held and self.backend not in KINEMATIC \
+                    and isinstance(runner.backend, ObjectTracking) and not self.same_world:
+                raise _refuse(record, f"{name!r} cannot be put back in the grip of {arm!r} in "
+                              f"a new simulated world (the {self.backend} backend's fingers "
+                              f"hold nothing until they close on it): resume it in the "
+                              f"process that ran it (TaskRun.resume, POST /runs/"
+                              f"{record.run_id}/resume), or say where it lies with --object "
+                              f"{name}=X,Y,Z and resume --from the step that picks it")
             elif name in options.held:
                 notes.append(f"{name!r} still held by {arm!r} (the operator says so)")
             elif self.backend in KINEMATIC:

@@ -198,6 +198,7 @@ class Runner:
         # After the record's subscriber: a checkpoint is kept after its node_finished.
         self.checkpointer = Checkpointer(self.tree, self.ctx, self.events)
         self.resume_notes: list[str] = []
+        self._resume = resume
         if resume is not None:
             self.resume_notes = resume.apply(self)
             self.record.resumes = resume.run_id
@@ -284,6 +285,8 @@ class Runner:
         self._open_record()
         for note in self.resume_notes:
             self.events.emit("message", note, resumes=self.record.resumes)
+        if self._resume is not None:  # the record resumable alone: the outcomes replayed
+            self._resume.emit_replayed(self.events)
         period = 1.0 / self.options.tick_hz
         status = Status.RUNNING
         try:
