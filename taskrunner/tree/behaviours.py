@@ -30,7 +30,7 @@ from taskrunner.planning.request import Goal, JointGoal, NamedGoal, PlannerOptio
 from taskrunner.planning.service import PlanTicket
 from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.runtime.replay import motion_data
-from taskrunner.tree.choice import choice_key, chosen, goals_key
+from taskrunner.tree.choice import arm_part, choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
@@ -478,14 +478,22 @@ class MoveToGoal(_Executes):
             if isinstance(single, (JointGoal, NamedGoal)):
                 return None
             goals = goals_key(found)
-        return choice_key(ctx.scene, self.group, self.name, goals, seed)
+        part = arm_part(ctx.scene.robot, self.group) if self.branch(ctx) else None
+        return choice_key(ctx.scene, self.group, self.name, goals, seed, part)
+
+    def branch(self, ctx: TaskContext) -> tuple[int, ...]:
+        """The path of branch indices of the ``parallel`` branches around this leaf: in
+        the run's tree, after those a check is in (``ctx.branch``)."""
+        return ctx.branch + tuple(index for _, index in lane_of(self))
 
     def request_goals(self, ctx: TaskContext) -> tuple[Goal | tuple[Goal, ...] | StagedGoals,
                                                        PlannerOptions, tuple[Hashable, ...] | None]:
         """What a plan of this leaf asks for in ``ctx`` (the run's and the check's): its goals,
-        the options seeded with the context's next seed, the key of its choice (or None)."""
-        found = self._goal(ctx)
-        options = replace(self.options, seed=ctx.next_seed())
+        the options seeded with the context's next seed (in a branch, the leaf's own
+        stream), the key of its choice (or None)."""
+        with ctx.drawing(self.branch(ctx), self.name):
+            found = self._goal(ctx)
+            options = replace(self.options, seed=ctx.next_seed())
         return found, options, self.choice_key(ctx, found, options.seed)
 
     def start(self) -> None:

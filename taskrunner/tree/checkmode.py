@@ -33,7 +33,7 @@ from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
 from taskrunner.scene import Scene
-from taskrunner.tasks import FallbackStep, ParallelStep, Problem, StepNode, walk_steps
+from taskrunner.tasks import FallbackStep, GoStep, ParallelStep, Problem, StepNode, walk_steps
 from taskrunner.tasks.waits import WaitPair
 from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.branch_schedule import schedule_branches
@@ -41,8 +41,8 @@ from taskrunner.tree.context import TaskContext
 from taskrunner.tree.leafcheck import Motion, leaves_of
 from taskrunner.tree.schedule_proof import ScheduleProof
 
-__all__ = ["CheckBranch", "CheckFallback", "CheckMode", "CheckStep", "Checker", "JointParallel",
-           "ScheduledParallel", "StepSpan"]
+__all__ = ["CheckBranch", "CheckFallback", "CheckLane", "CheckMode", "CheckStep", "Checker", "JointParallel",
+           "ScheduledParallel", "StepSpan", "run_branches"]
 
 
 class Checker(Protocol):
@@ -222,6 +222,42 @@ class ScheduledParallel(py_trees.decorators.Decorator):
         return Status.SUCCESS
 
 
+class CheckLane(py_trees.decorators.Decorator):
+    """A branch of a parallel in check mode: the steps in it are checked with the
+    checker's context in that branch (``ctx.branch``: the path of branch indices the run's
+    tree gives it), so that they draw the seeds and key the goal choices the run's leaves
+    of that branch do (:mod:`taskrunner.tree.choice`), whatever the order of play."""
+
+    def __init__(self, step: ParallelStep, position: int, child: Behaviour,
+                 checker: Checker) -> None:
+        super().__init__(name=f"{child.name} (branch)", child=child)
+        self.step, self.position, self.checker = step, position, checker
+        self.outer: tuple[int, ...] = ()
+
+    def initialise(self) -> None:
+        c = self.checker
+        self.outer = c.ctx.branch
+        index = run_branches(self.step, c.waits)[self.position]
+        c.ctx = replace(c.ctx, branch=(*self.outer, index))
+
+    def update(self) -> Status:
+        status = self.decorated.status
+        if status in (Status.SUCCESS, Status.FAILURE):
+            c = self.checker
+            c.ctx = replace(c.ctx, branch=self.outer)
+        return status
+
+
+def run_branches(step: ParallelStep, waits: list[WaitPair]) -> list[int]:
+    """The index in the run's ``parallel`` of each child of ``step`` (document order): the
+    run's compiler puts the ``go`` steps that wait for nothing (joined into one motion
+    when there are several) after the other branches."""
+    joins = {id(s) for pair in waits for s in (pair.waiter, pair.named)}
+    gos = [c for c in step.children if isinstance(c, GoStep) and id(c) not in joins]
+    others = [id(c) for c in step.children if not any(c is g for g in gos)]
+    return [others.index(id(c)) if id(c) in others else len(others) for c in step.children]
+
+
 def _at(step: StepNode, message: str) -> Problem:
     loc = step.loc
     return Problem(loc.file if loc else None, loc.line if loc else None, message)
@@ -247,7 +283,7 @@ class CheckMode:
         joint = JointParallel(step, self.checker)
         together = py_trees.composites.Parallel(
             step.label, policy=py_trees.common.ParallelPolicy.SuccessOnAll(synchronise=True),
-            children=branches)
+            children=[CheckLane(step, i, b, self.checker) for i, b in enumerate(branches)])
         return py_trees.composites.Selector(
             f"{step.label} (check)", memory=True,
             children=[joint, ScheduledParallel(step, together, joint, self.checker)])

@@ -17,6 +17,18 @@ its content, :func:`model_key`), the group, the leaf's name, its goals, the plan
 set, give or take the last bits of a float, finds it. The last :data:`SIZE` choices of
 the process are kept; without one (a run with ``--no-check``, another situation) the
 planner chooses as usual.
+
+*In a branch of a ``parallel``* the check plays the branches one after another (each
+from where the one before left the scene) while the run ticks them at once, so what the
+other branches' arms and objects are doing when a motion is planned differs between the
+two, and so did the order the branches drew their seeds in. Inside a branch, a motion's
+seeds are therefore drawn from a stream of its own (:func:`step_seed`: the task's seed,
+the branch's path of indices in the run's tree, the leaf and how many seeds it drew
+before), and its key holds only its arm's part of the situation (:func:`arm_part`: the
+joints of its group and end effector and all the joints they carry, the objects attached
+to their links, the contacts allowed to them): the same in the check and in the run,
+whatever order the branches are ticked or planned in. :func:`lookups` counts what the
+run found.
 """
 
 from __future__ import annotations
@@ -26,6 +38,7 @@ import threading
 import weakref
 from collections import OrderedDict
 from collections.abc import Hashable, Sequence
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -34,8 +47,8 @@ from taskrunner.robot.model import RobotModel
 from taskrunner.scene import Scene
 from taskrunner.types import Pose
 
-__all__ = ["DIGITS", "SIZE", "choice_key", "chosen", "forget", "goals_key", "model_key", "remember",
-           "rounded"]
+__all__ = ["DIGITS", "SIZE", "ArmPart", "Lookups", "arm_part", "choice_key", "chosen", "forget",
+           "goals_key", "lookups", "model_key", "remember", "rounded", "step_seed"]
 
 DIGITS = 6
 """Decimals (of m and rad) the numbers of a key are rounded to."""
@@ -45,6 +58,64 @@ SIZE = 1024
 _CHOICES: OrderedDict[tuple[Hashable, ...], np.ndarray] = OrderedDict()
 _LOCK = threading.Lock()
 _MODEL_KEYS: dict[int, tuple[weakref.ref, str]] = {}
+
+
+@dataclass(frozen=True)
+class Lookups:
+    """What :func:`chosen` was asked since the last :func:`forget`: ``found`` keys had a
+    choice, ``missed`` had none (the planner, or the run's own look-ahead, chose)."""
+
+    found: int = 0
+    missed: int = 0
+
+
+_LOOKUPS = Lookups()
+
+
+def lookups() -> Lookups:
+    """The counts of :func:`chosen`'s answers since the last :func:`forget`."""
+    return _LOOKUPS
+
+
+@dataclass(frozen=True)
+class ArmPart:
+    """The part of the situation a motion of one arm in a branch of a ``parallel`` is
+    keyed by: the state vector's ``indices`` of the joints that move the arm's links
+    (its group's, its end effector's and every joint they carry), and those ``links``."""
+
+    indices: tuple[int, ...]
+    links: frozenset[str]
+
+
+def arm_part(model: RobotModel, group: str) -> ArmPart:
+    """The :class:`ArmPart` of ``group`` (an arm, with the end effectors mounted on it)."""
+    pin_model = model.model
+    names = list(model.group(group).joint_names)
+    for effector in model.end_effectors.values():
+        if effector.parent_group == group:
+            names += model.group(effector.group).joint_names
+    roots = {pin_model.getJointId(n) for n in names if pin_model.existJointName(n)}
+    carried: set[int] = set()
+    for joint in range(1, pin_model.njoints):
+        up = joint
+        while up > 0 and up not in roots:
+            up = pin_model.parents[up]
+        if up > 0:
+            carried.add(joint)
+    indices = tuple(i for i, n in enumerate(model.joint_names)
+                    if pin_model.existJointName(n) and pin_model.getJointId(n) in carried)
+    links = frozenset(f.name for f in pin_model.frames if int(f.parentJoint) in carried)
+    return ArmPart(indices, links)
+
+
+def step_seed(seed: int, branch: tuple[int, ...], leaf: str, count: int) -> int:
+    """The seed of the ``count``-th draw (from 1) of leaf ``leaf`` in the branch at path
+    ``branch`` (the indices of the branches around it in the run's tree, from the root)
+    of a run seeded ``seed``: a function of these alone, so that the check and the run
+    draw the same seeds whatever order they play the branches in (a 32-bit integer, as
+    OMPL and numpy take it)."""
+    text = repr((seed, branch, leaf, count)).encode()
+    return int.from_bytes(hashlib.sha256(text).digest()[:4], "little")
 
 
 def model_key(model: RobotModel) -> str:
@@ -116,7 +187,8 @@ def goals_key(goals: Goal | Sequence[Goal]) -> tuple[Hashable, ...]:
 
 
 def choice_key(scene: Scene, group: str, leaf: str,
-               goals: tuple[Hashable, ...], seed: int) -> tuple[Hashable, ...]:
+               goals: tuple[Hashable, ...], seed: int,
+               part: ArmPart | None = None) -> tuple[Hashable, ...]:
     """The key of a motion's choice (see the module docstring).
 
     Args:
@@ -124,12 +196,23 @@ def choice_key(scene: Scene, group: str, leaf: str,
             and by its absolute one is the same task).
         goals: the key of its goals (:func:`goals_key`, or a staged list's own key).
         seed: the planner seed of the request (pose goals' IK searches use it).
+        part: in a branch of a ``parallel``, the arm's part of the situation
+            (:func:`arm_part`): only its joints, the objects attached to its links and
+            the contacts allowed to those count; None: the whole situation.
     """
+    state = np.asarray(scene.state, dtype=float)
+    allowed_pairs = scene.snapshot().allowed
+    objects_in = list(scene.objects)
+    if part is not None:
+        state = state[list(part.indices)]
+        objects_in = [o for o in objects_in if o.attached_to in part.links]
+        mine = part.links | {o.name for o in objects_in}
+        allowed_pairs = [p for p in allowed_pairs if any(name in mine for name in p)]
     objects = tuple(
         (o.name, repr(o.shape), o.attached_to, tuple(o.touch_links), _pose_key(o.pose))
-        for o in scene.objects)
-    allowed = tuple(sorted(tuple(sorted(p)) for p in scene.snapshot().allowed))
-    return (group, leaf, goals, seed, rounded(scene.state), objects, allowed)
+        for o in objects_in)
+    allowed = tuple(sorted(tuple(sorted(p)) for p in allowed_pairs))
+    return (group, leaf, goals, seed, rounded(state), objects, allowed)
 
 
 def remember(model: RobotModel, key: tuple[Hashable, ...], q: np.ndarray) -> None:
@@ -146,16 +229,21 @@ def remember(model: RobotModel, key: tuple[Hashable, ...], q: np.ndarray) -> Non
 
 def chosen(model: RobotModel, key: tuple[Hashable, ...]) -> np.ndarray | None:
     """The state remembered for ``key`` and ``model`` (read-only), or None."""
+    global _LOOKUPS
     full = (model_key(model), *key)
     with _LOCK:
         hit = _CHOICES.get(full)
         if hit is None or len(hit) != model.nq:
+            _LOOKUPS = replace(_LOOKUPS, missed=_LOOKUPS.missed + 1)
             return None
+        _LOOKUPS = replace(_LOOKUPS, found=_LOOKUPS.found + 1)
         _CHOICES.move_to_end(full)
         return hit
 
 
 def forget() -> None:
-    """Drop every remembered choice."""
+    """Drop every remembered choice (and the counts of :func:`lookups`)."""
+    global _LOOKUPS
     with _LOCK:
         _CHOICES.clear()
+        _LOOKUPS = Lookups()

@@ -10,6 +10,8 @@ names, from the cell's :class:`~taskrunner.robot.tools.Tool` of the arm).
 from __future__ import annotations
 
 import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -25,6 +27,7 @@ from taskrunner.robot.cell import Cell
 from taskrunner.robot.tools import Tool, install_tools
 from taskrunner.runtime.events import EventLog
 from taskrunner.scene import Scene, SceneSnapshot
+from taskrunner.tree.choice import step_seed
 from taskrunner.tree.clock import TaskClock
 from taskrunner.tree.schedule import MotionSchedule
 from taskrunner.types import JointTrajectory, Pose
@@ -139,6 +142,8 @@ class TaskContext:
             physics backend.
         schedule: every motion sent, on the run's clock, by branch: what a motion of one
             branch of a ``parallel`` is verified against (:mod:`taskrunner.tree.schedule`).
+        branch: in a check, the path of branch indices (in the run's tree) of the
+            ``parallel`` branch being checked; a run's leaves find theirs in the tree.
     """
 
     cell: Cell
@@ -153,8 +158,13 @@ class TaskContext:
     clock: TaskClock = field(default_factory=TaskClock)
     materials: dict[str, Any] = field(default_factory=dict)
     schedule: MotionSchedule = field(default_factory=MotionSchedule)
+    branch: tuple[int, ...] = ()
     _arms: dict[str, Arm] = field(default_factory=dict)
     _calls: int = 0
+    # Seeds drawn in branches of a parallel, by (branch, leaf); replaced, never changed in
+    # place, so a copy of the context (a check's look-ahead) draws on its own.
+    _streams: dict[tuple[tuple[int, ...], str], int] = field(default_factory=dict)
+    _drawing: tuple[tuple[int, ...], str] | None = None
     _cartesian: dict[int, tuple[Scene, CartesianPlanner]] = field(default_factory=dict)
 
     def plan_service(self) -> PlanService:
@@ -193,9 +203,25 @@ class TaskContext:
         return entry[1]
 
     def next_seed(self) -> int:
-        """A fresh, reproducible seed for the next planner call."""
+        """A fresh, reproducible seed for the next planner call: in a branch of a
+        ``parallel`` (while a leaf there draws, :meth:`drawing`), the next of that leaf's
+        own stream (:func:`~taskrunner.tree.choice.step_seed`), whatever the other
+        branches drew meanwhile."""
+        if self._drawing is not None and self._drawing[0]:
+            count = self._streams.get(self._drawing, 0) + 1
+            self._streams = {**self._streams, self._drawing: count}
+            return step_seed(self.seed, *self._drawing, count)
         self._calls += 1
         return self.seed * 1000 + self._calls
+
+    @contextmanager
+    def drawing(self, branch: tuple[int, ...], leaf: str) -> Iterator[None]:
+        """Seeds drawn inside are leaf ``leaf``'s of the branch at path ``branch``."""
+        before, self._drawing = self._drawing, (branch, leaf)
+        try:
+            yield
+        finally:
+            self._drawing = before
 
     def sync_from_backend(self, finished: tuple[str, str | None] | None = None) -> None:
         """Make the scene's robot state what the backend reports. ``finished``: the node
