@@ -132,8 +132,11 @@ def test_a_fallbacks_branch_and_a_repeats_round_are_where_the_run_left_them(tmp_
     lines = [e.location.rsplit(":", 1)[1] for e in record.events if e.kind == "node_started"]
     assert lines == ["10", "11", "10", "11"]  # the rest of round 2, then round 3; no fallback
     points = checkpoints_of(record)
-    assert [p["repeat"] for p in points[0].position if "repeat" in p] == [1]
-    assert [p["repeat"] for p in points[-1].position if "repeat" in p] == [2]
+    replayed = [p for p in points if p.run_id is not None]  # the first run's, repeated
+    assert {p.run_id for p in replayed} == {first.run_id} and points[:len(replayed)] == replayed
+    own = points[len(replayed):]
+    assert [p["repeat"] for p in own[0].position if "repeat" in p] == [1]
+    assert [p["repeat"] for p in own[-1].position if "repeat" in p] == [2]
 
 
 def test_taskrun_resume_continues_on_the_same_backend_from_where_the_arm_stopped(tmp_path):
@@ -203,6 +206,31 @@ def held_record(tmp_path_factory) -> Path:
     """pick_place stopped by a fault while the arm carries the cube."""
     runs = tmp_path_factory.mktemp("runs")
     return run_with_fault(TASKS / "pick_place.yaml", runs, "place cube: to pre-place")
+
+
+def test_a_resumed_run_stopped_again_resumes_from_its_own_record(held_record, tmp_path):
+    record = load_record(held_record)
+    plan = plan_resume(record, load_task(record.task_file, record.parameters))
+    runner, backend = sim_runner(Path(record.task_file), tmp_path, plan)
+
+    def fault(event):  # the second stop: setting the cube down
+        if event.kind == "motion" and event.node == "place cube: descend":
+            backend.stop()
+
+    runner.events.subscribe(fault)
+    try:
+        second = runner.run()
+    finally:
+        backend.close()
+    assert second.status == "failed" and second.resumes == record.run_id
+    # Its record alone holds every finished leaf: the first run's, then its own.
+    finished = [p.node for p in checkpoints_of(second)]
+    assert finished[:len(checkpoints_of(record))] == [p.node for p in checkpoints_of(record)]
+    assert finished[-1] == "place cube: descend"
+    _, third, resumed = resume(tmp_path / f"{second.run_id}.json", tmp_path)
+    assert third.status == "succeeded", third.error
+    assert resumed.expectations_met is True and third.resumes == second.run_id
+    assert [e.node for e in third.events if e.kind == "node_started"][0] == "place cube: descend"
 
 
 def test_resuming_after_the_task_file_changed_is_refused_saying_what_to_do(tmp_path):
