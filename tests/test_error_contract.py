@@ -34,7 +34,7 @@ _VALIDATORS = {"field_validator", "model_validator", "validator", "root_validato
 _ALLOWED: dict[tuple[str, str, str], str] = {
     ("backends/sim.py", "SimOptions.__post_init__", "TypeError"):
         "argument-type check: 'keep_history' must be a bool",
-    ("planning/planner.py", "MotionPlanner._goal_candidates", "TypeError"):
+    ("planning/goal_states.py", "goal_states", "TypeError"):
         "argument-type check: a goal of a type the planner does not know",
     ("runtime/records.py", "_jsonable", "TypeError"):
         "json.dumps' 'default' hook: TypeError is its contract for a value it cannot encode",

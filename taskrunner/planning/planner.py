@@ -29,7 +29,6 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 
 from taskrunner.errors import (
     GoalInCollisionError,
@@ -41,15 +40,13 @@ from taskrunner.errors import (
     PlanningTimeoutError,
     StartInCollisionError,
 )
-from taskrunner.kinematics import IkOptions, IkSolver
+from taskrunner.kinematics import IkSolver
+from taskrunner.planning.goal_states import goal_states
 from taskrunner.planning.request import (
     DEFAULT_RANGE,
-    JointGoal,
-    NamedGoal,
     PlannerOptions,
     PlanRequest,
     PlanResult,
-    PoseGoal,
     group_planner,
 )
 from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
@@ -63,7 +60,7 @@ if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verif
     from taskrunner.scene.screen import StateScreen
     from taskrunner.scene.sweep import PathVerification
 
-__all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path", "pose_goal_states"]
+__all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path"]
 
 _REFINEMENTS = 3
 # A random shortcut is checked only when it would shorten the path by this share (the
@@ -326,7 +323,8 @@ class MotionPlanner:
         unreachable: list[IkFailedError] = []
         for index, goal in enumerate(request.goals):
             try:
-                candidates = self._goal_candidates(goal, group, start, request.options)
+                candidates = goal_states(goal, group, start, request.options, self.scene,
+                                         self._solver)
             except IkFailedError as exc:
                 # With several goals, one out of reach is fine as long as another is not.
                 unreachable.append(exc)
@@ -347,27 +345,12 @@ class MotionPlanner:
                 + self.scene.geometry_note(contacts[:3]), [(c.a, c.b) for c in contacts])
         return valid
 
-    def _goal_candidates(self, goal, group: Group, start: np.ndarray,  # type: ignore[no-untyped-def]
-                         options: PlannerOptions) -> list[np.ndarray]:
-        model = self.scene.robot
-        if isinstance(goal, JointGoal | NamedGoal):
-            values = (goal.values if isinstance(goal, JointGoal)
-                      else model.named_state(group.name, goal.name).as_dict())
-            outside = [n for n in values if n not in group.joint_names]
-            if outside:
-                for name in outside:
-                    model.joint(name)  # UnknownNameError for a joint that does not exist
-                raise InvalidStateError(f"joints {outside} are not active joints of group "
-                                        f"{group.name!r} ({', '.join(group.joint_names)})")
-            return [model.state_with(start, values)]
-        if isinstance(goal, PoseGoal):
-            key = (group.name, goal.link)
-            if key not in self._ik:
-                self._ik[key] = IkSolver(model, group.name, frame=goal.link)
-            # A pose in a link's or an object's frame is taken at the start state.
-            target = self.scene.to_world(goal.pose, start)
-            return pose_goal_states(self._ik[key], group, goal, target, start, options)
-        raise TypeError(f"unsupported goal type {type(goal).__name__}")
+    def _solver(self, group: Group, frame: str | None) -> IkSolver:
+        """The IK solver of ``group`` for ``frame`` (kept between requests)."""
+        key = (group.name, frame)
+        if key not in self._ik:
+            self._ik[key] = IkSolver(self.scene.robot, group.name, frame=frame)
+        return self._ik[key]
 
     # ------------------------------------------------------------------ search
     def _direct(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
@@ -732,58 +715,6 @@ class _Direct:
     checks: int = 0
     queries: int = 0
     verify_time: float = 0.0
-
-
-def pose_goal_states(solver: IkSolver, group: Group, goal: PoseGoal, target: pin.SE3,
-                     start: np.ndarray, options: PlannerOptions) -> list[np.ndarray]:
-    """The goal states a pose goal offers the planner: up to ``options.goal_samples``
-    distinct IK solutions of ``target`` (world) for ``solver``'s frame, from ``start``.
-
-    Raises:
-        IkFailedError: no solution.
-    """
-    settings = group.kinematics
-    ik_options = IkOptions(
-        tolerance=goal.tolerance, seed=options.seed, position_only=goal.position_only,
-        num_solutions=options.goal_samples,
-        # Several distinct solutions need more restarts than one does. A budget of
-        # attempts, no time: the same goal states on an idle and on a busy machine.
-        attempts=max(settings.attempts if settings else 0, 20 * options.goal_samples),
-    )
-    if goal.position_only is False and group.position_only_ik:
-        return _full_pose_on_short_arm(solver, target, start, ik_options)
-    return [s.q for s in solver.solve_all(target, seed_q=start, options=ik_options)]
-
-
-def _full_pose_on_short_arm(solver: IkSolver, target, start: np.ndarray,  # type: ignore[no-untyped-def]
-                        options: IkOptions) -> list[np.ndarray]:
-    """Full-pose IK for an arm with fewer than six joints (position-only by default).
-
-    The poses such an arm reaches form a thin set that random restarts rarely land
-    on; solving the position first and then the whole pose from there, locally, does.
-    """
-    from dataclasses import replace as replace_options
-
-    positions = solver.solve_all(target.translation, seed_q=start, options=replace_options(
-        options, position_only=True, num_solutions=4 * options.num_solutions))
-    found: list[np.ndarray] = []
-    best: IkFailedError | None = None
-    for candidate in positions:
-        try:
-            full = solver.solve(target, seed_q=candidate.q, options=replace_options(
-                options, position_only=False, attempts=1, num_solutions=1))
-        except IkFailedError as exc:
-            best = exc if best is None or (exc.best_error or 0) < (best.best_error or 0) \
-                else best
-            continue
-        if all(np.max(np.abs(full.q - q)) > options.min_distance for q in found):
-            found.append(full.q)
-        if len(found) >= options.num_solutions:
-            break
-    if not found:
-        assert best is not None
-        raise best
-    return found
 
 
 # The edge checks' fractions per number of steps (row ``steps``: the end's 1.0, then

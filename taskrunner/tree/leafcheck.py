@@ -31,14 +31,13 @@ from py_trees.behaviour import Behaviour
 
 from taskrunner.errors import (
     IkFailedError,
-    InvalidStateError,
     StartInCollisionError,
     TaskrunnerError,
 )
 from taskrunner.kinematics import IkSolver
 from taskrunner.planning.cartesian import CartesianPlanner
-from taskrunner.planning.planner import pose_goal_states
-from taskrunner.planning.request import JointGoal, NamedGoal, PlannerOptions, PoseGoal
+from taskrunner.planning.goal_states import goal_states
+from taskrunner.planning.request import PlannerOptions, PoseGoal
 from taskrunner.robot.cell import Cell
 from taskrunner.robot.model import Group
 from taskrunner.scene import Contact, Scene
@@ -225,37 +224,29 @@ class LeafPlayer:
 
     def candidates(self, goals: tuple[Any, ...], group: Group, start: np.ndarray,
                    options: PlannerOptions, scene: Scene) -> list[np.ndarray]:
-        """Goal states of every goal with a solution, as ``MotionPlanner`` makes them.
+        """Goal states of every goal with a solution, as ``MotionPlanner`` makes them
+        (:func:`~taskrunner.planning.goal_states.goal_states`).
 
         Raises:
             _Unreachable: no goal has an IK solution (the message: the nearest miss).
             InvalidStateError: joints that are not the group's.
         """
-        model = scene.robot
         out: list[np.ndarray] = []
         misses: list[tuple[float, str]] = []
         for goal in goals:
-            if isinstance(goal, (JointGoal, NamedGoal)):
-                values = (goal.values if isinstance(goal, JointGoal)
-                          else model.named_state(group.name, goal.name).as_dict())
-                outside = [n for n in values if n not in group.joint_names]
-                if outside:
-                    raise InvalidStateError(f"joints {outside} are not active joints of "
-                                            f"group {group.name!r}")
-                out.append(model.state_with(start, values))
-                continue
-            assert isinstance(goal, PoseGoal)
-            solver = self.solver(group, goal.link)
-            world = scene.to_world(goal.pose, start)
             try:
-                out += pose_goal_states(solver, group, goal, world, start, options)
+                out += goal_states(goal, group, start, options, scene, self.solver)
             except IkFailedError as exc:
+                if not isinstance(goal, PoseGoal):
+                    raise
                 only = group.position_only_ik if goal.position_only is None \
                     else goal.position_only
+                world = scene.to_world(goal.pose, start)
                 xyz = ", ".join(f"{v:.3f}" for v in world.translation)
                 residual = exc.best_error if exc.best_error is not None else math.inf
                 unit = "m" if only else "(m and rad)"
-                text = f"best residual {residual:.3g} {unit} for {solver.frame!r} at ({xyz})"
+                frame = self.solver(group, goal.link).frame
+                text = f"best residual {residual:.3g} {unit} for {frame!r} at ({xyz})"
                 misses.append((residual, text))
         if not out:
             raise _Unreachable(min(misses)[1])

@@ -17,7 +17,7 @@ import pinocchio as pin
 from taskrunner.errors import IkFailedError
 from taskrunner.kinematics import IkOptions, IkSolver
 from taskrunner.kinematics.ik import default_attempts
-from taskrunner.planning.planner import pose_goal_states
+from taskrunner.planning.goal_states import pose_goal_states
 from taskrunner.planning.request import PlannerOptions, PoseGoal
 from taskrunner.robot.moveit_yaml import KinematicsSettings
 from taskrunner.types import Pose
