@@ -30,10 +30,12 @@ __version__ = "0.1.0"
 if TYPE_CHECKING:
     from typing import Any
 
+    from taskrunner.backends.base import Backend, ExecutionHandle, ExecutionResult
     from taskrunner.builder import (
         AddObject,
         Attach,
         Detach,
+        Expect,
         Fallback,
         Go,
         Gripper,
@@ -52,15 +54,25 @@ if TYPE_CHECKING:
         Wait,
     )
     from taskrunner.errors import TaskrunnerError
+    from taskrunner.kinds import BackendKind
+    from taskrunner.plan import Plan
     from taskrunner.runtime.events import RunEvent
+    from taskrunner.runtime.records import RunRecord
+    from taskrunner.runtime.resume import ResumeOptions
     from taskrunner.taskrun import RunResult, TaskRun
+    from taskrunner.taught import TaughtPose
     from taskrunner.types import JointPath, JointState, JointTrajectory, Pose
-    from taskrunner.workcell import Plan, Workcell, load_workcell, run_task, start_task
+    from taskrunner.workcell import Workcell, load_workcell, run_task, start_task
 
 __all__ = [
     "AddObject",
     "Attach",
+    "Backend",
+    "BackendKind",
     "Detach",
+    "ExecutionHandle",
+    "ExecutionResult",
+    "Expect",
     "Fallback",
     "Go",
     "Gripper",
@@ -77,13 +89,16 @@ __all__ = [
     "Pose",
     "RemoveObject",
     "Repeat",
+    "ResumeOptions",
     "Retry",
     "RunEvent",
+    "RunRecord",
     "RunResult",
     "Sequence",
     "Task",
     "TaskRun",
     "TaskrunnerError",
+    "TaughtPose",
     "Timeout",
     "Wait",
     "Workcell",
@@ -95,12 +110,19 @@ __all__ = [
 
 # Where each public name lives (imported on first access: PEP 562).
 _HOMES = {
-    **dict.fromkeys(("AddObject", "Attach", "Detach", "Fallback", "Go", "Gripper", "Handoff",
+    **dict.fromkeys(("AddObject", "Attach", "Detach", "Expect", "Fallback", "Go", "Gripper", "Handoff",
                      "Move", "Object", "Parallel", "Pick", "Place", "RemoveObject", "Repeat",
                      "Retry", "Sequence", "Task", "Timeout", "Wait"), "taskrunner.builder"),
     **dict.fromkeys(("JointPath", "JointState", "JointTrajectory", "Pose"), "taskrunner.types"),
-    **dict.fromkeys(("Plan", "Workcell", "load_workcell", "run_task", "start_task"),
+    **dict.fromkeys(("Workcell", "load_workcell", "run_task", "start_task"),
                     "taskrunner.workcell"),
+    **dict.fromkeys(("Backend", "ExecutionHandle", "ExecutionResult"),
+                    "taskrunner.backends.base"),
+    "BackendKind": "taskrunner.kinds",
+    "Plan": "taskrunner.plan",
+    "ResumeOptions": "taskrunner.runtime.resume",
+    "RunRecord": "taskrunner.runtime.records",
+    "TaughtPose": "taskrunner.taught",
     **dict.fromkeys(("RunResult", "TaskRun"), "taskrunner.taskrun"),
     "RunEvent": "taskrunner.runtime.events",
     "TaskrunnerError": "taskrunner.errors",

@@ -34,9 +34,10 @@ from collections.abc import Sequence as Seq
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, ValidationError
+from pydantic import BaseModel, PrivateAttr, ValidationError, model_validator
 
 from taskrunner.robot.cell import Cell
+from taskrunner.tasks.expect import Expectation, TaskExpectation
 from taskrunner.tasks.loader import apply_defaults
 from taskrunner.tasks.names import check_names
 from taskrunner.tasks.nodes import Location, ObjectSpec
@@ -46,6 +47,7 @@ from taskrunner.tasks.steps import (
     AddObjectStep,
     AttachStep,
     DetachStep,
+    ExpectStep,
     FallbackStep,
     GoStep,
     GripperStep,
@@ -66,7 +68,7 @@ from taskrunner.tasks.steps import (
 from taskrunner.types import Pose
 
 __all__ = [
-    "AddObject", "Attach", "Detach", "Fallback", "Go", "Gripper", "Handoff", "Move",
+    "AddObject", "Attach", "Detach", "Expect", "Fallback", "Go", "Gripper", "Handoff", "Move",
     "Object", "Parallel", "Pick", "Place", "RemoveObject", "Repeat", "Retry", "Sequence",
     "Task", "Timeout", "Wait",
 ]
@@ -370,6 +372,81 @@ class Wait(WaitStep):
         _init(self, {"seconds": seconds, "name": name})
 
 
+class Expect(ExpectStep):
+    """What must be true: a step (checked when the run reaches it; FAILURE at its line
+    when it does not hold) or, as :class:`Task`'s ``expect=``, at the run's end. The
+    fields of a task file's ``expect:`` (see :mod:`taskrunner.tasks.expect`).
+
+    Args:
+        objects: by object name, its ``pose`` (a :class:`~taskrunner.Pose`, x, y, z or
+            a mapping), ``orientation`` (free, yaw, full), ``tolerance``
+            (``{"position": m, "angle_deg": degrees}``), ``held_by`` (an arm or a
+            link), ``released`` (True) and ``on`` (an object it rests on).
+        groups: by group name, ``at`` (a named pose) or ``joints`` (rad or m), and
+            ``tolerance`` (rad or m).
+        duration: task time since the run started (s): at most this many seconds, or
+            ``{"min": s, "max": s}``.
+        step_duration: task time of the step just before (s), as ``duration``.
+        collision_free: re-check every motion executed so far for collisions.
+        status: the task's end only: ``"succeeded"`` (default) or ``"failed"``.
+        error: the task's end only, with ``status="failed"``: text the error contains.
+        name: label for displays.
+
+    Raises:
+        TaskSpecError: an invalid expectation (at this line).
+    """
+
+    _outcome: dict[str, Any] = PrivateAttr(default_factory=dict)
+
+    @model_validator(mode="after")
+    def _something(self) -> Expect:  # replaces Expectation's: checked in __init__, knowing status
+        return self
+
+    def __init__(self, *, objects: Mapping[str, Mapping[str, Any]] | None = None,
+                 groups: Mapping[str, Mapping[str, Any]] | None = None,
+                 duration: float | Mapping[str, float] | None = None,
+                 step_duration: float | Mapping[str, float] | None = None,
+                 collision_free: bool | None = None,
+                 status: Literal["succeeded", "failed"] | None = None,
+                 error: str | None = None, name: str | None = None) -> None:
+        _init(self, {"objects": {k: _expected_object(v) for k, v in (objects or {}).items()},
+                     "groups": {k: dict(v) for k, v in (groups or {}).items()},
+                     "duration": _bounds(duration), "step_duration": _bounds(step_duration),
+                     "collision_free": collision_free or None, "name": name})
+        self._outcome = {k: v for k, v in (("status", status), ("error", error))
+                         if v is not None}
+        model = TaskExpectation if self._outcome else Expectation
+        fields = self._fields()
+        try:
+            model.model_validate(fields)
+        except ValidationError as exc:
+            where = self.loc
+            raise problems_error(problems_from_validation(
+                exc, fields, where.file if where else None, ("expect",), model,
+                where.line if where else None)) from None
+
+    def as_task_expectation(self) -> TaskExpectation:
+        """This as a task's ``expect:``, with its ``status`` and ``error``."""
+        return TaskExpectation.model_validate(self._fields())
+
+    def _fields(self) -> dict[str, Any]:
+        return self.model_dump(mode="json", by_alias=True, exclude_defaults=True,
+                               exclude={"name"}) | self._outcome
+
+
+def _expected_object(value: Mapping[str, Any]) -> dict[str, Any]:
+    data = dict(value)
+    if "pose" in data and not isinstance(data["pose"], Mapping):
+        data["pose"] = _pose(data["pose"])
+    return data
+
+
+def _bounds(value: float | Mapping[str, float] | None) -> dict[str, float] | None:
+    if value is None or isinstance(value, Mapping):
+        return None if value is None else dict(value)
+    return {"max": value}
+
+
 # --------------------------------------------------------------------------- composites
 class Sequence(SequenceStep):
     """Run the steps in order; fail at the first failure."""
@@ -441,9 +518,12 @@ class Task:
         velocity_scaling: default velocity scaling, in (0, 1].
         acceleration_scaling: default acceleration scaling, in (0, 1].
         planning_time: default planning time of a motion step (s).
+        expect: what must be true when the run ends (an :class:`Expect`, which may
+            give the run's ``status`` and ``error``); checked after the last step.
 
     Raises:
-        TaskSpecError: a step is not a step, or an invalid default (at this line).
+        TaskSpecError: a step is not a step, ``expect`` not an :class:`Expect`, or an
+            invalid default (at this line).
     """
 
     def __init__(self, name: str, steps: Iterable[StepNode], *,
@@ -451,7 +531,7 @@ class Task:
                  description: str = "", planner: str | None = None,
                  velocity_scaling: float | None = None,
                  acceleration_scaling: float | None = None,
-                 planning_time: float | None = None) -> None:
+                 planning_time: float | None = None, expect: Expect | None = None) -> None:
         self.name = name
         self.description = description
         self.cell = cell
@@ -465,6 +545,11 @@ class Task:
                                               where.line if where else None,
                                               f"'objects' item {i + 1} must be an Object "
                                               f"(got {obj!r})")])
+        if expect is not None and not isinstance(expect, Expect):
+            raise problems_error([Problem(where.file if where else None,
+                                          where.line if where else None,
+                                          f"'expect' must be an Expect (got {expect!r})")])
+        self.expect = expect
         options = _motion(planner, velocity_scaling, acceleration_scaling, planning_time)
         try:
             self.defaults = MotionOptions(**{k: v for k, v in options.items() if v is not None})
@@ -496,7 +581,16 @@ class Task:
                         cell=Path(cell.path) if cell.path is not None else Path(cell.name),
                         objects=tuple(seen.values()), defaults=self.defaults,
                         steps=tuple(apply_defaults(s, self.defaults)  # type: ignore[arg-type]
-                                    for s in self.steps)).located(where)
+                                    for s in self.steps),
+                        expect=self.expect.as_task_expectation() if self.expect else None,
+                        ).located(where)
+        for step in spec.walk():
+            if isinstance(step, Expect) and step._outcome:
+                loc = step.loc
+                raise problems_error([Problem(
+                    loc.file if loc else None, loc.line if loc else None,
+                    "'status' and 'error' are for a task's end (Task(..., expect=Expect(...))), "
+                    "not for an expect step")])
         problems = check_names(spec, cell)
         if problems:
             raise problems_error(problems)

@@ -14,6 +14,8 @@ from __future__ import annotations
 import contextvars
 import json
 import logging
+import os
+import re
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -23,8 +25,22 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from taskrunner.robot.cell import Cell
 
-__all__ = ["TaughtPose", "TaughtPoses", "active_taught", "apply_taught", "read_taught_poses",
-           "taught_poses_from_rows"]
+__all__ = ["TAUGHT_POSES_TABLE", "TaughtPose", "TaughtPoses", "active_taught", "apply_taught",
+           "cell_key", "cells_dir_from_env", "check_pose_name", "data_dir_from_env",
+           "read_taught_poses", "save_taught_pose", "taught_poses_from_rows"]
+
+TAUGHT_POSES_TABLE = """
+CREATE TABLE IF NOT EXISTS taught_poses (
+    cell     TEXT NOT NULL,
+    grp      TEXT NOT NULL,
+    name     TEXT NOT NULL,
+    joints   TEXT NOT NULL,
+    taught   TEXT NOT NULL,
+    PRIMARY KEY (cell, grp, name)
+);
+"""
+"""The table of taught poses in the data folder's ``runs.sqlite`` (the API's store, and
+:func:`save_taught_pose` from Python); ``cell`` is an id of the cells folder or a path."""
 
 log = logging.getLogger(__name__)
 
@@ -93,6 +109,65 @@ def read_taught_poses(db_path: Path, cells_dir: Path) -> TaughtPoses:
     finally:
         db.close()
     return taught_poses_from_rows(rows, cells_dir)
+
+
+def data_dir_from_env(data_dir: str | os.PathLike[str] | None = None) -> Path:
+    """The API's data folder, as the command line finds it: ``data_dir``, else
+    ``TASKRUNNER_DATA_DIR`` (or ``TASKRUNNER_STATE_DIR``), else ``./state``."""
+    return Path(data_dir or os.environ.get("TASKRUNNER_DATA_DIR")
+                or os.environ.get("TASKRUNNER_STATE_DIR") or "state")
+
+
+def cells_dir_from_env() -> Path:
+    """The cells folder that cell ids name: ``TASKRUNNER_CELLS_DIR``, else the shipped one."""
+    from taskrunner import resources
+
+    return Path(os.environ.get("TASKRUNNER_CELLS_DIR") or resources.cells_dir())
+
+
+_POSE_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-]{0,63}$")
+
+
+def check_pose_name(name: str) -> None:
+    """Refuse a name the REST API's teach refuses.
+
+    Raises:
+        ArgumentError: not a letter or ``_``, then up to 63 letters, digits, ``_``, ``-``.
+    """
+    if not isinstance(name, str) or not _POSE_NAME.match(name):
+        from taskrunner.errors import ArgumentError
+
+        raise ArgumentError(f"'name' must be a letter or _ then letters, digits, _ or - "
+                            f"(got {name!r})")
+
+
+def cell_key(cell_path: Path, cells_dir: Path) -> str:
+    """How the database names a cell: its id when its file is in ``cells_dir`` (as the
+    API names it), else its resolved path (read back the same by
+    :func:`taught_poses_from_rows`)."""
+    path = Path(cell_path).resolve()
+    if path.suffix == ".yaml" and path.parent == Path(cells_dir).resolve():
+        return path.stem
+    return str(path)
+
+
+def save_taught_pose(db_path: Path, cell: str, pose: TaughtPose) -> str:
+    """Store (or replace) ``pose`` of ``cell`` (see :func:`cell_key`) in the database
+    ``db_path`` (made if missing), as the API's teach does; returns when it was taught
+    (ISO 8601, UTC)."""
+    import sqlite3
+    from datetime import UTC, datetime
+
+    Path(db_path).parent.mkdir(parents=True, exist_ok=True)
+    now = datetime.now(UTC).isoformat()
+    db = sqlite3.connect(Path(db_path), isolation_level=None)
+    try:
+        db.executescript(TAUGHT_POSES_TABLE)
+        db.execute("INSERT OR REPLACE INTO taught_poses VALUES (?, ?, ?, ?, ?)",
+                   (cell, pose.group, pose.name, json.dumps(dict(pose.joints)), now))
+    finally:
+        db.close()
+    return now
 
 
 def active_taught() -> TaughtPoses | None:

@@ -24,17 +24,18 @@ from __future__ import annotations
 
 import logging
 import os
+import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
 
 from taskrunner.backends.base import Backend, ExecutionHandle
 from taskrunner.builder import Task
-from taskrunner.errors import ArgumentError, InputError
+from taskrunner.errors import ArgumentError, InputError, UnknownNameError
 from taskrunner.kinds import BackendKind
+from taskrunner.plan import Plan
 from taskrunner.planning.cartesian import CartesianOptions, CartesianPlanner, relative_pose
 from taskrunner.planning.cartesian_limits import time_cartesian_path
 from taskrunner.planning.planner import MotionPlanner
@@ -47,65 +48,34 @@ from taskrunner.planning.request import (
     PoseGoal,
 )
 from taskrunner.planning.timing import TimingOptions, parameterize_path
+from taskrunner.poselike import PoseLike, Position, as_pose, waypoint, waypoint_list, xyz
 from taskrunner.resources import resolve_cell, resolve_task
 from taskrunner.robot.cell import Cell, load_cell_or_robot
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.packages import PackageMap
 from taskrunner.runtime.events import RunEvent
-from taskrunner.runtime.session import BACKENDS, make_backend
+from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.taskrun import RunResult, TaskRun, start_run
 from taskrunner.tasks.loader import load_task
 from taskrunner.tasks.spec import TaskSpec
+from taskrunner.taught import (
+    TaughtPose,
+    apply_taught,
+    cell_key,
+    cells_dir_from_env,
+    check_pose_name,
+    data_dir_from_env,
+    read_taught_poses,
+    save_taught_pose,
+)
 from taskrunner.types import JointPath, JointState, JointTrajectory, Pose
 
 __all__ = ["Plan", "Workcell", "load_workcell", "run_task", "start_task"]
 
 StateLike = JointState | Mapping[str, float]
-Position = Sequence[float]
-PoseLike = Pose | Mapping[str, Any]
-"""A :class:`~taskrunner.Pose`, or a pose as a task file writes it: ``{"xyz": [...],
-"rpy": [...]}`` or ``{"xyz": [...], "quat": [...]}``, with an optional ``"frame"``
-(m, radians, quaternion x, y, z, w), checked as a task file's pose is."""
 TaskLike = str | os.PathLike[str] | Task
 """A task file, a shipped example's name, or a :class:`~taskrunner.Task`."""
-
-
-@dataclass(frozen=True)
-class Plan:
-    """A planned, timed motion of one group.
-
-    Attributes:
-        group: the planning group that moves.
-        path: the geometric path over the group's joints (rad or m), start first.
-        trajectory: the path timed by toppra (s, rad, rad/s, rad/s²), rest to rest.
-        start: every joint of the cell where the motion starts.
-        end: every joint of the cell where the motion ends (the last point reached).
-        fraction: share of a Cartesian path achieved, in [0, 1] (MoveIt's
-            ``computeCartesianPath`` fraction, weighted by length); 1.0 for a motion
-            planned to a goal.
-        message: why a Cartesian path stopped short (empty when complete).
-        planning_time: seconds spent computing the path (timing not included).
-    """
-
-    group: str
-    path: JointPath
-    trajectory: JointTrajectory
-    start: JointState
-    end: JointState
-    fraction: float = 1.0
-    message: str = ""
-    planning_time: float = 0.0
-
-    @property
-    def duration(self) -> float:
-        """Duration of the timed motion (s)."""
-        return self.trajectory.duration
-
-    @property
-    def complete(self) -> bool:
-        """True unless a Cartesian path stopped short of its last waypoint."""
-        return self.fraction >= 1.0
 
 
 def load_workcell(source: str | os.PathLike[str], *,
@@ -160,7 +130,8 @@ class Workcell:
         self._planner: MotionPlanner | None = None
         self._cartesian: CartesianPlanner | None = None
         self._backend: Backend | None = None
-        self._backend_kind = "mock"
+        self._backend_kind = BackendKind.MOCK
+        self._taught: set[tuple[str, str]] = set()  # (group, name) taught or loaded here
 
     def __repr__(self) -> str:
         return f"Workcell({self.name!r}, groups={list(self.groups)})"
@@ -228,6 +199,11 @@ class Workcell:
         """The connected backend (None before :meth:`connect`)."""
         return self._backend
 
+    @property
+    def backend_kind(self) -> BackendKind | None:
+        """The kind of the connected backend (None before :meth:`connect`)."""
+        return self._backend_kind if self._backend is not None else None
+
     def connect(self, kind: BackendKind | str = "mock", *, speed: float | None = None,
                 port: str | None = None, url: str | None = None,
                 firmware_speedup: float = 1.0, home: bool = False,
@@ -257,29 +233,33 @@ class Workcell:
             hardware: feetech: another hardware file than ``<cell>.hardware.yaml``.
 
         Raises:
-            ValueError: an unknown ``kind``.
+            ArgumentError: an unknown ``kind`` (a :class:`~taskrunner.BackendKind` value).
             InputError: a servo backend on a cell without exactly one calibrated robot,
                 or http without a URL.
             BackendError: the port or URL does not answer as the firmware does.
         """
-        if kind not in BACKENDS:
-            raise ArgumentError(f"'kind' must be one of {', '.join(BACKENDS)} (got {kind!r})")
-        backend = make_backend(kind, self._cell, speed, port, url, firmware_speedup, home,
-                               calibration_file=calibration, hardware=hardware)
-        self.disconnect()
-        self._backend, self._backend_kind = backend, kind
+        backend_kind = _backend_kind(kind)
+        backend = make_backend(backend_kind.value, self._cell, speed, port, url,
+                               firmware_speedup, home, calibration_file=calibration,
+                               hardware=hardware)
+        self.close()
+        self._backend, self._backend_kind = backend, backend_kind
         self.sync()
         return backend
 
-    def disconnect(self) -> None:
-        """Close the connected backend, if any (the current state stays where it was)."""
+    def close(self) -> None:
+        """Close the connected backend, if any (the current state stays where it was).
+        :meth:`connect` connects one again; ``with load_workcell(...) as cell:`` closes
+        it at the block's end."""
         if self._backend is not None:
             backend, self._backend = self._backend, None
             backend.close()
 
-    def close(self) -> None:
-        """Close the connected backend (the same as :meth:`disconnect`)."""
-        self.disconnect()
+    def disconnect(self) -> None:
+        """Deprecated: :meth:`close` (the same, under one name); warns and closes."""
+        warnings.warn("Workcell.disconnect() is deprecated: call Workcell.close()",
+                      DeprecationWarning, stacklevel=2)
+        self.close()
 
     def __enter__(self) -> Workcell:
         return self
@@ -482,12 +462,12 @@ class Workcell:
         if frame_link is None:
             raise ArgumentError(f"group {group!r} has no tip link: give 'link'")
         if by is not None:
-            target = relative_pose(self._scene, frame_link, _xyz("by", by), frame=frame, start=q)
+            target = relative_pose(self._scene, frame_link, xyz("by", by), frame=frame, start=q)
             targets: list[Pose] = [target]
         else:
             here = self.link_pose(frame_link, JointState(self.joint_names, q))
             assert waypoints is not None
-            targets = [_waypoint(w, here, i) for i, w in enumerate(_waypoint_list(waypoints))]
+            targets = [waypoint(w, here, i) for i, w in enumerate(waypoint_list(waypoints))]
         result = self._cartesian.compute(group, targets, link, options, q)
         # Timed by the joint limits, and by pilz_cartesian_limits.yaml's when the robot has it.
         trajectory = time_cartesian_path(self.model, result.path, frame_link, timing)
@@ -553,6 +533,97 @@ class Workcell:
             self._backend.stop()
             self.sync()
 
+    def go(self, group: str, *, to: str | None = None,
+           joints: Mapping[str, float] | None = None, pose: PoseLike | None = None,
+           position: Position | None = None, link: str | None = None,
+           planner: str | None = None, planning_time: float = 5.0, seed: int = 0,
+           velocity_scaling: float | None = None, acceleration_scaling: float | None = None,
+           timeout: float | None = None) -> Plan:
+        """Plan a motion of ``group`` from the current state to one target and execute it
+        (MoveIt's ``move_group.go()``): :meth:`plan`, then :meth:`execute` waiting for
+        the end. Takes :meth:`plan`'s arguments (no ``start``: a motion starts where the
+        joints are) and :meth:`execute`'s ``timeout`` (s).
+
+        Returns:
+            The plan executed; the current state is then where the backend ended.
+
+        Raises:
+            The errors of :meth:`plan` (nothing has moved) and of :meth:`execute`.
+        """
+        plan = self.plan(group, to=to, joints=joints, pose=pose, position=position,
+                         link=link, planner=planner, planning_time=planning_time, seed=seed,
+                         velocity_scaling=velocity_scaling,
+                         acceleration_scaling=acceleration_scaling)
+        self.execute(plan, timeout=timeout)
+        return plan
+
+    # ------------------------------------------------------------------ taught poses
+    def teach(self, group: str, name: str, joints: Mapping[str, float] | None = None, *,
+              data_dir: str | os.PathLike[str] | None = None) -> TaughtPose:
+        """Teach a named pose of ``group``, as ``PUT /cells/{id}/poses/{name}`` does: store
+        it in the data folder's database, where ``run-task`` and ``run-task serve`` find
+        it, and make it a named pose of this workcell at once (``plan(to=name)``).
+
+        Args:
+            group: the planning group.
+            name: the pose's name (a letter or ``_``, then letters, digits, ``_``, ``-``).
+            joints: the group's joint values (rad or m); joints left out take their
+                current values; None: the group's joints where the backend reports them
+                now (the planning state before :meth:`connect`).
+            data_dir: the API's data folder (default: ``TASKRUNNER_DATA_DIR``, else
+                ``./state``, as the command line's ``--data-dir``).
+
+        Raises:
+            ArgumentError: a bad name, a name the robot or cell files already give the
+                group, a value outside the joint limits, a cell not loaded from a file.
+            UnknownNameError: no such group, or a joint that is not the group's.
+        """
+
+        check_pose_name(name)
+        model, spec = self.model, self.model.group(group)
+        if name in model.named_states.get(spec.name, {}) and (spec.name, name) not in self._taught:
+            raise ArgumentError(f"named pose {name!r} of group {spec.name!r} comes from the "
+                                "robot or cell files; pick another name")
+        for joint in joints or {}:
+            if joint not in spec.joint_names:
+                raise UnknownNameError("joint", joint, spec.joint_names)
+        state = dict(zip(self.joint_names, self._state_vector(joints if joints is not None
+                                                              else self.sync())))
+        values = {j: float(state[j]) for j in spec.joint_names}
+        bad = model.limit_violations(model.state_with(model.default_state(), values))
+        if bad:
+            raise ArgumentError(f"pose {name!r} is outside the joint limits: " + "; ".join(bad))
+        pose = TaughtPose(spec.name, name, values)
+        save_taught_pose(data_dir_from_env(data_dir) / "runs.sqlite",
+                         self._cell_key(), pose)
+        model.named_states.setdefault(spec.name, {})[name] = dict(values)
+        self._taught.add((spec.name, name))
+        return pose
+
+    def load_taught_poses(self, *, data_dir: str | os.PathLike[str] | None = None
+                          ) -> list[TaughtPose]:
+        """Read the poses taught on this cell (by :meth:`teach` or the REST API) from the
+        data folder's database and make them named poses of this workcell, as
+        ``run-task --data-dir`` does for a run. A pose the robot or cell files give
+        already, or one that no longer fits the cell, is skipped with a warning (in
+        ``model.warnings``).
+
+        Args:
+            data_dir: the API's data folder (default: ``TASKRUNNER_DATA_DIR``, else
+                ``./state``).
+
+        Returns:
+            the poses added (a pose taught again replaces the one loaded before).
+        """
+        named = self.model.named_states
+        for group, name in self._taught:  # forget what was loaded, so a newer value wins
+            named.get(group, {}).pop(name, None)
+        self._taught.clear()
+        poses = read_taught_poses(data_dir_from_env(data_dir) / "runs.sqlite", cells_dir_from_env())
+        added = apply_taught(self._cell, poses)
+        self._taught.update((pose.group, pose.name) for pose in added)
+        return added
+
     # ------------------------------------------------------------------ tasks
     def start_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
                    backend: BackendKind | str | None = None, speed: float | None = None,
@@ -580,16 +651,17 @@ class Workcell:
                 file's line, or the line of the Python step).
             InputError: a task file written for another cell.
         """
-        spec = self._spec(task, parameters)
-        return self._start(spec, task.to_text(self._cell) if isinstance(task, Task) else None,
-                           backend, speed, seed, runs_dir, on_event)
+        return self._start(self._spec(task, parameters), task, backend, speed, seed, runs_dir,
+                           on_event)
 
-    def _start(self, spec: TaskSpec, text: str | None, backend: BackendKind | str | None,
+    def _start(self, spec: TaskSpec, task: TaskLike, backend: BackendKind | str | None,
                speed: float | None, seed: int, runs_dir: str | os.PathLike[str] | None,
                on_event: Callable[[RunEvent], None] | None) -> TaskRun:
+        """Every way of running a task ends here (one implementation)."""
         if backend is not None:
             self.connect(backend, speed=speed)
         machine = self._backend if self._backend is not None else self.connect("mock")
+        text = task.to_text(self._cell) if isinstance(task, Task) else None
         return start_run(spec, self._cell, machine, seed=seed, backend_name=self._backend_kind,
                          runs_dir=Path(runs_dir) if runs_dir is not None else None,
                          on_event=on_event, on_end=self.sync, task_text=text)
@@ -605,7 +677,9 @@ class Workcell:
                                seed=seed, runs_dir=runs_dir, on_event=on_event).wait()
 
     # ------------------------------------------------------------------ internals
-    def _spec(self, task: TaskLike, parameters: Mapping[str, object] | None) -> TaskSpec:
+    def _spec(self, task: TaskLike, parameters: Mapping[str, object] | None,
+              loaded: TaskSpec | None = None) -> TaskSpec:
+        """``task`` loaded (unless ``loaded`` already is) and checked against this cell."""
         if isinstance(task, Task):
             if parameters:
                 raise ArgumentError("'parameters' are for task files; a Task built in Python "
@@ -614,7 +688,7 @@ class Workcell:
         if not isinstance(task, (str, os.PathLike)):
             raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
                              f"(got {task!r})")
-        spec = load_task(resolve_task(task), parameters)
+        spec = loaded if loaded is not None else load_task(resolve_task(task), parameters)
         if self.path is None or spec.cell.resolve() != self.path.resolve():
             raise InputError(f"task {spec.name!r} is written for cell {str(spec.cell)!r}, "
                              f"not for this workcell ({self.name!r}, {self.path}); "
@@ -643,7 +717,13 @@ class Workcell:
             # None: the group's position_only_ik decides, as for a task file's pose
             return PoseGoal(target, link, position_only=None if oriented else True)
         assert position is not None
-        return PoseGoal(Pose(_xyz("position", position)), link, position_only=True)
+        return PoseGoal(Pose(xyz("position", position)), link, position_only=True)
+
+    def _cell_key(self) -> str:
+        if self.path is None:
+            raise ArgumentError(f"workcell {self.name!r} was not loaded from a file: its "
+                                "taught poses have nowhere to be kept")
+        return cell_key(self.path, cells_dir_from_env())
 
     def _state_vector(self, values: StateLike) -> np.ndarray:
         return self.model.state_with(self._scene.state, values)
@@ -652,86 +732,31 @@ class Workcell:
         return JointState(self.joint_names, q)
 
 
-def _xyz(name: str, values: Position) -> tuple[float, float, float]:
+def _backend_kind(kind: BackendKind | str) -> BackendKind:
     try:
-        x, y, z = (float(v) for v in values)
-    except (TypeError, ValueError):
-        raise ArgumentError(f"'{name}' must be 3 numbers x, y, z in metres (got {values!r})") from None
-    return (x, y, z)
-
-
-def as_pose(value: PoseLike, field: str = "pose") -> tuple[Pose, bool]:
-    """``value`` as a :class:`Pose`, and whether it gives an orientation (a mapping
-    without ``rpy`` or ``quat`` does not: its orientation is the identity).
-
-    A mapping is checked as a task file's pose is (the same model and messages), its
-    errors located at the caller's line.
-
-    Raises:
-        TaskSpecError: an invalid mapping (an unknown key, not 3 values, both ``rpy``
-            and ``quat``, a quaternion that is not a unit one ...).
-        InputError: neither a Pose nor a mapping.
-    """
-    if isinstance(value, Pose):
-        return value, True
-    if not isinstance(value, Mapping):
-        raise InputError(f"'{field}' must be a taskrunner.Pose or a mapping "
-                         f"{{xyz, rpy | quat, frame}} (got {value!r})")
-    from pydantic import ValidationError
-
-    from taskrunner.builder import _caller as caller_location  # the user's file:line
-    from taskrunner.tasks.nodes import PoseSpec
-    from taskrunner.tasks.problem import problems_error, problems_from_validation
-
-    data = dict(value)
-    try:
-        spec = PoseSpec.model_validate(data)
-    except ValidationError as exc:
-        where = caller_location()
-        raise problems_error(problems_from_validation(
-            exc, data, where.file if where else None, (field,), PoseSpec,
-            where.line if where else None)) from None
-    return spec.to_pose(), spec.has_orientation
-
-
-def _waypoint_list(waypoints: PoseLike | Position | Sequence[PoseLike | Position]
-                   ) -> list[PoseLike | Position]:
-    if isinstance(waypoints, (Pose, Mapping)):
-        return [waypoints]
-    items: list[Any] = list(waypoints)
-    if items and all(isinstance(v, (int, float)) for v in items):
-        return [tuple(items)]  # one x, y, z position
-    return items
-
-
-def _waypoint(value: PoseLike | Position, here: Pose, index: int) -> Pose:
-    """A waypoint pose: a Pose as given; a position, or a mapping without an
-    orientation, with the link's start orientation."""
-    if isinstance(value, (Pose, Mapping)):
-        pose, oriented = as_pose(value, f"waypoints[{index}]")
-        if oriented:
-            return pose
-        if pose.frame != "world":
-            raise InputError(f"'waypoints[{index}]' without 'rpy' or 'quat' keeps the "
-                             f"link's orientation in the world frame: it must have "
-                             f"frame 'world' (got {pose.frame!r})")
-        return Pose(pose.xyz, here.quat)
-    return Pose(_xyz("waypoints", value), here.quat)
+        return BackendKind(kind)
+    except ValueError:
+        known = ", ".join(k.value for k in BackendKind)
+        raise ArgumentError(f"'kind' must be one of {known} (got {kind!r})") from None
 
 
 def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-             backend: BackendKind | str = "mock", speed: float | None = None, seed: int = 0,
-             runs_dir: str | os.PathLike[str] | None = None,
+             backend: BackendKind | str = BackendKind.MOCK, speed: float | None = None,
+             seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
              on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
     """Run a task in its own cell, like ``run-task TASK``; returns its result.
+
+    The same as :func:`start_task` then :meth:`TaskRun.wait`; to run on a workcell you
+    hold (its backend, its state), use :meth:`Workcell.run_task`.
 
     Args:
         task: a task file or a shipped example's name (the cell is the one the file
             names), or a :class:`~taskrunner.Task` built with a ``cell``.
         parameters: values of the task file's parameters.
-        backend: ``"mock"``, ``"sim"``, ``"serial"`` or ``"http"`` (serial on the port
-            in ``hardware.yaml``; for other settings use :meth:`Workcell.connect`).
-        speed: replay speed of mock or sim, a multiple of real time.
+        backend: a :class:`~taskrunner.BackendKind` (``"mock"``, ``"sim"``, ``"mujoco"``,
+            ``"serial"``, ``"http"``, ``"feetech"``; servos on the port of their hardware
+            file; for other settings use :meth:`Workcell.connect`).
+        speed: replay speed of mock, sim or mujoco, a multiple of real time.
         seed: seeds every planner call.
         runs_dir: write the run record there (None: not written).
         on_event: called with every event of the run.
@@ -739,37 +764,33 @@ def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
     Raises:
         TaskSpecError: the task is invalid (every problem with its file:line).
     """
-    with _workcell_of(task, parameters) as cell:
-        return cell.run_task(task, parameters=parameters, backend=backend, speed=speed,
-                             seed=seed, runs_dir=runs_dir, on_event=on_event)
+    return start_task(task, parameters=parameters, backend=backend, speed=speed, seed=seed,
+                      runs_dir=runs_dir, on_event=on_event).wait()
 
 
 def start_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
-               backend: BackendKind | str = "mock", speed: float | None = None, seed: int = 0,
-               runs_dir: str | os.PathLike[str] | None = None,
+               backend: BackendKind | str = BackendKind.MOCK, speed: float | None = None,
+               seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
                on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
     """Start a task in its own cell in a background thread (see :func:`run_task`);
     iterate over :meth:`TaskRun.events`, ``cancel()`` or ``wait()`` for the result.
     The run's backend is closed when the run ends."""
-    cell = _workcell_of(task, parameters)
+    if isinstance(task, Task):
+        if task.cell is None:
+            raise ArgumentError(f"task {task.name!r} has no 'cell': build it with "
+                                "Task(..., cell=...) or run it with Workcell.run_task")
+        cell, loaded = load_workcell(task.cell), None
+    elif isinstance(task, (str, os.PathLike)):
+        loaded = load_task(resolve_task(task), parameters)  # read once: it names its cell
+        cell = load_workcell(loaded.cell)
+    else:
+        raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
+                            f"(got {task!r})")
     try:
-        run = cell.start_task(task, parameters=parameters, backend=backend, speed=speed,
-                              seed=seed, runs_dir=runs_dir, on_event=on_event)
+        run = cell._start(cell._spec(task, parameters, loaded), task, backend, speed, seed,
+                          runs_dir, on_event)
     except BaseException:
         cell.close()
         raise
     run.add_done_callback(cell.close)
     return run
-
-
-def _workcell_of(task: TaskLike, parameters: Mapping[str, object] | None) -> Workcell:
-    """A new workcell for the cell ``task`` is written for."""
-    if isinstance(task, Task):
-        if task.cell is None:
-            raise ArgumentError(f"task {task.name!r} has no 'cell': build it with "
-                             "Task(..., cell=...) or run it with Workcell.run_task")
-        return load_workcell(task.cell)
-    if not isinstance(task, (str, os.PathLike)):
-        raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
-                         f"(got {task!r})")
-    return load_workcell(load_task(resolve_task(task), parameters).cell)

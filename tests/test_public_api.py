@@ -12,6 +12,7 @@ import pytest
 
 import taskrunner
 from taskrunner import (
+    Expect,
     Go,
     Gripper,
     Object,
@@ -24,16 +25,24 @@ from taskrunner import (
     TaskrunnerError,
     Wait,
 )
-from taskrunner.errors import BackendError, InputError, TaskSpecError, UnknownNameError
+from taskrunner.errors import (
+    ArgumentError,
+    BackendError,
+    InputError,
+    TaskSpecError,
+    UnknownNameError,
+)
+from taskrunner.taught import read_taught_poses
 
 
 def test_the_exported_names_are_pinned():
     assert taskrunner.__all__ == [
-        "AddObject", "Attach", "Detach", "Fallback", "Go", "Gripper", "Handoff", "JointPath",
+        "AddObject", "Attach", "Backend", "BackendKind", "Detach", "ExecutionHandle",
+        "ExecutionResult", "Expect", "Fallback", "Go", "Gripper", "Handoff", "JointPath",
         "JointState", "JointTrajectory", "Move", "Object", "Parallel", "Pick", "Place", "Plan",
-        "Pose", "RemoveObject", "Repeat", "Retry", "RunEvent", "RunResult", "Sequence", "Task",
-        "TaskRun", "TaskrunnerError", "Timeout", "Wait", "Workcell", "__version__",
-        "load_workcell", "run_task", "start_task",
+        "Pose", "RemoveObject", "Repeat", "ResumeOptions", "Retry", "RunEvent", "RunRecord",
+        "RunResult", "Sequence", "Task", "TaskRun", "TaskrunnerError", "TaughtPose", "Timeout",
+        "Wait", "Workcell", "__version__", "load_workcell", "run_task", "start_task",
     ]
     for name in taskrunner.__all__:
         value = getattr(taskrunner, name)
@@ -159,7 +168,12 @@ def test_execute_refuses_a_trajectory_that_does_not_start_where_the_arm_is(cell)
         cell.execute(plan)
 
 
-def test_run_a_shipped_task_by_name_with_parameters(tmp_path):
+def test_run_a_shipped_task_by_name_with_parameters(tmp_path, monkeypatch):
+    import taskrunner.workcell as workcell
+
+    loads = []
+    real_load = workcell.load_task
+    monkeypatch.setattr(workcell, "load_task", lambda *a: loads.append(a) or real_load(*a))
     seen = []
     result = taskrunner.run_task("pick_place", parameters={"place_y": -0.1}, seed=1,
                                  runs_dir=tmp_path, on_event=seen.append)
@@ -170,6 +184,7 @@ def test_run_a_shipped_task_by_name_with_parameters(tmp_path):
     assert result.events[0].kind == "run_started" and result.events[-1].kind == "run_finished"
     saved = json.loads((tmp_path / f"{result.run_id}.json").read_text())
     assert saved["status"] == "succeeded" and saved["parameters"]["place_y"] == -0.1
+    assert len(loads) == 1  # the task file is read once, though it also names the cell
 
 
 def test_a_task_file_of_another_cell_is_refused(cell):
@@ -264,3 +279,100 @@ def test_the_examples_run_from_another_folder(example, tmp_path):
                           text=True, timeout=120)
     assert done.returncode == 0, done.stdout + done.stderr
     assert ": succeeded in " in done.stdout
+
+
+def test_go_plans_and_executes_from_where_the_arm_is(cell):
+    plan = cell.go("arm", to="ready", seed=1)
+    assert isinstance(plan, taskrunner.Plan) and plan.group == "arm"
+    ready = cell.model.named_state("arm", "ready").as_dict()
+    state = cell.joint_state().as_dict()
+    assert all(abs(state[n] - v) < 1e-9 for n, v in ready.items())
+    assert cell.backend_kind is taskrunner.BackendKind.MOCK
+    with pytest.raises(UnknownNameError, match="'hme'"):
+        cell.go("arm", to="hme")
+    assert cell.joint_state().as_dict() == state  # a failed plan moves nothing
+
+
+def test_connect_takes_every_backend_kind_and_names_them_when_wrong(table):
+    assert isinstance(table.connect(taskrunner.BackendKind.SIM, speed=50.0), taskrunner.Backend)
+    assert table.backend_kind == "sim"
+    with pytest.raises(ArgumentError, match="'kind' must be one of mock, sim, mujoco, serial, "
+                                            r"http, feetech \(got 'nope'\)"):
+        table.connect("nope")
+    table.close()
+    assert table.backend is None and table.backend_kind is None
+    with pytest.warns(DeprecationWarning, match=r"Workcell.close\(\)"):
+        table.disconnect()
+
+
+def test_a_taught_pose_is_stored_where_the_command_line_reads_it(cell, tmp_path):
+    cell.go("arm", to="PickUp")
+    pose = cell.teach("arm", "over_cube", data_dir=tmp_path)
+    pickup = cell.model.named_state("arm", "PickUp").as_dict()
+    assert isinstance(pose, taskrunner.TaughtPose) and pose.group == "arm"
+    assert pose.joints == pytest.approx(pickup)
+    assert "over_cube" in cell.named_poses("arm")  # usable at once
+    # What run-task --data-dir reads: the API's table, keyed by the cell's id.
+    poses = read_taught_poses(tmp_path / "runs.sqlite", Path(cell.path).parent)
+    assert [p.name for p in poses.of(Path(cell.path))] == ["over_cube"]
+    fresh = taskrunner.load_workcell("servo_arm_table")
+    assert "over_cube" not in fresh.named_poses("arm")  # applied explicitly, not ambiently
+    added = fresh.load_taught_poses(data_dir=tmp_path)
+    assert [(p.group, p.name) for p in added] == [("arm", "over_cube")]
+    assert fresh.plan("arm", to="over_cube").end.as_dict()["Revolute 1"] \
+        == pytest.approx(pickup["Revolute 1"])
+    bent = cell.teach("arm", "over_cube", {"Revolute 1": 0.3}, data_dir=tmp_path)  # retaught
+    assert bent.joints["Revolute 1"] == 0.3
+    assert fresh.load_taught_poses(data_dir=tmp_path)[0].joints["Revolute 1"] == 0.3
+    assert fresh.model.named_state("arm", "over_cube").as_dict()["Revolute 1"] == 0.3
+
+
+def test_teaching_refuses_the_robot_files_names_bad_names_and_limits(cell, tmp_path):
+    with pytest.raises(ArgumentError, match="'home' of group 'arm' comes from the robot"):
+        cell.teach("arm", "home", data_dir=tmp_path)
+    with pytest.raises(ArgumentError, match="'name' must be a letter"):
+        cell.teach("arm", "9 lives", data_dir=tmp_path)
+    with pytest.raises(ArgumentError, match="outside the joint limits"):
+        cell.teach("arm", "too_far", {"Revolute 1": 40.0}, data_dir=tmp_path)
+    with pytest.raises(UnknownNameError, match="'Revolute 9'"):
+        cell.teach("arm", "odd", {"Revolute 9": 0.0}, data_dir=tmp_path)
+    assert not (tmp_path / "runs.sqlite").exists()  # nothing stored
+
+
+def test_expect_steps_and_the_tasks_end_are_checked(cell):
+    held = Expect(objects={"cube": {"held_by": "arm"}}, step_duration=30)
+    task = Task("expecting", objects=[
+        Object("cube", "box", size=(0.025, 0.025, 0.025), at=(0.19, 0.04, 0.7625))],
+        steps=[Gripper("arm", "open"), Go("arm", "home"), Pick("arm", "cube", approach=0.04),
+               held, Place("arm", "cube", at=(0.14, -0.12, 0.7635), approach=0.04),
+               Go("arm", "home")],
+        expect=Expect(objects={"cube": {"pose": Pose((0.14, -0.12, 0.7625)),
+                                        "released": True}},
+                      groups={"arm": {"at": "home"}}, duration={"max": 120}))
+    result = cell.run_task(task)
+    assert result.ok, result.error
+    expectation = task.spec(cell.cell).expect
+    assert expectation is not None and expectation.groups["arm"].at == "home"
+    assert '"held_by": "arm"' in result.record.task_text  # the step, as task-file text
+
+
+def test_a_missed_expectation_fails_the_run_at_the_expect_line(cell):
+    wrong = Expect(groups={"arm": {"at": "ready"}}); line = sys._getframe().f_lineno  # noqa: E702
+    result = cell.run_task(Task("missed", [Go("arm", "home"), wrong]))
+    assert result.status == "failed" and result.exit_code == 4
+    assert result.error is not None and result.error.startswith(f"{__file__}:{line}:")
+
+
+def test_an_expect_built_wrong_fails_at_its_python_line():
+    line = sys._getframe().f_lineno + 2
+    with pytest.raises(TaskSpecError) as caught:
+        Expect()
+    assert caught.value.line == line and "needs at least one of 'objects'" in str(caught.value)
+    with pytest.raises(TaskSpecError, match="takes 'error' only with status: failed"):
+        Expect(error="unreachable")
+    with pytest.raises(TaskSpecError, match=r"'expect.duration.max' must be > 0 \(got -1.0\)"):
+        Expect(duration=-1.0)
+    end = Expect(status="failed", error="unreachable")  # a task's end may say only that
+    assert end.as_task_expectation().status == "failed"
+    with pytest.raises(TaskSpecError, match="'status' and 'error' are for a task's end"):
+        Task("t", [Go("arm", "home"), end]).spec(taskrunner.load_workcell("servo_arm").cell)

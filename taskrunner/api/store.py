@@ -42,7 +42,7 @@ from pathlib import Path
 
 from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.records import RunRecord, needs_sync
-from taskrunner.taught import TaughtPoses, taught_poses_from_rows
+from taskrunner.taught import TAUGHT_POSES_TABLE, TaughtPoses, taught_poses_from_rows
 
 __all__ = ["RunStore", "StoreJournal"]
 
@@ -67,15 +67,7 @@ CREATE TABLE IF NOT EXISTS events (
     event    TEXT NOT NULL,
     PRIMARY KEY (run_id, seq)
 ) WITHOUT ROWID;
-CREATE TABLE IF NOT EXISTS taught_poses (
-    cell     TEXT NOT NULL,
-    grp      TEXT NOT NULL,
-    name     TEXT NOT NULL,
-    joints   TEXT NOT NULL,
-    taught   TEXT NOT NULL,
-    PRIMARY KEY (cell, grp, name)
-);
-"""
+""" + TAUGHT_POSES_TABLE
 
 
 class RunStore:

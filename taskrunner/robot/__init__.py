@@ -11,6 +11,7 @@ from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap
 
 __all__ = [
+    "Cell",
     "EndEffector",
     "Group",
     "JointInfo",
@@ -46,3 +47,12 @@ def load_robot(path: str | Path, packages: PackageMap | None = None,
     description = load_description(path, packages)
     return build_model([Placement(description)], name=description.name, strict=strict,
                        allow_missing_meshes=allow_missing_meshes)
+
+
+def __getattr__(name: str) -> object:
+    # The cell loader imports this package's modules: Cell is looked up on first use.
+    if name == "Cell":
+        from taskrunner.robot.cell import Cell
+
+        return Cell
+    raise AttributeError(f"module 'taskrunner.robot' has no attribute {name!r}")

@@ -9,6 +9,7 @@ the JSON Schema of task files is :func:`taskrunner.tasks.schema.task_json_schema
 
 from __future__ import annotations
 
+from taskrunner.tasks.expect import Expectation, TaskExpectation
 from taskrunner.tasks.loader import load_task, load_task_text
 from taskrunner.tasks.names import arm_groups, check_names, gripper_group_of, load_and_check
 from taskrunner.tasks.nodes import Location, Node, ObjectSpec, PoseSpec, TargetPose, Transform
@@ -44,11 +45,12 @@ from taskrunner.tasks.steps import (
 )
 
 __all__ = [
-    "AddObjectStep", "AttachStep", "DetachStep", "FallbackStep", "GoStep", "GripperStep",
-    "HandoffStep", "IncludeStep", "Location", "MOTION_VERBS", "MotionOptions", "MotionStep",
-    "MoveStep", "Node", "ObjectSpec", "Offset", "ParallelStep", "Parameter", "PickStep",
+    "AddObjectStep", "AttachStep", "DetachStep", "Expectation", "FallbackStep", "GoStep",
+    "GripperStep", "HandoffStep", "IncludeStep", "Location", "MOTION_VERBS", "MotionOptions",
+    "MotionStep", "MoveStep", "Node", "ObjectSpec", "Offset", "ParallelStep", "Parameter", "PickStep",
     "PlaceStep", "PoseSpec", "Problem", "RemoveObjectStep", "RepeatStep", "RetryStep",
-    "STEP_TYPES", "SequenceStep", "Step", "StepNode", "TargetPose", "TaskSpec", "TimeoutStep",
+    "STEP_TYPES", "SequenceStep", "Step", "StepNode", "TargetPose", "TaskExpectation",
+    "TaskSpec", "TimeoutStep",
     "Transform", "WaitStep", "arm_groups", "check_names", "gripper_group_of", "load_and_check",
     "load_task", "load_task_text", "problems_error", "raise_for_problems",
     "walk_steps",

@@ -44,12 +44,12 @@ from taskrunner.tasks import (
 
 def test_public_names_are_pinned():
     assert set(tasks.__all__) == {
-        "AddObjectStep", "AttachStep", "DetachStep", "FallbackStep", "GoStep", "GripperStep",
-        "HandoffStep", "IncludeStep", "Location", "MOTION_VERBS", "MotionOptions",
+        "AddObjectStep", "AttachStep", "DetachStep", "Expectation", "FallbackStep", "GoStep",
+        "GripperStep", "HandoffStep", "IncludeStep", "Location", "MOTION_VERBS", "MotionOptions",
         "MotionStep", "MoveStep", "Node", "ObjectSpec", "Offset", "ParallelStep", "Parameter",
         "PickStep", "PlaceStep", "PoseSpec", "Problem", "RemoveObjectStep", "RepeatStep",
         "RetryStep", "STEP_TYPES", "SequenceStep", "Step", "StepNode", "TargetPose",
-        "TaskSpec", "TimeoutStep", "Transform", "WaitStep", "arm_groups", "check_names",
+        "TaskExpectation", "TaskSpec", "TimeoutStep", "Transform", "WaitStep", "arm_groups", "check_names",
         "gripper_group_of", "load_and_check", "load_task", "load_task_text", "problems_error",
         "raise_for_problems", "walk_steps",
     }
