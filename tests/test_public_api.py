@@ -272,7 +272,7 @@ def test_errors_share_one_base_class():
     assert issubclass(BackendError, TaskrunnerError)
 
 
-@pytest.mark.parametrize("example", ["pick_place.py", "handoff.py"])
+@pytest.mark.parametrize("example", ["pick_place.py", "handoff.py", "teach_and_expect.py"])
 def test_the_examples_run_from_another_folder(example, tmp_path):
     script = Path(__file__).resolve().parent.parent / "examples" / example
     done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
