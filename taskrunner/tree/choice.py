@@ -201,7 +201,7 @@ def choice_key(scene: Scene, group: str, leaf: str,
             the contacts allowed to those count; None: the whole situation.
     """
     state = np.asarray(scene.state, dtype=float)
-    allowed_pairs = scene.snapshot().allowed
+    allowed_pairs = list(scene.snapshot().allowed)
     objects_in = list(scene.objects)
     if part is not None:
         state = state[list(part.indices)]
