@@ -7,6 +7,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from taskrunner.kinds import BackendKind, RunStatus
+from taskrunner.runtime.events import RunEvent
 from taskrunner.validation import Integer, Number
 
 __all__ = [
@@ -75,15 +76,9 @@ class RunAccepted(_Strict):
     url: str
 
 
-class EventOut(_Strict):
-    seq: int
-    time: float
-    kind: str
-    node: str | None = None
-    location: str | None = None
-    status: str | None = None
-    message: str = ""
-    data: dict[str, Any] = {}
+EventOut = RunEvent
+"""An event as the API sends it: the run record's own model, not a copy of it (the same
+fields, defaults and JSON)."""
 
 
 class RunSummary(_Strict):
