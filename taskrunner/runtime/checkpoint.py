@@ -218,7 +218,8 @@ class Checkpoint:
     could not be told from another of the same name and file:line), its ``status``, the
     ``scene`` after it, ``held`` objects (object: arm), ``seq`` of the event;
     ``run_id``: the run that finished the leaf, when not the record's own (a resumed
-    run's record repeats the checkpoints it replayed)."""
+    run's record repeats the checkpoints it replayed); ``skipped``: a leaf that never ran,
+    skipped by ``--from`` a step after it (its scene is the world when it was skipped)."""
 
     seq: int
     leaf: int | None
@@ -229,11 +230,13 @@ class Checkpoint:
     held: dict[str, str]
     position: list[dict[str, Any]]
     run_id: str | None = None
+    skipped: bool = False
 
 
 def checkpoints_of(record: RunRecord) -> list[Checkpoint]:
     """The checkpoints of a record, in order."""
     return [Checkpoint(e.seq, e.data.get("leaf"), e.node or "", e.location, e.status or "",
                        e.data.get("scene") or {}, dict(e.data.get("held") or {}),
-                       list(e.data.get("position") or []), e.data.get("replayed"))
+                       list(e.data.get("position") or []), e.data.get("replayed"),
+                       bool(e.data.get("skipped")))
             for e in record.events if e.kind == "checkpoint"]

@@ -29,9 +29,11 @@ and scene those of the moment the run stopped:
    ``released`` (no longer: detached where the scene has it) or ``objects`` (lying at a
    pose); a held object nobody vouches for is refused, naming the three options.
 
-``from_step`` (a step's name, or its ``file:line``) resumes at the first time the run
-reached that step instead (the world stays as it is now); a step the run never reached
-is refused.
+``from_step`` (a top-level step's name, or its ``file:line``) resumes at that step
+instead, the world as it is now (:mod:`taskrunner.runtime.resume_step`): at the first
+time the run reached it, or, a step after where it stopped, skipping the leaves between.
+The rest of the task from that step is first dry-run by the check a run gets, from the
+real state; a problem refuses the resume with its file:line and reason.
 
 What is not carried over: the run's clock (a ``timeout:`` around the resumed step and the
 task's ``duration`` expectation count the new run only), and the task-end expectations
@@ -43,7 +45,6 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -61,6 +62,7 @@ from taskrunner.runtime.checkpoint import (
     text_sha256,
     tree_sha256,
 )
+from taskrunner.runtime.resume_step import check_rest, skipped_leaves, top_index, top_step
 from taskrunner.tree.behaviours import MoveToGoal, TaskLeaf
 from taskrunner.tree.grasps import end_lift_off
 from taskrunner.types import Pose
@@ -114,6 +116,9 @@ class ResumePlan:
     world: Checkpoint | None
     stop_joints: dict[str, float]
     same_world: bool = False
+    start_step: int | None = None  # --from: the top-level step the rest is checked from
+    skip_to: int | None = None  # --from a step the run had not finished leaves before
+    played: list[Checkpoint] = field(default_factory=list)  # replay + skipped, once applied
 
     @property
     def run_id(self) -> str:
@@ -156,13 +161,16 @@ class ResumePlan:
         runner.ctx.sync_from_backend()  # the joints as they are now
         notes += self._moved_joints(runner)
         notes += self._reconcile(runner)
+        self.played = list(self.replay)
+        if self.start_step is not None:
+            notes += self._from_step(runner, leaves)
         self._rebuild_goals(runner, leaves, start_scene)
         outcomes: dict[int, list[Status]] = {}
-        for point in self.replay:
+        for point in self.played:
             outcomes.setdefault(point.leaf, []).append(Status(point.status))  # type: ignore[arg-type]
         for index, statuses in outcomes.items():
             _Replayed(leaves[index], statuses).install()
-        runner.checkpointer.count = len(self.replay)  # its own checkpoints count on
+        runner.checkpointer.count = len(self.played)  # its own checkpoints count on
         if self.replay:
             last = self.replay[-1]
             notes.append(f"continuing after {last.node!r}"
@@ -174,12 +182,41 @@ class ResumePlan:
         events with ``replayed``: the id of the run that finished them), before any of
         its own: the record of a resumed run is resumable alone, without the records
         before it."""
-        for done, point in enumerate(self.replay, start=1):
-            events.emit("checkpoint", f"after {point.node} (replayed from run "
-                        f"{self.run_id})", node=point.node, location=point.location,
-                        status=point.status, leaf=point.leaf, done=done,
-                        position=point.position, scene=point.scene, held=point.held,
-                        replayed=point.run_id or self.run_id)
+        for done, point in enumerate(self.played, start=1):
+            how = "skipped by --from" if point.skipped else f"replayed from run {self.run_id}"
+            events.emit("checkpoint", f"after {point.node} ({how})", node=point.node,
+                        location=point.location, status=point.status, leaf=point.leaf,
+                        done=done, position=point.position, scene=point.scene,
+                        held=point.held, replayed=point.run_id or self.run_id,
+                        **({"skipped": True} if point.skipped else {}))
+
+    def _from_step(self, runner: Runner, leaves: dict[int, TaskLeaf]) -> list[str]:
+        """``--from``: skip to the step if the run had not finished the leaves before it,
+        then check the rest of the task from the world as it is (refused on a problem)."""
+        assert self.start_step is not None
+        step = self.options.from_step
+        notes = []
+        if self.skip_to is not None:
+            skipped, reason = skipped_leaves(runner, self.replay, self.skip_to)
+            if reason is not None:
+                raise _refuse(self.record, f"--from {step!r}: cannot skip to it: {reason}")
+            nodes = list(preorder(runner.tree))
+            for point in skipped:
+                leaves[point.leaf] = nodes[point.leaf]  # type: ignore[index,assignment]
+            self.played += skipped
+            if skipped:
+                notes.append(f"--from {step!r}: {len(skipped)} leaves the run never finished "
+                             f"skipped ({', '.join(p.node for p in skipped[:4])}"
+                             f"{' …' if len(skipped) > 4 else ''})")
+        problems = check_rest(runner, self.start_step)
+        if problems:
+            more = f" (and {len(problems) - 2} more)" if len(problems) > 2 else ""
+            raise _refuse(self.record, f"--from {step!r}: the rest of the task does not check "
+                          "from where the robot and the objects are now: "
+                          + "; ".join(map(str, problems[:2])) + more)
+        notes.append(f"--from {step!r}: the rest of the task checked from where the robot "
+                     "and the objects are now: no problem")
+        return notes
 
     def _moved_joints(self, runner: Runner) -> list[str]:
         if self.world is None:
@@ -258,19 +295,19 @@ class ResumePlan:
         run was part of the way through (what a pick, place or hand-over keeps for its
         later leaves), each in the scene it started in."""
         last: dict[int, int] = {}
-        for position, point in enumerate(self.replay):
+        for position, point in enumerate(self.played):
             last[point.leaf] = position  # type: ignore[index]
         index = {node.id: i for i, node in enumerate(preorder(runner.tree))}
         for leaf_index, position in last.items():
             leaf = leaves[leaf_index]
             parent = leaf.parent
             if not isinstance(leaf, MoveToGoal) or parent is None \
-                    or self.replay[position].status != Status.SUCCESS.value:
+                    or self.played[position].status != Status.SUCCESS.value:
                 continue
             after = parent.children[parent.children.index(leaf) + 1:]
             if not after or all(last.get(index[s.id], -1) > position for s in after):
                 continue  # the subtree went past it: nothing later needs its goals
-            before = self.replay[position - 1].scene if position > 0 else start_scene
+            before = self.played[position - 1].scene if position > 0 else start_scene
             scene = runner.scene.copy()
             restore_scene(scene, before)
             shadow = dataclasses.replace(runner.ctx, scene=scene)
@@ -350,32 +387,21 @@ def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None
     replay = list(points)
     if record.status == "failed" and replay and replay[-1].status == Status.FAILURE.value:
         replay.pop()  # the leaf whose failure ended the run runs again
+    start_step = skip_to = None
     if options.from_step is not None:
-        replay = _until_step(record, replay, options.from_step)
+        start_step = top_step(spec, options.from_step)
+        if start_step is None:
+            steps = ", ".join(repr(s.label) for s in spec.steps)
+            raise _refuse(record, f"--from {options.from_step!r}: no step of that name or "
+                          f"file:line at the task's top level (its steps: {steps}); to go "
+                          "on inside a step, resume without --from")
+        first = next((i for i, p in enumerate(replay) if top_index(p) == start_step), None)
+        if first is not None:  # reached: back to it
+            replay = replay[:first]
+        else:  # not finished before: skip to it
+            skip_to = start_step
     return ResumePlan(record, record.backend, options, replay, world, _stop_joints(record),
-                      same_world)
-
-
-def _until_step(record: RunRecord, points: list[Checkpoint], step: str) -> list[Checkpoint]:
-    """The checkpoints before the first that belongs to ``step`` (name or file:line)."""
-    def matches(point: Checkpoint) -> bool:
-        where = point.location or ""
-        short = f"{Path(where.rsplit(':', 1)[0]).name}:{where.rsplit(':', 1)[-1]}" \
-            if ":" in where else where
-        names = [point.node, *(p.get("name", "") for p in point.position)]
-        return step in (where, short) or step in names \
-            or point.node.startswith(f"{step}: ")
-
-    for position, point in enumerate(points):
-        if matches(point):
-            return points[:position]
-    started = [e for e in record.events if e.kind == "node_started"
-               and (e.node == step or (e.location or "").endswith(step))]
-    if started:
-        return points  # the step the run stopped in
-    steps = dict.fromkeys(p.location or p.node for p in points)
-    raise _refuse(record, f"--from {step!r}: no step of that name or file:line was reached "
-                  f"(steps it reached: {', '.join(steps) or 'none'})")
+                      same_world, start_step, skip_to)
 
 
 def _stop_joints(record: RunRecord) -> dict[str, float]:

@@ -82,7 +82,7 @@ from taskrunner.tree.occupancy import OVERLAP_TOLERANCE
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
 from taskrunner.tree.schedule_proof import ScheduleProof
 
-__all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_task"]
+__all__ = ["MAX_GOAL_STATES", "OVERLAP_TOLERANCE", "CheckReport", "check_from", "check_task"]
 
 
 @dataclass(frozen=True)
@@ -150,6 +150,15 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
     return CheckReport(cell.name, run.checked, _ordered(named + problems + run.problems, root),
                        list(dict.fromkeys(run.notes)), task=spec, loaded_cell=cell,
                        schedules=run.proofs)
+
+
+def check_from(spec: TaskSpec, cell: Cell, scene: Scene, seed: int = 0) -> list[Problem]:
+    """The problems of the dry run of ``spec``'s steps (pass 3 of the module text) from
+    ``scene`` instead of the task's start: a resumed run's rest, from the robot and the
+    objects as they are (``run-task resume --from``). ``scene`` is not changed."""
+    run = _TaskCheck(spec, cell, set(), set())
+    run.check(TaskContext(cell, scene.copy(), seed=seed))
+    return _ordered(run.problems, Path(spec.path) if spec.path else Path())
 
 
 # ----------------------------------------------------------------------------- helpers

@@ -282,7 +282,7 @@ def test_resuming_a_succeeded_run_or_an_unknown_object_is_refused(held_record, t
         plan_resume(record, spec)
 
 
-def test_from_step_rewinds_to_a_step_the_run_reached_and_refuses_one_it_did_not(
+def test_from_step_rewinds_to_a_step_the_run_reached_and_refuses_a_name_the_task_lacks(
         held_record):
     record = load_record(held_record)
     spec = load_task(record.task_file, record.parameters)
@@ -291,8 +291,87 @@ def test_from_step_rewinds_to_a_step_the_run_reached_and_refuses_one_it_did_not(
     line = next(p.location for p in checkpoints_of(record) if p.node.startswith("pick"))
     by_line = plan_resume(record, spec, ResumeOptions(from_step=Path(line).name))
     assert [p.node for p in by_line.replay] == [p.node for p in plan.replay]
-    with pytest.raises(InputError, match="--from 'go left': no step of that name"):
+    with pytest.raises(InputError, match="--from 'go left': no step of that name or "
+                                         "file:line at the task's top level"):
         plan_resume(record, spec, ResumeOptions(from_step="go left"))
+
+
+def test_from_a_step_the_rest_is_checked_from_the_real_state_and_refused_on_a_problem(
+        held_record, tmp_path):
+    record = load_record(held_record)  # stopped carrying the cube
+    spec = load_task(record.task_file, record.parameters)
+    with pytest.raises(InputError, match=r"--from 'pick cube': the rest of the task does not "
+                                         r"check from where the robot and the objects are now:"
+                                         r" .*pick_place.yaml:\d+: pick cube: 'cube' is "
+                                         r"already held"):
+        sim_runner(Path(record.task_file), tmp_path,
+                   plan_resume(record, spec, ResumeOptions(from_step="pick cube")))
+    # The operator put it back where it was picked: checked, picked again, placed.
+    back = ResumeOptions(objects=dict([parse_object_pose("cube=0.19,0.04,0.7625")]),
+                         from_step="pick cube")
+    _, resumed, runner = resume(held_record, tmp_path, back)
+    assert resumed.status == "succeeded", resumed.error
+    assert runner.expectations_met is True
+    assert any("the rest of the task checked from where the robot and the objects are now"
+               in n for n in runner.resume_notes)
+    assert [e.node for e in resumed.events if e.kind == "node_started"][0] == "pick cube: open"
+
+
+STEPS = """\
+task: three
+cell: {cell}
+objects:
+  - {{name: cube, shape: box, size: [0.025, 0.025, 0.025], pose: {{xyz: [0.19, 0.04, 0.7625]}}}}
+steps:
+  - go: {{name: first, group: arm, to: Candle}}
+  - go: {{name: second, group: arm, to: home}}
+  - go: {{name: third, group: arm, to: Candle}}
+  - pick: {{arm: arm, object: cube, grasp: top, approach: 0.04, retreat: 0.05}}
+"""
+
+
+def test_from_a_step_not_reached_skips_to_it_when_the_rest_checks_from_the_real_state(
+        tmp_path):
+    path = tmp_path / "three.yaml"
+    path.write_text(STEPS.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
+    runner, backend = sim_runner(path, tmp_path)
+
+    def fault(event):  # in the first step
+        if event.kind == "motion" and event.node == "first":
+            backend.stop()
+
+    runner.events.subscribe(fault)
+    try:
+        first = runner.run()
+    finally:
+        backend.close()
+    assert first.status == "failed"
+    stopped = tmp_path / f"{first.run_id}.json"
+    _, record, resumed = resume(stopped, tmp_path, ResumeOptions(from_step="third"))
+    assert record.status == "succeeded", record.error
+    assert [e.node for e in record.events if e.kind == "node_started"][0] == "third"
+    points = checkpoints_of(record)
+    assert [p.node for p in points if p.skipped] == ["first", "second"]
+    assert any("2 leaves the run never finished skipped (first, second)" in n
+               for n in resumed.resume_notes)
+    # Skipping over the pick to an imagined place is refused by the check, with its reason.
+    path.write_text(path.read_text() + "  - place: {arm: arm, object: cube, at: {xyz: "
+                    "[0.14, -0.12, 0.7635]}, orientation: yaw}\n")
+    changed = tmp_path / "four.yaml"
+    changed.write_text(path.read_text().replace("task: three", "task: four"))
+    runner, backend = sim_runner(changed, tmp_path)
+    runner.events.subscribe(lambda e: e.kind == "motion" and e.node == "first"
+                            and backend.stop())
+    try:
+        first = runner.run()
+    finally:
+        backend.close()
+    record = load_record(tmp_path / f"{first.run_id}.json")
+    spec = load_task(changed)
+    with pytest.raises(InputError, match=r"--from 'place cube': .*does not check .*: .*"
+                                         r"arm 'arm' is not holding 'cube'"):
+        sim_runner(changed, tmp_path, plan_resume(record, spec,
+                                                  ResumeOptions(from_step="place cube")))
 
 
 def test_a_checkpoint_scene_comes_back_exactly_with_attachments_and_reasons(held_record):
