@@ -155,8 +155,8 @@ def _overlaps(committed: Sequence[Committed]) -> tuple[Overlap, ...]:
             if not concurrent(a.lane, b.lane):
                 continue
             start, end = max(a.motion.start, b.motion.start), min(a.motion.end, b.motion.end)
-            if end <= start:
-                continue
+            if end - start <= 1e-9:  # one starts as the other ends (a wait until then),
+                continue  # give or take the last bits of a float
             key = (a.location, b.location)
             seen = found.setdefault(key, [start, end, 0.0])
             seen[0], seen[1] = min(seen[0], start), max(seen[1], end)
