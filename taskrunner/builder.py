@@ -64,6 +64,7 @@ from taskrunner.tasks.steps import (
     StepNode,
     TimeoutStep,
     WaitStep,
+    walk_steps,
 )
 from taskrunner.types import Pose
 
@@ -577,6 +578,13 @@ class Task:
                                               loc.line if loc else None,
                                               f"object {obj.name!r} is declared twice")])
             seen[obj.name] = obj
+        for step in walk_steps(self.steps):
+            if isinstance(step, Expect) and step._outcome:
+                loc = step.loc
+                raise problems_error([Problem(
+                    loc.file if loc else None, loc.line if loc else None,
+                    "'status' and 'error' are for a task's end (Task(..., expect=Expect(...))), "
+                    "not for an expect step")])
         spec = TaskSpec(name=self.name, description=self.description, path=None,
                         cell=Path(cell.path) if cell.path is not None else Path(cell.name),
                         objects=tuple(seen.values()), defaults=self.defaults,
@@ -584,13 +592,7 @@ class Task:
                                     for s in self.steps),
                         expect=self.expect.as_task_expectation() if self.expect else None,
                         ).located(where)
-        for step in spec.walk():
-            if isinstance(step, Expect) and step._outcome:
-                loc = step.loc
-                raise problems_error([Problem(
-                    loc.file if loc else None, loc.line if loc else None,
-                    "'status' and 'error' are for a task's end (Task(..., expect=Expect(...))), "
-                    "not for an expect step")])
+
         problems = check_names(spec, cell)
         if problems:
             raise problems_error(problems)
