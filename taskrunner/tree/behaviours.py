@@ -456,6 +456,9 @@ class MoveToGoal(_Executes):
         self.ticket: PlanTicket | None = None
         # A staged list and the request for all of it, while its first goal is asked for.
         self._rest: tuple[StagedGoals, PlanRequest] | None = None
+        # Without a remembered choice: the situation before the seed was drawn, the key.
+        self._unchecked: tuple[TaskContext, TaskContext, tuple[Hashable, ...],
+                               PlannerOptions] | None = None
 
     def goal(self, ctx: TaskContext) -> Goal | tuple[Goal, ...]:
         """The leaf's goal(s) built in ``ctx`` (a staged list in full)."""
@@ -500,9 +503,15 @@ class MoveToGoal(_Executes):
         super().start()
         self.ticket = None
         self._rest = None
+        self._unchecked = None
         try:
+            before = replace(self.ctx)  # the situation before the leaf draws its seed
             found, options, key = self.request_goals(self.ctx)
             picked = chosen(self.ctx.scene.robot, key) if key is not None else None
+            # No check chose here (see tree/lookahead.py): the plan's goal state is
+            # played on to the step's end before it moves.
+            self._unchecked = (before, replace(self.ctx), key, options) \
+                if picked is None and key is not None else None
             if picked is not None:
                 # The goal state the check followed to the end of its step: that one only.
                 group = self.ctx.scene.robot.group(self.group)
@@ -540,10 +549,35 @@ class MoveToGoal(_Executes):
             return self.fail(str(exc))
         self.ticket = None
         self._rest = None
+        if self._unchecked is not None:
+            before, after, key, options = self._unchecked
+            self._unchecked = None
+            from taskrunner.tree.lookahead import choose_as_the_check, rest_fails
+
+            if rest_fails(self, after, result.end):
+                # The rest of the step fails from the planner's goal state: the state the
+                # check's rule follows instead, where one lets it succeed.
+                picked = choose_as_the_check(self, before, key)
+                if picked is not None:
+                    return self._plan_to(picked, options)
         try:
             return self.execute_path(result.path, result.planning_time, result.trajectory)
         except TaskrunnerError as exc:
             return self.fail(str(exc))
+
+    def _plan_to(self, q: np.ndarray, options: PlannerOptions) -> Status:
+        """Plan again, to the state ``q`` of the group alone (the first request's options:
+        its seed too, so that the seeds of the leaves after it stay the check's)."""
+        group = self.ctx.scene.robot.group(self.group)
+        goal = JointGoal(dict(zip(group.joint_names, q[group.joint_indices].tolist())))
+        try:
+            request = PlanRequest(self.group, goal, start=self.ctx.scene.state,
+                                  options=options,
+                                  timing=self.timing if self.ctx.planner_times else None)
+            self.ticket = self.ctx.plan_service().submit(self.ctx.scene, request)
+        except TaskrunnerError as exc:
+            return self.fail(str(exc))
+        return self.update()  # an in-process planner has answered already
 
     def _ask_all(self) -> Status:
         """Plan for the whole staged list: the request the leaf would have made at once."""

@@ -201,13 +201,19 @@ def test_the_run_reaches_the_goal_state_the_check_chose(tmp_path: Path, monkeypa
     # Generated task 7 (a Panda pick and place): from the pre-place state the planner
     # reaches first, the place's retreat cannot be followed (a joint would jump); the
     # check found another pre-place state that works. The run plans to the check's
-    # choice and succeeds; left to its planner's own choice, it fails.
+    # choice and succeeds. Without it (no check in this process), the run plays the rest
+    # of the step from its planner's state by the check's rule, finds it fails, and
+    # takes the check's state (tree/lookahead.py); left to its planner alone, it fails.
     import taskrunner.tree.behaviours as behaviours
+    import taskrunner.tree.lookahead as lookahead
 
     path = generated_task(7, tmp_path)
     ok, code, problems, log = _check_then_run(path, tmp_path / "runs")
     assert ok and code == 0, (problems, log[-2000:])
     monkeypatch.setattr(behaviours, "chosen", lambda model, key: None)
+    ok, code, _, log = _check_then_run(path, tmp_path / "runs")
+    assert ok and code == 0, log[-2000:]
+    monkeypatch.setattr(lookahead, "rest_fails", lambda leaf, after, end: False)
     ok, code, _, log = _check_then_run(path, tmp_path / "runs")
     assert ok and code != 0, log[-2000:]
 
