@@ -13,7 +13,7 @@ Panda's ready pose to a random goal) and on the problems of ``benchmarks/plannin
 (``panda_table_pick``, ``panda_shelf``, ``panda_box``, ``panda_cage`` by default), plus the
 toppra trajectory sampled from each path (what ``timing`` verifies), plus straight lines
 through the plates (which must be rejected). Then it times
-:meth:`taskrunner.scene.sweep.PathVerifier.verify` on every one, interleaved with the
+:meth:`taskrunner.scene.path_verifier.PathVerifier.verify` on every one, interleaved with the
 verifier of git revision ``--baseline`` (loaded from ``git show REV:taskrunner/scene/sweep.py``;
 ``--baseline none`` skips it), alternating which runs first, ``--repeats`` times each
 (the fastest run counts). Margin 0.5 mm, as the planner's default.
@@ -49,7 +49,7 @@ index, timing off: the returned path and the shortcut candidates it checked, rej
 included), then verifies each recorded path with the current verifier and the baseline's,
 interleaved (alternating which goes first), ``--repeats`` times each, and reports per class
 the median CPU time (``time.process_time``; the median of the repeats per path, then the
-median over paths), the compiled walk's calls (:func:`taskrunner.scene.sweep._walk`: one
+median over paths), the compiled walk's calls (:func:`taskrunner.scene.advancement._walk`: one
 more than the rounds of exact distances) and coal's distance queries per path, the
 rejections of each and the verdicts that differ, with the load average along the run.
 
@@ -86,7 +86,7 @@ from taskrunner.errors import PlanningError
 from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.scene import Scene
-from taskrunner.scene.sweep import PathVerifier
+from taskrunner.scene.path_verifier import PathVerifier
 from taskrunner.shapes import Box
 from taskrunner.types import Pose
 
@@ -428,7 +428,7 @@ def run_planner_paths(args: argparse.Namespace) -> dict:
     from taskrunner.moveit import load_motion_plan_request, load_planning_scene
     from taskrunner.resources import DATA_ROOT
     from taskrunner.robot import load_robot
-    from taskrunner.scene import sweep
+    from taskrunner.scene import path_verifier as sweep
 
     baseline = load_baseline(args.baseline)
     if baseline is None:

@@ -21,7 +21,6 @@ MAX_LINES = 800
 
 # Modules over MAX_LINES, each with its reason and the issue that splits it.
 _LONG: dict[str, str] = {
-    "scene/sweep.py": "the path verifier: goes into the one collision core (issue 24 item 1)",
     "planning/planner.py": "the motion planner: its goal sampling and direct-line tries are "
                            "the seams to split along (issue 24 item 8)",
     "backends/physics/backend.py": "the MuJoCo backend: its MJCF scene building is the seam "
@@ -34,9 +33,6 @@ _PACKAGE_CYCLES: dict[frozenset[str], str] = {
     frozenset({"taskrunner.runtime", "taskrunner.tree"}):
         "tree's leaves and context emit runtime.events' RunEvent and use runtime.replay's "
         "object data: those two move below tree (events are the run's vocabulary)",
-    frozenset({"taskrunner.collision", "taskrunner.scene"}):
-        "scene.sweep uses collision's frames and geometry while collision.spacetime uses "
-        "scene's verifier: the one collision core of issue 24 item 1 removes it",
 }
 
 

@@ -1,5 +1,5 @@
 """The compiled collision core: one kinematic description of a robot and one forward
-kinematics, shared by the path verifier (:mod:`taskrunner.scene.sweep`) and the search's
+kinematics, shared by the path verifier (:mod:`taskrunner.scene.path_verifier`) and the search's
 state screen (:mod:`taskrunner.scene.screen`).
 
 * :mod:`taskrunner.collision.tree`: the kinematic tree as records with named fields

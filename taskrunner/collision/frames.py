@@ -4,7 +4,7 @@ A *frame row* is a float row holding a rotation (row-major, columns :data:`ROTAT
 ``ROTATION + 9``), an origin (m, :data:`ORIGIN`) and, for a joint, its axis in the world
 (:data:`AXIS`). :func:`compose` is the one rigid-transform composition of the kernels (a
 placed frame times a local placement); :func:`joint_frames` the one forward kinematics.
-The path verifier (:mod:`taskrunner.scene.sweep`) and the search's state screen
+The path verifier (:mod:`taskrunner.scene.path_verifier`) and the search's state screen
 (:mod:`taskrunner.scene.screen`) write their joint rows with it, and place their
 geometry with :func:`compose`.
 

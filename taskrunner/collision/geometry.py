@@ -5,7 +5,7 @@ or an object's) in its own frame: the joint that carries it and its placement th
 :func:`taskrunner.collision.frames.compose` reads a placement), a sphere and a box that
 contain it, and the core shape whose support function the kernels evaluate exactly
 (:class:`ShapeKind`, grown by ``swept``). The path verifier
-(:class:`taskrunner.scene.sweep.PathVerifier`) builds these records; the state screen
+(:class:`taskrunner.scene.path_verifier.PathVerifier`) builds these records; the state screen
 (:mod:`taskrunner.scene.screen`) derives its own from them.
 """
 

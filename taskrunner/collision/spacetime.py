@@ -13,9 +13,9 @@ Every backend here plays a trajectory linearly between its samples
 times of *any* lane the whole state moves on a straight line in joint space. Over a time
 stretch, every point of a body moves, relative to a body of another lane, by at most
 ``B = sum_j r_j |dq_j|``, where ``r_j`` is the full-reach lever arm of joint ``j`` for
-either body (:func:`~taskrunner.scene.sweep.lever_arms`: an upper bound on the distance
+either body (:func:`~taskrunner.collision.tree.lever_arms`: an upper bound on the distance
 from the joint's axis to any point of the body, 1 m/m for a prismatic joint). This is the
-bound of the path verifier (:mod:`taskrunner.scene.sweep`) taken along time.
+bound of the path verifier (:mod:`taskrunner.scene.path_verifier`) taken along time.
 
 The walk is conservative advancement (as in Schwarzer, Saha & Latombe, IEEE T-RO 2005),
 per pair of bodies of two lanes: a measurement ``d`` (coal's exact signed distance, m,
@@ -41,13 +41,16 @@ import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taskrunner.collision.tree import lever_arms
 from taskrunner.errors import ArgumentError, InvalidStateError
-from taskrunner.scene import Scene
-from taskrunner.scene.sweep import lever_arms
 from taskrunner.types import JointTrajectory
+
+if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, not imported
+    from taskrunner.scene import Scene
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
            "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "least_clearance",
@@ -517,7 +520,7 @@ _LEVERS: dict[int, tuple[object, np.ndarray]] = {}  # id(geometry model) -> (it,
 
 
 def _levers(model, geometry) -> np.ndarray:  # type: ignore[no-untyped-def]
-    """:func:`~taskrunner.scene.sweep.lever_arms` of a checker's geometry model, kept for
+    """:func:`~taskrunner.collision.tree.lever_arms` of a checker's geometry model, kept for
     the few latest models (a scene's checker lives until the scene is edited)."""
     key = id(geometry)
     found = _LEVERS.get(key)

@@ -6,7 +6,7 @@ robot's state vector, its placement on the parent (rotation, row-major, then tra
 m: as :func:`taskrunner.collision.frames.compose` reads a placement) and its axis in its own
 frame (a unit vector). :class:`KinematicTree` builds the records
 of a :class:`~taskrunner.robot.RobotModel` and what bounds on the motion of a body need
-(lever arms: :meth:`KinematicTree.levers`); the forward kinematics that reads them is
+(lever arms: :meth:`KinematicTree.levers`, :func:`lever_arms`); the forward kinematics that reads them is
 :func:`taskrunner.collision.frames.joint_frames`.
 """
 
@@ -19,7 +19,7 @@ import pinocchio as pin
 
 from taskrunner.robot import RobotModel
 
-__all__ = ["JOINT", "JointKind", "KinematicTree"]
+__all__ = ["JOINT", "JointKind", "KinematicTree", "lever_arms"]
 
 
 class JointKind(IntEnum):
@@ -135,3 +135,25 @@ class KinematicTree:
             reach += self.prismatic_travel[jid]
             jid = self.parent[jid]
         return row
+
+
+def lever_arms(robot: RobotModel, geometry_model: pin.GeometryModel,
+               tree: KinematicTree | None = None) -> np.ndarray:
+    """Per geometry object and state-vector joint, a bound on how far the joint moves it.
+
+    Args:
+        tree: ``robot``'s kinematic tree where the caller keeps one (else built here).
+
+    Returns:
+        ``(n_geometries, robot.nq)``: for a revolute or continuous joint, an upper bound
+        (m/rad) on the distance from its axis to any point of the geometry (through the
+        chain at full reach: joint offsets plus the full travel of prismatic joints in
+        between, then the geometry's bounding sphere); for a prismatic joint 1 (m/m);
+        0 where the joint does not move the geometry (world objects, other branches).
+    """
+    if tree is None:
+        tree = KinematicTree(robot)
+    levers = np.zeros((len(geometry_model.geometryObjects), robot.nq))
+    for g, geometry_object in enumerate(geometry_model.geometryObjects):
+        levers[g] = tree.levers(geometry_object)
+    return levers

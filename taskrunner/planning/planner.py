@@ -8,7 +8,7 @@ scene's collision checker (self, world and attached objects), every
 the pairs they cannot clear: :mod:`taskrunner.scene.screen`). The path found is
 shortcut, then verified exactly by conservative advancement (per-joint lever arms bound
 how far any point of any body moves between checks, coal distances against the scene's
-geometry: :mod:`taskrunner.scene.sweep`); with timing, the sampled trajectory that is
+geometry: :mod:`taskrunner.scene.path_verifier`); with timing, the sampled trajectory that is
 executed is verified the same way. A path or trajectory that fails is never returned: the
 search is repeated with a finer planning segment, or :class:`PlanningError` is raised.
 
@@ -57,8 +57,8 @@ from taskrunner.types import JointPath, JointTrajectory
 
 if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verified
     from taskrunner.scene.coalpath import CoalPathVerifier, CoalScreen
+    from taskrunner.scene.path_verifier import PathVerification
     from taskrunner.scene.screen import StateScreen
-    from taskrunner.scene.sweep import PathVerification
 
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path"]
 
@@ -112,7 +112,7 @@ class MotionPlanner:
     Args:
         scene: the planning scene.
         compiled: check with the compiled kernels (the screen and the path verifier of
-            :mod:`taskrunner.scene.screen` and :mod:`taskrunner.scene.sweep`), or, False,
+            :mod:`taskrunner.scene.screen` and :mod:`taskrunner.scene.path_verifier`), or, False,
             with coal alone (:mod:`taskrunner.scene.coalpath`: the same verdicts for
             states, the same guarantee for paths, slower) while the kernels compile
             (:mod:`taskrunner.planning.warmup`). An attribute: set between requests.
@@ -158,7 +158,7 @@ class MotionPlanner:
 
     def verify_states(self, states: np.ndarray, margin: float) -> PathVerification:
         """Verify the polyline through full state vectors ``states`` against the scene
-        (conservative advancement, see :mod:`taskrunner.scene.sweep`; ``margin`` in m)."""
+        (conservative advancement, see :mod:`taskrunner.scene.path_verifier`; ``margin`` in m)."""
         if not self.compiled:
             return self._coal_checks(margin)[0].verify(states)
         return self.scene.path_verifier(margin).verify(states)
@@ -196,7 +196,7 @@ class MotionPlanner:
             if _on_segment(np.asarray(result.path.waypoints), trajectory.positions):
                 # A straight line timed in closed form: its samples lie on the segment the
                 # path's verification covered already.
-                from taskrunner.scene.sweep import PathVerification as Verified
+                from taskrunner.scene.path_verifier import PathVerification as Verified
 
                 return trajectory, Verified(True, 0, 0, 0.0)
             verified = self.verify_states(

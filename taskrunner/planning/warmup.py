@@ -1,6 +1,6 @@
 """The planner's compiled kernels: compiled once per machine, never waited for.
 
-The path verifier (:mod:`taskrunner.scene.sweep`) and the search's state screen
+The path verifier (:mod:`taskrunner.scene.path_verifier`) and the search's state screen
 (:mod:`taskrunner.scene.screen`) run numba kernels that numba compiles the first time on a
 machine (6-8 s of CPU: ~5 s on an idle 2-core machine, half a minute or more on a busy one)
 and keeps in its on-disk cache (:func:`taskrunner.resources.kernel_cache_dir`); every later
@@ -41,7 +41,7 @@ if TYPE_CHECKING:
     from taskrunner.planning.planner import MotionPlanner
     from taskrunner.scene import Scene
     from taskrunner.scene.coalpath import CoalPathVerifier
-    from taskrunner.scene.sweep import PathVerifier
+    from taskrunner.scene.path_verifier import PathVerifier
 
 __all__ = ["CompiledKernels", "compile_in_background", "compiling_pid", "exact_path_verifier",
            "kernel_cache_files", "kernels_ready", "warm_up_kernels"]
@@ -99,9 +99,9 @@ def _warm_geometry_kernels() -> None:
     types the build passes."""
     import numpy as np
 
-    from taskrunner.scene import sweep
+    from taskrunner.scene import distance_bounds
 
-    sweep._farthest_point_centre(np.zeros((1, 3)), np.zeros(3), 100)
+    distance_bounds._farthest_point_centre(np.zeros((1, 3)), np.zeros(3), 100)
 
 
 def kernel_cache_files() -> list[Path]:

@@ -1,12 +1,12 @@
 """Exact path verification and the search's state checks with coal alone, no compiled code.
 
-The planner's own checks (:mod:`taskrunner.scene.sweep`, :mod:`taskrunner.scene.screen`) run
+The planner's own checks (:mod:`taskrunner.scene.path_verifier`, :mod:`taskrunner.scene.screen`) run
 numba kernels, which compile the first time on a machine (seconds of CPU). Until they are
 there, a planner checks with these instead (:mod:`taskrunner.planning.warmup`): slower per
 path, the same guarantee.
 
 :class:`CoalPathVerifier` is conservative advancement (Schwarzer, Saha & Latombe, IEEE T-RO
-2005) with the full-reach lever arms of :func:`taskrunner.scene.sweep.lever_arms` and coal's
+2005) with the full-reach lever arms of :func:`taskrunner.collision.tree.lever_arms` and coal's
 exact distances only: the path verifier's rule as it runs on robots whose joints its compiled
 kinematics do not cover. Along the polyline, ``B(s, t) = sum_j L_j (C_j(t) - C_j(s))`` bounds
 how far any point of one body of a pair moves relative to the other between positions ``s``
@@ -14,7 +14,7 @@ and ``t`` (``L_j``: the pair's lever arm of joint ``j``, counted where the joint
 body and not the other; ``C_j``: the joint's travel, ``sum |dq_j|``, up to a position). A
 measurement ``d_s > 0`` (coal's distance less its 1 µm tolerance) at ``s`` is followed by one
 at the ``t`` where ``B(s, t)`` reaches ``max(d_s, margin)``; if that one is positive too the
-two cover the stretch between them (:mod:`taskrunner.scene.sweep`'s proof: no penetration
+two cover the stretch between them (:mod:`taskrunner.scene.path_verifier`'s proof: no penetration
 deeper than ``margin / 2``, none at all where ``B(s, t) <= d_s``). A pair is done at the
 first measurement ``d_s >= B(s, end)``, or at the end. Pairs whose bound is the same
 function (a link and each world object) are measured together, as one: the least of their
@@ -35,10 +35,12 @@ from collections.abc import Callable
 
 import numpy as np
 
+from taskrunner.collision.tree import lever_arms
 from taskrunner.errors import ArgumentError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
-from taskrunner.scene.sweep import PathVerification, lever_arms
+from taskrunner.scene.geometry_records import _tree
+from taskrunner.scene.path_verifier import PathVerification
 
 __all__ = ["CoalPathVerifier", "CoalScreen"]
 
@@ -54,11 +56,11 @@ class CoalPathVerifier:
     Args:
         robot: the robot model.
         checker: the scene's checker (its geometry and pairs, allowances applied).
-        margin: m; as :class:`~taskrunner.scene.sweep.PathVerifier`'s: twice the deepest
+        margin: m; as :class:`~taskrunner.scene.path_verifier.PathVerifier`'s: twice the deepest
             penetration the verification can miss where a pair comes within it.
 
-    ``verify`` answers as :meth:`taskrunner.scene.sweep.PathVerifier.verify` does (a
-    :class:`~taskrunner.scene.sweep.PathVerification`; ``bounds`` is always 0: every
+    ``verify`` answers as :meth:`taskrunner.scene.path_verifier.PathVerifier.verify` does (a
+    :class:`~taskrunner.scene.path_verifier.PathVerification`; ``bounds`` is always 0: every
     measurement is coal's). Used like its checker, by one thread at a time.
     """
 
@@ -73,7 +75,7 @@ class CoalPathVerifier:
         self._names = [obj.name for obj in geometry.geometryObjects]
         pairs = np.array([(p.first, p.second) for p in geometry.collisionPairs],
                          dtype=np.int64).reshape(-1, 2)
-        levers = lever_arms(robot, geometry).reshape(len(self._names), robot.nq)
+        levers = lever_arms(robot, geometry, _tree(robot)).reshape(len(self._names), robot.nq)
         first, second = levers[pairs[:, 0]], levers[pairs[:, 1]]
         moves_first, moves_second = first > 0.0, second > 0.0
         # A joint moving both bodies moves them together: only the others count.
@@ -92,7 +94,7 @@ class CoalPathVerifier:
         """Verify the polyline through full state vectors ``states`` (``(n, nq)``).
 
         Returns:
-            A :class:`~taskrunner.scene.sweep.PathVerification`; ``valid`` False names
+            A :class:`~taskrunner.scene.path_verifier.PathVerification`; ``valid`` False names
             the first contact found along the path.
         """
         t0 = time.perf_counter()

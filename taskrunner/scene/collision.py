@@ -52,7 +52,7 @@ from taskrunner.errors import ArgumentError
 __all__ = ["VERIFY_MARGIN", "Body", "Clearance", "CollisionChecker", "Contact", "RobotGeometry"]
 
 VERIFY_MARGIN = 2e-6
-"""m: the path verifier's default margin (:class:`taskrunner.scene.sweep.PathVerifier`):
+"""m: the path verifier's default margin (:class:`taskrunner.scene.path_verifier.PathVerifier`):
 nothing on a verified path penetrates deeper than half of it, coal's distance tolerance."""
 
 

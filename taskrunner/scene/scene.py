@@ -51,8 +51,8 @@ from taskrunner.shapes import Shape
 from taskrunner.types import JointState, Pose
 
 if TYPE_CHECKING:  # the verifier's module loads numba: imported on first use
+    from taskrunner.scene.path_verifier import PathVerifier
     from taskrunner.scene.screen import StateScreen
-    from taskrunner.scene.sweep import PathVerifier
 
 __all__ = ["Scene", "SceneOptions"]
 
@@ -453,9 +453,9 @@ class Scene:
 
     def path_verifier(self, margin: float = VERIFY_MARGIN) -> PathVerifier:
         """The exact path verifier (conservative advancement, see
-        :mod:`taskrunner.scene.sweep`) for the scene as it is now; ``margin`` in m.
+        :mod:`taskrunner.scene.path_verifier`) for the scene as it is now; ``margin`` in m.
         Kept until the next edit of objects or allowances."""
-        from taskrunner.scene.sweep import PathVerifier  # numba: only where paths are verified
+        from taskrunner.scene.path_verifier import PathVerifier  # numba: only where paths are verified
 
         checker = self.checker
         cached = self._verifier

@@ -4,7 +4,7 @@ A motion planner checks thousands of states per plan, one edge (a row of states)
 time, and wants the first state in collision. :class:`StateScreen` answers exactly as the
 scene's :class:`~taskrunner.scene.collision.CollisionChecker` does, but first runs compiled
 forward kinematics and, per checked pair, the bounding volumes the path verifier measures
-far pairs with (:mod:`taskrunner.scene.sweep`: a sphere around each geometry, the box of
+far pairs with (:mod:`taskrunner.scene.path_verifier`: a sphere around each geometry, the box of
 its local bounds): a pair whose volumes are more than 1 µm apart cannot be in contact, so
 coal's narrow phase runs only on the pairs left, at the states where some are left. On
 the benchmark scenes most states clear every pair (85 % of the box class's, two thirds of
@@ -19,7 +19,7 @@ scan and their boxes the first time a pair needs one; the others' spheres at eve
 their boxes when a pair needs them. The pairs' reaches (the sum of the two radii) are
 squared once per screen.
 
-The screen is built from a :class:`~taskrunner.scene.sweep.PathVerifier` (the same
+The screen is built from a :class:`~taskrunner.scene.path_verifier.PathVerifier` (the same
 geometry records: bounding spheres, boxes, the joint tree) and runs on robots whose joints
 the verifier's compiled kinematics cover (revolute, continuous, prismatic); for the others
 :meth:`StateScreen.first_in_collision` is the checker's own.
@@ -43,9 +43,9 @@ from taskrunner.collision import frames as collision_frames
 from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, inline, jit, joint_frames
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
-from taskrunner.scene import sweep
+from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
 from taskrunner.scene.collision import CollisionChecker
-from taskrunner.scene.sweep import PathVerifier
+from taskrunner.scene.path_verifier import PathVerifier
 
 __all__ = ["CLEAR", "StateScreen", "warm_kernels"]
 
@@ -368,7 +368,8 @@ def _warm_mark() -> Path:
     """The file that marks the kernels of these sources as compiled on this machine."""
     digest = hashlib.sha256()
     # numba caches per source file and content
-    for module in (__file__, sweep.__file__, collision_frames.__file__):
+    for module in (__file__, path_verifier.__file__, advancement.__file__,
+                   distance_bounds.__file__, geometry_records.__file__, collision_frames.__file__):
         digest.update(str(Path(module).resolve()).encode())
         digest.update(Path(module).read_bytes())
     digest.update(f"{numba.__version__} {sys.version}".encode())

@@ -16,10 +16,11 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from plan_helpers import READY
 
+from taskrunner.collision.tree import lever_arms
 from taskrunner.errors import PlanningError
 from taskrunner.planning import JointGoal, MotionPlanner, PlannerOptions, PlanRequest
-from taskrunner.scene import Scene, sweep
-from taskrunner.scene.sweep import PathVerifier, lever_arms
+from taskrunner.scene import Scene, advancement
+from taskrunner.scene.path_verifier import PathVerifier
 from taskrunner.shapes import Box
 from taskrunner.types import Pose
 
@@ -240,7 +241,7 @@ def test_pairs_that_move_alike_are_walked_as_one_unit(panda_model):
         assert _collides_somewhere(scene, states) == clipped
         exact_only = PathVerifier(scene.robot, scene.checker)
         exact_only._settings[4] = np.inf       # no cheap bounds: coal's distances only
-        exact_only._settings[sweep._S_PER_STATE] = 0.0  # full-reach lever arms, no kinematics
+        exact_only._settings[advancement._S_PER_STATE] = 0.0  # full-reach lever arms, no kinematics
         for checked in (verifier, exact_only):
             result = checked.verify(states)
             assert result.valid == (not clipped)

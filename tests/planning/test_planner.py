@@ -286,7 +286,7 @@ def test_finer_searches_share_the_requests_search_time(shelf_scene, monkeypatch)
     # Every path found is turned down: the finer searches run only while the request's
     # search time lasts, and the error says so.
     from taskrunner.planning import planner as planner_module
-    from taskrunner.scene.sweep import PathVerification
+    from taskrunner.scene.path_verifier import PathVerification
 
     calls = []
 

@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 import pinocchio as pin
 
-from taskrunner.scene import Scene, sweep
-from taskrunner.scene.sweep import PathVerifier, lever_arms
+from taskrunner.collision.tree import lever_arms
+from taskrunner.scene import Scene, geometry_records
+from taskrunner.scene.path_verifier import PathVerifier
 from taskrunner.shapes import Box, Cylinder
 from taskrunner.types import Pose
 
@@ -60,9 +61,9 @@ def test_a_build_from_the_kept_robot_rows_decides_as_one_from_scratch(panda_mode
     scene = _cluttered(panda_model)
     robot = scene.robot
     PathVerifier(robot, scene.checker)                  # the robot's rows are kept
-    assert id(robot) in sweep._TREES
+    assert id(robot) in geometry_records._TREES
     kept = PathVerifier(robot, scene.checker)
-    sweep._TREES.clear()
+    geometry_records._TREES.clear()
     fresh = PathVerifier(robot, scene.checker)
     for name in ("_pair_levers", "_pair_i", "_geometries", "_levers"):
         assert np.array_equal(getattr(kept, name), getattr(fresh, name)), name
@@ -71,7 +72,7 @@ def test_a_build_from_the_kept_robot_rows_decides_as_one_from_scratch(panda_mode
     scene.add_object("bar", Box((0.6, 0.03, 0.03)), _pose(0.35, 0.0, 0.55))
     scene.move_object("crate", _pose(0.45, 0.3, 0.25))
     edited = scene.path_verifier()
-    sweep._TREES.clear()
+    geometry_records._TREES.clear()
     rebuilt = PathVerifier(robot, scene.checker)
     assert np.array_equal(edited._pair_i, rebuilt._pair_i)
     assert np.array_equal(edited._geometries, rebuilt._geometries)
@@ -138,5 +139,5 @@ def test_a_primitive_edited_in_place_gets_new_rows(panda_model):
     after = PathVerifier(scene.robot, scene.checker)
     row = after._geometries[index]
     assert not np.array_equal(before._geometries[index], row)
-    sweep._TREES.clear()
+    geometry_records._TREES.clear()
     assert np.array_equal(PathVerifier(scene.robot, scene.checker)._geometries[index], row)

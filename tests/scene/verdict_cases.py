@@ -3,7 +3,7 @@
 
 ``collision_verdicts.json`` holds scenes (a robot, primitive objects in the world, a start
 state), paths and states, with what the verifier and the screen said about them when the
-file was written: every field of :class:`~taskrunner.scene.sweep.PathVerification` but its
+file was written: every field of :class:`~taskrunner.scene.path_verifier.PathVerification` but its
 time, and for the screen each state's verdict and the pairs it left to coal. Written
 before the compiled kernels moved to :mod:`taskrunner.collision` (2026-11-28, tree
 55c9b36) from the MoveIt problem sets of ``benchmarks/make_problems.py --count 3 --seed 0``

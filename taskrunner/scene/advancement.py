@@ -1,0 +1,527 @@
+"""The compiled walk of the path verifier (:mod:`taskrunner.scene.path_verifier`):
+conservative advancement over a path, unit by unit (:func:`_walk`), with the motion
+bounds of each pair of bodies between two positions (:func:`_bound`) and the grouping of
+pairs whose bound is the same function into units (:func:`_group_pairs`).
+
+The packed arrays it reads and writes: ``pair_i`` (columns ``_PI_*``), the walk state
+(one row per unit, columns ``_HAS_L`` ..), the schedule, and the settings (``_S_*``);
+the frames and geometry records are those of :mod:`taskrunner.scene.distance_bounds`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from taskrunner.collision.frames import AXIS, ORIGIN, inline, jit, joint_frames
+from taskrunner.scene.distance_bounds import (
+    _FR_CENTRE,
+    _FR_PLACED,
+    _lower_bound,
+    _place,
+    _sphere_gap,
+    _support_bound,
+)
+
+_BISECTIONS = 4  # at most this many evaluations to place a step inside a segment
+_CLOSE = 0.1  # a step placed within this fraction short of its bound is close enough
+
+# Columns of the walk state (a float array, one row per unit: pairs whose motion bound is
+# the same function, see :func:`_group_pairs`; its lever arms on the left and on the right
+# follow): the measurements on the left and right of a gap, and while a unit's members wait
+# for coal's distances, the least distance of those in and how many are pending. When each
+# unit is due next, and from where it may be measured early, are rows 0 and 1 of the
+# schedule (inf: done).
+_HAS_L, _PL, _DL, _HAS_R, _PR, _DR, _UMIN, _UPENDING = range(8)
+_COLUMNS = 8
+# pair_i (n_pairs, 3 + 4 nq): the pair's geometries, how many joints count, then per
+# such joint (deepest first): its state index, code, the geometry it moves, its joint id.
+_PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
+# settings: margin, slack, gain, early, cheap-from; compiled states, cheap bounds; exact
+# distances pending (count, position); per-state lever arms; the contact (index into the
+# selected pairs) or the first state that is not finite; the walk started.
+_S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD, _S_STARTED = 5, 6, 7, 8, 9, 10, 11
+_S_EXACT_FROM, _S_SUPPORTS = 12, 13  # below CHEAP_FROM, coal's distance below this; bounds so
+_S_COUNT = 14
+_NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
+
+
+@inline
+def _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
+    """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
+    for the joints that count): for a revolute joint, the distance from its axis to the
+    moved body's bounding sphere centre plus the radius (never more than the full-reach
+    bound); otherwise the full-reach bound."""
+    nq = pair_levers.shape[1]
+    for i in range(pair_i[k, _PI_COUNT]):
+        j = pair_i[k, _PI_JOINTS + i]
+        full = pair_levers[k, j]
+        value = full
+        if per_state and pair_i[k, _PI_JOINTS + nq + i] >= 3 and full != 0.0:
+            g = pair_i[k, _PI_JOINTS + 2 * nq + i]
+            jid = pair_i[k, _PI_JOINTS + 3 * nq + i]
+            along = 0.0
+            length2 = 0.0
+            for a in range(3):
+                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, ORIGIN + a]
+                along += v * frames[jid, AXIS + a]
+                length2 += v * v
+            off_axis = length2 - along * along
+            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometries[g].radius
+            if lever < full:
+                value = lever
+        walk[k, column + j] = value
+
+
+@inline
+def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
+    n = cumulative.shape[0]
+    if n == 1:
+        for j in range(cumulative.shape[1]):
+            out[j] = 0.0
+        return
+    seg = int(position)
+    if seg > n - 2:
+        seg = n - 2
+    frac = position - seg
+    for j in range(cumulative.shape[1]):
+        out[j] = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
+
+
+@inline
+def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # type: ignore[no-untyped-def]
+    """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
+    is ``c0`` to ``position``, with the lever arms ``walk[k, column + j]`` taken at the
+    former.
+
+    A revolute joint's lever arm grows by at most how far the joints below it (same
+    body, deeper in the tree) move the body relative to its axis, which is their own
+    contribution: the joints are taken deepest first."""
+    nq = pair_levers.shape[1]
+    n = cumulative.shape[0]
+    seg = int(position)
+    if seg > n - 2:
+        seg = n - 2
+    frac = position - seg
+    share_first = 0.0                   # what each body's deeper joints contributed
+    share_second = 0.0
+    total = 0.0
+    for i in range(pair_i[k, _PI_COUNT]):
+        j = pair_i[k, _PI_JOINTS + i]
+        code = pair_i[k, _PI_JOINTS + nq + i]
+        if n == 1:
+            c1 = 0.0
+        else:
+            c1 = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
+        moved = c1 - c0[j]
+        if moved <= 0.0:
+            continue
+        first = code % 2 == 1
+        lever = walk[k, column + j]
+        if code >= 3:
+            lever += share_first if first else share_second
+            if lever > pair_levers[k, j]:
+                lever = pair_levers[k, j]
+        contribution = lever * moved
+        if first:
+            share_first += contribution
+        else:
+            share_second += contribution
+        total += contribution
+    return total
+
+
+@inline
+def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end):  # type: ignore[no-untyped-def]
+    """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
+    arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
+    one: the last node where it is, then within that node's segment to ``_CLOSE`` of
+    ``step``, or as far as ``_BISECTIONS`` evaluations get. ``to_end``: the bound from
+    ``start`` to the path's end."""
+    last = cumulative.shape[0] - 1
+    if to_end <= step:
+        return float(last)
+    left = _COLUMNS
+    lo_node = int(start) + 1      # first node after start
+    lo, f_lo = start, 0.0         # no motion yet
+    if lo_node == last:           # the bound there is ``to_end``
+        f_node = to_end
+    else:
+        f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
+    if f_node <= step:
+        hi_node, f_hi = last, to_end   # bound(lo_node) <= step < bound(hi_node)
+        while hi_node - lo_node > 1:
+            mid = (lo_node + hi_node) // 2
+            f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(mid))
+            if f_mid <= step:
+                lo_node, f_node = mid, f_mid
+            else:
+                hi_node, f_hi = mid, f_mid
+        lo, f_lo = float(lo_node), f_node
+        hi = float(hi_node)
+    else:
+        hi, f_hi = float(lo_node), f_node
+    # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi).
+    for _ in range(_BISECTIONS):
+        if f_lo >= (1.0 - _CLOSE) * step or f_hi <= f_lo:
+            break
+        width = hi - lo
+        mid = lo + width * (step - f_lo) / (f_hi - f_lo)
+        if mid < lo + _CLOSE * width:
+            mid = lo + _CLOSE * width
+        if mid > hi - _CLOSE * width:
+            mid = hi - _CLOSE * width
+        f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid)
+        if f_mid <= step:
+            lo, f_lo = mid, f_mid
+        else:
+            hi, f_hi = mid, f_mid
+    if lo <= start:
+        # Never stay put (the walk must advance): halve towards the start; the bound is
+        # continuous and 0 there, so this ends.
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mid <= start:
+                break
+            if _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid) <= step:
+                return mid
+            hi = mid
+    return lo
+
+
+@inline
+def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
+    """The next position to evaluate (the earliest due pair's), the pairs measured there
+    (written to ``selected``: due there, or due soon and past their early position) and
+    the state there (written to ``q``). Count 0: done."""
+    n_pairs = walk.shape[0]
+    due, early_at = schedule[0], schedule[1]
+    s = np.inf
+    for k in range(n_pairs):
+        if due[k] < s:
+            s = due[k]
+    if s == np.inf:
+        return 0, 0.0
+    count = 0
+    for k in range(n_pairs):
+        # Measuring early (after the last measurement) is always sound.
+        if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
+            selected[count] = k
+            count += 1
+    n = states.shape[0]
+    seg = int(s)
+    if seg > n - 2:
+        seg = max(n - 2, 0)
+    frac = s - seg
+    for j in range(states.shape[1]):
+        if n == 1:
+            q[j] = states[0, j]
+        else:
+            q[j] = states[seg, j] + frac * (states[seg + 1, j] - states[seg, j])
+    return count, s
+
+
+@jit
+def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
+             settings):
+    """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
+    of ``frames``) and schedule the pair's next measurement. A called function, not
+    inlined: the walk takes measurements in two places (a unit's exact distances, its
+    cheap bounds), and inlined twice it took the kernels' first compilation from about
+    8 to 24 s of CPU (the call costs about 1 % of a verification)."""
+    margin, gain, early = settings[0], settings[2], settings[3]
+    per_state = settings[_S_PER_STATE] != 0.0
+    nq = cumulative.shape[1]
+    left, right = _COLUMNS, _COLUMNS + nq
+    last = float(cumulative.shape[0] - 1)
+    if walk[k, _HAS_L] == 0.0:
+        extends = True
+    else:
+        _cumulative_at(cumulative, walk[k, _PL], c0)
+        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, s)
+        extends = moved <= max(walk[k, _DL] + d, margin)
+    if extends:                      # covered from the left: extends the stretch
+        walk[k, _HAS_L] = 1.0
+        walk[k, _PL] = s
+        walk[k, _DL] = d
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
+    else:                            # a gap: this one waits on the right
+        walk[k, _HAS_R] = 1.0
+        walk[k, _PR] = s
+        walk[k, _DR] = d
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, right)
+    start = walk[k, _PL]
+    # After a gap, the test below is the one that just failed (same start, lever arms
+    # and position): skipped.
+    if extends:
+        _cumulative_at(cumulative, start, c0)
+    if extends and walk[k, _HAS_R] != 0.0:
+        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, walk[k, _PR])
+        if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
+            walk[k, _HAS_R] = 0.0
+            walk[k, _PL] = walk[k, _PR]
+            walk[k, _DL] = walk[k, _DR]
+            for i in range(pair_i[k, _PI_COUNT]):
+                j = pair_i[k, _PI_JOINTS + i]
+                walk[k, left + j] = walk[k, right + j]
+            start = walk[k, _PL]
+            _cumulative_at(cumulative, start, c0)
+    d_left = walk[k, _DL]
+    to_end = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, last)
+    if walk[k, _HAS_R] != 0.0:
+        # Fill the gap from the left: this step is covered whatever the distance there.
+        step = max(d_left, margin)
+    else:
+        if to_end <= d_left:
+            schedule[0, k] = np.inf  # done: its distance cannot reach 0 before the end
+            schedule[1, k] = np.inf
+            return
+        step = max(d_left * (1.0 + gain), margin)
+    due = _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end)
+    schedule[0, k] = due
+    schedule[1, k] = start + (1.0 - early) * (due - start)
+
+
+@jit
+def _walk(joints, geometries, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
+          unit_from, unit_of, states, cumulative, frames, walk, schedule, picked, selected,
+          distances, q, settings):
+    """Walk the path through ``states`` until some pairs need an exact distance: returns
+    their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
+    its frames in ``frames``). The caller writes their distances to ``distances`` and
+    calls again, which takes them first. Returns 0 when every pair is done, -1 for a
+    contact (``settings[_S_BAD]``: its index into ``selected``), ``_NOT_FINITE`` for a
+    state that is not finite (its row in ``settings[_S_BAD]``). The first call fills
+    ``cumulative`` (per joint, the sum of ``|dq|`` up to each state) and resets ``walk``.
+
+    The walk schedules units (``unit_i``, ``unit_levers``: rows like ``pair_i``'s and the
+    pair lever arms, one per unit; the pairs of unit ``u`` are ``members[unit_from[u]:
+    unit_from[u + 1]]``, ``unit_of`` the reverse): a unit's measurement is the least of
+    its pairs' lower bounds. Pairs whose cheap lower bound is at least ``settings[4]``
+    take it as their measurement."""
+    nj = joints.shape[0]
+    n, nq = states.shape
+    if settings[_S_STARTED] == 0.0:
+        settings[_S_STARTED] = 1.0
+        for i in range(n):
+            for j in range(nq):
+                if not math.isfinite(states[i, j]):
+                    settings[_S_BAD] = i
+                    return _NOT_FINITE
+        for j in range(nq):
+            cumulative[0, j] = 0.0
+        for i in range(1, n):
+            for j in range(nq):
+                cumulative[i, j] = cumulative[i - 1, j] + abs(states[i, j] - states[i - 1, j])
+        for k in range(walk.shape[0]):
+            for column in range(_COLUMNS):
+                walk[k, column] = 0.0
+            schedule[0, k] = 0.0                   # every unit is measured at the start
+            schedule[1, k] = 0.0
+        for g in range(geometries.shape[0]):
+            frames[nj + g, _FR_PLACED] = -1.0      # not placed
+    c0 = np.empty(nq)
+    per_state = settings[_S_PER_STATE] != 0.0
+    cheap_from = settings[4]
+    exact_from = settings[_S_EXACT_FROM]
+    slack = settings[1]
+    s = settings[_S_AT]
+    # First the exact distances the caller measured (if any): each unit whose pairs are all
+    # in takes the least distance as its measurement.
+    count = int(settings[_S_PENDING])
+    settings[_S_PENDING] = 0.0
+    for i in range(count):
+        k = selected[i]
+        d = distances[i] - slack
+        if not d > 0.0:  # also NaN
+            settings[_S_BAD] = i
+            return -1
+        u = unit_of[k]
+        if d < walk[u, _UMIN]:
+            walk[u, _UMIN] = d
+        walk[u, _UPENDING] -= 1.0
+    for i in range(count):
+        u = unit_of[selected[i]]
+        if walk[u, _UPENDING] == 0.0:
+            walk[u, _UPENDING] = -1.0  # measured once
+            _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geometries, frames, nj,
+                     walk, schedule, c0, settings)
+    # Then on along the path.
+    while True:
+        picks, s = _pick(walk, schedule, picked, states, q)
+        if picks == 0:
+            return 0
+        settings[_S_AT] = s
+        if per_state:
+            joint_frames(q, joints, frames)
+            settings[_S_STATES] += 1.0
+        stamp = settings[_S_STATES]
+        exact = 0
+        for i in range(picks):
+            u = picked[i]
+            least = np.inf
+            pending = 0
+            first, last = unit_from[u], unit_from[u + 1]
+            if not per_state:
+                for m in range(first, last):
+                    selected[exact] = members[m]
+                    exact += 1
+                    pending += 1
+                walk[u, _UMIN] = least
+                walk[u, _UPENDING] = pending
+                continue
+            # The pairs' bounding sphere gaps first (``distances`` serves as scratch: the
+            # caller's distances were taken above); then, from the nearest on, the full
+            # bound of each pair whose gap is below the least bound so far: the others'
+            # bounds (at least their gap) cannot lower the unit's measurement.
+            nearest = first
+            for m in range(first, last):
+                k = members[m]
+                a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
+                if frames[nj + a, _FR_PLACED] < stamp:
+                    _place(a, geometries, frames, nj, stamp)
+                if frames[nj + b, _FR_PLACED] < stamp:
+                    _place(b, geometries, frames, nj, stamp)
+                distances[m] = _sphere_gap(a, b, geometries, frames, nj)
+                if distances[m] < distances[nearest]:
+                    nearest = m
+            for t in range(first - 1, last):
+                m = nearest if t < first else t
+                if (t >= first and m == nearest) or distances[m] >= least:
+                    continue
+                k = members[m]
+                a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
+                d = _lower_bound(a, b, geometries, frames, nj)
+                if d < cheap_from or not d > 0.0:
+                    bound = _support_bound(a, b, geometries, frames, points, nj)
+                    if bound > d:
+                        d = bound
+                    if not (bound > -np.inf and d >= exact_from):
+                        selected[exact] = k
+                        exact += 1
+                        pending += 1
+                        continue
+                    settings[_S_SUPPORTS] += 1.0
+                settings[_S_BOUNDS] += 1.0
+                if d < least:
+                    least = d
+            if pending == 0:
+                _measure(u, least, s, cumulative, unit_i, unit_levers, geometries, frames, nj, walk,
+                         schedule, c0, settings)
+            else:
+                walk[u, _UMIN] = least
+                walk[u, _UPENDING] = pending
+        if exact > 0:
+            settings[_S_PENDING] = exact
+            return exact
+
+
+@jit
+def _segment_bounds(cumulative, geometries, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
+    """Per pair, the motion bound from the first state to the second (``cumulative``:
+    their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
+    nq = cumulative.shape[1]
+    walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
+    c0 = np.zeros(nq)
+    for k in range(pair_i.shape[0]):
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, _COLUMNS)
+        out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, _COLUMNS, 1.0)
+
+
+@jit
+def _lower_bounds(pair_i, geometries, frames, nj, out):  # type: ignore[no-untyped-def]
+    """Per pair, :func:`_lower_bound` at the state of ``frames``."""
+    for k in range(pair_i.shape[0]):
+        out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
+                              frames, nj)
+
+
+@jit
+def _support_bounds(pair_i, geometries, frames, points, nj, out):  # type: ignore[no-untyped-def]
+    """Per pair, :func:`_support_bound` at the state of ``frames``."""
+    for k in range(pair_i.shape[0]):
+        out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
+                                frames, points, nj)
+
+
+@jit
+def _group_pairs(pair_i, pair_levers, unit_of, representative):  # type: ignore[no-untyped-def]
+    """Sort the pairs into units of pairs whose motion bound is the same function (the
+    same joints counting, each with the same code, moved geometry and lever arms; the
+    codes may all name the other body, which bounds alike): ``unit_of[k]`` is pair ``k``'s
+    unit, ``representative[u]`` the first pair of unit ``u``. Returns the count of units.
+    A link and each world object form such pairs: one unit per link."""
+    nq = pair_levers.shape[1]
+    units = 0
+    for k in range(pair_i.shape[0]):
+        count = pair_i[k, _PI_COUNT]
+        found = -1
+        for u in range(units):
+            r = representative[u]
+            if pair_i[r, _PI_COUNT] != count:
+                continue
+            same = True
+            for j in range(nq):
+                if pair_levers[r, j] != pair_levers[k, j]:
+                    same = False
+                    break
+            if not same:
+                continue
+            flip = count > 0 and (pair_i[r, _PI_JOINTS + nq] % 2) != (pair_i[k, _PI_JOINTS + nq] % 2)
+            for i in range(count):
+                code_r = pair_i[r, _PI_JOINTS + nq + i]
+                code_k = pair_i[k, _PI_JOINTS + nq + i]
+                if flip:
+                    code_k = code_k + 1 if code_k % 2 == 1 else code_k - 1
+                if (pair_i[r, _PI_JOINTS + i] != pair_i[k, _PI_JOINTS + i] or code_r != code_k
+                        or pair_i[r, _PI_JOINTS + 2 * nq + i] != pair_i[k, _PI_JOINTS + 2 * nq + i]
+                        or pair_i[r, _PI_JOINTS + 3 * nq + i] != pair_i[k, _PI_JOINTS + 3 * nq + i]):
+                    same = False
+                    break
+            if same:
+                found = u
+                break
+        if found < 0:
+            representative[units] = k
+            found = units
+            units += 1
+        unit_of[k] = found
+    return units
+
+
+@jit
+def _pair_rows(first, second, levers, order, revolute, state_joint, supported,  # type: ignore[no-untyped-def]
+               pair_levers, pair_i):
+    """Per pair, its lever arms (``pair_levers``) and its row of ``pair_i``.
+
+    Joints moving both bodies of a pair move them rigidly together: they do not count;
+    a joint that moves one body only counts with that body's lever arm. The joints that
+    count are listed deepest in the tree first, with their codes: 1 or 2 if the joint
+    moves the pair's first or second body only, 3 or 4 likewise for a revolute joint
+    whose lever arm is taken per state (``supported``). The joints of the same body
+    deeper in the tree lie between such a joint and the body: they move the body relative
+    to its axis, so its lever arm grows by at most what they contribute."""
+    nq = levers.shape[1]
+    for k in range(first.shape[0]):
+        a, b = first[k], second[k]
+        pair_i[k, _PI_FIRST] = a
+        pair_i[k, _PI_SECOND] = b
+        count = 0
+        for index in range(nq):
+            j = order[index]
+            moves_a = levers[a, j] > 0.0
+            moves_b = levers[b, j] > 0.0
+            if moves_a == moves_b:
+                continue
+            owner = a if moves_a else b
+            pair_levers[k, j] = levers[owner, j]
+            code = 1 if moves_a else 2
+            if supported and revolute[j] != 0:
+                code += 2
+            pair_i[k, _PI_JOINTS + count] = j
+            pair_i[k, _PI_JOINTS + nq + count] = code
+            pair_i[k, _PI_JOINTS + 2 * nq + count] = owner
+            pair_i[k, _PI_JOINTS + 3 * nq + count] = state_joint[j]
+            count += 1
+        pair_i[k, _PI_COUNT] = count
