@@ -272,7 +272,7 @@ PHASES = {
     "goals": ("MotionPlanner", "_goal_states"),      # goal states: IK sampling, checks
     "direct": ("MotionPlanner", "_direct"),          # the straight line tried first
     "search": ("MotionPlanner", "_search"),          # OMPL: problem setup and solve
-    "shortcut": ("module", "_shortcut"),             # shortcutting the path found
+    "shortcut": ("module", "shortcut_path"),         # shortcutting the path found
     "verify": ("MotionPlanner", "verify_states"),    # exact verification (path, trajectory)
     "timing": ("module", "parameterize_path"),       # toppra, with the request's timing
 }

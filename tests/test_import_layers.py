@@ -21,8 +21,6 @@ MAX_LINES = 800
 
 # Modules over MAX_LINES, each with its reason and the issue that splits it.
 _LONG: dict[str, str] = {
-    "planning/planner.py": "the motion planner: its goal sampling and direct-line tries are "
-                           "the seams to split along (issue 24 item 8)",
     "backends/physics/backend.py": "the MuJoCo backend: its MJCF scene building is the seam "
                                    "(issue 24 item 8)",
 }

@@ -12,6 +12,11 @@ geometry: :mod:`taskrunner.scene.path_verifier`); with timing, the sampled traje
 executed is verified the same way. A path or trajectory that fails is never returned: the
 search is repeated with a finer planning segment, or :class:`PlanningError` is raised.
 
+The goal states come from :mod:`taskrunner.planning.goal_states`, the OMPL search from
+:mod:`taskrunner.planning.ompl_search` (the order of an edge's checks:
+:mod:`taskrunner.planning.edge_order`), the shortcutting from
+:mod:`taskrunner.planning.shortcut`.
+
 References: Kuffner & LaValle, "RRT-Connect: An Efficient Approach to Single-Query Path
 Planning", ICRA 2000; Şucan, Moll & Kavraki, "The Open Motion Planning Library", 2012;
 Schwarzer, Saha & Latombe, "Adaptive dynamic collision checking for single and multiple
@@ -20,9 +25,7 @@ articulated robots in complex environments", IEEE T-RO 2005 (exact path checking
 
 from __future__ import annotations
 
-import functools
 import math
-import random
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -35,20 +38,21 @@ from taskrunner.errors import (
     IkFailedError,
     InvalidStateError,
     NoDirectPathError,
-    PlanningCancelledError,
     PlanningError,
     PlanningTimeoutError,
     StartInCollisionError,
 )
 from taskrunner.kinematics import IkSolver
+from taskrunner.planning import edge_order
 from taskrunner.planning.goal_states import goal_states
+from taskrunner.planning.ompl_search import import_ompl, search_path
 from taskrunner.planning.request import (
-    DEFAULT_RANGE,
     PlannerOptions,
     PlanRequest,
     PlanResult,
     group_planner,
 )
+from taskrunner.planning.shortcut import shortcut_path
 from taskrunner.planning.timing import TimingOptions, parameterize_path, trajectory_json
 from taskrunner.robot.model import Group
 from taskrunner.scene import Scene
@@ -63,24 +67,6 @@ if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verif
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path"]
 
 _REFINEMENTS = 3
-# A random shortcut is checked only when it would shorten the path by this share (the
-# others cost a full edge check for little: 20 % fewer states checked on the bookshelves,
-# paths as short, fewer waypoints).
-_SHORTCUT_GAIN = 0.02
-_SINGLE_GOAL = {"PRM", "PRMstar"}
-# Tree planners that stop at their first path: these restart (PlannerOptions.restart).
-_RESTARTING = {"RRTConnect", "RRT", "KPIECE1", "BKPIECE1", "LBKPIECE1"}
-_OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT"}
-
-
-def _ompl():  # type: ignore[no-untyped-def]
-    """Import OMPL once, quietly (its import fails silently when broken: pitfall 7)."""
-    from ompl import base as ob
-    from ompl import geometric as og
-    from ompl import util as ou
-
-    ou.setLogLevel(ou.LogLevel.LOG_ERROR)
-    return ob, og, ou
 
 
 def interpolate_path(waypoints: np.ndarray, resolution: float) -> np.ndarray:
@@ -247,7 +233,7 @@ class MotionPlanner:
         failure: PathVerification | None = None
         # The searches of a request (its attempts, and the finer searches after a path
         # is turned down) share one budget: planning_time per attempt.
-        _ompl()  # imported before the clock starts (the first import takes a while)
+        import_ompl()  # imported before the clock starts (the first import takes a while)
         deadline = time.perf_counter() + options.planning_time * options.attempts
         for refinement in range(_REFINEMENTS):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
@@ -468,7 +454,8 @@ class MotionPlanner:
         if not isinstance(columns, slice) or mimic:
             return None
         return self._state_screen(margin).segment_scanner(start.copy(), columns.start,
-                                                          _FRACTIONS, resolution, _fill_fractions)
+                                                          edge_order.FRACTIONS, resolution,
+                                                          edge_order.fill_fractions)
 
     def _edge_validity(self, group: Group, start: np.ndarray, resolution: float,
                        count: list[int], known: set[bytes] | None = None,
@@ -477,8 +464,9 @@ class MotionPlanner:
                        | None = None) -> Callable[[np.ndarray, np.ndarray], bool]:
         """An edge check over the group's values: the edge's end, then the states every
         ``resolution`` (max over joints) in between, coarse to fine (see
-        :func:`_bisection_order`); the edge's first state is taken as checked. One Python
-        call per edge: the states are interpolated together.
+        :func:`~taskrunner.planning.edge_order.bisection_order`); the edge's first state
+        is taken as checked. One Python call per edge: the states are interpolated
+        together.
 
         ``known``: the group values (``tobytes()``) of states already found valid: an
         edge's end found there is not checked again (RRT-Connect's goal tree checks
@@ -515,7 +503,7 @@ class MotionPlanner:
             steps = max(1, math.ceil(max(map(abs, (b - a).tolist())) / resolution))
             cached = orders.get(steps)
             if cached is None:
-                fractions = np.concatenate([[1.0], _bisection_order(steps) / steps])
+                fractions = np.concatenate([[1.0], edge_order.bisection_order(steps) / steps])
                 rows = np.empty((steps, len(base)))
                 rows[:] = base
                 cached = orders[steps] = (fractions, rows)
@@ -548,140 +536,16 @@ class MotionPlanner:
     def _search(self, group: Group, start: np.ndarray, goals: list[tuple[int, np.ndarray]],
                 options: PlannerOptions, should_stop: Callable[[], bool] | None,
                 deadline: float) -> tuple[np.ndarray, float, int]:
-        ob, og, ou = _ompl()
-        model = self.scene.robot
-        idx = group.joint_indices
-        if options.planner in _SINGLE_GOAL and len(goals) > 1:
-            # PRM's goal-watching thread calls the (Python) validity checker while holding
-            # its graph lock, and the search thread holds the GIL waiting for that lock:
-            # with several goal states they deadlock. Give it the nearest goal only.
-            goals = [min(goals, key=lambda g: float(np.linalg.norm(g[1][idx] - start[idx])))]
-        n = len(idx)
-        # States found valid during this search (start, goals, tree nodes): an edge ending
-        # at one does not check it again.
-        known = {np.ascontiguousarray(q[idx], dtype=float).tobytes()
-                 for q in [start] + [g for _, g in goals]}
-        is_valid, edge_valid, count = self._checks(group, start, options.longest_valid_segment,
-                                                   known, options.verify_margin)
-        lower = model.lower[idx].copy()
-        upper = model.upper[idx].copy()
-        # Continuous joints: one turn around wherever the start and goals are.
-        ends = np.vstack([start[idx]] + [g[idx] for _, g in goals])
-        lower = np.where(np.isfinite(lower), lower, np.minimum(ends.min(axis=0), -np.pi))
-        upper = np.where(np.isfinite(upper), upper, np.maximum(ends.max(axis=0), np.pi))
+        """OMPL's search (:func:`~taskrunner.planning.ompl_search.search_path`) with this
+        planner's state and edge checks."""
+        def checks(known: set[bytes]) -> tuple[Callable[[np.ndarray], bool],
+                                               Callable[[np.ndarray, np.ndarray], bool],
+                                               list[int]]:
+            return self._checks(group, start, options.longest_valid_segment, known,
+                                options.verify_margin)
 
-        space = ob.RealVectorStateSpace(n)
-        bounds = ob.RealVectorBounds(n)
-        for k in range(n):
-            bounds.setLow(k, float(lower[k]))
-            bounds.setHigh(k, float(upper[k]))
-        space.setBounds(bounds)
-        # OMPL wants a fraction in (0, 1): a gripper's few centimetres of travel are
-        # shorter than one segment.
-        space.setLongestValidSegmentFraction(
-            min(0.5, options.longest_valid_segment / space.getMaximumExtent()))
-        setup = og.SimpleSetup(space)
-        values = np.empty(n)
-        rng = range(n)
-
-        def ompl_valid(state) -> bool:  # type: ignore[no-untyped-def]
-            for k in rng:
-                values[k] = state[k]
-            return bool(is_valid(values))
-
-        setup.setStateValidityChecker(ompl_valid)
-        si = setup.getSpaceInformation()
-        a_values = np.empty(n)
-        b_values = np.empty(n)
-
-        def ompl_edge(s1, s2) -> bool:  # type: ignore[no-untyped-def]
-            for k in rng:
-                a_values[k] = s1[k]
-                b_values[k] = s2[k]
-            return bool(edge_valid(a_values, b_values))
-
-        validator = _edge_validator(ob)(si, ompl_edge)
-        si.setMotionValidator(validator)
-        start_state = space.allocState()
-        for k in rng:
-            start_state[k] = float(start[idx[k]])
-        setup.setStartState(start_state)
-        goal_states = []
-        for _, q in goals:
-            state = space.allocState()
-            for k in rng:
-                state[k] = float(q[idx[k]])
-            goal_states.append(state)
-        if len(goal_states) == 1:
-            setup.setGoalState(goal_states[0])
-        else:
-            goal_set = ob.GoalStates(si)
-            for state in goal_states:
-                goal_set.addState(state)
-            setup.setGoal(goal_set)
-        if options.planner in _OPTIMIZING:
-            objective = ob.PathLengthOptimizationObjective(si)
-            if not options.refine:
-                objective.setCostThreshold(objective.infiniteCost())
-            setup.setOptimizationObjective(objective)
-
-        planning_time = 0.0
-        cancelled = [False]
-
-        def stop() -> bool:
-            if should_stop is not None and should_stop():
-                cancelled[0] = True
-            return cancelled[0]
-
-        restarts = options.restart > 0 and options.planner in _RESTARTING
-        for attempt in range(options.attempts):
-            attempt_end = min(time.perf_counter() + options.planning_time, deadline)
-            run = 0
-            while True:
-                budget = attempt_end - time.perf_counter()
-                if budget <= 0.0:
-                    break
-                # A tree search that has not connected after its share of state checks
-                # starts again from scratch, with twice the share each time: its run
-                # times are heavy-tailed, and a fresh tree is often faster than a stuck
-                # one. Counted in checks, not seconds, so the same seed gives the same
-                # path whatever the machine's load.
-                allowed = options.restart * 2**run if restarts else 0
-                run_start = count[0]
-                _seed_ompl(ou, options.seed + attempt + 7919 * run)
-                planner = getattr(og, str(options.planner))(si)
-                if hasattr(planner, "setRange"):
-                    planner.setRange(_range(group, options))
-                setup.setPlanner(planner)
-                setup.setup()
-                ptc = ob.timedPlannerTerminationCondition(budget)
-                if not (options.refine and options.planner in _OPTIMIZING):
-                    ptc = ob.plannerOrTerminationCondition(
-                        ptc, ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()))
-                if should_stop is not None:
-                    ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(stop))
-                if allowed:
-                    ptc = ob.plannerOrTerminationCondition(ptc, ob.PlannerTerminationCondition(
-                        lambda begun=run_start, limit=allowed: count[0] - begun >= limit))
-                t0 = time.perf_counter()
-                status = setup.solve(ptc)
-                planning_time += time.perf_counter() - t0
-                if cancelled[0]:
-                    raise PlanningCancelledError(f"planning for group {group.name!r} was cancelled")
-                if setup.haveExactSolutionPath() and "EXACT" in status.asString().upper():
-                    path = setup.getSolutionPath()
-                    # Copy now: the path's states die with the next solve() or clear()
-                    # (pitfall 1).
-                    states = np.array([[path.getState(i)[k] for k in rng]
-                                       for i in range(path.getStateCount())])
-                    return states, planning_time, count[0]
-                setup.clear()
-                if not (allowed and count[0] - run_start >= allowed):
-                    break  # out of time (or never restarting): the next attempt
-                run += 1
-        raise PlanningTimeoutError(
-            f"no path for group {group.name!r} found by {options.planner} in "
-            f"{options.attempts} attempt(s) of {options.planning_time:g} s")
+        return search_path(self.scene.robot, group, start, goals, options, should_stop,
+                           deadline, checks)
 
     def _simplified(self, group: Group, start: np.ndarray, waypoints: np.ndarray,
                     options: PlannerOptions
@@ -694,7 +558,7 @@ class MotionPlanner:
                                         options.verify_margin)
         candidates = []
         if options.simplify and len(waypoints) > 2:
-            candidates.append(_shortcut(edge_valid, waypoints, options.seed))
+            candidates.append(shortcut_path(edge_valid, waypoints, options.seed))
         candidates.append(waypoints)
         verifications = []
         for candidate in candidates:
@@ -717,112 +581,6 @@ class _Direct:
     verify_time: float = 0.0
 
 
-# The edge checks' fractions per number of steps (row ``steps``: the end's 1.0, then
-# ``_bisection_order(steps) / steps``), up to _TABLE_STEPS steps, each row filled the first
-# time an edge of that many steps comes (a row not starting with 1.0 is not filled yet);
-# longer edges take their fractions from ``_bisection_order`` directly.
-_TABLE_STEPS = 256
-_FRACTIONS = np.zeros((_TABLE_STEPS + 1, _TABLE_STEPS))
-
-
-def _fill_fractions(steps: int) -> None:
-    row = _FRACTIONS[steps]
-    row[1:steps] = _bisection_order(steps) / steps
-    row[0] = 1.0  # last: marks the row filled for the compiled scan reading it
-
-
-@functools.lru_cache(maxsize=1024)
-def _bisection_order(steps: int) -> np.ndarray:
-    """The inner points 1 .. steps-1 of a segment cut in ``steps``, coarse to fine: the
-    middle, then the middles of the halves, and so on (as OMPL's discrete motion
-    validator orders them). A blocked stretch of the segment is met after a number of
-    checks that depends on its length, not on where it lies."""
-    order: list[int] = []
-    spans = [(0, steps)]
-    while spans:
-        following = []
-        for lo, hi in spans:
-            if hi - lo < 2:
-                continue
-            mid = (lo + hi) // 2
-            order.append(mid)
-            following += [(lo, mid), (mid, hi)]
-        spans = following
-    out = np.array(order, dtype=int)
-    out.flags.writeable = False  # shared between callers
-    return out
-
-
-def _shortcut(edge_valid: Callable[[np.ndarray, np.ndarray], bool], waypoints: np.ndarray,
-              seed: int) -> np.ndarray:
-    """Greedy vertex removal then random shortcuts, each checked by ``edge_valid``."""
-    path = [w for w in waypoints]
-    # Greedy: from each vertex, jump to the farthest vertex reachable in a straight line.
-    reduced = [path[0]]
-    i = 0
-    while i < len(path) - 1:
-        j = len(path) - 1
-        while j > i + 1 and not edge_valid(path[i], path[j]):
-            j -= 1
-        reduced.append(path[j])
-        i = j
-    path = reduced
-    # Python's generator and plain floats: a try costs a few µs, not numpy's ~30.
-    rng = random.Random(seed)
-    lengths = [math.dist(a, b) for a, b in zip(path[:-1], path[1:])]
-    for _ in range(2 * len(path)):
-        if len(path) < 3:
-            break
-        # Shortcut between points inside two different segments.
-        s1, s2 = _two_of(rng, len(path) - 1)
-        t1, t2 = rng.random(), rng.random()
-        p1 = path[s1] + t1 * (path[s1 + 1] - path[s1])
-        p2 = path[s2] + t2 * (path[s2 + 1] - path[s2])
-        # Only a shortcut worth having is checked: one that saves a share of the length.
-        span = math.dist(p1, p2)
-        along = (1.0 - t1) * lengths[s1] + math.fsum(lengths[s1 + 1:s2]) + t2 * lengths[s2]
-        if along - span < _SHORTCUT_GAIN * math.fsum(lengths):
-            continue
-        if edge_valid(p1, p2):
-            path = path[: s1 + 1] + [p1, p2] + path[s2 + 1:]
-            lengths = (lengths[:s1] + [t1 * lengths[s1], span, (1.0 - t2) * lengths[s2]]
-                       + lengths[s2 + 1:])
-    return np.array(path)
-
-
-def _two_of(rng: random.Random, n: int) -> tuple[int, int]:
-    """``sorted(rng.sample(range(n), 2))`` (the same draws from ``rng``, so the same
-    pair), without ``sample``'s general-purpose overhead (a few µs a call)."""
-    first = rng.randrange(n)
-    if n <= 21:  # sample() picks from a pool, the picked slot refilled from its end
-        second = rng.randrange(n - 1)
-        if second == first:
-            second = n - 1
-    else:        # ... or draws again until the index is new
-        second = rng.randrange(n)
-        while second == first:
-            second = rng.randrange(n)
-    return (first, second) if first < second else (second, first)
-
-
-_VALIDATOR: list[type] = []
-
-
-def _edge_validator(ob) -> type:  # type: ignore[no-untyped-def]
-    """An OMPL motion validator class that checks a whole edge with one Python call."""
-    if not _VALIDATOR:
-        class EdgeValidator(ob.MotionValidator):  # type: ignore[misc, name-defined]
-            def __init__(self, si, check) -> None:  # type: ignore[no-untyped-def]
-                super().__init__(si)
-                self._check = check
-
-            def checkMotion(self, s1, s2) -> bool:  # type: ignore[no-untyped-def]
-                return bool(self._check(s1, s2))
-
-        _VALIDATOR.append(EdgeValidator)
-    return _VALIDATOR[0]
-
-
 def _on_segment(waypoints: np.ndarray, samples: np.ndarray, tolerance: float = 1e-12) -> bool:
     """True when ``waypoints`` is one segment and every row of ``samples`` lies on it
     (within ``tolerance`` rad, or m, per joint)."""
@@ -835,16 +593,6 @@ def _on_segment(waypoints: np.ndarray, samples: np.ndarray, tolerance: float = 1
         return bool(np.all(np.abs(samples - a) <= tolerance))
     t = np.clip((samples - a) @ d / length2, 0.0, 1.0)
     return bool(np.all(np.abs(samples - (a + t[:, None] * d)) <= tolerance))
-
-
-def _range(group: Group, options: PlannerOptions) -> float:
-    """The tree growth step for ``options.planner`` (see :attr:`PlannerOptions.range`)."""
-    if options.range > 0.0:
-        return float(options.range)
-    settings = group.planner
-    if settings is not None and settings.range > 0.0 and settings.planner == options.planner:
-        return settings.range
-    return DEFAULT_RANGE
 
 
 def _pair(verification: PathVerification) -> str:
@@ -860,15 +608,3 @@ def _describe(contacts) -> str:  # type: ignore[no-untyped-def]
     shown = ", ".join(f"{c.a}–{c.b}" for c in contacts[:3])
     more = f" and {len(contacts) - 3} more" if len(contacts) > 3 else ""
     return shown + more
-
-
-def _seed_ompl(ou, seed: int) -> None:  # type: ignore[no-untyped-def]
-    """Reseed OMPL's generators (it logs an error when sampling has already started; the
-    reseeding works regardless, so the message is silenced)."""
-    level = ou.getLogLevel()
-    ou.setLogLevel(ou.LogLevel.LOG_NONE)
-    try:
-        ou.RNG.setSeed(int(seed) % (2**31 - 1) + 1)
-    finally:
-        ou.setLogLevel(level)
-

@@ -6,14 +6,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from taskrunner.planning import planner as planner_module
-from taskrunner.planning.planner import MotionPlanner, _bisection_order
+from taskrunner.planning import edge_order
+from taskrunner.planning.edge_order import bisection_order
+from taskrunner.planning.planner import MotionPlanner
 
 
 @pytest.mark.parametrize("fresh_table", [True, False])
 def test_state_and_edge_checks_are_the_checkers(shelf_scene, monkeypatch, fresh_table) -> None:
     if fresh_table:  # as in a new process: no row filled yet
-        monkeypatch.setattr(planner_module, "_FRACTIONS", np.zeros_like(planner_module._FRACTIONS))
+        monkeypatch.setattr(edge_order, "FRACTIONS", np.zeros_like(edge_order.FRACTIONS))
     scene = shelf_scene
     robot = scene.robot
     group = robot.group("arm")
@@ -39,7 +40,7 @@ def test_state_and_edge_checks_are_the_checkers(shelf_scene, monkeypatch, fresh_
         b[idx] = a[idx] + rng.uniform(-1.0, 1.0, len(idx))
         b = np.clip(b, robot.lower, robot.upper)
         steps = max(1, int(np.ceil(np.max(np.abs(b[idx] - a[idx])) / resolution)))
-        fractions = np.concatenate([[1.0], _bisection_order(steps) / steps])
+        fractions = np.concatenate([[1.0], bisection_order(steps) / steps])
         states = [b if f == 1.0 else a + f * (b - a) for f in fractions]
         want = not any(scene.in_collision(q) for q in states)
         before = count[0]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import random
 from collections import Counter
 
-from taskrunner.planning.planner import _two_of
+from taskrunner.planning.shortcut import _two_of
 
 
 def test_two_distinct_segments_every_pair_about_as_often() -> None:

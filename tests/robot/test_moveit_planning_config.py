@@ -209,7 +209,7 @@ def test_the_default_configurations_range_is_the_tree_step_and_zero_means_ours(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
     from ompl import geometric as og
 
-    from taskrunner.planning import planner as planner_module
+    from taskrunner.planning import ompl_search
     from taskrunner.planning.request import DEFAULT_RANGE
 
     steps: list[float] = []
@@ -237,7 +237,7 @@ def test_the_default_configurations_range_is_the_tree_step_and_zero_means_ours(
         planner.plan(PlanRequest("arm", NamedGoal("ready"),
                                  options=PlannerOptions(direct=False, range=0.2)))
         assert steps[-1] == pytest.approx(0.2)
-    assert planner_module.DEFAULT_RANGE == DEFAULT_RANGE
+    assert ompl_search.DEFAULT_RANGE == DEFAULT_RANGE
 
 
 @pytest.mark.parametrize("value", ["fast", "-1.0", "[1]"])
