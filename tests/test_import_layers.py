@@ -20,10 +20,7 @@ PACKAGE = Path(taskrunner.__file__).resolve().parent
 MAX_LINES = 800
 
 # Modules over MAX_LINES, each with its reason and the issue that splits it.
-_LONG: dict[str, str] = {
-    "backends/physics/backend.py": "the MuJoCo backend: its MJCF scene building is the seam "
-                                   "(issue 24 item 8)",
-}
+_LONG: dict[str, str] = {}
 
 # Package cycles left, with the way out (issue 24); the test fails on any other, and when
 # one of these is gone (take it off the list).

@@ -6,7 +6,7 @@ of taskrunner does not. :func:`make_mujoco_backend` builds the backend for a cel
 
 from __future__ import annotations
 
-from taskrunner.backends.physics.backend import MujocoBackend, MujocoOptions, PhysicsSample
+from taskrunner.backends.physics.backend import MujocoBackend
 from taskrunner.backends.physics.mjcf import (
     ObjectPhysics,
     PhysicsCell,
@@ -14,6 +14,7 @@ from taskrunner.backends.physics.mjcf import (
     cell_mjcf,
     physics_cell,
 )
+from taskrunner.backends.physics.options import MujocoOptions, PhysicsSample
 
 __all__ = ["MujocoBackend", "MujocoOptions", "ObjectPhysics", "PhysicsCell", "PhysicsObject",
            "PhysicsSample", "cell_mjcf", "physics_cell"]
