@@ -40,6 +40,7 @@ from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.tree.behaviours import TaskLeaf
+from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import JointState, Pose
 
 if TYPE_CHECKING:
@@ -188,21 +189,30 @@ class Checkpointer:
         self.events = events
         self.index = {node.id: i for i, node in enumerate(preorder(root))}
         self.leaves = [n for n in preorder(root) if isinstance(n, TaskLeaf)]
+        self.timeouts = [n for n in preorder(root) if isinstance(n, TaskTimeout)]
+        self.cut: list[Behaviour] = []  # leaves stopped while running since the last one
         self.count = 0
         events.subscribe(self._on_event)
 
     def _on_event(self, event: RunEvent) -> None:
-        if event.kind != "node_finished" or event.status not in (Status.SUCCESS.value,
-                                                                  Status.FAILURE.value):
+        if event.kind != "node_finished":
+            return
+        if event.status == Status.INVALID.value:  # stopped while running: a timeout's?
+            self.cut += [leaf for leaf in self.leaves if leaf.name == event.node
+                         and leaf.location == event.location and leaf.status == Status.RUNNING]
+            return
+        if event.status not in (Status.SUCCESS.value, Status.FAILURE.value):
             return
         found = [leaf for leaf in self.leaves if leaf.name == event.node
                  and leaf.location == event.location]
         if not found:
-            return  # not a leaf (a decorator's own event)
+            self._timeout(event)  # or not a leaf at all (a decorator's own event)
+            return
         if len(found) > 1:  # the one that ran over several ticks, if it is one of them
             found = [leaf for leaf in found if leaf.status == Status.RUNNING] or found
         self.count += 1
         leaf = found[0]
+        self.cut = []
         held = held_objects(self.ctx)
         holding = ", ".join(f"{arm} holds {name!r}" for name, arm in held.items())
         self.events.emit(
@@ -210,6 +220,26 @@ class Checkpointer:
             node=event.node, location=event.location, status=event.status,
             leaf=self.index[leaf.id] if len(found) == 1 else None, done=self.count,
             position=position(leaf), scene=scene_state(self.ctx.scene), held=held)
+
+    def _timeout(self, event: RunEvent) -> None:
+        """A ``timeout:`` that fired: a checkpoint of the decorator (its FAILURE) with
+        ``cut``, the leaves under it it stopped; a resumed run replays both (a fallback
+        goes on with its next branch, a retry with its next attempt)."""
+        found = [n for n in self.timeouts if n.name == event.node
+                 and n.location == event.location and event.status == Status.FAILURE.value]
+        if len(found) != 1:
+            return
+        node = found[0]
+        under = {n.id for n in preorder(node)}
+        cut = [self.index[leaf.id] for leaf in self.cut if leaf.id in under]
+        self.cut = []
+        self.count += 1
+        held = held_objects(self.ctx)
+        self.events.emit(
+            "checkpoint", f"after {event.node}: timed out", node=event.node,
+            location=event.location, status=event.status, leaf=self.index[node.id],
+            done=self.count, position=position(node), scene=scene_state(self.ctx.scene),
+            held=held, cut=cut)
 
 
 @dataclass(frozen=True)
@@ -219,7 +249,9 @@ class Checkpoint:
     ``scene`` after it, ``held`` objects (object: arm), ``seq`` of the event;
     ``run_id``: the run that finished the leaf, when not the record's own (a resumed
     run's record repeats the checkpoints it replayed); ``skipped``: a leaf that never ran,
-    skipped by ``--from`` a step after it (its scene is the world when it was skipped)."""
+    skipped by ``--from`` a step after it (its scene is the world when it was skipped);
+    ``cut``: for a ``timeout:`` that fired (``leaf`` is then the decorator's index), the
+    leaves it stopped while they ran."""
 
     seq: int
     leaf: int | None
@@ -231,6 +263,7 @@ class Checkpoint:
     position: list[dict[str, Any]]
     run_id: str | None = None
     skipped: bool = False
+    cut: tuple[int, ...] = ()
 
 
 def checkpoints_of(record: RunRecord) -> list[Checkpoint]:
@@ -238,5 +271,5 @@ def checkpoints_of(record: RunRecord) -> list[Checkpoint]:
     return [Checkpoint(e.seq, e.data.get("leaf"), e.node or "", e.location, e.status or "",
                        e.data.get("scene") or {}, dict(e.data.get("held") or {}),
                        list(e.data.get("position") or []), e.data.get("replayed"),
-                       bool(e.data.get("skipped")))
+                       bool(e.data.get("skipped")), tuple(e.data.get("cut") or ()))
             for e in record.events if e.kind == "checkpoint"]

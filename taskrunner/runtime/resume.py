@@ -48,6 +48,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
 from taskrunner.backends.base import ObjectTracking
@@ -63,8 +64,10 @@ from taskrunner.runtime.checkpoint import (
     tree_sha256,
 )
 from taskrunner.runtime.resume_step import check_rest, skipped_leaves, top_index, top_step
+from taskrunner.runtime.story import Story, StoryClock, story_of
 from taskrunner.tree.behaviours import MoveToGoal, TaskLeaf
 from taskrunner.tree.grasps import end_lift_off
+from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.types import Pose
 
 if TYPE_CHECKING:
@@ -72,7 +75,9 @@ if TYPE_CHECKING:
     from taskrunner.runtime.events import EventLog
     from taskrunner.runtime.records import RunRecord
     from taskrunner.runtime.runner import Runner
+    from taskrunner.tasks.expect import TaskExpectation
     from taskrunner.tasks.spec import TaskSpec
+    from taskrunner.tree.context import TaskContext
 
 __all__ = ["ResumeOptions", "ResumePlan", "plan_resume"]
 
@@ -119,6 +124,7 @@ class ResumePlan:
     start_step: int | None = None  # --from: the top-level step the rest is checked from
     skip_to: int | None = None  # --from a step the run had not finished leaves before
     played: list[Checkpoint] = field(default_factory=list)  # replay + skipped, once applied
+    story: Story | None = None
 
     @property
     def run_id(self) -> str:
@@ -145,14 +151,18 @@ class ResumePlan:
             raise _refuse(record, "the task compiles to another tree than the one it ran "
                           "(an included file, the cell or a parameter changed); run it anew")
         nodes = list(preorder(runner.tree))
-        leaves: dict[int, TaskLeaf] = {}
+        leaves: dict[int, Behaviour] = {}
         for point in self.replay:
             node = nodes[point.leaf] if point.leaf is not None and point.leaf < len(nodes) \
                 else None
-            if not isinstance(node, TaskLeaf) or node.name != point.node:
+            kind = TaskTimeout if point.cut else TaskLeaf  # a timeout that fired, a leaf
+            cut = [nodes[i] if i < len(nodes) else None for i in point.cut]
+            if not isinstance(node, kind) or node.name != point.node \
+                    or not all(isinstance(leaf, TaskLeaf) for leaf in cut):
                 raise _refuse(record, f"its checkpoint {point.seq} ({point.node!r}) names "
                               "no leaf of this task's tree")
             leaves[point.leaf] = node  # type: ignore[index]
+            leaves.update((i, nodes[i]) for i in point.cut)
         start_scene = scene_state(runner.scene)
         notes = [f"resuming run {record.run_id} ({record.status}): "
                  f"the outcomes of its {len(self.replay)} finished leaves kept"]
@@ -167,6 +177,8 @@ class ResumePlan:
         self._rebuild_goals(runner, leaves, start_scene)
         outcomes: dict[int, list[Status]] = {}
         for point in self.played:
+            for index in point.cut:  # running when the timeout fired: stopped, no outcome
+                outcomes.setdefault(index, []).append(Status.RUNNING)
             outcomes.setdefault(point.leaf, []).append(Status(point.status))  # type: ignore[arg-type]
         for index, statuses in outcomes.items():
             _Replayed(leaves[index], statuses).install()
@@ -182,6 +194,11 @@ class ResumePlan:
         events with ``replayed``: the id of the run that finished them), before any of
         its own: the record of a resumed run is resumable alone, without the records
         before it."""
+        if self.story is not None:
+            story = self.story
+            events.emit("message", f"the story so far: {len(story.runs)} runs, "
+                        f"{story.task_time:.2f} s of task time, {story.motions} motions",
+                        story=dataclasses.asdict(story))
         for done, point in enumerate(self.played, start=1):
             how = "skipped by --from" if point.skipped else f"replayed from run {self.run_id}"
             events.emit("checkpoint", f"after {point.node} ({how})", node=point.node,
@@ -190,7 +207,32 @@ class ResumePlan:
                         held=point.held, replayed=point.run_id or self.run_id,
                         **({"skipped": True} if point.skipped else {}))
 
-    def _from_step(self, runner: Runner, leaves: dict[int, TaskLeaf]) -> list[str]:
+    def story_context(self, ctx: TaskContext) -> TaskContext:
+        """``ctx`` for the task's ``expect:`` at the end: its clock reads the task time of
+        the runs this one resumes plus its own (``duration`` sees the whole story)."""
+        before = self.story.task_time if self.story is not None else 0.0
+        return dataclasses.replace(ctx, clock=StoryClock(ctx.clock, before))
+
+    def covers(self, ctx: TaskContext, expect: TaskExpectation | None) -> str:
+        """What the task's ``duration`` and ``collision_free`` covered, said after its
+        expectations' verdict (empty when it has neither)."""
+        story = self.story
+        if expect is None or story is None or (expect.duration is None
+                                               and not expect.collision_free):
+            return ""
+        runs = len(story.runs) + 1
+        said = []
+        if expect.duration is not None:
+            said.append(f"duration: {story.task_time + ctx.clock.now():.1f} s of task time "
+                        f"over the {runs} runs of the story ({story.task_time:.1f} s before "
+                        "this one)")
+        if expect.collision_free:
+            said.append(f"collision_free: this run's {len(ctx.executed)} motions (the "
+                        f"{story.motions} of the runs it resumes were verified as they "
+                        "were planned, not again)")
+        return " (" + "; ".join(said) + ")"
+
+    def _from_step(self, runner: Runner, leaves: dict[int, Behaviour]) -> list[str]:
         """``--from``: skip to the step if the run had not finished the leaves before it,
         then check the rest of the task from the world as it is (refused on a problem)."""
         assert self.start_step is not None
@@ -202,7 +244,7 @@ class ResumePlan:
                 raise _refuse(self.record, f"--from {step!r}: cannot skip to it: {reason}")
             nodes = list(preorder(runner.tree))
             for point in skipped:
-                leaves[point.leaf] = nodes[point.leaf]  # type: ignore[index,assignment]
+                leaves[point.leaf] = nodes[point.leaf]  # type: ignore[index]
             self.played += skipped
             if skipped:
                 notes.append(f"--from {step!r}: {len(skipped)} leaves the run never finished "
@@ -289,7 +331,7 @@ class ResumePlan:
                          "says so)")
         return notes
 
-    def _rebuild_goals(self, runner: Runner, leaves: dict[int, TaskLeaf],
+    def _rebuild_goals(self, runner: Runner, leaves: dict[int, Behaviour],
                        start_scene: dict[str, Any]) -> None:
         """Compute again the goals of the replayed ``MoveToGoal`` leaves of a subtree the
         run was part of the way through (what a pick, place or hand-over keeps for its
@@ -320,7 +362,9 @@ class ResumePlan:
 
 class _Replayed:
     """A finished leaf ticked again on resume: it returns its recorded outcomes one
-    after another, at once, doing and saying nothing; then it is itself again.
+    after another, at once, doing and saying nothing; then it is itself again. An outcome
+    RUNNING is a leaf a ``timeout:`` stopped: it runs until its timeout (replayed too)
+    stops it, in the same tick. A fired timeout is replayed the same way (its FAILURE).
 
     Its ``initialise``, ``update`` and ``terminate`` are shadowed on the instance while
     outcomes are left (py_trees calls them through the instance), not changed in its
@@ -329,7 +373,7 @@ class _Replayed:
 
     HOOKS = ("initialise", "update", "terminate")
 
-    def __init__(self, leaf: TaskLeaf, outcomes: list[Status]) -> None:
+    def __init__(self, leaf: Behaviour, outcomes: list[Status]) -> None:
         self.leaf = leaf
         self.outcomes = list(outcomes)
 
@@ -344,7 +388,10 @@ class _Replayed:
         return self.outcomes[0]
 
     def terminate(self, new_status: Status) -> None:
-        if new_status not in (Status.SUCCESS, Status.FAILURE):
+        if self.outcomes[0] == Status.RUNNING:  # cut short: stopped while it ran
+            if new_status != Status.INVALID or self.leaf.status != Status.RUNNING:
+                return
+        elif new_status not in (Status.SUCCESS, Status.FAILURE):
             return  # reset by its parent: not one of its outcomes
         self.outcomes.pop(0)
         if not self.outcomes:
@@ -401,7 +448,7 @@ def plan_resume(record: RunRecord, spec: TaskSpec, options: ResumeOptions | None
         else:  # not finished before: skip to it
             skip_to = start_step
     return ResumePlan(record, record.backend, options, replay, world, _stop_joints(record),
-                      same_world, start_step, skip_to)
+                      same_world, start_step, skip_to, story=story_of(record))
 
 
 def _stop_joints(record: RunRecord) -> dict[str, float]:

@@ -328,12 +328,15 @@ class Runner:
         misses one fails (exit code 4) with the first miss as its error."""
         expect = self.spec.expect
         where = str(expect.loc) if expect is not None and expect.loc is not None else None
+        # A resumed run's duration counts the runs it resumes too (their story).
+        ctx = self._resume.story_context(self.ctx) if self._resume is not None else self.ctx
         try:
-            misses = check_task_end(expect, self.ctx, status, error, where)
+            misses = check_task_end(expect, ctx, status, error, where)
         except TaskrunnerError as exc:
             misses = [f"{where}: expectation not checked: {exc}" if where else str(exc)]
         self.expectations_met = not misses
-        self.events.emit("message", "expectations met" if not misses else misses[0],
+        covers = self._resume.covers(self.ctx, expect) if self._resume is not None else ""
+        self.events.emit("message", ("expectations met" if not misses else misses[0]) + covers,
                          expectations={"met": not misses, "failures": misses,
                                        "status": {"expected": expect.status if expect
                                                   else "succeeded", "observed": status}})
@@ -364,7 +367,8 @@ class Runner:
         # The event first, then the record's status: a reader that sees the run ended
         # (polls of GET /runs/{id}, TaskRun) finds its run_finished event there too.
         self.events.emit("run_finished", error or status, status=status, exit_code=code,
-                         scene=scene_data(self.scene.snapshot()))
+                         scene=scene_data(self.scene.snapshot()),
+                         task_time=round(self.ctx.clock.now(), 6))
         self.record.exit_code = code
         self.record.error = error
         self.record.finished = datetime.now(UTC).isoformat()

@@ -139,6 +139,50 @@ def test_a_fallbacks_branch_and_a_repeats_round_are_where_the_run_left_them(tmp_
     assert [p["repeat"] for p in own[-1].position if "repeat" in p] == [2]
 
 
+TIMED = """\
+task: timed
+cell: {cell}
+steps:
+  - fallback:
+      - timeout:
+          seconds: 0.2
+          do:
+            - go: {{group: arm, to: Candle}}   # longer than 0.2 s of task time: cut short
+      - go: {{group: arm, to: home}}
+  - go: {{name: last, group: arm, to: Candle}}
+expect:
+  duration: {{max: 600}}
+  collision_free: true
+"""
+
+
+def test_a_timeout_that_fired_in_a_fallback_stays_fired_and_duration_counts_the_story(
+        tmp_path):
+    path = tmp_path / "timed.yaml"
+    path.write_text(TIMED.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
+    runner, backend = sim_runner(path, tmp_path)
+    runner.events.subscribe(lambda e: e.kind == "motion" and e.node == "last"
+                            and backend.stop())
+    try:
+        first = runner.run()
+    finally:
+        backend.close()
+    assert first.status == "failed"
+    timed_out = [p for p in checkpoints_of(first) if p.cut]
+    assert len(timed_out) == 1 and timed_out[0].status == "FAILURE"
+    first_time = next(e.data["task_time"] for e in first.events if e.kind == "run_finished")
+    _, record, resumed = resume(tmp_path / f"{first.run_id}.json", tmp_path)
+    assert record.status == "succeeded", record.error
+    # The fallback stays on its second branch: nothing of the first runs again.
+    assert [e.node for e in record.events if e.kind == "node_started"] == ["last"]
+    own = next(e.data["task_time"] for e in record.events if e.kind == "run_finished")
+    verdict = next(e for e in record.events if e.kind == "message" and "expectations" in e.data)
+    assert verdict.data["expectations"]["met"]
+    assert f"duration: {first_time + own:.1f} s of task time over the 2 runs of the story " \
+           f"({first_time:.1f} s before this one)" in verdict.message
+    assert "collision_free: this run's 1 motions" in verdict.message
+
+
 def test_taskrun_resume_continues_on_the_same_backend_from_where_the_arm_stopped(tmp_path):
     spec = load_task(TASKS / "pick_place.yaml")
     cell = load_cell(spec.cell)
