@@ -13,6 +13,11 @@ event log and so in its journal, by a ``checkpoint`` event (:class:`Checkpointer
   carrying it and the links it may touch), the scene's allowances with their reasons;
   ``held``: which arm holds which object.
 
+A ``timeout:`` that fires gets a checkpoint of its own (``leaf``: the decorator's index,
+``status`` FAILURE, ``cut``: the leaves it stopped while they ran). A resumed run's record
+begins with the checkpoints it replayed (``replayed``: the run that finished them;
+``skipped``: leaves ``--from`` skipped), so it can be resumed alone.
+
 The run's head in the record says which task it was (``task_sha256``: the task file's
 text as run; ``tree_sha256``: the compiled tree's shape, which an include, the cell or a
 parameter also changes). The journal writes each checkpoint to the file before the next

@@ -35,9 +35,12 @@ time the run reached it, or, a step after where it stopped, skipping the leaves 
 The rest of the task from that step is first dry-run by the check a run gets, from the
 real state; a problem refuses the resume with its file:line and reason.
 
-What is not carried over: the run's clock (a ``timeout:`` around the resumed step and the
-task's ``duration`` expectation count the new run only), and the task-end expectations
-that look at every motion (``collision_free``) see the new run's motions only.
+A ``timeout:`` that fired is replayed too (its FAILURE, and the leaves it stopped), so a
+fallback stays on the branch it went on with. A ``timeout:`` around the resumed step
+counts the new run's time only: the step runs again from its start. The new record
+carries the story (:mod:`taskrunner.runtime.story`): the task's ``duration`` expectation
+counts the task time of every run of it; ``collision_free`` re-checks the new run's
+motions only, and the verdict says so.
 """
 
 from __future__ import annotations
