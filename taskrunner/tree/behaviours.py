@@ -106,7 +106,8 @@ class TaskParallel(py_trees.composites.Parallel):
     def initialise(self) -> None:
         children = self.children
         self.instance = self.ctx.schedule.new_instance(
-            lambda i: children[i].status not in (Status.SUCCESS, Status.FAILURE))
+            lambda i: children[i].status not in (Status.SUCCESS, Status.FAILURE),
+            len(children))
         super().initialise()
 
 
@@ -200,6 +201,13 @@ class _Executes(TaskLeaf):
         """Put the motion on the run's schedule (module text); send it, hold it until its
         start, or hold it until the branch in its way has moved on."""
         schedule, lane = self.ctx.schedule, lane_of(self)
+        if not schedule.turn(lane):
+            # Another branch admits its motion of this round first (its plan is not done
+            # yet): asked again at the next tick, so the order does not depend on it.
+            self.held = (trajectory, -1)
+            return Status.RUNNING
+        if self.held is not None and self.held[1] == -1:
+            self.held = None  # its turn has come
         timed = _plays_time(self.ctx.backend)
         # Where time passes, the motion is admitted a little ahead (the verification and
         # the next tick take some): it is held until then, then sent on time.

@@ -25,6 +25,14 @@ they part at the same instance of a ``parallel`` in different branches; otherwis
 follows the other, so a motion never starts before the motions of the lanes it follows
 have ended.
 
+*Turns.* Which of two motions that meet is admitted first decides which one waits, so
+the branches take turns, as the check schedules them
+(:mod:`taskrunner.tree.branch_schedule`): a branch's k-th motion of a ``parallel`` is
+admitted once each branch before it has admitted its k-th and each after it its
+(k-1)-th (:meth:`MotionSchedule.turn`; a branch that has ended or holds is passed over).
+The schedule is then the same whatever order the branches' plans finish in (a planner
+slow for one arm, a loaded machine).
+
 *Waits between branches.* A step with ``wait_for`` (:mod:`taskrunner.tree.waiting`) sets
 a *floor* under its lane (:meth:`MotionSchedule.not_before`): the lane's next motions start
 no earlier than the named step's last motion ended (:meth:`MotionSchedule.finish_step`).
@@ -205,14 +213,43 @@ class MotionSchedule:
     _changes: int = 0
     _instances: int = 0
     _branches: dict[int, Callable[[int], bool]] = field(default_factory=dict)
+    _counts: dict[int, int] = field(default_factory=dict)
 
-    def new_instance(self, running: Callable[[int], bool] | None = None) -> int:
+    def new_instance(self, running: Callable[[int], bool] | None = None,
+                     branches: int | None = None) -> int:
         """A fresh id for a ``parallel`` that starts; ``running(i)``: whether its branch
-        ``i`` has not ended yet (default: always)."""
+        ``i`` has not ended yet (default: always); ``branches``: how many it has, for its
+        branches to take turns (:meth:`turn`; None: they do not)."""
         self._instances += 1
         if running is not None:
             self._branches[self._instances] = running
+        if branches is not None:
+            self._counts[self._instances] = branches
         return self._instances
+
+    def turn(self, lane: LaneKey) -> bool:
+        """Whether it is ``lane``'s turn to admit its next motion (module text): at every
+        ``parallel`` around it whose branches take turns, each other branch that is
+        running and does not hold has admitted as many motions as this one (before it),
+        or one fewer (after it)."""
+        for depth, (instance, index) in enumerate(lane):
+            count = self._counts.get(instance)
+            running = self._branches.get(instance)
+            if count is None or running is None:
+                continue
+            mine = self._admitted(lane[:depth + 1])
+            for other in range(count):
+                if other == index or not running(other):
+                    continue
+                branch = (*lane[:depth], (instance, other))
+                if any(_within(key, branch) for key in self.holding):
+                    continue
+                if self._admitted(branch) < mine + (other < index):
+                    return False
+        return True
+
+    def _admitted(self, branch: LaneKey) -> int:
+        return sum(1 for c in self.committed if _within(c.lane, branch))
 
     @property
     def revision(self) -> int:

@@ -4,7 +4,11 @@ order its branches' plans finish in.
 The same task is run on the mock backend (which plays no time) with a planner whose
 answers for one branch's arm come some ticks late: every trajectory of each branch (each
 sample hashed, as ``benchmarks/trajectory_hashes.py`` hashes them), their starts on the
-schedule and the waits inserted are the same as with a planner that answers at once.
+schedule and the waits inserted are the same as with a planner that answers at once. In
+``handoff_overlap`` the right arm's ``go`` meets the left arm's pick: which of the two
+waits was decided by which plan was admitted first (a left arm planned late made the
+pick wait, 2.3 s later), until the branches took turns (:meth:`~taskrunner.tree.schedule.
+MotionSchedule.turn`).
 """
 
 from __future__ import annotations
@@ -13,18 +17,18 @@ import hashlib
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.request import PlanRequest
 from taskrunner.planning.service import InProcessPlanner, PlanService, PlanTicket
-from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.scene import Scene
 from taskrunner.tasks import load_task
 from taskrunner.types import JointTrajectory
 
-TASK = DATA_ROOT / "tasks" / "assembly_panda.yaml"
+FIXTURES = Path(__file__).parent / "fixtures"
 
 
 class _LateTicket:
@@ -63,8 +67,8 @@ def _digest(trajectory: JointTrajectory) -> str:
     return digest.hexdigest()
 
 
-def _run(planner: PlanService, runs: Path) -> tuple[str, dict, list]:
-    spec = load_task(TASK, {})
+def _run(task: Path, planner: PlanService, runs: Path) -> tuple[str, dict, list]:
+    spec = load_task(task, {})
     cell = load_cell(spec.cell)
     names = cell.model.joint_names
     backend = MockBackend(names, dict(zip(names, cell.start_state())))
@@ -79,9 +83,13 @@ def _run(planner: PlanService, runs: Path) -> tuple[str, dict, list]:
     return str(record.status), lanes, waits
 
 
-def test_a_slow_planner_for_one_branch_changes_no_trajectory_start_or_wait(tmp_path):
-    status, lanes, waits = _run(InProcessPlanner(), tmp_path)
+@pytest.mark.parametrize("ticks", [2, 40])
+def test_a_slow_planner_for_one_branch_changes_no_trajectory_start_or_wait(ticks, tmp_path):
+    task = FIXTURES / "handoff_overlap.yaml"
+    status, lanes, waits = _run(task, InProcessPlanner(), tmp_path)
     assert status == "succeeded" and len(lanes) >= 2 and waits
     for group in ("left_arm", "right_arm"):
-        slow = _run(_SlowFor(group, 5), tmp_path)
+        slow = _run(task, _SlowFor(group, ticks), tmp_path)
         assert slow == (status, lanes, waits), group
+    # As the check has it: the right arm's go (line 22) waits for the pick (line 21).
+    assert [where.rsplit(":", 1)[1] for where, _ in waits] == ["22"]
