@@ -225,6 +225,14 @@ class RunStore:
                         "exit_code": exit_code, "error": error})
         return out
 
+    def resumed_by(self, run_id: str) -> list[str]:
+        """The runs whose record resumes ``run_id`` (``run-task resume``, POST
+        /runs/{id}/resume), oldest first."""
+        with self._lock:
+            rows = self._db.execute("SELECT run_id FROM runs WHERE json_extract(record, "
+                                    "'$.resumes') = ? ORDER BY started", (run_id,)).fetchall()
+        return [str(row[0]) for row in rows]
+
     def close(self) -> None:
         with self._append_lock:
             self._appends.close()

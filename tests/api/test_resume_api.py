@@ -44,6 +44,11 @@ def test_a_cancelled_run_resumes_from_where_it_stopped_and_a_finished_one_is_ref
     started = [e["location"] for e in run["events"] if e["kind"] == "node_started"]
     assert len(started) == 1 and started[0].endswith("inline.yaml:5")  # the second go only
 
+    # The web view's replay links the two runs both ways: one story.
+    assert client.get(f"/viewer/runs/{new_id}/replay").json()["resumes"] == run_id
+    story = client.get(f"/viewer/runs/{run_id}/replay").json()
+    assert story["resumed_by"] == [new_id] and story["resumes"] is None
+
     again = client.post(f"/runs/{new_id}/resume", json={})
     assert again.status_code == 422
     assert "it succeeded: there is nothing left to do" in again.json()["detail"]

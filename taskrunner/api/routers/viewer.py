@@ -229,8 +229,13 @@ def _preview(body: TaskRequest, settings: Settings, cells: CellRegistry,
 def run_replay(run_id: str, manager: Annotated[RunManager, Depends(get_manager)]
                ) -> JSONResponse:
     """A run's motions (trajectories, the scene each started in, how far each got) and
-    its first and final scenes, for the page's replay."""
-    return JSONResponse(describe_replay(manager.record(run_id)))
+    its first and final scenes, for the page's replay; the run it ``resumes`` and the runs
+    ``resumed_by`` it (one story, linked both ways)."""
+    record = manager.record(run_id)
+    answer = describe_replay(record)
+    answer["resumes"] = record.resumes or None
+    answer["resumed_by"] = manager.store.resumed_by(run_id)
+    return JSONResponse(answer)
 
 
 @router.get("/viewer/runs/{run_id}/tree", dependencies=[Depends(require_read)],

@@ -305,11 +305,12 @@ async function viewRun(runId) {
     return;
   }
   const summary = el('div', { className: 'banner', textContent: 'loading…' });
+  const story = el('p', { id: 'story', hidden: true });
   const cancel = el('button', { type: 'button', textContent: 'cancel run', hidden: true });
   const treeBox = el('div', { id: 'run-tree' });
   const log = el('div', { id: 'log' });
   const tree = treePanel(treeBox);
-  side.append(el('h2', { textContent: `Run ${runId}` }), summary, cancel, el('h2', {}, 'Tree', tree.toggle), treeBox,
+  side.append(el('h2', { textContent: `Run ${runId}` }), summary, story, cancel, el('h2', {}, 'Tree', tree.toggle), treeBox,
     el('h2', { textContent: 'Events' }), log);
   cancel.addEventListener('click', () => guarded(async () => { await post(`/runs/${runId}/cancel`); }));
   const detail = await get(`/runs/${encodeURIComponent(runId)}`);
@@ -327,6 +328,18 @@ async function viewRun(runId) {
     summary.className = `banner status-${status}`;
     debug.runStatus = status;
   };
+  // A resumed run and the run it resumes are one story: linked both ways.
+  const showStory = (resumes, resumedBy) => {
+    const link = (id) => el('a', { href: `#/run/${id}`, textContent: id });
+    story.replaceChildren();
+    if (resumes) story.append('resumes ', link(resumes));
+    if (resumedBy.length) {
+      story.append(resumes ? ' · resumed by ' : 'resumed by ');
+      resumedBy.forEach((id, k) => story.append(...(k ? [', ', link(id)] : [link(id)])));
+    }
+    story.hidden = !resumes && !resumedBy.length;
+    debug.story = { resumes: resumes || null, resumedBy };
+  };
   const logLine = (e) => {
     const where = e.location ? `  (${shortLocation(e.location)})` : '';
     const text = e.kind === 'node_started' ? `▶ ${e.node}${where}`
@@ -343,6 +356,7 @@ async function viewRun(runId) {
     debug.successOrder = tree.list.successOrder;
     describe(detail.status, detail.error);
     setTimeline(replay);
+    showStory(replay.resumes, replay.resumed_by || []);
     state.gantt = gantt;
     events.forEach((e) => gantt.apply(e));
     gantt.render();
@@ -367,8 +381,10 @@ async function viewRun(runId) {
     tree.apply(e);
     if (state.gantt === gantt) gantt.apply(e);
     logLine(e);
-    if (e.kind === 'run_started') replay.first_scene = e.data.scene || null;
-    else if (e.kind === 'motion') motions.push({ seq: e.seq, node: e.node, location: e.location, time: e.time, trajectory: e.data.trajectory, scene: e.data.scene, executed: null });
+    if (e.kind === 'run_started') {
+      replay.first_scene = e.data.scene || null;
+      if (e.data.resumes) showStory(e.data.resumes, []);
+    } else if (e.kind === 'motion') motions.push({ seq: e.seq, node: e.node, location: e.location, time: e.time, trajectory: e.data.trajectory, scene: e.data.scene, executed: null });
     else if (e.kind === 'physics') {
       const m = [...motions].reverse().find((x) => x.node === e.node && !x.physics);
       if (m) m.physics = e.data;
