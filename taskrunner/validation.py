@@ -9,7 +9,7 @@ as ``cell.yaml:12: robots[0].base.xyz: …``, every problem at once.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
@@ -20,7 +20,7 @@ from taskrunner.yamlfile import line_of
 
 __all__ = ["MAX_METRES", "MAX_RADIANS", "NUMBER", "Integer", "Metres", "NonNegativeMetres",
            "Number", "PositiveMetres", "Radians", "Scale", "check_number", "locate",
-           "validate_node"]
+           "validate_node", "without_cascades"]
 
 M = TypeVar("M", bound=BaseModel)
 
@@ -110,6 +110,16 @@ def _dotted(loc: tuple[Any, ...]) -> str:
     return out or "(top level)"
 
 
+def without_cascades(errors: Sequence[Any]) -> list[Any]:
+    """Pydantic's errors without the echoes of another: a tuple with a bad item is also
+    reported as too short (the bad item left out), and the item's own error says it all.
+    Used for cell files, task files and REST requests alike."""
+    items_failed = {tuple(e["loc"][:-1]) for e in errors
+                    if e["loc"] and isinstance(e["loc"][-1], int)}
+    return [e for e in errors
+            if not (e["type"] == "too_short" and tuple(e["loc"]) in items_failed)]
+
+
 def validate_node(model: type[M], node: Any, path: str | Path | None) -> M:
     """Validate ``node`` against pydantic ``model``.
 
@@ -121,7 +131,7 @@ def validate_node(model: type[M], node: Any, path: str | Path | None) -> M:
         return model.model_validate(node)
     except ValidationError as exc:
         problems = []
-        for error in exc.errors(include_url=False):
+        for error in without_cascades(exc.errors(include_url=False)):
             loc = tuple(k for k in error["loc"] if not (isinstance(k, str) and k.startswith("function-")))
             # Discriminated unions add the tag name to the location: drop it.
             loc = tuple(k for k in loc if not (isinstance(k, str) and k[:1].isupper()))

@@ -45,6 +45,7 @@ from taskrunner.errors import (
     UnavailableError,
     UnknownNameError,
 )
+from taskrunner.validation import without_cascades
 
 __all__ = ["BodyLimit", "ERROR_CODES", "MAX_DETAIL_CHARS", "MAX_PROBLEMS", "add_error_handlers",
            "problems_of"]
@@ -129,7 +130,7 @@ async def _invalid_request(request: Request, exc: Exception) -> JSONResponse:
     """FastAPI's answer to a body its schema refuses, with at most :data:`MAX_PROBLEMS`
     errors, each echoing at most a short piece of its input."""
     assert isinstance(exc, RequestValidationError)
-    errors = list(exc.errors())
+    errors = without_cascades(exc.errors())
     shown: list[Any] = []
     for error in errors[:MAX_PROBLEMS]:
         error = dict(error)

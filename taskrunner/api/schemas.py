@@ -7,6 +7,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from taskrunner.kinds import BackendKind, RunStatus
+from taskrunner.posespec import PoseFields, Position
 from taskrunner.runtime.events import RunEvent
 from taskrunner.validation import Integer, Number
 
@@ -214,10 +215,12 @@ class CellState(_Strict):
     running: list[str] = Field(description="ids of the runs in flight on this cell")
 
 
-class PoseTarget(_Request):
-    xyz: list[Number] = Field(min_length=3, max_length=3)
-    rpy: list[Number] = Field(default=[0.0, 0.0, 0.0], min_length=3, max_length=3)
-    frame: str = "world"
+class PoseTarget(_Request, PoseFields):
+    """A link's pose: ``xyz`` (m) and ``rpy`` (rad) or ``quat`` (x, y, z, w; neither: the
+    identity) in ``frame``: the pose model of task and cell files."""
+
+    xyz: Position
+    """Translation (m)."""
     link: str | None = None
     position_only: bool | None = None
 

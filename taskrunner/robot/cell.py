@@ -43,6 +43,7 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
 from taskrunner.materials import Density, Friction, Kilograms, Material, check_material, material_of
+from taskrunner.posespec import PoseFields
 from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import RobotDescription, load_description
 from taskrunner.robot.model import RobotModel
@@ -61,10 +62,8 @@ from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.taught import apply_taught
 from taskrunner.textfile import file_problem, path_problem, resolve_path
 from taskrunner.validation import (
-    Metres,
     Number,
     PositiveMetres,
-    Radians,
     Scale,
     validate_node,
 )
@@ -74,8 +73,6 @@ __all__ = ["Cell", "CellObject", "load_cell", "load_cell_or_robot"]
 
 log = logging.getLogger(__name__)
 
-Position = Annotated[list[Metres], Field(min_length=3, max_length=3)]
-Angles = Annotated[list[Radians], Field(min_length=3, max_length=3)]
 Size = Annotated[list[PositiveMetres], Field(min_length=3, max_length=3)]
 Scales = Annotated[list[Scale], Field(min_length=3, max_length=3)]
 
@@ -85,13 +82,9 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
-class PoseSpec(_Strict):
-    xyz: Position = [0.0, 0.0, 0.0]
-    rpy: Angles = [0.0, 0.0, 0.0]
-    frame: str = WORLD
-
-    def se3(self) -> pin.SE3:
-        return pin.SE3(pin.rpy.rpyToMatrix(*self.rpy), np.array(self.xyz, dtype=float))
+class PoseSpec(_Strict, PoseFields):
+    """A placement in a cell file: ``xyz`` and ``rpy`` or ``quat``, in ``frame`` (the one
+    pose model, :class:`taskrunner.posespec.PoseFields`, as task files write it)."""
 
 
 GraspMode = Literal["friction", "weld"]

@@ -22,8 +22,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal, Self
 
-import numpy as np
-import pinocchio as pin
 from pydantic import (
     BaseModel,
     ConfigDict,
@@ -34,23 +32,18 @@ from pydantic import (
     model_validator,
 )
 
-from taskrunner.errors import ArgumentError
 from taskrunner.materials import Density, Friction, Kilograms, check_material
+from taskrunner.posespec import WORLD, PoseFields, TransformFields
 from taskrunner.textfile import path_problem
-from taskrunner.types import Pose
-from taskrunner.validation import Metres, Number, PositiveMetres, Radians, Scale
+from taskrunner.validation import Metres, Number, PositiveMetres, Scale
 from taskrunner.yamlfile import LineDict
 
 __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transform", "Vec2",
            "Vec3", "Vec4", "WORLD"]
 
-WORLD = "world"
-
 Vec2 = Annotated[tuple[Metres, ...], Field(min_length=2, max_length=2)]
 Vec3 = Annotated[tuple[Number, ...], Field(min_length=3, max_length=3)]
 Vec4 = Annotated[tuple[Number, ...], Field(min_length=4, max_length=4)]
-Position = Annotated[tuple[Metres, ...], Field(min_length=3, max_length=3)]
-Angles = Annotated[tuple[Radians, ...], Field(min_length=3, max_length=3)]
 Size = Annotated[tuple[PositiveMetres, ...], Field(min_length=3, max_length=3)]
 Scales = Annotated[tuple[Scale, ...], Field(min_length=3, max_length=3)]
 
@@ -196,64 +189,13 @@ class Node(BaseModel):
         return hash((type(self), _freeze(tuple(self.__dict__.values()))))
 
 
-def _check_quat(value: tuple[float, ...] | None) -> tuple[float, ...] | None:
-    if value is None:
-        return None
-    norm = float(np.linalg.norm(value))
-    if not np.isfinite(norm) or abs(norm - 1.0) > 1e-3:
-        raise ArgumentError(f"must be a unit quaternion [x, y, z, w] (got norm {norm:.4g})")
-    return tuple(float(v) / norm for v in value)
+class Transform(Node, TransformFields):
+    """A rigid transform: translation and an optional orientation (``rpy`` or ``quat``)
+    (the fields and checks of :class:`taskrunner.posespec.TransformFields`)."""
 
 
-class Transform(Node):
-    """A rigid transform: translation and an optional orientation (``rpy`` or ``quat``)."""
-
-    xyz: Position = (0.0, 0.0, 0.0)
-    """Translation (m)."""
-    rpy: Angles | None = None
-    """Orientation as roll, pitch, yaw (rad, fixed axes X then Y then Z); not with 'quat'."""
-    quat: Vec4 | None = None
-    """Orientation as a unit quaternion [x, y, z, w]; not with 'rpy'."""
-
-    @field_validator("quat")
-    @classmethod
-    def _quat_is_unit(cls, value: tuple[float, ...] | None) -> tuple[float, ...] | None:
-        return _check_quat(value)
-
-    @model_validator(mode="after")
-    def _one_orientation(self) -> Transform:
-        if self.rpy is not None and self.quat is not None:
-            raise ValueError("takes only one of 'rpy' or 'quat'")
-        return self
-
-    @property
-    def has_orientation(self) -> bool:
-        """Whether an orientation was given (else :meth:`rotation` is the identity)."""
-        return self.rpy is not None or self.quat is not None
-
-    def rotation(self) -> np.ndarray:
-        """The 3x3 rotation matrix (identity when no orientation was given)."""
-        if self.quat is not None:
-            x, y, z, w = self.quat
-            return np.array(pin.Quaternion(w, x, y, z).toRotationMatrix())
-        if self.rpy is not None:
-            return np.array(pin.rpy.rpyToMatrix(*self.rpy))
-        return np.eye(3)
-
-    def se3(self) -> pin.SE3:
-        """The transform as a pinocchio SE3."""
-        return pin.SE3(self.rotation(), np.array(self.xyz, dtype=float))
-
-
-class PoseSpec(Transform):
+class PoseSpec(Transform, PoseFields):
     """A pose in a frame: 'world', a link of the cell, or an object of the scene."""
-
-    frame: str = WORLD
-    """Frame the pose is expressed in: 'world', a link name or an object name."""
-
-    def to_pose(self) -> Pose:
-        """As a :class:`taskrunner.types.Pose` (identity orientation if none was given)."""
-        return Pose.from_se3(self.se3(), self.frame)
 
 
 class TargetPose(PoseSpec):

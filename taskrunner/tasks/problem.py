@@ -18,7 +18,7 @@ from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
 from taskrunner.errors import TaskSpecError, did_you_mean
-from taskrunner.validation import locate
+from taskrunner.validation import locate, without_cascades
 
 __all__ = ["Problem", "did_you_mean", "problems_error", "problems_from_validation",
            "raise_for_problems"]
@@ -162,14 +162,7 @@ def problems_from_validation(error: ValidationError, node: Any, file: Path | Non
             belongs).
     """
     problems = []
-    errors = error.errors(include_url=False)
-    # A tuple with a bad item is also reported as too short (the bad item left out):
-    # the item's own error says it all.
-    items_failed = {tuple(e["loc"][:-1]) for e in errors
-                    if e["loc"] and isinstance(e["loc"][-1], int)}
-    for err in errors:
-        if err["type"] == "too_short" and tuple(err["loc"]) in items_failed:
-            continue
+    for err in without_cascades(error.errors(include_url=False)):
         loc = tuple(k for k in err["loc"] if not (isinstance(k, str) and k.startswith("<")))
         found = locate(node, loc)
         problems.append(Problem(file, found if found is not None else line,

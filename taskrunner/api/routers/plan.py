@@ -72,7 +72,9 @@ def _plan(body: PlanBody, cells: CellRegistry, deadline: float, limit: float,
         goal = JointGoal(body.joints)
     else:
         assert body.pose is not None
-        pose = pose_from_xyz_rpy(body.pose.xyz, body.pose.rpy, body.pose.frame)
+        target = body.pose
+        pose = target.to_pose() if target.quat is not None else pose_from_xyz_rpy(
+            target.xyz, target.rpy or (0.0, 0.0, 0.0), target.frame)  # rpy: as before, bit for bit
         goal = PoseGoal(pose, link=body.pose.link, position_only=body.pose.position_only)
     # The planner times the path and encodes it too: in a worker process, off this
     # process's GIL (the event loop answers other requests meanwhile).
