@@ -34,15 +34,16 @@ import copy
 import logging
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Annotated, Literal
+from typing import Literal
 
 import numpy as np
 import pinocchio as pin
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field
 
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
-from taskrunner.materials import Density, Friction, Kilograms, Material, check_material, material_of
+from taskrunner.materials import Material, material_of
+from taskrunner.objectspec import ObjectFields
 from taskrunner.posespec import PoseFields
 from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import RobotDescription, load_description
@@ -63,8 +64,6 @@ from taskrunner.taught import apply_taught
 from taskrunner.textfile import file_problem, path_problem, resolve_path
 from taskrunner.validation import (
     Number,
-    PositiveMetres,
-    Scale,
     validate_node,
 )
 from taskrunner.yamlfile import LineDict, line_of, load_yaml
@@ -73,8 +72,6 @@ __all__ = ["Cell", "CellObject", "load_cell", "load_cell_or_robot"]
 
 log = logging.getLogger(__name__)
 
-Size = Annotated[list[PositiveMetres], Field(min_length=3, max_length=3)]
-Scales = Annotated[list[Scale], Field(min_length=3, max_length=3)]
 
 
 class _Strict(BaseModel):
@@ -105,32 +102,11 @@ class RobotSpec(_Strict):
     end_effectors: dict[str, EndEffectorSettings] = {}
 
 
-class ObjectSpec(_Strict):
-    name: str = Field(min_length=1)
-    shape: Literal["box", "cylinder", "sphere", "mesh"]
-    size: Size | None = None
-    radius: PositiveMetres | None = None
-    length: PositiveMetres | None = None
-    file: str | None = None
-    scale: Scales = [1.0, 1.0, 1.0]
-    pose: PoseSpec = PoseSpec()
-    touch_links: list[str] = []
-    # Physics (mujoco backend only): with mass or density, a world object is a free body.
-    mass: Kilograms | None = None
-    density: Density | None = None
-    friction: Friction | None = None
+class ObjectSpec(_Strict, ObjectFields):
+    """A fixed object of a cell file: the task file's object fields and checks
+    (:class:`taskrunner.objectspec.ObjectFields`), its mesh path relative to the cell file."""
 
-    @model_validator(mode="after")
-    def _fields_match_shape(self) -> ObjectSpec:
-        needs = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
-                 "mesh": ("file",)}[self.shape]
-        missing = [f for f in needs if getattr(self, f) is None]
-        if missing:
-            raise ValueError(f"a {self.shape} needs {', '.join(repr(m) for m in missing)}")
-        if self.size is not None and min(self.size) <= 0:
-            raise ValueError(f"'size' must be > 0 in every axis (got {self.size})")
-        check_material(self)
-        return self
+    pose: PoseSpec = PoseSpec()
 
 
 class CellSpec(_Strict):
@@ -208,7 +184,8 @@ def _shape(spec: ObjectSpec, base_dir: Path, packages: PackageMap) -> Shape:
         assert spec.radius is not None
         return Sphere(spec.radius)
     assert spec.file is not None
-    return Mesh(packages.resolve(spec.file, base_dir), tuple(spec.scale))  # type: ignore[arg-type]
+    scale = spec.scale if spec.scale is not None else (1.0, 1.0, 1.0)
+    return Mesh(packages.resolve(spec.file, base_dir), tuple(scale))  # type: ignore[arg-type]
 
 
 def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:

@@ -20,7 +20,7 @@ import inspect
 import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Annotated, Any, Literal, Self
+from typing import Annotated, Any, Self
 
 from pydantic import (
     BaseModel,
@@ -32,10 +32,10 @@ from pydantic import (
     model_validator,
 )
 
-from taskrunner.materials import Density, Friction, Kilograms, check_material
+from taskrunner.objectspec import ObjectFields
 from taskrunner.posespec import WORLD, PoseFields, TransformFields
 from taskrunner.textfile import path_problem
-from taskrunner.validation import Metres, Number, PositiveMetres, Scale
+from taskrunner.validation import Metres, Number
 from taskrunner.yamlfile import LineDict
 
 __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transform", "Vec2",
@@ -44,8 +44,6 @@ __all__ = ["Location", "Node", "ObjectSpec", "PoseSpec", "TargetPose", "Transfor
 Vec2 = Annotated[tuple[Metres, ...], Field(min_length=2, max_length=2)]
 Vec3 = Annotated[tuple[Number, ...], Field(min_length=3, max_length=3)]
 Vec4 = Annotated[tuple[Number, ...], Field(min_length=4, max_length=4)]
-Size = Annotated[tuple[PositiveMetres, ...], Field(min_length=3, max_length=3)]
-Scales = Annotated[tuple[Scale, ...], Field(min_length=3, max_length=3)]
 
 
 @dataclass(frozen=True)
@@ -208,40 +206,11 @@ class TargetPose(PoseSpec):
     or true when no orientation is given)."""
 
 
-Shape = Literal["box", "cylinder", "sphere", "mesh"]
-_SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
-    "box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
-    "mesh": ("file", "scale"),
-}
-
-
-class ObjectSpec(Node):
+class ObjectSpec(Node, ObjectFields):  # the fields and checks: taskrunner.objectspec
     """A scene object (the fields of a cell's objects, plus frames of other objects)."""
 
-    name: str = Field(min_length=1)
-    """Unique name of the object."""
-    shape: Shape
-    """box (size), cylinder (radius, length along z), sphere (radius) or mesh (file, scale)."""
-    size: Size | None = None
-    """Full lengths of a box along x, y, z (m)."""
-    radius: PositiveMetres | None = None
-    """Radius of a cylinder or sphere (m)."""
-    length: PositiveMetres | None = None
-    """Length of a cylinder along its z axis (m)."""
-    file: str | None = None
-    """Mesh file: a package:// URI or a path relative to the task file."""
-    scale: Scales | None = None
-    """Scale of a mesh along x, y, z (default 1, 1, 1)."""
     pose: PoseSpec = PoseSpec()
     """Placement of the object's centre (mesh origin)."""
-    touch_links: tuple[str, ...] = ()
-    """Links allowed to touch the object."""
-    mass: Kilograms | None = None
-    """Mass (kg), for the mujoco backend (others ignore it); default from 'density'."""
-    density: Density | None = None
-    """Density (kg/m³), for the mujoco backend when 'mass' is not given (default 600)."""
-    friction: Friction | None = None
-    """Friction for the mujoco backend: sliding, or [sliding, torsional, rolling] (default 1)."""
 
     _file_as_written: str | None = PrivateAttr(default=None)
 
@@ -276,20 +245,3 @@ class ObjectSpec(Node):
     def file_as_written(self) -> str | None:
         """``file`` as the task file wrote it (for messages: never its resolution)."""
         return self._file_as_written if self._file_as_written is not None else self.file
-
-    @model_validator(mode="after")
-    def _fields_match_shape(self) -> ObjectSpec:
-        needs = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",),
-                 "mesh": ("file",)}[self.shape]
-        missing = [f for f in needs if getattr(self, f) is None]
-        if missing:
-            raise ValueError(f"needs {' and '.join(repr(m) for m in missing)} for a {self.shape}")
-        foreign = [f for fields in _SHAPE_FIELDS.values() for f in fields
-                   if f not in _SHAPE_FIELDS[self.shape] and getattr(self, f) is not None]
-        if foreign:
-            raise ValueError(f"has {', '.join(repr(f) for f in dict.fromkeys(foreign))}, "
-                             f"which a {self.shape} does not take")
-        if self.size is not None and min(self.size) <= 0:
-            raise ValueError(f"'size' must be > 0 in every axis (got {list(self.size)})")
-        check_material(self)
-        return self

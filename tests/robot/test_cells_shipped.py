@@ -157,7 +157,7 @@ def test_cell_object_needs_the_fields_of_its_shape(tmp_path):
         """)
     with pytest.raises(YamlError) as err:
         load_cell(path)
-    assert "a cylinder needs 'length'" in str(err.value)
+    assert "needs 'length' for a cylinder" in str(err.value)
     assert str(err.value).startswith(f"{path}:5:")
 
 
