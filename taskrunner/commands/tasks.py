@@ -38,13 +38,10 @@ def _taught_poses(args: argparse.Namespace):  # type: ignore[no-untyped-def]
     knows the same named poses as ``run-task serve``: ``--data-dir``, else
     ``TASKRUNNER_DATA_DIR`` (or ``TASKRUNNER_STATE_DIR``), else ``./state``; cells by id
     from ``TASKRUNNER_CELLS_DIR``, else the shipped cells. No database: none."""
-    from taskrunner import resources
-    from taskrunner.taught import read_taught_poses
+    from taskrunner.taught import cells_dir_from_env, data_dir_from_env, read_taught_poses
 
-    data = Path(args.data_dir or os.environ.get("TASKRUNNER_DATA_DIR")
-                or os.environ.get("TASKRUNNER_STATE_DIR") or "state")
-    cells = Path(os.environ.get("TASKRUNNER_CELLS_DIR") or resources.cells_dir())
-    return read_taught_poses(data / "runs.sqlite", cells)
+    return read_taught_poses(data_dir_from_env(args.data_dir) / "runs.sqlite",
+                             cells_dir_from_env())
 
 
 def cmd_check(args: argparse.Namespace) -> int:
