@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from taskrunner.robot.build import Placement, build_model
 from taskrunner.robot.description import RobotDescription, load_description
 from taskrunner.robot.model import EndEffector, Group, JointInfo, RobotInstance, RobotModel
 from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.packages import PackageMap
+
+if TYPE_CHECKING:
+    from taskrunner.robot.cell import Cell
 
 __all__ = [
     "Cell",
