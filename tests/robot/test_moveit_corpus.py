@@ -114,6 +114,9 @@ def test_ament_prefix_and_ros_package_path_find_description_packages(tmp_path, m
     (share / "arm3_description").symlink_to(SRC / "arm3_description")
     elsewhere = tmp_path / "configs" / "arm3_ros2_moveit_config"
     shutil.copytree(SRC / "arm3_ros2_moveit_config", elsewhere)
+    # A workspace of its own: the search for sibling packages stops there, not in the
+    # folders above (other tests' temporary folders may hold an arm3_description).
+    (tmp_path / "configs" / ".catkin_workspace").touch()
     with pytest.raises(RobotDescriptionError, match="package 'arm3_description' not found"):
         load_robot(elsewhere)
     monkeypatch.setenv("AMENT_PREFIX_PATH", str(tmp_path / "prefix"))
