@@ -15,7 +15,7 @@ import pytest
 from taskrunner.errors import IkFailedError
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
-from taskrunner.tree import reach
+from taskrunner.tree import aiming, reach
 
 TOOL = "gripper_eef_tcp"
 # Where a 25 mm cube held by the SO-101 sits in its tool frame on mujoco (m): 1.2 mm off
@@ -69,7 +69,7 @@ def test_a_point_no_solution_can_be_reaimed_at_fails_with_a_finite_residual(so10
     model, start = so101
     # Without re-aiming rounds, the position-only solutions (aimed with the start state's
     # orientation) leave the point off its target: the path that raised without a residual.
-    monkeypatch.setattr(reach, "FIXED_POINT_ROUNDS", 0)
+    monkeypatch.setattr(aiming, "FIXED_POINT_ROUNDS", 0)
     far = np.array([0.0, 0.03, 0.03])
     with pytest.raises(IkFailedError) as caught:
         reach.approximate(model, "arm", TOOL, [_down(0.2, 0.05, 0.79)], start, seed=3,

@@ -13,7 +13,7 @@ import pytest
 
 from taskrunner.errors import IkFailedError
 from taskrunner.kinematics import IkOptions, IkSolver
-from taskrunner.tree import reach
+from taskrunner.tree import aiming, reach
 
 
 def _tool_pose(model, link: str, q: np.ndarray) -> pin.SE3:
@@ -111,7 +111,7 @@ def _rolled_by_forward_kinematics(fk, roll, q, pose, model, grasping):
 
 def test_the_wrist_roll_chosen_is_the_one_forward_kinematics_finds_nearest(servo_arm_model):
     model, link = servo_arm_model, "tool0"
-    fk = reach._Frames(model, link)
+    fk = aiming.Frames(model, link)
     roll = reach.wrist_roll(model, "arm", link, model.default_state())
     assert roll is not None
     index = roll[0]
@@ -121,7 +121,7 @@ def test_the_wrist_roll_chosen_is_the_one_forward_kinematics_finds_nearest(servo
         q = _state(model, "arm", 100 + k)
         wanted = pin.SE3(pin.exp3(rng.normal(size=3)), np.zeros(3))
         grasping = bool(k % 2)
-        chosen = reach._rolled(fk, roll, q, wanted, model, grasping)
+        chosen = aiming.rolled(fk, roll, q, wanted, model, grasping)
         others = np.delete(np.arange(len(q)), index)
         assert np.array_equal(chosen[others], q[others])
         options = _rolled_by_forward_kinematics(fk, roll, q, wanted, model, grasping)
