@@ -32,13 +32,11 @@ from taskrunner.planning.timing import TimingOptions, parameterize_path
 from taskrunner.runtime.replay import motion_data
 from taskrunner.tree.choice import arm_part, choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
-from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
 from taskrunner.tree.schedule import LAG, LATE, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
-__all__ = ["CheckOutcome", "MoveJoints", "MoveStraight", "MoveToGoal", "SceneAction", "TaskLeaf",
-           "TaskParallel", "Wait", "lane_of"]
+__all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "TaskLeaf", "TaskParallel", "lane_of"]
 
 
 class TaskLeaf(py_trees.behaviour.Behaviour):
@@ -751,77 +749,6 @@ class MoveJoints(_Executes):
         if self.moving:
             return self.poll_execution()
         return self.outcome
-
-
-class SceneAction(TaskLeaf):
-    """An instant change of the scene (attach, detach, add or remove an object)."""
-
-    def __init__(self, name: str, location: str | None, ctx: TaskContext,
-                 action: Callable[[TaskContext], object]) -> None:
-        super().__init__(name, location, ctx)
-        self.action = action
-        self.outcome: Status = Status.RUNNING
-
-    def start(self) -> None:
-        try:
-            self.action(self.ctx)
-            self.outcome = Status.SUCCESS
-        except TaskrunnerError as exc:
-            self.outcome = self.fail(str(exc))
-
-    def update(self) -> Status:
-        return self.outcome
-
-
-class CheckOutcome(TaskLeaf):
-    """Compare where an object ended with where the task asked (a condition leaf).
-
-    SUCCESS when ``measure(ctx)`` finds the object within its tolerance; else FAILURE
-    with the reason, both poses and the error in mm and degrees (see
-    :mod:`taskrunner.tree.outcome`). Either way a "message" event records the outcome.
-    """
-
-    def __init__(self, name: str, location: str | None, ctx: TaskContext,
-                 measure: Callable[[TaskContext], Outcome]) -> None:
-        super().__init__(name, location, ctx)
-        self.measure = measure
-        self.result: Outcome | None = None
-        self.outcome: Status = Status.RUNNING
-
-    def start(self) -> None:
-        self.result = None
-        # A miss is an execution failure (exit code 4): the motions were planned and
-        # executed, what they did is not what the task asked.
-        try:
-            self.result = self.measure(self.ctx)
-        except TaskrunnerError as exc:
-            self.outcome = self.fail(str(exc), kind="execution")
-            return
-        failure = self.result.failure
-        if failure is not None:
-            self.outcome = self.fail(failure, kind="execution")
-            return
-        self.ctx.events.emit("message", f"{self.result.object!r} at its target: "
-                             f"{self.result.poses()}", node=self.name, location=self.location)
-        self.outcome = Status.SUCCESS
-
-    def update(self) -> Status:
-        return self.outcome
-
-
-class Wait(TaskLeaf):
-    """Succeed after ``seconds`` of wall time."""
-
-    def __init__(self, name: str, location: str | None, ctx: TaskContext, seconds: float) -> None:
-        super().__init__(name, location, ctx)
-        self.seconds = seconds
-        self.until = 0.0
-
-    def start(self) -> None:
-        self.until = time.monotonic() + self.seconds
-
-    def update(self) -> Status:
-        return Status.SUCCESS if time.monotonic() >= self.until else Status.RUNNING
 
 
 def _cut(trajectory: JointTrajectory, until: float) -> JointTrajectory:

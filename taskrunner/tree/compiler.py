@@ -60,17 +60,11 @@ from taskrunner.tasks import (
 from taskrunner.tasks.steps import ExpectStep
 from taskrunner.tasks.waits import wait_pairs
 from taskrunner.tree import idioms
-from taskrunner.tree.behaviours import (
-    MoveJoints,
-    MoveStraight,
-    MoveToGoal,
-    SceneAction,
-    TaskParallel,
-    Wait,
-)
+from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, TaskParallel
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.expect import CheckExpectation, StepTimer
 from taskrunner.tree.grasps import allow_lift_off, end_lift_off, end_lift_offs_left, tool_grasp
+from taskrunner.tree.instant_leaves import SceneAction, Wait
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
 from taskrunner.tree.waiting import StepFinished, WaitForStep

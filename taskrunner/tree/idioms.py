@@ -41,13 +41,7 @@ from taskrunner.errors import SceneError, TaskSpecError
 from taskrunner.planning.cartesian import CartesianOptions
 from taskrunner.planning.request import Goal, NamedGoal, PlannerOptions, PoseGoal
 from taskrunner.planning.timing import TimingOptions
-from taskrunner.tree.behaviours import (
-    CheckOutcome,
-    MoveJoints,
-    MoveStraight,
-    MoveToGoal,
-    SceneAction,
-)
+from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.grasp_contact import touching_grasps
 from taskrunner.tree.grasps import (
@@ -65,6 +59,7 @@ from taskrunner.tree.grasps import (
     release_poses,
     releases_with_grasp,
 )
+from taskrunner.tree.instant_leaves import CheckOutcome, SceneAction
 from taskrunner.tree.occupancy import check_target_free
 from taskrunner.tree.outcome import Orientation, Outcome, Tolerance, arm_orientation, measure
 from taskrunner.tree.reach import Lift, StagedGoals, staged_approach_goals

@@ -8,8 +8,8 @@ robot is put at the state followed (the "move" is instant); a
 :class:`~taskrunner.tree.behaviours.MoveStraight` runs the leaf's own Cartesian
 computation and times the path as a run does before it moves; a
 :class:`~taskrunner.tree.behaviours.MoveJoints` checks its joint-space line; a
-:class:`~taskrunner.tree.behaviours.SceneAction` edits the scene; a
-:class:`~taskrunner.tree.behaviours.CheckOutcome` measures with the run's own measure.
+:class:`~taskrunner.tree.instant_leaves.SceneAction` edits the scene; a
+:class:`~taskrunner.tree.instant_leaves.CheckOutcome` measures with the run's own measure.
 Of several goal states the first collision-free one is followed and, where the rest of
 the step fails from it, the others; the state followed is remembered as the run's choice
 (:mod:`taskrunner.tree.choice`). After a failure, :meth:`LeafPlayer.force` finishes the
@@ -43,9 +43,10 @@ from taskrunner.robot.model import Group
 from taskrunner.scene import Contact, Scene
 from taskrunner.scene.geometry import MeshCache
 from taskrunner.tasks import StepNode
-from taskrunner.tree.behaviours import CheckOutcome, MoveJoints, MoveStraight, MoveToGoal, SceneAction
+from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal
 from taskrunner.tree.choice import remember
 from taskrunner.tree.context import TaskContext
+from taskrunner.tree.instant_leaves import CheckOutcome, SceneAction
 from taskrunner.tree.occupancy import target_overlap
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals

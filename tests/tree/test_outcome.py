@@ -26,10 +26,10 @@ from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.scene import scene_from_cell
 from taskrunner.shapes import Box
 from taskrunner.tasks import load_task
-from taskrunner.tree.behaviours import CheckOutcome
 from taskrunner.tree.check import check_task
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.idioms import default_orientation
+from taskrunner.tree.instant_leaves import CheckOutcome
 from taskrunner.tree.outcome import Orientation, Tolerance, measure, pose_error
 from taskrunner.types import Pose
 
