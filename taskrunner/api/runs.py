@@ -29,6 +29,7 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnavailableError,
 )
+from taskrunner.kinds import RunStatus
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
@@ -319,7 +320,7 @@ class RunManager:
         """Cancel ``run_id`` if it is in flight on this server (never blocks: safe on the
         event loop); None if it is not (ended or unknown: see :meth:`cancel`)."""
         live = self.live(run_id)
-        if live is None or live.done.is_set():
+        if live is None or _ended(live):
             return None
         live.runner.cancel()
         return live
@@ -335,7 +336,7 @@ class RunManager:
         if live is None:
             status = self.record(run_id).status
             raise RunNotFinishedError(f"run {run_id!r} has already ended ({status})")
-        if live.done.is_set():
+        if _ended(live):
             raise RunNotFinishedError(f"run {run_id!r} has already ended ({live.record.status})")
         live.runner.cancel()
         return live
@@ -359,3 +360,9 @@ class RunManager:
                 live.record.exit_code = EXIT_CODES["terminated"]
                 self.store.save(live.record, tree=live.runner.snapshot())
 
+
+def _ended(live: LiveRun) -> bool:
+    """Whether a live run has ended: its thread is done, or its record already says how it
+    ended (the record is final a moment before the thread lets go of the arm; a cancel in
+    between is "already ended", never a second 202)."""
+    return live.done.is_set() or live.record.status != RunStatus.RUNNING
