@@ -40,9 +40,9 @@ from taskrunner.errors import ArgumentError
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 from taskrunner.scene.geometry_records import _tree
-from taskrunner.scene.path_verifier import PathVerification
+from taskrunner.scene.path_verifier import PathVerification, full_states
 
-__all__ = ["CoalPathVerifier", "CoalScreen"]
+__all__ = ["CoalPathVerifier", "CoalScreen", "LineScan", "exact_line_scanner"]
 
 _DISTANCE_SLACK = 1e-6  # m: coal's GJK tolerance, taken off every distance (as the verifier)
 # A step is placed this fraction short of where the bound reaches its allowance, so that
@@ -98,13 +98,7 @@ class CoalPathVerifier:
             the first contact found along the path.
         """
         t0 = time.perf_counter()
-        states = np.asarray(states, dtype=float)
-        if states.ndim == 1:
-            states = states[None, :]
-        nq = self.robot.nq
-        if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
-            raise ArgumentError(f"states must be an (n, {nq}) array of full state "
-                             f"vectors (got shape {states.shape})")
+        states = full_states(states, self.robot.nq)
         finite = np.isfinite(states).all(axis=1)
         if not finite.all():
             row = int(np.flatnonzero(~finite)[0])
@@ -189,17 +183,7 @@ class CoalScreen:
         ``begin`` on of ``rows`` as ``a + fractions[s] (b - a)`` in the columns ``first``
         to ``first + len(a)`` (``b`` at fraction 1) and returns the first in collision, or
         -1."""
-        first_in, to_pin = self.checker.first_in_collision, self.robot.to_pin
-
-        def interpolated(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray,
-                         b: np.ndarray, first: int, begin: int) -> int:
-            block = rows[begin:, first:first + len(a)]
-            block[:] = a + fractions[begin:, None] * (b - a)
-            block[fractions[begin:] == 1.0] = b
-            hit = first_in(to_pin(rows[begin:]))
-            return hit if hit < 0 else begin + hit
-
-        return interpolated
+        return exact_line_scanner(self.checker.first_in_collision, self.robot.to_pin)
 
     def segment_scanner(self, base: np.ndarray, first: int, table: np.ndarray,
                         resolution: float, fill: Callable[[int], None] | None = None) -> None:
@@ -210,3 +194,23 @@ class CoalScreen:
     def first_in_collision(self, states: np.ndarray) -> int:
         """The index of the first row of ``states`` (full state vectors) in collision, or -1."""
         return self.scanner()(np.ascontiguousarray(states, dtype=float))
+
+
+LineScan = Callable[[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int, int], int]
+
+
+def exact_line_scanner(first_in: Callable[[np.ndarray], int],
+                       to_pin: Callable[[np.ndarray], np.ndarray]) -> LineScan:
+    """A segment scan (as :meth:`taskrunner.scene.screen.StateScreen.line_scanner`'s) by an exact checker's
+    ``first_in`` (the index of the first pinocchio state in collision, or -1), in Python:
+    the rows are written, then checked together."""
+
+    def interpolated(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray,
+                     b: np.ndarray, first: int, begin: int) -> int:
+        block = rows[begin:, first:first + len(a)]
+        block[:] = a + fractions[begin:, None] * (b - a)
+        block[fractions[begin:] == 1.0] = b
+        hit = first_in(to_pin(rows[begin:]))
+        return hit if hit < 0 else begin + hit
+
+    return interpolated

@@ -102,7 +102,7 @@ from taskrunner.scene.advancement import (
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
 from taskrunner.scene.geometry_records import _Kinematics, _tree
 
-__all__ = ["CHEAP_FROM", "EXACT_FROM", "GAIN", "PathVerification", "PathVerifier"]
+__all__ = ["CHEAP_FROM", "EXACT_FROM", "GAIN", "PathVerification", "PathVerifier", "full_states"]
 
 _DISTANCE_SLACK = 1e-6  # m: GJK's distance tolerance; measured distances are reduced by it
 _EARLY = 0.25  # a pair due within this fraction of its step is measured with the others
@@ -278,13 +278,7 @@ class PathVerifier:
             A :class:`PathVerification`; ``valid`` False names a contact found.
         """
         t0 = time.perf_counter()
-        states = np.asarray(states, dtype=float)
-        if states.ndim == 1:
-            states = states[None, :]
-        nq = self.robot.nq
-        if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
-            raise ArgumentError(f"states must be an (n, {nq}) array of full state "
-                             f"vectors (got shape {states.shape})")
+        states = full_states(states, self.robot.nq)
         n_pairs = len(self._first)
         if n_pairs == 0:
             if not np.isfinite(states).all():
@@ -335,3 +329,19 @@ class PathVerifier:
         return (np.zeros((n_units, _COLUMNS + 2 * nq)), np.zeros((2, n_units)),
                 np.zeros(n_units, dtype=np.int64), np.zeros(n_pairs, dtype=np.int64),
                 np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(), np.zeros(_S_COUNT))
+
+
+def full_states(states: np.ndarray, nq: int) -> np.ndarray:
+    """``states`` as an ``(n, nq)`` float array of full state vectors (one vector: one
+    row).
+
+    Raises:
+        ArgumentError: another shape, or no state.
+    """
+    states = np.asarray(states, dtype=float)
+    if states.ndim == 1:
+        states = states[None, :]
+    if states.ndim != 2 or states.shape[1] != nq or len(states) == 0:
+        raise ArgumentError(f"states must be an (n, {nq}) array of full state "
+                            f"vectors (got shape {states.shape})")
+    return states

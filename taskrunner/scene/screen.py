@@ -44,6 +44,7 @@ from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, inline, jit, join
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
+from taskrunner.scene.coalpath import exact_line_scanner
 from taskrunner.scene.collision import CollisionChecker
 from taskrunner.scene.path_verifier import PathVerifier
 
@@ -212,17 +213,7 @@ class StateScreen:
         checker, robot = self.checker, self.robot
         to_pin = robot.to_pin
         if not self.supported:
-            first_in = checker.first_in_collision
-
-            def interpolated(rows: np.ndarray, fractions: np.ndarray, a: np.ndarray,
-                             b: np.ndarray, first: int, begin: int) -> int:
-                block = rows[begin:, first:first + len(a)]
-                block[:] = a + fractions[begin:, None] * (b - a)
-                block[fractions[begin:] == 1.0] = b
-                hit = first_in(to_pin(rows[begin:]))
-                return hit if hit < 0 else begin + hit
-
-            return interpolated
+            return exact_line_scanner(checker.first_in_collision, to_pin)
         work, found = self._new_buffers()
         tail = self._tail(work, found)
         collide = checker.pairs_collide
