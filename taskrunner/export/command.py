@@ -22,6 +22,11 @@ def add_export_parser(sub: argparse._SubParsersAction) -> None:  # type: ignore[
     export.add_argument("--mcap", required=True, metavar="FILE", help="the MCAP file to write")
     export.add_argument("--cell", default=None, metavar="NAME_OR_PATH",
                         help="the cell the run used (default: the one its task file names)")
+    export.add_argument("--allow-degraded", action="store_true",
+                        help="write the file even where it cannot show the run as it was (an "
+                             "object whose mesh is not found left out, a mujoco run's motion "
+                             "without physics samples played as sent); each is said on stderr "
+                             "and /rosout. Without it, these are errors")
 
 
 def add_run_options(run: argparse.ArgumentParser) -> None:
@@ -33,12 +38,16 @@ def add_run_options(run: argparse.ArgumentParser) -> None:
     run.add_argument("--foxglove-wait", type=float, default=0.0, metavar="SECONDS",
                      help="with --foxglove: before the run starts, wait up to SECONDS for a "
                           "Foxglove client to subscribe (0: start at once)")
+    run.add_argument("--mcap-allow-degraded", action="store_true",
+                     help="with --mcap: write the file even where it cannot show the run as it "
+                          "was (as run-task export --allow-degraded; each said on stderr)")
 
 
 def export_command(args: argparse.Namespace) -> int:
     from taskrunner.export.mcapfile import export_mcap
 
-    path = export_mcap(Path(args.record), Path(args.mcap), args.cell)
+    path = export_mcap(Path(args.record), Path(args.mcap), args.cell,
+                       allow_degraded=bool(args.allow_degraded))
     print(f"{args.record}: written to {path} ({path.stat().st_size / 1024:.0f} KiB)")
     return 0
 
@@ -69,10 +78,10 @@ def run_watches(args: argparse.Namespace
 
         watches.append(feed)
     if getattr(args, "mcap", None):
-        out = Path(args.mcap)
-        if not out.parent.is_dir():  # said before anything moves, not after the run
-            from taskrunner.errors import InputError
+        from taskrunner.errors import InputError
 
+        out, allowed = Path(args.mcap), bool(getattr(args, "mcap_allow_degraded", False))
+        if not out.parent.is_dir():  # said before anything moves, not after the run
             raise InputError(f"'--mcap' must be a file in an existing folder (got {out})")
 
         @contextmanager
@@ -80,7 +89,13 @@ def run_watches(args: argparse.Namespace
             from taskrunner.export.mcapfile import export_mcap
 
             yield
-            path = export_mcap(runner.record, out, runner.cell)
+            try:
+                path = export_mcap(runner.record, out, runner.cell, allow_degraded=allowed)
+            except InputError as exc:
+                runs = runner.options.runs_dir
+                kept = f" (its record: {runs / (runner.record.run_id + '.json')})" if runs else ""
+                raise type(exc)(f"the run ended{kept}, but its MCAP file was not written: "
+                                f"{exc}") from None
             print(f"  mcap: {path}", file=sys.stdout, flush=True)
 
         watches.append(mcap)

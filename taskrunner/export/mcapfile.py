@@ -12,7 +12,9 @@ Writing needs the ``mcap`` package (``pip install 'taskrunner-robotics[foxglove]
 from __future__ import annotations
 
 import os
+import sys
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 from taskrunner.errors import InputError, TaskrunnerError
@@ -123,18 +125,34 @@ def cell_of_record(record: RunRecord, cell: str | Path | None = None) -> Cell:
     return loaded
 
 
+def _tell_stderr(text: str) -> None:
+    print(f"warning: degraded MCAP: {text}", file=sys.stderr, flush=True)
+
+
 def export_mcap(record: str | Path | RunRecord, out: str | Path,
-                cell: str | Path | Cell | None = None) -> Path:
+                cell: str | Path | Cell | None = None, *, allow_degraded: bool = False,
+                on_degraded: Callable[[str], None] | None = _tell_stderr) -> Path:
     """Convert a run record (its JSON, or its journal while it runs) to an MCAP file.
 
     Args:
         record: the record's path (``runs/<run_id>.json``) or the record.
         out: the MCAP file to write.
         cell: the cell the run used (default: the one its task names).
+        allow_degraded: write the file even where it cannot show the run as it was (a
+            scene object whose mesh is not found is left out; a mujoco run's motion
+            without a physics report plays the trajectory sent). Each degradation is
+            told to ``on_degraded`` (default: a line on stderr) and on ``/rosout``.
 
     Returns:
         The path written.
+
+    Raises:
+        MissingMeshError: without ``allow_degraded``, a scene object's mesh is not
+            found (names the object, its file and the record).
+        InputError: without ``allow_degraded``, a mujoco run's motion has no physics
+            report (names the motion and the record); or the record cannot be read.
     """
+    source: str | Path = f"run {record.run_id}" if isinstance(record, RunRecord) else record
     if not isinstance(record, RunRecord):
         try:
             record = load_record(record)
@@ -146,4 +164,6 @@ def export_mcap(record: str | Path | RunRecord, out: str | Path,
     metadata = {"run_id": record.run_id, "task": record.task, "task_file": record.task_file,
                 "cell": record.cell, "backend": record.backend, "status": record.status,
                 "started": record.started, "finished": record.finished or ""}
-    return write_mcap(record_messages(record, loaded), out, metadata)
+    messages = record_messages(record, loaded, allow_degraded=allow_degraded,
+                               on_degraded=on_degraded, source=source)
+    return write_mcap(messages, out, metadata)

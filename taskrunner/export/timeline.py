@@ -25,11 +25,18 @@ Topics (ROS 2 conventions, so Foxglove's 3D panel and RViz show them):
   the end; each array starts with a DELETEALL, so objects taken away disappear.
 * ``/rosout`` (``rcl_interfaces/Log``): every event, the tree node as the logger's name,
   the task file and line as ``file`` and ``line``, the event's kind as ``function``.
+
+**Nothing left out quietly.** A scene object that cannot be drawn (a mesh whose file is
+not found, a shape not known) and a mujoco run whose ``/joint_states`` cannot be the
+physics' own samples (a motion without a physics report, motions at once) make the
+export an error naming the object or motion, unless the caller allows degraded output
+(``allow_degraded``, ``run-task export --allow-degraded``): then each degradation is
+told to ``on_degraded`` (the command line: stderr) and on ``/rosout`` as a WARN.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from datetime import datetime
 from pathlib import Path
@@ -37,7 +44,7 @@ from typing import Any
 
 import numpy as np
 
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import InputError, MissingMeshError, TaskrunnerError
 from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
 from taskrunner.export.rosmsg import LogLine, Marker, MessageType
@@ -82,6 +89,12 @@ class _Motion:
     velocities: np.ndarray
     until: float                # s of trajectory executed
     measured: bool = False      # the physics' own samples, not the trajectory sent
+    seq: int = 0                # its event's
+    location: str = ""          # its step's file:line
+
+    def describe(self) -> str:
+        where = f", {self.location}" if self.location else ""
+        return f"motion {self.node!r} (event {self.seq}{where})"
 
     def sample_times(self) -> np.ndarray:
         kept = self.times[self.times <= self.until]
@@ -140,7 +153,7 @@ def _schedule(record: RunRecord) -> _Schedule:
             joints, times, positions, velocities = _trajectory(event)
             t = float(event.data.get("sent", event.data.get("start", cursor)))
             motion = _Motion(event.node or "", t, joints, times, positions, velocities,
-                             float(times[-1]))
+                             float(times[-1]), seq=event.seq, location=event.location or "")
             running[event.node or ""] = motion
             out.motions.append(motion)
             out.physics.append(None)
@@ -177,13 +190,16 @@ def _measured(schedule: _Schedule) -> str | None:
     the settling after its trajectory is kept up to the start of the next motion.
     """
     motions = schedule.motions
-    if not motions or any(report is None for report in schedule.physics):
-        missing = sum(report is None for report in schedule.physics)
-        return f"{missing} motion(s) of {len(motions)} have no physics samples"
+    if not motions:
+        return None
+    missing = [m for m, report in zip(motions, schedule.physics, strict=True) if report is None]
+    if missing:
+        more = f" (and {len(missing) - 1} more of {len(motions)})" if len(missing) > 1 else ""
+        return f"{missing[0].describe()} has no physics report{more}"
     order = sorted(range(len(motions)), key=lambda k: motions[k].t0)
     for a, b in zip(order, order[1:], strict=False):
         if motions[b].t0 < motions[a].t0 + motions[a].until - 1e-6:
-            return (f"motions {motions[a].node!r} and {motions[b].node!r} overlap in time "
+            return (f"{motions[a].describe()} and {motions[b].describe()} overlap in time "
                     "(their physics reports are not one motion's each)")
     replaced = []
     for position, k in enumerate(order):
@@ -199,17 +215,20 @@ def _measured(schedule: _Schedule) -> str | None:
             raise InputError(f"event {report.seq} (physics of {report.node!r}): it must have "
                              f"joints, t, q and period ({exc})") from None
         if len(p) == 0:
-            return f"the physics report of {motion.node!r} (event {report.seq}) has no samples"
+            return (f"the physics report of {motion.describe()} (event {report.seq}) has "
+                    "no samples")
         times = p - max(0.0, float(p[0]) - period)
         until = float(times[-1])
         if position + 1 < len(order):
             until = min(until, motions[order[position + 1]].t0 - motion.t0)
         keep = times <= until + 1e-9
         if not keep.any():
-            return f"the physics samples of {motion.node!r} begin after the next motion starts"
+            return (f"the physics samples of {motion.describe()} begin after the next "
+                    "motion starts")
         replaced.append((k, _Motion(motion.node, motion.t0, joints, times[keep], q[keep],
                                     np.zeros((int(keep.sum()), len(joints))),
-                                    float(times[keep][-1]), measured=True)))
+                                    float(times[keep][-1]), measured=True, seq=motion.seq,
+                                    location=motion.location)))
     for k, motion in replaced:
         motions[k] = motion
     schedule.measured = True
@@ -371,17 +390,40 @@ def log_line(event: RunEvent, stamp_ns: int, record: RunRecord) -> LogLine:
                    event.kind, line)
 
 
-def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
+def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = False,
+                    on_degraded: Callable[[str], None] | None = None,
+                    source: str | Path | None = None) -> list[TimedMessage]:
     """Every message of ``record``'s MCAP file, in time order (module docstring).
 
     Args:
         record: a run record (:func:`taskrunner.runtime.records.load_record`).
         cell: the cell the run used (its model gives the links' poses).
+        allow_degraded: write the messages even where they cannot be what the run was:
+            an object not drawn, a mujoco run's trajectories sent in place of its
+            physics' samples. Each such degradation is then told to ``on_degraded``
+            (once) and on ``/rosout`` (WARN).
+        source: the record's file, for messages (default: the run's id).
 
     Raises:
         InputError: the record names a joint the cell does not have, or holds a
-            trajectory that cannot be read.
+            trajectory that cannot be read; or (without ``allow_degraded``) a mujoco
+            run's motion has no physics report, naming the motion.
+        MissingMeshError: (without ``allow_degraded``) a scene object's mesh cannot be
+            found, naming the object and its file.
     """
+    where = str(source) if source is not None else f"run {record.run_id}"
+    told: list[str] = []
+
+    def degraded(reason: str, error: type[InputError] = InputError) -> None:
+        if not allow_degraded:
+            raise error(f"{where}: {reason}; the MCAP file is not written (allow degraded "
+                        "output: run-task export --allow-degraded, or "
+                        "export_mcap(allow_degraded=True))")
+        if reason not in told:
+            told.append(reason)
+            if on_degraded is not None:
+                on_degraded(f"{where}: {reason}")
+
     tree = FrameTree(cell.model)
     base_ns = int(datetime.fromisoformat(record.started).timestamp() * 1e9)
     meshes, no_meshes = record_meshes(record)
@@ -396,6 +438,12 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
         stamp = _stamp(base_ns, t)
         out.append((stamp, order[topic], TimedMessage(stamp, topic, data)))
 
+    if not_measured is not None:
+        not_measured = (f"/joint_states and /tf would be the trajectories sent, not the "
+                        f"physics' own samples of the mujoco run: {not_measured}")
+        degraded(not_measured)
+        add(0.0, "/rosout", rosmsg.encode_log(LogLine(
+            base_ns, rosmsg.WARN, "taskrunner.export", not_measured)))
     add(0.0, "/robot_description", rosmsg.encode_string(robot_description(cell.model)))
     add(0.0, "/tf_static", rosmsg.encode_tf_message(tree.static_transforms(base_ns)))
     names = cell.model.joint_names
@@ -405,11 +453,6 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
         add(t, "/joint_states", rosmsg.encode_joint_state(
             stamp, names, q, () if schedule.measured else qd))
         add(t, "/tf", rosmsg.encode_tf_message(tree.moving_transforms(q, stamp)))
-    if not_measured is not None:
-        add(0.0, "/rosout", rosmsg.encode_log(LogLine(
-            base_ns, rosmsg.WARN, "taskrunner.export",
-            f"/joint_states and /tf are the trajectories sent, not the physics' own "
-            f"samples: {not_measured}")))
     for event in record.events:
         t = schedule.times[event.seq]
         stamp = _stamp(base_ns, t)
@@ -421,6 +464,8 @@ def record_messages(record: RunRecord, cell: Cell) -> list[TimedMessage]:
             if skipped and no_meshes:
                 skipped = [f"{reason}; the task's meshes: {no_meshes}" for reason in skipped]
             for reason in skipped:
+                degraded(f"{reason} (task file {record.task_file or 'not kept'})",
+                         MissingMeshError)
                 add(t, "/rosout", rosmsg.encode_log(
                     LogLine(stamp, rosmsg.WARN, "taskrunner.export", reason)))
         add(t, "/rosout", rosmsg.encode_log(log_line(event, stamp, record)))
