@@ -146,6 +146,13 @@ class ScheduleWaitOut(_Strict):
     reason: str
 
 
+class PlannedMotionOut(_Strict):
+    step: str | None = Field(description="the motion's step (file:line)")
+    joints: list[str] = Field(description="the joints it moves")
+    start: float | None = Field(description="s on the parallel's schedule")
+    end: float | None = Field(description="s on the parallel's schedule")
+
+
 class ScheduleOut(_Strict):
     """What a ``parallel``'s schedule proves (``taskrunner.tree.schedule_proof``)."""
 
@@ -154,6 +161,9 @@ class ScheduleOut(_Strict):
     waits: list[ScheduleWaitOut]
     motions: int
     makespan: float | None
+    timeline: list[PlannedMotionOut] = Field(
+        default=[], description="every motion where the check's schedule put it, in order "
+                                "of its start: each arm's timeline before anything runs")
 
 
 class CheckResponse(_Strict):

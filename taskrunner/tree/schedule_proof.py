@@ -24,7 +24,7 @@ from taskrunner.collision.spacetime import LeastClearance, least_clearance
 from taskrunner.scene import Scene
 from taskrunner.tree.schedule import Committed, MotionSchedule, concurrent, lanes_of
 
-__all__ = ["Overlap", "ScheduleProof", "ScheduleWait", "prove_schedule"]
+__all__ = ["Overlap", "PlannedMotion", "ScheduleProof", "ScheduleWait", "prove_schedule"]
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,22 @@ class ScheduleWait:
 
 
 @dataclass(frozen=True)
+class PlannedMotion:
+    """A motion where the schedule put it (each arm's timeline, as the web view draws it).
+
+    Attributes:
+        step: its step's file:line (None: not known).
+        joints: the joints it moves (their robots are the arms it is drawn for).
+        start: s on the schedule's clock; ``end`` when it ends.
+    """
+
+    step: str | None
+    joints: tuple[str, ...]
+    start: float
+    end: float
+
+
+@dataclass(frozen=True)
 class ScheduleProof:
     """The least clearance between the arms of a parallel over time, its overlapping
     steps and its waits (module text).
@@ -71,6 +87,7 @@ class ScheduleProof:
         overlaps: the pairs of steps moving at once, in order of their first overlap.
         waits: the waits inserted, in the order they were.
         motions: how many motions are on the schedule; ``makespan`` when the last ends (s).
+        timeline: every motion on the schedule, in order of its start.
     """
 
     least: LeastClearance
@@ -78,6 +95,7 @@ class ScheduleProof:
     waits: tuple[ScheduleWait, ...]
     motions: int
     makespan: float
+    timeline: tuple[PlannedMotion, ...] = ()
 
     def describe(self) -> list[str]:
         """The least clearance and the overlapping steps as lines of text (``run-task
@@ -121,6 +139,8 @@ class ScheduleProof:
                        "reason": w.reason} for w in self.waits],
             "motions": self.motions,
             "makespan": number(self.makespan),
+            "timeline": [{"step": m.step, "joints": list(m.joints), "start": number(m.start),
+                          "end": number(m.end)} for m in self.timeline],
         }
 
 
@@ -142,8 +162,12 @@ def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
                               f"until {w.other or 'the other arm'} has moved: "
                               f"{w.conflict.describe()}")
                  for where, w in schedule.waits]
+    timeline = tuple(sorted((PlannedMotion(c.location, tuple(c.motion.trajectory.names),
+                                           c.motion.start, c.motion.end) for c in committed),
+                            key=lambda m: (m.start, m.step or "")))
     return ScheduleProof(least, _overlaps(committed), tuple(inserted),
-                         len(committed), max((c.motion.end for c in committed), default=0.0))
+                         len(committed), max((c.motion.end for c in committed), default=0.0),
+                         timeline)
 
 
 def _overlaps(committed: Sequence[Committed]) -> tuple[Overlap, ...]:
