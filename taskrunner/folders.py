@@ -9,10 +9,10 @@ are about to open against it, after resolving it (symlinks followed), and refuse
 anything outside with :class:`PathNotAllowedError` before the file is read or even
 tested for existence.
 
-The policy is passed down explicitly (``load_task(..., policy=)``, ``load_cell(...,
-policy=)``) or made the active one for a block of code with :meth:`FolderPolicy.active`
-(a context variable), so that functions between the caller and the loaders need not
-pass it along. No policy: no containment.
+The policy is passed down explicitly, by every function between the caller and the
+loaders (``load_task(..., policy=)``, ``load_cell(..., policy=)``, ``check_task(...,
+policy=)``): nothing is looked up from the thread or the process, so a load can never
+run under another request's policy, or none. No policy: no containment.
 
 A policy can also hold files that exist only in memory (an inline task sent with a
 request): the task loader reads such a path's text from the policy instead of the disk,
@@ -21,16 +21,14 @@ so no other request, and no file on disk, can ever include it.
 
 from __future__ import annotations
 
-import contextvars
-from collections.abc import Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 from pathlib import Path
 
 from taskrunner.errors import InputError
 
-__all__ = ["FileKind", "FolderPolicy", "PathNotAllowedError", "active_policy"]
+__all__ = ["FileKind", "FolderPolicy", "PathNotAllowedError"]
 
 
 class FileKind(StrEnum):
@@ -144,21 +142,3 @@ class FolderPolicy:
             if resolved is not None:
                 held[resolved] = text
         return FolderPolicy(self.tasks, self.cells, self.robots, self.meshes, held)
-
-    @contextmanager
-    def active(self) -> Iterator[FolderPolicy]:
-        """Make this the policy of every load in this thread (or task) for the block."""
-        token = _ACTIVE.set(self)
-        try:
-            yield self
-        finally:
-            _ACTIVE.reset(token)
-
-
-_ACTIVE: contextvars.ContextVar[FolderPolicy | None] = contextvars.ContextVar(
-    "taskrunner_folder_policy", default=None)
-
-
-def active_policy() -> FolderPolicy | None:
-    """The policy made active with :meth:`FolderPolicy.active`, or None (no containment)."""
-    return _ACTIVE.get()

@@ -2,22 +2,23 @@
 
 The API teaches a pose (``PUT /cells/{id}/poses/{name}``) by storing the group's joint
 values in its database. For a run, a check and the command line to agree on which poses
-exist, every cell load consults one set of taught poses: :class:`TaughtPoses`, made
-the active one for a block of code (:meth:`TaughtPoses.active`); the cell loader adds the
-poses of the cell it loads (:func:`apply_taught`). A pose that no longer fits the cell
-(its group is gone, a joint is not the group's, a value is outside the limits) is
-skipped with a warning.
+exist, the caller reads one set of taught poses (:class:`TaughtPoses`, e.g.
+:func:`read_taught_poses`) and passes it down to every cell load
+(``load_cell(..., taught=)``, ``check_task(..., taught=)``, ``run_task_file(...,
+taught=)``): the cell loader adds the poses of the cell it loads (:func:`apply_taught`).
+Nothing is looked up from the thread or the process: two cells loaded side by side
+with different poses each get their own. A pose that no longer fits the cell (its group
+is gone, a joint is not the group's, a value is outside the limits) is skipped with a
+warning.
 """
 
 from __future__ import annotations
 
-import contextvars
 import json
 import logging
 import os
 import re
-from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -25,7 +26,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from taskrunner.robot.cell import Cell
 
-__all__ = ["TAUGHT_POSES_TABLE", "TaughtPose", "TaughtPoses", "active_taught", "apply_taught",
+__all__ = ["TAUGHT_POSES_TABLE", "TaughtPose", "TaughtPoses", "apply_taught",
            "cell_key", "cells_dir_from_env", "check_pose_name", "data_dir_from_env",
            "read_taught_poses", "save_taught_pose", "taught_poses_from_rows"]
 
@@ -67,19 +68,6 @@ class TaughtPoses:
         except (OSError, RuntimeError):
             return ()
 
-    @contextmanager
-    def active(self) -> Iterator[TaughtPoses]:
-        """Make these the taught poses of every cell loaded in this thread for the block."""
-        token = _ACTIVE.set(self)
-        try:
-            yield self
-        finally:
-            _ACTIVE.reset(token)
-
-
-_ACTIVE: contextvars.ContextVar[TaughtPoses | None] = contextvars.ContextVar(
-    "taskrunner_taught_poses", default=None)
-
 
 def taught_poses_from_rows(rows: Iterable[tuple[str, str, str, str]],
                            cells_dir: Path) -> TaughtPoses:
@@ -94,8 +82,8 @@ def taught_poses_from_rows(rows: Iterable[tuple[str, str, str, str]],
 
 def read_taught_poses(db_path: Path, cells_dir: Path) -> TaughtPoses:
     """The poses the API taught, read from its database ``db_path`` (the data folder's
-    ``runs.sqlite``), for the command line to load cells as the server does: wrap the
-    work in ``with read_taught_poses(...).active():``. No database: none."""
+    ``runs.sqlite``), for the command line to load cells as the server does: pass them
+    to the loads (``check_task(..., taught=)``). No database: none."""
     if not Path(db_path).is_file():
         return TaughtPoses()
     import sqlite3  # here: 10-15 ms of run-task's start when there is no database
@@ -170,11 +158,6 @@ def save_taught_pose(db_path: Path, cell: str, pose: TaughtPose) -> str:
     return now
 
 
-def active_taught() -> TaughtPoses | None:
-    """The taught poses made active with :meth:`TaughtPoses.active`, or None."""
-    return _ACTIVE.get()
-
-
 def fits(cell: Cell, pose: TaughtPose) -> bool:
     """Whether ``pose`` still fits ``cell``: its group exists, its joints are the group's,
     its values within the limits."""
@@ -186,11 +169,10 @@ def fits(cell: Cell, pose: TaughtPose) -> bool:
     return bool(model.within_limits(model.state_with(model.default_state(), dict(pose.joints))))
 
 
-def apply_taught(cell: Cell, poses: TaughtPoses | None = None) -> list[TaughtPose]:
-    """Add the taught poses of ``cell``'s file (``poses``, default: the active ones) to
-    its model as named poses; returns those added. A taught pose never replaces one of
-    the robot or cell files."""
-    poses = poses if poses is not None else active_taught()
+def apply_taught(cell: Cell, poses: TaughtPoses | None) -> list[TaughtPose]:
+    """Add the taught poses of ``cell``'s file (``poses``; None: none) to its model as
+    named poses; returns those added. A taught pose never replaces one of the robot or
+    cell files."""
     if poses is None or cell.path is None:
         return []
     added = []

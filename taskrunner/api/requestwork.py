@@ -263,13 +263,12 @@ def _check_report(policy: FolderPolicy, tasks_dir: Path, task: str | None,
 
     if task is not None:
         path = resolve_task_file(tasks_dir, task)
-        active = policy
+        given = policy
     else:
         assert yaml is not None
         path = inline_path(tasks_dir)
-        active = policy.with_memory({path: yaml})
-    with active.active(), (taught or TaughtPoses()).active():
-        return check_task(path, parameters, seed=seed)
+        given = policy.with_memory({path: yaml})
+    return check_task(path, parameters, seed=seed, policy=given, taught=taught)
 
 
 def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,

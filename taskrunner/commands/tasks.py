@@ -18,6 +18,7 @@ from taskrunner.kinds import ExitCode
 
 if TYPE_CHECKING:
     from taskrunner.runtime.prestart import EarlyWorker
+    from taskrunner.taught import TaughtPoses
     from taskrunner.tree.check import CheckReport
 
 __all__ = ["cmd_check", "cmd_run"]
@@ -33,7 +34,7 @@ def _parameters(pairs: Sequence[str]) -> dict[str, str]:
     return out
 
 
-def _taught_poses(args: argparse.Namespace):  # type: ignore[no-untyped-def]
+def _taught_poses(args: argparse.Namespace) -> TaughtPoses:
     """The poses the API taught (its data folder's database), so that the command line
     knows the same named poses as ``run-task serve``: ``--data-dir``, else
     ``TASKRUNNER_DATA_DIR`` (or ``TASKRUNNER_STATE_DIR``), else ``./state``; cells by id
@@ -48,8 +49,8 @@ def cmd_check(args: argparse.Namespace) -> int:
     from taskrunner.resources import resolve_task
     from taskrunner.tree.check import check_task
 
-    with _taught_poses(args).active():
-        report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed)
+    report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed,
+                        taught=_taught_poses(args))
     if getattr(args, "json", False):
         import json
 
@@ -98,8 +99,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             from taskrunner.runtime.prestart import start_worker_early
 
             early = start_worker_early(path)
-        with _taught_poses(args).active():
-            return _check_and_run(args, path, parameters, early, collecting)
+        return _check_and_run(args, path, parameters, early, collecting)
     finally:
         if collecting:
             gc.enable()
@@ -128,10 +128,11 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
     from taskrunner.runtime.session import run_task_file
 
     report: CheckReport | None = None
+    taught = _taught_poses(args)
     if not args.no_check:
         started = time.perf_counter()
         try:
-            report = check_before_run(path, parameters, seed=args.seed)
+            report = check_before_run(path, parameters, seed=args.seed, taught=taught)
         except TaskSpecError as exc:
             problems = getattr(exc, "problems", None) or [exc]
             _print_problems(args.file, problems, "; nothing moved (--no-check runs anyway)")
@@ -146,7 +147,7 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
                          port=args.port, url=args.url, calibration=args.calibration,
                          hardware=args.hardware, firmware_speedup=args.firmware_speedup,
                          home=args.home, check=False, early=early,
-                         loaded=report, watch=_watches(args))
+                         loaded=report, watch=_watches(args), taught=taught)
 
 
 def _watches(args: argparse.Namespace) -> list:  # type: ignore[type-arg]

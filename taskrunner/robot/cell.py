@@ -41,7 +41,7 @@ import pinocchio as pin
 from pydantic import BaseModel, ConfigDict, Field
 
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
-from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
+from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError
 from taskrunner.materials import Material, material_of
 from taskrunner.objectspec import ObjectFields
 from taskrunner.posespec import PoseFields
@@ -60,7 +60,7 @@ from taskrunner.robot.tools import (
     read_end_effector_settings,
 )
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
-from taskrunner.taught import apply_taught
+from taskrunner.taught import TaughtPoses, apply_taught
 from taskrunner.textfile import file_problem, path_problem, resolve_path
 from taskrunner.validation import (
     Number,
@@ -212,26 +212,28 @@ def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:
 
 def load_cell(path: str | Path, packages: PackageMap | None = None,
               policy: FolderPolicy | None = None, strict: bool | None = None,
-              allow_missing_meshes: bool | None = None) -> Cell:
+              allow_missing_meshes: bool | None = None,
+              taught: TaughtPoses | None = None) -> Cell:
     """Load a cell file (see the module docstring).
 
     Args:
         path: the cell file.
         packages: the package map of its robots (default: packages found next to it).
-        policy: the folders the cell and its robots may come from (default: the active
-            policy, if any; none: anything loads). Robots outside the policy's robot
-            folders are refused before any of their files is read (xacro runs code).
+        policy: the folders the cell and its robots may come from (None: anything
+            loads). Robots outside the policy's robot folders are refused before any of
+            their files is read (xacro runs code).
         strict: every warning of a robot is an error (see
             :func:`taskrunner.robot.load_robot`).
         allow_missing_meshes: load robots whose mesh files cannot be found (see
             :func:`taskrunner.robot.load_robot`).
+        taught: taught poses (:mod:`taskrunner.taught`): those of this cell file are
+            added to its named poses (None: none).
 
     Raises:
         YamlError: the file does not match the cell schema (with file:line).
         RobotDescriptionError: a robot's files are invalid, or names clash.
         PathNotAllowedError: the cell or one of its robots is outside the policy.
     """
-    policy = policy or active_policy()
     if policy is not None:
         policy.check(path, FileKind.CELL)
     path = resolve_path(path, YamlError)
@@ -345,7 +347,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
     for warning in found:
         log.warning("%s", warning)
         model.warnings.append(str(warning))
-    apply_taught(cell)  # poses taught on this cell (the API's), if a set is active
+    apply_taught(cell, taught)  # poses taught on this cell (the API's), if any given
     return cell
 
 

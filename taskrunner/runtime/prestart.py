@@ -178,14 +178,11 @@ class EarlyWorker:
 
 def start_worker_early(task: Path, timing: bool = False) -> EarlyWorker | None:
     """An :class:`EarlyWorker` on the task's cell, or None when the task file does not
-    name one plainly (see :func:`task_cell`) or a folder policy is active (a contained
-    server checks every path before it is read). ``timing``: as :class:`EarlyWorker`'s;
+    name one plainly (see :func:`task_cell`). For the command line only: the worker
+    loads the cell with no folder policy (a contained server checks every path before
+    it is read, and does not call this). ``timing``: as :class:`EarlyWorker`'s;
     False by default: ``run-task`` times its motions in its own process
     (``RunOptions.planner_times``)."""
-    from taskrunner.folders import active_policy
-
-    if active_policy() is not None:
-        return None
     cell = task_cell(task)
     return EarlyWorker(cell, timing) if cell is not None else None
 

@@ -53,6 +53,7 @@ if TYPE_CHECKING:
     from taskrunner.runtime.prestart import EarlyWorker
     from taskrunner.runtime.resume import ResumePlan
     from taskrunner.tasks.spec import TaskSpec
+    from taskrunner.taught import TaughtPoses
     from taskrunner.tree.check import CheckReport
 
 __all__ = ["BACKENDS", "make_backend", "run_task_file", "servo_calibration", "warm_up_command"]
@@ -341,7 +342,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   check: bool = True, early: EarlyWorker | None = None,
                   loaded: CheckReport | None = None,
                   watch: Sequence[Callable[[Runner], AbstractContextManager[object]]] = (),
-                  resume: ResumePlan | None = None) -> int:
+                  resume: ResumePlan | None = None,
+                  taught: TaughtPoses | None = None) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
@@ -356,7 +358,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     goes inside the context it returns (a live feed; an export when the run has ended).
     ``resume``: continue the run it was made from (:mod:`taskrunner.runtime.resume`;
     ``check`` is then not done: the task is not at its start); mock and sim start where
-    that run left the arm.
+    that run left the arm. ``taught``: taught poses added to the cell's named poses
+    (:mod:`taskrunner.taught`; None: none), for the check and the run alike.
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -366,7 +369,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     out = out or sys.stdout
     live = live and _can_redraw()
     if check:
-        loaded = check_before_run(path, parameters, seed=seed)
+        loaded = check_before_run(path, parameters, seed=seed, taught=taught)
     reused = _from_check(loaded, path)
     stop = _StopSignals(out)
     with stop.installed():
@@ -384,7 +387,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         try:
             cell = reused[1] if reused is not None else _checked_cell(loaded, spec)
             if cell is None:
-                cell = load_cell(spec.cell)
+                cell = load_cell(spec.cell, taught=taught)
             if not worker:
                 from taskrunner.planning.service import InProcessPlanner
 

@@ -24,7 +24,7 @@ from typing import Any, cast
 from pydantic import BaseModel, ValidationError
 
 from taskrunner.errors import InputError, TaskSpecError, YamlError
-from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError, active_policy
+from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError
 from taskrunner.resources import is_bare_name, resolve_cell
 from taskrunner.tasks.expect import Scenario, TaskExpectation
 from taskrunner.tasks.nodes import Location, ObjectSpec, location_of
@@ -74,14 +74,14 @@ def load_task(path: str | Path, parameters: Mapping[str, object] | None = None,
             (from a command line) are parsed to the parameter's type, other values
             (from an API) must already have it.
         policy: the folders the task, its includes, its cell and its meshes may come
-            from (default: the active policy, if any; none: anything loads).
+            from (None: anything loads).
 
     Raises:
         TaskSpecError: the file (or an included one) is invalid; the message lists every
             problem with its file:line.
     """
     path = resolve_path(path, TaskSpecError)
-    return _Loader(path, policy=policy or active_policy()).load_root(path, None, parameters or {})
+    return _Loader(path, policy=policy).load_root(path, None, parameters or {})
 
 
 def load_task_text(text: str, path: str | Path,
@@ -91,8 +91,7 @@ def load_task_text(text: str, path: str | Path,
     messages name it and relative paths (cell, includes, meshes) start from its folder.
     ``policy``: as for :func:`load_task`."""
     path = resolve_path(path, TaskSpecError)
-    return _Loader(path, policy=policy or active_policy()).load_root(path, text,
-                                                                    parameters or {})
+    return _Loader(path, policy=policy).load_root(path, text, parameters or {})
 
 
 @dataclass

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
+from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.robot.model import Group, RobotModel
 from taskrunner.tasks.expect import Expectation
@@ -34,6 +35,7 @@ from taskrunner.tasks.steps import (
     RemoveObjectStep,
     StepNode,
 )
+from taskrunner.taught import TaughtPoses
 from taskrunner.textfile import file_problem
 
 __all__ = ["arm_groups", "check_names", "gripper_group_of", "load_and_check", "moved_groups"]
@@ -76,15 +78,19 @@ def moved_groups(step: StepNode, model: RobotModel) -> list[str]:
 
 
 def load_and_check(path: str | Path, parameters: Mapping[str, object] | None = None,
+                   *, policy: FolderPolicy | None = None, taught: TaughtPoses | None = None,
                    ) -> tuple[TaskSpec, Cell, list[Problem]]:
     """Load a task, load the cell it names and check its names against it.
+
+    ``policy``: the folders the task and its cell may come from (None: anything loads);
+    ``taught``: taught poses added to the cell's named poses (None: none).
 
     Raises:
         TaskSpecError: the task file is invalid.
         YamlError, RobotDescriptionError: the cell (or a robot of it) is invalid.
     """
-    spec = load_task(path, parameters)
-    cell = load_cell(spec.cell)
+    spec = load_task(path, parameters, policy=policy)
+    cell = load_cell(spec.cell, policy=policy, taught=taught)
     return spec, cell, check_names(spec, cell)
 
 

@@ -54,6 +54,7 @@ from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
 from taskrunner.errors import InputError, TaskrunnerError, TaskSpecError
+from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.tasks import (
@@ -73,6 +74,7 @@ from taskrunner.tasks import (
     load_task,
 )
 from taskrunner.tasks.waits import WaitPair, wait_pairs
+from taskrunner.taught import TaughtPoses
 from taskrunner.tree.checkmode import CheckMode
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
@@ -119,25 +121,30 @@ class CheckReport:
 
 
 def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
-               seed: int = 0) -> CheckReport:
+               seed: int = 0, *, policy: FolderPolicy | None = None,
+               taught: TaughtPoses | None = None) -> CheckReport:
     """Check a task file: structure, names, then a kinematic dry run (nothing moves).
 
     Args:
         path: the task file.
         parameters: overrides of the task's parameters (as for :func:`load_task`).
         seed: the run's seed: IK searches are seeded as a run with this seed seeds them.
+        policy: the folders the task, its cell and their files may come from (None:
+            anything loads; see :mod:`taskrunner.folders`).
+        taught: taught poses added to the cell's named poses, as a run has them (None:
+            none; see :mod:`taskrunner.taught`).
 
     Returns:
         The report; problems of the task or of its cell are in it, never raised.
     """
     root = Path(path).resolve()
     try:
-        spec = load_task(root, parameters)
+        spec = load_task(root, parameters, policy=policy)
     except TaskSpecError as exc:
         found = getattr(exc, "problems", None) or [Problem(exc.path, exc.line, exc.reason)]
         return CheckReport("", 0, _ordered(found, root))
     try:
-        cell = load_cell(spec.cell)
+        cell = load_cell(spec.cell, policy=policy, taught=taught)
     except TaskrunnerError as exc:
         if isinstance(exc, InputError) and exc.path is not None:
             return CheckReport("", 0, [Problem(exc.path, exc.line, exc.reason)])

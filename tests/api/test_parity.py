@@ -90,8 +90,7 @@ def test_the_command_line_can_read_the_poses_the_api_taught(tmp_path: Path):
     bench.write_text(task.read_text().replace("to: home", "to: bench")
                      .replace("../robots/", f"{resources.robots_dir()}/"))
     assert not check_task(bench).ok
-    with read_taught_poses(settings.db_path, settings.cells_dir).active():
-        assert check_task(bench).ok
+    assert check_task(bench, taught=read_taught_poses(settings.db_path, settings.cells_dir)).ok
     assert read_taught_poses(tmp_path / "none.sqlite", settings.cells_dir).by_cell == {}
 
 
