@@ -5,10 +5,17 @@ orientation, ``rpy`` (rad, URDF's roll-pitch-yaw: fixed axes X, then Y, then Z) 
 :class:`PoseFields` holds the fields and their checks; a file's model adds its own
 configuration (a task file's :class:`~taskrunner.tasks.nodes.Node` with its line, a cell
 file's frozen model, a REST request's), so a ``quat`` works wherever a pose is written.
+
+Every number is checked before any arithmetic touches it: a coordinate is finite and
+within ±:data:`~taskrunner.validation.MAX_METRES`, an angle finite and within
+±:data:`~taskrunner.validation.MAX_RADIANS`, a quaternion four finite numbers whose norm
+(computed without overflow) is 1 within :data:`QUAT_TOLERANCE`. A number past these
+(``1e308``) is refused with the field's name, never overflowing a product on the way.
 """
 
 from __future__ import annotations
 
+import math
 from typing import Annotated
 
 import numpy as np
@@ -19,22 +26,28 @@ from taskrunner.errors import ArgumentError
 from taskrunner.types import Pose
 from taskrunner.validation import Metres, Number, Radians
 
-__all__ = ["WORLD", "Angles", "PoseFields", "Position", "Quaternion", "TransformFields",
-           "check_quat"]
+__all__ = ["QUAT_TOLERANCE", "WORLD", "Angles", "PoseFields", "Position",
+           "Quaternion", "TransformFields", "check_quat"]
 
 WORLD = "world"
 
 Position = Annotated[tuple[Metres, ...], Field(min_length=3, max_length=3)]
 Angles = Annotated[tuple[Radians, ...], Field(min_length=3, max_length=3)]
 Quaternion = Annotated[tuple[Number, ...], Field(min_length=4, max_length=4)]
+"""Four finite numbers x, y, z, w; :func:`check_quat` makes them a unit quaternion."""
+
+QUAT_TOLERANCE = 1e-3
+"""How far a quaternion's norm may be from 1 (it is normalized)."""
 
 
 def check_quat(value: tuple[float, ...] | None) -> tuple[float, ...] | None:
-    """``value`` normalized, or an error unless it is a unit quaternion (within 1e-3)."""
+    """``value`` normalized, or an error unless it is a unit quaternion (within
+    :data:`QUAT_TOLERANCE`); any finite components are safe here (the norm is computed
+    without overflow)."""
     if value is None:
         return None
-    norm = float(np.linalg.norm(value))
-    if not np.isfinite(norm) or abs(norm - 1.0) > 1e-3:
+    norm = math.hypot(*(float(v) for v in value))
+    if not math.isfinite(norm) or abs(norm - 1.0) > QUAT_TOLERANCE:
         raise ArgumentError(f"must be a unit quaternion [x, y, z, w] (got norm {norm:.4g})")
     return tuple(float(v) / norm for v in value)
 
