@@ -25,7 +25,9 @@ and scene those of the moment the run stopped:
    a physics backend that ran the stopped run (``same_world``: the same process, its
    world goes on) where the simulation has them (within :data:`HELD_GAP` of the gripper:
    still held; else lying where they are); elsewhere the operator says, per held object,
-   ``held`` (still in the gripper),
+   ``held`` (still in the gripper; a physics backend started afresh puts it back between
+   the fingers where the scene holds it and closes them on it, refused if it does not
+   hold),
    ``released`` (no longer: detached where the scene has it) or ``objects`` (lying at a
    pose); a held object nobody vouches for is refused, naming the three options.
 
@@ -48,14 +50,14 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import numpy as np
 from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
 from taskrunner.backends.base import ObjectTracking
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import BackendError, InputError, TaskrunnerError
 from taskrunner.runtime.checkpoint import (
     Checkpoint,
     checkpoints_of,
@@ -291,6 +293,7 @@ class ResumePlan:
                               f"(held: {', '.join(held) or 'nothing'}); drop --released/"
                               f"--held {name}")
         notes: list[str] = []
+        regrip: dict[str, str] = {}  # said held, in a simulated world that never held them
         for name, arm in held.items():
             if name in options.released or name in options.objects:
                 scene.detach_object(name)
@@ -298,12 +301,15 @@ class ResumePlan:
                 notes.append(f"{name!r} no longer held by {arm!r} (the operator says so)")
             elif name in options.held and self.backend not in KINEMATIC \
                     and isinstance(runner.backend, ObjectTracking) and not self.same_world:
-                raise _refuse(record, f"{name!r} cannot be put back in the grip of {arm!r} in "
-                              f"a new simulated world (the {self.backend} backend's fingers "
-                              f"hold nothing until they close on it): resume it in the "
-                              f"process that ran it (TaskRun.resume, POST /runs/"
-                              f"{record.run_id}/resume), or say where it lies with --object "
-                              f"{name}=X,Y,Z and resume --from the step that picks it")
+                if not isinstance(runner.backend, Gripping):
+                    raise _refuse(record, f"{name!r} cannot be put back in the grip of "
+                                  f"{arm!r} in a new simulated world (the {self.backend} "
+                                  "backend cannot close its fingers on it again): resume it "
+                                  "in the process that ran it (TaskRun.resume, POST /runs/"
+                                  f"{record.run_id}/resume), or say where it lies with "
+                                  f"--object {name}=X,Y,Z and resume --from the step that "
+                                  "picks it")
+                regrip[name] = arm
             elif name in options.held:
                 notes.append(f"{name!r} still held by {arm!r} (the operator says so)")
             elif self.backend in KINEMATIC:
@@ -332,7 +338,34 @@ class ResumePlan:
             scene.move_object(name, pose)
             notes.append(f"{name!r} at {tuple(round(v, 4) for v in pose.xyz)} (the operator "
                          "says so)")
+        if regrip:
+            notes += self._grip_again(runner, regrip)
         return notes
+
+    def _grip_again(self, runner: Runner, held: dict[str, str]) -> list[str]:
+        """The objects the operator says are ``held``, put back in the grip of their arms
+        in a simulated world started afresh (its fingers driven to their closed pose), or
+        refused when the simulation does not hold them."""
+        assert isinstance(runner.backend, Gripping)
+        closed: dict[str, float] = {}
+        for arm_name in sorted(set(held.values())):
+            try:
+                arm = runner.ctx.arm(arm_name)
+                if arm.gripper is not None:
+                    closed.update(runner.scene.robot.named_state(
+                        arm.gripper, arm.closed_pose).as_dict())
+            except TaskrunnerError:  # held by a link of no arm (suction): welded, no fingers
+                continue
+        names = ", ".join(map(repr, held))
+        which = next(iter(held)) if len(held) == 1 else "NAME"
+        try:
+            said = runner.backend.grip_held(closed)
+        except BackendError as exc:
+            raise _refuse(self.record, f"{names} said to be held, but the {self.backend} "
+                          f"backend could not grip it again ({exc}); say where it lies with "
+                          f"--object {which}=X,Y,Z and resume --from the step that picks "
+                          "it") from None
+        return [f"{note} (the operator says it is held)" for note in said]
 
     def _rebuild_goals(self, runner: Runner, leaves: dict[int, Behaviour],
                        start_scene: dict[str, Any]) -> None:
@@ -361,6 +394,15 @@ class ResumePlan:
             except TaskrunnerError as exc:
                 raise _refuse(self.record, f"the goals of {leaf.name!r} ({leaf.location}) "
                               f"cannot be computed again: {exc}") from None
+
+
+@runtime_checkable
+class Gripping(Protocol):
+    """A simulated backend that can put what its bound scene holds back in a grip it never
+    made (:meth:`~taskrunner.backends.physics.MujocoBackend.grip_held`)."""
+
+    def grip_held(self, closed: Mapping[str, float]) -> list[str]:
+        ...
 
 
 class _Replayed:

@@ -6,7 +6,9 @@ is resumed in the same process (``TaskRun.resume``), where the simulated world w
 and says whether the cube is still held; the last continuation ends with every
 expectation of the task met (the cube at its place within 1 cm, released, on the table).
 A new process (``run-task resume``) starts a new simulated world, which is no evidence:
-it is refused until the operator says ``--held cube``, then ends as the first would have.
+it is refused until the operator says ``--held cube``; then the new world puts the cube
+back between the fingers where the scene holds it, closes them on it, and the task ends as
+the first would have. Fingers that do not close on it are refused, saying what to do.
 
 Skipped where mujoco is not installed (``pip install -e '.[mujoco]'``).
 """
@@ -17,9 +19,13 @@ from pathlib import Path
 
 import pytest
 
+from taskrunner.errors import InputError
+from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import resolve_task
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.records import load_record
+from taskrunner.runtime.resume import ResumeOptions, plan_resume
+from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.tasks.loader import load_task
 
 pytest.importorskip("mujoco", reason="the mujoco backend needs: pip install -e '.[mujoco]'")
@@ -105,13 +111,34 @@ def test_a_new_process_on_mujoco_needs_the_operator_to_say_where_the_cube_is(sto
     said = capsys.readouterr()
     assert "the mujoco backend cannot tell whether it still is: pass --held cube" \
         in said.out + said.err
-    # A new world has no grip to put it back in: refused, saying what to do instead.
-    assert main([*args, "--held", "cube"]) == 2
-    said = capsys.readouterr()
-    assert "'cube' cannot be put back in the grip of 'arm' in a new simulated world" \
-        in said.out + said.err and "--from the step that picks it" in said.out + said.err
+    # Said held: the new world puts it back between the fingers, which close on it.
+    assert main([*args, "--held", "cube"]) == 0
+    out = capsys.readouterr().out
+    assert "'cube' put back in the grip of 'panda_hand_tcp' and held" in out, out
+    assert "expectations met" in out
     # Where it lies (back at its pick spot), and picked again: the task ends as planned.
     assert main([*args, "--object", "cube=0.5,0.15,0.77", "--from", "pick cube"]) == 0
     out = capsys.readouterr().out
     assert "'cube' no longer held by 'arm' (the operator says so)" in out
     assert "expectations met" in out
+
+
+def test_a_new_world_whose_fingers_do_not_close_on_the_cube_refuses_to_resume_it_held(story):
+    results, runs = story
+    record = load_record(runs / f"{results[1].run_id}.json")  # stopped carrying the cube
+    spec = load_task(record.task_file, record.parameters)
+    plan = plan_resume(record, spec, ResumeOptions(held=("cube",)))
+    cell = load_cell(spec.cell)
+    # 'closed' 6 cm apart: the fingers stay off the 4 cm cube, which falls out of the hand.
+    cell.model.named_states["hand"]["closed"] = {"panda_finger_joint1": 0.03}
+    start = dict(zip(cell.model.joint_names, plan.start_state(cell)))
+    backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
+                            MujocoOptions(cache_dir=str(runs / "cache")))
+    try:
+        with pytest.raises(InputError, match=r"'cube' said to be held, but the mujoco backend "
+                                             r"could not grip it again \(.*(slipped|not touched)"
+                                             r".*\); say where it lies with --object"):
+            Runner(spec, cell, backend, InProcessPlanner(),
+                   RunOptions(runs_dir=runs, backend_name="mujoco"), resume=plan)
+    finally:
+        backend.close()
