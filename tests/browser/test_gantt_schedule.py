@@ -80,3 +80,63 @@ def test_a_held_motion_shows_its_hold_from_where_its_arm_stopped():
     assert [(b["kind"], b["start"], b["end"]) for b in rows["right"]] == [
         ("motion", 0.0, 1.0), ("hold", 1.0, 2.5), ("motion", 2.5, 2.9)]
     assert rows["left"] == []
+
+
+def test_a_checked_task_shows_each_arms_timeline_as_the_check_planned_it(page, screenshots):
+    """tray_pair in the Task view, before anything runs: the check's schedule of its
+    parallel drawn as both arms' Gantt rows, every motion at its planned start and end; a
+    plan-only preview keeps it."""
+    from .test_viewer_browser import enter_token, shot
+
+    page.goto(page.server.url + "/#/task/tray_pair")
+    enter_token(page)
+    page.wait_for_function("window.__viewer.checkGantts && window.__viewer.checkGantts.length > 0",
+                           timeout=60_000)
+    report = page.evaluate("window.__viewer.check")
+    assert report["ok"], report["problems"]
+    (schedule,) = [s for s in report["schedules"] if s["timeline"]]
+    timeline = schedule["timeline"]
+    assert len(timeline) == schedule["motions"] and max(m["end"] for m in timeline) == \
+        pytest.approx(schedule["makespan"], abs=1e-6)
+    robot_of = {j["name"]: j["robot"] for j in page.server.api("/viewer/cells/servo_arm_pair")["joints"]}
+    expected: dict[str, list[tuple[float, float]]] = {}
+    for m in timeline:
+        for arm in {robot_of[j] for j in m["joints"]}:
+            expected.setdefault(arm, []).append((m["start"], m["end"]))
+    assert sorted(expected) == ["left", "right"]
+    # the arms move at once (the check's overlaps), each arm's motions one after another
+    for spans in expected.values():
+        spans.sort()
+        assert all(b[0] >= a[1] - 1e-6 for a, b in zip(spans, spans[1:]))
+    assert any(a0 < b1 and b0 < a1 for a0, a1 in expected["left"] for b0, b1 in expected["right"])
+
+    def drawn() -> dict[str, list[tuple[float, float, float]]]:
+        rects = page.eval_on_selector_all(
+            "#gantt rect.motion", "rs => rs.map(r => [r.dataset.arm, +r.dataset.start, +r.dataset.end, "
+                                  "+r.getAttribute('x'), r.getBoundingClientRect().width])")
+        out: dict[str, list[tuple[float, float, float]]] = {}
+        for arm, start, end, x, shown in rects:
+            assert shown > 0, (arm, start)  # laid out on the page, not only in the DOM
+            out.setdefault(arm, []).append((start, end, x))
+        return {arm: sorted(bars) for arm, bars in out.items()}
+
+    def assert_drawn_as_planned() -> None:
+        bars = drawn()
+        assert sorted(bars) == ["left", "right"]
+        for arm, spans in expected.items():
+            assert len(bars[arm]) == len(spans), arm
+            assert [t for s, e, _ in bars[arm] for t in (s, e)] == \
+                pytest.approx([t for span in spans for t in span], abs=1e-6), arm
+        # on one time axis: x is linear in the planned start, for both rows
+        points = [(s, x) for arm_bars in bars.values() for s, _, x in arm_bars]
+        (s0, x0), (s1, x1) = min(points), max(points)
+        assert s1 > s0 + 1 and x1 > x0
+        scale = (x1 - x0) / (s1 - s0)
+        assert all(abs(x0 + (s - s0) * scale - x) < 0.01 for s, x in points)
+        assert page.is_visible("#gantt") and "planned by the check" in page.text_content("#gantt")
+
+    assert_drawn_as_planned()
+    shot(page, screenshots, "task_tray_pair_check_gantt")
+    page.click("text=plan only (preview)")
+    page.wait_for_function("window.__viewer.preview !== undefined", timeout=60_000)
+    assert_drawn_as_planned()

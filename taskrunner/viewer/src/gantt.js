@@ -10,6 +10,10 @@
 //   (held until another branch moved on) spans from where the arm's previous motion
 //   ended to where its held motion starts. A wait lands on the row of the next motion
 //   of its step (same file:line), since a wait says which step waited, not which arm.
+//
+// Before anything runs, the check's schedule of a parallel (`timeline` and `waits` of a
+// `schedules` item of /tasks/check) is drawn the same way: `applySchedule` turns each
+// planned motion and each inserted wait into the events a run would give.
 
 const SVG = 'http://www.w3.org/2000/svg';
 const ROW = 24;
@@ -85,6 +89,25 @@ export class Gantt {
     this.draw();
   }
 
+  // A check's schedule of one parallel (/tasks/check `schedules[i]`): its planned motions
+  // and waits, on the parallel's own clock (s from its start).
+  applySchedule(schedule) {
+    const items = [];
+    (schedule.timeline || []).forEach((m, i) => {
+      if (m.start == null || m.end == null) return;
+      const where = m.step || '';
+      items.push([m.start, 1, { seq: i + 1, kind: 'motion', node: `planned ${where.split('/').pop()}`, location: m.step,
+        data: { start: m.start, sent: m.start, trajectory: { joints: m.joints, times: [0, m.end - m.start] } } }]);
+    });
+    for (const w of schedule.waits || []) {  // before the motion its step starts after it
+      if (w.since == null || w.until == null) continue;
+      items.push([w.until, 0, { seq: 0, kind: 'wait', node: 'wait', location: w.step, message: w.reason,
+        data: { since: w.since, until: w.until } }]);
+    }
+    items.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+    for (const [, , e] of items) this.apply(e);
+  }
+
   // Where the arms' last motion before `motion` ended (s on the schedule; 0 if none).
   _armEnd(arms, motion) {
     let end = 0;
@@ -144,7 +167,8 @@ export class Gantt {
       for (const bar of rows[arm]) {
         const inset = bar.kind === 'motion' ? 3 : 7;
         const rect = svg('rect', { x: x(bar.start), y: y + inset, width: Math.max(1.5, (bar.end - bar.start) * scale),
-          height: ROW - 2 * inset, class: `bar ${bar.kind}`, 'data-seq': bar.seq });
+          height: ROW - 2 * inset, class: `bar ${bar.kind}`, 'data-seq': bar.seq, 'data-arm': arm,
+          'data-start': bar.start, 'data-end': bar.end });
         const what = bar.kind === 'motion' ? bar.node : `${bar.kind}: ${bar.message || bar.node}`;
         rect.appendChild(svg('title', {}, `${what}\n${bar.location || ''}\n${bar.start.toFixed(2)}–${bar.end.toFixed(2)} s`));
         if (bar.kind === 'motion' && this.onSelect) rect.addEventListener('click', () => this.onSelect(bar.seq));

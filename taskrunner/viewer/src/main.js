@@ -155,6 +155,7 @@ function setTimeline(replay) {
   state.time = 0;
   state.selected = -1;
   $('timeline').hidden = !replay;
+  $('timeline').classList.remove('gantt-only');
   if (!replay) { $('gantt').hidden = true; $('gantt').textContent = ''; state.gantt = null; }
   renderMotions();
   applyTime(0);
@@ -271,11 +272,12 @@ async function viewTask(taskName) {
   const compiled = await post('/viewer/tasks/tree', { task: name });
   tree.show(compiled.tree);
   summary.textContent = `cell ${compiled.cell}`;
-  await showCell(compiled.cell);
+  const cell = await showCell(compiled.cell);
   // where the task starts, with its own objects (from its file), before any planning
   stage.setJoints(compiled.scene.joints);
   stage.setObjects(compiled.scene.objects);
   debug.taskScene = compiled.scene;
+  const here = location.hash;
   const runCheck = async () => {
     summary.textContent = 'checking…';
     const report = await post('/tasks/check', { task: name });
@@ -283,6 +285,7 @@ async function viewTask(taskName) {
     summary.textContent = report.ok ? `check: ok (${report.steps} steps, cell ${report.cell})`
       : `check: ${report.problems.length} problem(s)`;
     debug.check = report;
+    if (location.hash === here) showCheckSchedules(report.schedules || [], cell);
   };
   const runPreview = async () => {
     summary.textContent = 'planning every motion (nothing moves)…';
@@ -295,6 +298,37 @@ async function viewTask(taskName) {
   checkButton.addEventListener('click', () => guarded(runCheck));
   previewButton.addEventListener('click', () => guarded(runPreview));
   guarded(runCheck);
+}
+
+// Each arm's timeline as the check planned it, before anything runs: one Gantt per
+// parallel the check scheduled (times from that parallel's start).
+function showCheckSchedules(schedules, cell) {
+  const box = $('gantt');
+  box.textContent = '';
+  debug.checkGantts = [];
+  const planned = schedules.filter((s) => (s.timeline || []).length);
+  box.hidden = !planned.length;
+  const footer = $('timeline');
+  if (planned.length && footer.hidden) {  // nothing to play yet: the charts alone
+    footer.classList.add('gantt-only');
+    footer.hidden = false;  // shown first: each chart takes the box's width
+  } else if (!planned.length && footer.classList.contains('gantt-only')) {
+    footer.classList.remove('gantt-only');
+    footer.hidden = true;
+  }
+  planned.forEach((schedule, i) => {
+    const where = schedule.timeline[0].step ? ` (first step ${shortLocation(schedule.timeline[0].step)})` : '';
+    const span = schedule.makespan == null ? '' : `, ${schedule.makespan.toFixed(2)} s in all`;
+    box.append(el('div', { className: 'gantt-caption',
+      textContent: `planned by the check, parallel ${i + 1}${where}: s from its start${span}; nothing has run` }));
+    const chart = el('div', { className: 'gantt-chart' });
+    box.append(chart);
+    const gantt = new Gantt(chart, cell, null);
+    gantt.applySchedule(schedule);
+    gantt.render();
+    debug.checkGantts.push(gantt);
+  });
+  stage.resize();
 }
 
 async function viewRun(runId) {
