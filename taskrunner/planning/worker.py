@@ -8,8 +8,8 @@ once and polls it (``done()``), waits for it (``result()``) or cancels it (``can
 which stops the search inside the worker within one planner iteration).
 
 Scene updates travel with the requests: a snapshot of the caller's scene is sent only when
-its objects or allowances changed since the last request (``Scene.revision``); the start
-state always travels in the request.
+its objects or allowances differ from those last sent (compared by content, whichever
+scene object they come from); the start state always travels in the request.
 """
 
 from __future__ import annotations
@@ -38,7 +38,12 @@ from taskrunner.processes import start_ignoring_sigint
 from taskrunner.scene import Scene
 
 if TYPE_CHECKING:
+    from typing import TypeAlias
+
     from taskrunner.planning.planner import MotionPlanner
+    from taskrunner.scene.objects import SceneObject
+
+    SceneContent: TypeAlias = tuple[tuple[SceneObject, ...], tuple[tuple[str, str], ...]]
 
 __all__ = ["PlanHandle", "PlanningWorker", "WorkerDiedError", "stays"]
 
@@ -240,7 +245,8 @@ class PlanningWorker:
         self._ids = itertools.count(1)
         self._lock = threading.Lock()
         self._pending: PlanHandle | None = None
-        self._sent_scene: tuple[int, int] | None = None
+        # The objects and allowances the worker's scene holds (None: unknown, send all).
+        self._sent_scene: SceneContent | None = None
         self._start_timeout = start_timeout
         self._ready = False
         if started is None:
@@ -345,14 +351,13 @@ class PlanningWorker:
                 self._start(self._start_timeout)
             if request.start is None:
                 request = replace(request, start=scene.state)
-            key = (id(scene), scene.revision)
             handle = PlanHandle(self, next(self._ids))
             try:
-                self._send(handle, scene, key, request)
+                self._send(handle, scene, request)
             except OSError:  # the worker died since the last answer: restart, send again
                 self._process.join(timeout=5.0)
                 self._start(60.0)
-                self._send(handle, scene, key, request)
+                self._send(handle, scene, request)
             self._pending = handle
             return handle
 
@@ -408,11 +413,14 @@ class PlanningWorker:
             handle._outcome = ("error", exc)
         return handle
 
-    def _send(self, handle: PlanHandle, scene: Scene, key: tuple[int, int],
-              request: PlanRequest) -> None:
-        snapshot = scene.snapshot() if key != self._sent_scene else None
-        self._conn.send(("plan", handle.request_id, snapshot, request))
-        self._sent_scene = key
+    def _send(self, handle: PlanHandle, scene: Scene, request: PlanRequest) -> None:
+        # By content, not by the scene's identity and revision: another scene (a new one
+        # where a freed one was, at the same revision) holds other objects.
+        snapshot = scene.snapshot()
+        content = (snapshot.objects, snapshot.allowed)
+        self._conn.send(("plan", handle.request_id,
+                         snapshot if content != self._sent_scene else None, request))
+        self._sent_scene = content
 
     def _collect(self, handle: PlanHandle, timeout: float | None) -> None:
         """Read the worker's answer for ``handle`` if there is one within ``timeout``."""

@@ -31,11 +31,14 @@ class XmlDocument:
 
     root: ET.Element
     path: Path | None
-    _lines: dict[int, int] = field(default_factory=dict, repr=False)
+    _lines: dict[int, tuple[ET.Element, int]] = field(default_factory=dict, repr=False)
+    """By ``id()`` of the element: the element (kept, so that its id is never another's,
+    even after it is removed from the tree) and its line."""
 
     def line(self, element: ET.Element) -> int | None:
         """1-based source line of ``element`` (None for elements added after parsing)."""
-        return self._lines.get(id(element))
+        kept = self._lines.get(id(element))
+        return kept[1] if kept is not None and kept[0] is element else None
 
     def error(self, element: ET.Element | None, message: str) -> RobotDescriptionError:
         """An error located at ``element`` in this document."""
@@ -51,7 +54,7 @@ def parse_xml(text: str, path: str | Path | None = None) -> XmlDocument:
     """
     builder = ET.TreeBuilder()
     parser = expat.ParserCreate()
-    lines: dict[int, int] = {}
+    lines: dict[int, tuple[ET.Element, int]] = {}
     depth = 0
 
     def start(tag: str, attrs: dict[str, str]) -> None:
@@ -60,7 +63,7 @@ def parse_xml(text: str, path: str | Path | None = None) -> XmlDocument:
         if depth > MAX_XML_DEPTH:
             raise _TooDeep(parser.CurrentLineNumber)
         element = builder.start(tag, attrs)
-        lines[id(element)] = parser.CurrentLineNumber
+        lines[id(element)] = (element, parser.CurrentLineNumber)
 
     def end(tag: str) -> None:
         nonlocal depth

@@ -71,6 +71,39 @@ def test_scene_edits_reach_the_worker(worker, scene):
     assert not any(scene.in_collision(s) for s in dense_states(scene, second))
 
 
+def test_a_scene_made_where_a_freed_one_was_reaches_the_worker(worker, panda_model):
+    # The worker is sent a scene's objects when they differ from those it holds: by
+    # content, not by the scene's id() and revision, which a new scene made at a freed
+    # one's address, edited as often, shares.
+    import gc
+
+    from taskrunner.scene import Scene
+
+    first = Scene(panda_model)
+    first.set_state(READY)
+    first.add_object("post", Box((0.06, 0.06, 0.06)), Pose((1.5, 1.5, 0.0)))  # far away
+    path = worker.plan(first, PlanRequest("arm", GOAL))
+    along = dense_states(first, path)
+    q = along[len(along) // 2]
+    hand = tuple(frame_pose(first.robot, q, "panda_hand").translation)
+    address, revision = id(first), first.revision
+    del first
+    gc.collect()
+    held = []  # allocated until one lands where the first scene was
+    for _ in range(100_000):
+        held.append(Scene.__new__(Scene))
+        if id(held[-1]) == address:
+            break
+    second = held.pop()
+    assert id(second) == address, "no scene was made at the freed one's address"
+    second.__init__(panda_model)  # type: ignore[misc]
+    second.set_state(READY)
+    second.add_object("post", Box((0.06, 0.06, 0.06)), Pose(hand))  # on the first path
+    assert second.revision == revision and second.in_collision(q)
+    around = worker.plan(second, PlanRequest("arm", GOAL))
+    assert not any(second.in_collision(s) for s in dense_states(second, around))
+
+
 def test_submit_returns_at_once_and_the_caller_keeps_running(worker, scene):
     request = PlanRequest("arm", GOAL, options=PlannerOptions(
         planner="RRTstar", refine=True, planning_time=0.6, direct=False))

@@ -90,3 +90,25 @@ def test_file_that_is_not_utf8_is_a_robot_description_error(tmp_path):
     with pytest.raises(RobotDescriptionError,
                        match=r"latin1.urdf:1: file is not UTF-8 text \(invalid byte 0xe9\)"):
         read_xml(path)
+
+
+def test_an_element_made_where_a_removed_one_was_has_no_line():
+    # Lines are kept by the element's id(): an element removed from the tree and freed
+    # must not lend its line to a new element that the allocator puts at its address.
+    import gc
+    import xml.etree.ElementTree as ET
+
+    doc = parse_xml("<robot>\n  <link name='a'/>\n  <link name='b'/>\n</robot>")
+    gone = doc.root[0]
+    assert doc.line(gone) == 2
+    address = id(gone)
+    doc.root.remove(gone)
+    del gone
+    gc.collect()
+    made = []
+    for _ in range(100_000):
+        made.append(ET.Element("link"))
+        if id(made[-1]) == address:
+            break
+    assert doc.line(doc.root[0]) == 3
+    assert all(doc.line(element) is None for element in made)
