@@ -19,7 +19,7 @@ from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.records import RunRecord, save_record
 
 HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
-_BRACKET = {"name": "bracket", "shape": {"type": "mesh", "file": "parts/bracket.stl"},
+_BRACKET: dict[str, object] = {"name": "bracket", "shape": {"type": "mesh", "file": "parts/bracket.stl"},
             "pose": {"frame": "world", "xyz": [0.1, 0.2, 0.8]}}
 
 
@@ -76,7 +76,7 @@ def test_an_object_whose_mesh_is_not_found_is_an_error_naming_it_and_its_file(pa
     assert scenes and not [mk for s in scenes for mk in s.markers if mk.ns == "bracket"]
     # Objects that can be drawn give no degradation at all.
     told.clear()
-    box = {"name": "box", "shape": {"type": "box", "size": [0.1, 0.1, 0.1]}, "pose": {}}
+    box: dict[str, object] = {"name": "box", "shape": {"type": "box", "size": [0.1, 0.1, 0.1]}, "pose": {}}
     assert _warnings(record_messages(_record(pair, "mock", [box]), pair,
                                      on_degraded=told.append)) == [] and told == []
 
@@ -99,3 +99,25 @@ def test_the_export_command_refuses_a_degraded_file_unless_allowed(
         export_mcap(path, tmp_path / "api.mcap", pair)
     assert export_mcap(path, tmp_path / "api.mcap", pair, allow_degraded=True,
                        on_degraded=None).exists()
+
+
+def test_a_runs_mcap_names_the_kept_record_when_degraded_and_not_allowed(
+        pair: Cell, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from argparse import Namespace
+    from types import SimpleNamespace
+
+    from taskrunner.export.command import run_watches
+
+    runner = SimpleNamespace(record=_record(pair, "mujoco", []), cell=pair,
+                             options=SimpleNamespace(runs_dir=tmp_path))
+    out = tmp_path / "run.mcap"
+    (watch,) = run_watches(Namespace(mcap=str(out), foxglove=None))
+    with pytest.raises(InputError, match=rf"the run ended \(its record: {tmp_path}/r1\.json\), "
+                                         r"but its MCAP file was not written: .*'go home'"):
+        with watch(runner):  # type: ignore[arg-type]
+            pass
+    assert not out.exists()
+    (watch,) = run_watches(Namespace(mcap=str(out), foxglove=None, mcap_allow_degraded=True))
+    with watch(runner):  # type: ignore[arg-type]
+        pass
+    assert out.exists() and "warning: degraded MCAP" in capsys.readouterr().err
