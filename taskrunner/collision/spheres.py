@@ -1,0 +1,464 @@
+"""Conservative sphere models of collision geometry, generated at load for any robot.
+
+A broad phase that tests spheres needs spheres that *contain* the geometry the exact check
+tests, or it clears pairs that collide. :func:`fit_spheres` builds such a set for one coal
+geometry, in the geometry's own frame:
+
+* a triangle mesh (or a convex polytope) as coal checks it, a surface: its triangles are
+  split until no edge is longer than ``options.max_edge``,
+  centres are chosen greedily inside the mesh (the deep ones stick out least; see
+  :func:`_fit_mesh`), and each triangle goes to one sphere, whose radius reaches all of its
+  triangles' corners. A ball is convex, so a triangle whose three corners are in it lies in it:
+  every vertex and every point of every face is covered by construction.
+* a box, cylinder, capsule or sphere as coal checks it, a solid: a box as a grid of cells,
+  each inside its circumscribed sphere; a cylinder as a chain of spheres along its axis
+  (a grid of cells where it is wide); a capsule as a chain of spheres
+  whose radius covers the gaps between them; a sphere as itself. Every point of the solid
+  is covered by construction.
+
+Each set carries its *looseness*: the largest distance from a point of the union's surface
+to the geometry (outside a closed mesh or solid; for a mesh that is not closed, from its
+surface), estimated at ~100 points per sphere (those not inside another sphere), measured
+with coal for meshes and in closed form for primitives. Inside or outside a mesh is decided
+by its winding number (Jacobson et al., "Robust inside-outside segmentation using
+generalized winding numbers", SIGGRAPH 2013).
+
+Results are kept in memory and in ``spheres.json`` under the user cache folder
+(:func:`taskrunner.resources.user_cache_dir`), keyed by a hash of the geometry's content
+(vertices and triangles, or kind and dimensions) and the options: equal geometry under
+another name, or in another robot, is fitted once.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import math
+import os
+import tempfile
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+
+import coal
+import numpy as np
+
+from taskrunner.errors import ArgumentError, SceneError
+from taskrunner.resources import user_cache_dir
+
+__all__ = ["CACHE_FILE", "GeometrySpheres", "SphereOptions", "fit_spheres", "geometry_key"]
+
+log = logging.getLogger(__name__)
+
+CACHE_FILE = "spheres.json"
+_METHOD = "v1"  # changing the construction must not reuse cached spheres
+_BOUNDARY_POINTS = 96  # looseness probes per sphere
+_GROW = 1e-9  # m, on every radius: float rounding never uncovers a corner
+
+_lock = threading.Lock()
+_memory: dict[str, GeometrySpheres] = {}
+_disk_loaded: set[Path] = set()
+
+
+@dataclass(frozen=True)
+class SphereOptions:
+    """How finely geometry is covered.
+
+    Attributes:
+        tolerance: the looseness (m) a geometry's spheres aim for; it gets more spheres
+            until they stick out of it by no more, or until ``max_spheres``.
+        max_spheres: at most this many spheres per geometry.
+        max_edge: a mesh's triangles are split until no edge is longer (m), so that one
+            long triangle does not force a large sphere.
+    """
+
+    tolerance: float = 0.01
+    max_spheres: int = 64
+    max_edge: float = 0.02
+
+    def __post_init__(self) -> None:
+        for name in ("tolerance", "max_edge"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+                raise ArgumentError(f"'{name}' must be a positive length in m (got {value!r})")
+        if not (isinstance(self.max_spheres, int) and self.max_spheres >= 1):
+            raise ArgumentError(f"'max_spheres' must be an integer >= 1 (got {self.max_spheres!r})")
+
+
+@dataclass(frozen=True)
+class GeometrySpheres:
+    """Spheres that contain one geometry, in its own frame.
+
+    Attributes:
+        centres: (n, 3) sphere centres (m).
+        radii: (n,) radii (m).
+        looseness: the largest distance (m) from the union's surface to the geometry
+            (outside it), estimated (see the module's text).
+        kind: ``mesh`` (surface covered) or ``solid``.
+        key: the content hash it is cached under.
+    """
+
+    centres: np.ndarray
+    radii: np.ndarray
+    looseness: float
+    kind: str
+    key: str
+
+    def __len__(self) -> int:
+        return len(self.radii)
+
+    def contains(self, points: np.ndarray, slack: float = 0.0) -> np.ndarray:
+        """Whether each of (m, 3) ``points`` lies in some sphere (grown by ``slack`` m)."""
+        points = np.asarray(points, dtype=float).reshape(-1, 3)
+        inside = np.zeros(len(points), dtype=bool)
+        for c, r in zip(self.centres, self.radii, strict=True):
+            inside |= np.einsum("ij,ij->i", points - c, points - c) <= (r + slack) ** 2
+        return inside
+
+
+# ------------------------------------------------------------------- content
+def _mesh_arrays(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (n, 3) and triangles (m, 3) of a coal mesh or convex polytope."""
+    if isinstance(geometry, coal.BVHModelBase):
+        vertices = np.array(geometry.vertices(), dtype=float).reshape(-1, 3)
+        triangles = np.array([[geometry.tri_indices(i)[k] for k in range(3)]
+                              for i in range(geometry.num_tris)], dtype=np.int64).reshape(-1, 3)
+    else:
+        vertices = np.array(geometry.points(), dtype=float).reshape(-1, 3)
+        polygons = geometry.polygons()
+        triangles = np.array([[polygons[i][k] for k in range(3)]
+                              for i in range(geometry.num_polygons)], dtype=np.int64).reshape(-1, 3)
+    if len(triangles) == 0:
+        raise SceneError("a mesh with no triangles has no sphere model")
+    return vertices, triangles
+
+
+def _is_mesh(geometry: coal.CollisionGeometry) -> bool:
+    return isinstance(geometry, (coal.BVHModelBase, coal.ConvexBase))
+
+
+def _swept(geometry: coal.CollisionGeometry) -> float:
+    get = getattr(geometry, "getSweptSphereRadius", None)
+    return float(get()) if get is not None else 0.0
+
+
+def _primitive(geometry: coal.CollisionGeometry) -> tuple[str, tuple[float, ...]]:
+    if isinstance(geometry, coal.Box):
+        return "box", tuple(float(v) for v in geometry.halfSide)
+    if isinstance(geometry, coal.Sphere):
+        return "sphere", (float(geometry.radius),)
+    if isinstance(geometry, coal.Capsule):
+        return "capsule", (float(geometry.radius), float(geometry.halfLength))
+    if isinstance(geometry, coal.Cylinder):
+        return "cylinder", (float(geometry.radius), float(geometry.halfLength))
+    raise SceneError(f"no sphere model for a {type(geometry).__name__}: meshes, convex "
+                     f"polytopes, boxes, spheres, cylinders and capsules are covered")
+
+
+def geometry_key(geometry: coal.CollisionGeometry, options: SphereOptions | None = None) -> str:
+    """The content hash a geometry's spheres are cached under: its vertices and
+    triangles (or kind and dimensions), its swept radius, the options and the method."""
+    options = options or SphereOptions()
+    digest = hashlib.blake2b(digest_size=16)
+    if _is_mesh(geometry):
+        vertices, triangles = _mesh_arrays(geometry)
+        digest.update(b"mesh")
+        digest.update(np.ascontiguousarray(vertices).tobytes())
+        digest.update(np.ascontiguousarray(triangles).tobytes())
+    else:
+        kind, dims = _primitive(geometry)
+        digest.update(f"{kind}{dims!r}".encode())
+    digest.update(f"/{_swept(geometry)!r}/{options.tolerance!r}/{options.max_spheres}/"
+                  f"{options.max_edge!r}/{_METHOD}".encode())
+    return digest.hexdigest()
+
+
+# ------------------------------------------------------------------- meshes
+def _split_long_edges(corners: np.ndarray, max_edge: float) -> np.ndarray:
+    """Triangles (m, 3, 3) split at the middle of their longest edge until no edge is
+    longer than ``max_edge``; their union is the input's."""
+    done = []
+    while len(corners):
+        edges = np.stack([np.linalg.norm(corners[:, (k + 1) % 3] - corners[:, k], axis=1)
+                          for k in range(3)], axis=1)
+        longest = edges.argmax(axis=1)
+        long = edges[np.arange(len(corners)), longest] > max_edge
+        done.append(corners[~long])
+        corners, longest = corners[long], longest[long]
+        if not len(corners):
+            break
+        # Rotate each triangle so that its longest edge runs from corner 0 to corner 1.
+        rows = np.arange(len(corners))[:, None]
+        corners = corners[rows, (longest[:, None] + np.arange(3)) % 3]
+        middle = 0.5 * (corners[:, 0] + corners[:, 1])
+        first = np.stack([corners[:, 0], middle, corners[:, 2]], axis=1)
+        second = np.stack([middle, corners[:, 1], corners[:, 2]], axis=1)
+        corners = np.concatenate([first, second])
+    return np.concatenate(done)
+
+
+def _fit_mesh(vertices: np.ndarray, triangles: np.ndarray, mesh: coal.CollisionGeometry,
+              options: SphereOptions) -> tuple[np.ndarray, np.ndarray, float]:
+    """Spheres chosen greedily among candidate centres inside the mesh (for a closed mesh;
+    its triangles' centroids otherwise), each of depth ``delta`` (distance to the surface).
+
+    A ball of radius r about a centre of depth delta lies within r - delta of the inscribed
+    ball, hence of the mesh: a triangle's *cost* at a centre is its farthest corner's
+    distance minus the depth. Each triangle goes to the chosen centre where its cost is
+    least; while the worst triangle's cost exceeds the tolerance, the candidate where that
+    triangle's cost is least is added. Each radius is its triangles' farthest corner."""
+    corners = _split_long_edges(vertices[triangles], options.max_edge)
+    closed = _closed(triangles)
+    candidates = _inside_points(vertices, triangles) if closed else np.zeros((0, 3))
+    if len(candidates) >= 8:
+        depth = _distances(mesh, candidates)
+    else:
+        candidates, depth = corners.mean(axis=1), np.zeros(len(corners))
+
+    def cost_at(j: int) -> np.ndarray:  # every triangle's cost at candidate j
+        return np.linalg.norm(corners - candidates[j], axis=2).max(axis=1) - depth[j]
+
+    first = corners.reshape(-1, 3).mean(axis=0)
+    chosen = [int(np.argmin(np.linalg.norm(candidates - first, axis=1) - depth))]
+    best = cost_at(chosen[0])
+    owner = np.zeros(len(corners), dtype=np.int64)
+    while best.max() > options.tolerance and len(chosen) < options.max_spheres:
+        worst = corners[int(np.argmax(best))]
+        j = int(np.argmin(np.linalg.norm(worst[None] - candidates[:, None], axis=2).max(axis=1)
+                          - depth))
+        if j in chosen:
+            break
+        cost = cost_at(j)
+        better = cost < best
+        best[better], owner[better] = cost[better], len(chosen)
+        chosen.append(j)
+    centres, radii = [], []
+    for k, j in enumerate(chosen):
+        mine = corners[owner == k].reshape(-1, 3)
+        if len(mine):
+            centres.append(candidates[j])
+            radii.append(float(np.linalg.norm(mine - candidates[j], axis=1).max()) * (1 + 1e-9)
+                         + _GROW)
+    c, r = np.array(centres), np.array(radii)
+    return c, r, _mesh_looseness(c, r, mesh, vertices, triangles, closed)
+
+
+def _inside_points(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    """Points of a grid over the mesh's box that lie inside the closed mesh (~1500)."""
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    step = float(np.prod(np.maximum(hi - lo, 1e-6)) / 3000) ** (1 / 3)
+    axes = [np.arange(lo[i] + step / 2, hi[i], step) for i in range(3)]
+    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+    return grid[np.abs(_winding(grid, vertices, triangles)) > 0.5]
+
+
+def _closed(triangles: np.ndarray) -> bool:
+    """Every edge is shared by exactly two triangles."""
+    edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]],
+                                    triangles[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(np.all(counts == 2))
+
+
+def _winding(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    """Generalised winding number of a closed mesh at each point (1 inside, 0 outside)."""
+    out = np.zeros(len(points))
+    tri = vertices[triangles]  # (m, 3, 3)
+    for start in range(0, len(points), 256):
+        p = points[start:start + 256]
+        a, b, c = (tri[None, :, k, :] - p[:, None, :] for k in range(3))
+        la, lb, lc = (np.linalg.norm(v, axis=2) for v in (a, b, c))
+        det = np.einsum("pmi,pmi->pm", a, np.cross(b, c))
+        den = (la * lb * lc + np.einsum("pmi,pmi->pm", a, b) * lc
+               + np.einsum("pmi,pmi->pm", b, c) * la + np.einsum("pmi,pmi->pm", c, a) * lb)
+        out[start:start + 256] = np.arctan2(det, den).sum(axis=1) / (2 * math.pi)
+    return out
+
+
+def _mesh_looseness(centres: np.ndarray, radii: np.ndarray, mesh: coal.CollisionGeometry,
+                    vertices: np.ndarray, triangles: np.ndarray, closed: bool) -> float:
+    """The largest distance from the union's surface probes outside the mesh (all of
+    them for an open mesh) to the mesh's triangles (coal)."""
+    probes = _union_surface(centres, radii)
+    if not len(probes):
+        return 0.0
+    if closed:
+        w = _winding(probes, vertices, triangles)
+        probes = probes[np.abs(w) < 0.5]
+    return float(_distances(mesh, probes).max(initial=0.0))
+
+
+def _distances(mesh: coal.CollisionGeometry, points: np.ndarray) -> np.ndarray:
+    """Distance (m) from each point to the mesh's triangles (coal, a zero-radius sphere)."""
+    point, at, identity = coal.Sphere(0.0), coal.Transform3s(), coal.Transform3s()
+    request, result = coal.DistanceRequest(), coal.DistanceResult()
+    out = np.empty(len(points))
+    for i, p in enumerate(points):
+        result.clear()
+        at.setTranslation(p)
+        out[i] = coal.distance(mesh, identity, point, at, request, result)
+    return out
+
+
+# ------------------------------------------------------------------- solids
+def _fit_solid(kind: str, dims: tuple[float, ...], options: SphereOptions
+               ) -> tuple[np.ndarray, np.ndarray, float]:
+    if kind == "sphere":
+        return np.zeros((1, 3)), np.array([dims[0] * (1 + 1e-9) + _GROW]), 0.0
+    if kind == "capsule":  # spheres of radius R' every s: R'^2 = R^2 + (s/2)^2 covers between
+        radius, half = dims
+        gap = math.sqrt((radius + options.tolerance) ** 2 - radius ** 2)
+        n = max(1, min(options.max_spheres - 1, math.ceil(half / gap)))
+        z = np.linspace(-half, half, n + 1)
+        centres = np.column_stack([np.zeros(n + 1), np.zeros(n + 1), z])
+        radii = np.full(n + 1, math.hypot(radius, half / n) * (1 + 1e-9) + _GROW)
+        return centres, radii, _solid_looseness(kind, dims, centres, radii)
+    halves = np.array((dims[0], dims[0], dims[1]) if kind == "cylinder" else dims)
+    best: tuple[np.ndarray, np.ndarray, float] | None = None
+    edge = 2 * float(halves.max())
+    while True:
+        fit = _grid(kind, halves, dims, edge)
+        if len(fit[1]) > options.max_spheres and best is not None:
+            return best
+        looseness = _solid_looseness(kind, dims, *fit)
+        if best is None or looseness < best[2]:
+            best = (*fit, looseness)
+        if looseness <= options.tolerance:
+            return best
+        edge *= 0.85
+
+
+def _grid(kind: str, half: np.ndarray, dims: tuple[float, ...], edge: float
+          ) -> tuple[np.ndarray, np.ndarray]:
+    """Cells of about ``edge`` over the solid's box that meet the solid, each in the sphere
+    through its corners (a cylinder one cell wide: spheres on its axis through its rims)."""
+    counts = np.maximum(1, np.ceil(2 * half / edge - 1e-9)).astype(int)
+    cell = 2 * half / counts
+    axes = [-half[i] + cell[i] * (np.arange(counts[i]) + 0.5) for i in range(3)]
+    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+    radius = float(np.linalg.norm(cell)) / 2
+    if kind == "cylinder" and counts[0] == 1:
+        radius = math.hypot(dims[0], cell[2] / 2)
+    elif kind == "cylinder":  # keep the cells whose square meets the disk
+        gap = np.maximum(np.abs(grid[:, :2]) - cell[:2] / 2, 0.0)
+        grid = grid[np.hypot(gap[:, 0], gap[:, 1]) <= dims[0]]
+    return grid, np.full(len(grid), radius * (1 + 1e-9) + _GROW)
+
+
+def _solid_looseness(kind: str, dims: tuple[float, ...], centres: np.ndarray,
+                     radii: np.ndarray) -> float:
+    probes = _union_surface(centres, radii)
+    return float(max(0.0, _solid_distance(kind, dims, probes).max(initial=0.0)))
+
+
+def _solid_distance(kind: str, dims: tuple[float, ...], p: np.ndarray) -> np.ndarray:
+    """Signed distance (m) from points to the solid (negative inside)."""
+    if kind == "sphere":
+        return np.linalg.norm(p, axis=1) - dims[0]
+    if kind == "capsule":
+        z = np.clip(p[:, 2], -dims[1], dims[1])
+        return np.linalg.norm(p - np.column_stack([0 * z, 0 * z, z]), axis=1) - dims[0]
+    if kind == "cylinder":
+        d = np.column_stack([np.hypot(p[:, 0], p[:, 1]) - dims[0], np.abs(p[:, 2]) - dims[1]])
+    else:
+        d = np.abs(p) - np.array(dims)
+    return np.linalg.norm(np.maximum(d, 0.0), axis=1) + np.minimum(d.max(axis=1), 0.0)
+
+
+# ------------------------------------------------------------------- common
+def _unit_sphere(n: int) -> np.ndarray:
+    """``n`` points spread evenly on the unit sphere (a Fibonacci lattice)."""
+    i = np.arange(n) + 0.5
+    z = 1 - 2 * i / n
+    phi = math.pi * (1 + math.sqrt(5)) * i
+    s = np.sqrt(1 - z * z)
+    return np.column_stack([s * np.cos(phi), s * np.sin(phi), z])
+
+
+def _union_surface(centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
+    """Points on the union's surface: each sphere's probes not inside another sphere."""
+    unit = _unit_sphere(_BOUNDARY_POINTS)
+    out = []
+    for j, (c, r) in enumerate(zip(centres, radii, strict=True)):
+        p = c + r * unit
+        d = np.linalg.norm(p[:, None, :] - centres[None], axis=2) - radii[None]
+        d[:, j] = np.inf
+        out.append(p[d.min(axis=1) >= -1e-9])
+    return np.concatenate(out) if out else np.zeros((0, 3))
+
+
+def fit_spheres(geometry: coal.CollisionGeometry, options: SphereOptions | None = None
+                ) -> GeometrySpheres:
+    """Spheres containing ``geometry`` (see the module's text), from the memory or disk
+    cache when equal geometry was fitted before with equal options.
+
+    Raises:
+        SceneError: a shape with no sphere model here (cone, plane, half-space, ellipsoid),
+            or a mesh with no triangles.
+    """
+    options = options or SphereOptions()
+    key = geometry_key(geometry, options)
+    path = user_cache_dir() / CACHE_FILE
+    with _lock:
+        _read_disk(path)
+        if key in _memory:
+            return _memory[key]
+    swept = _swept(geometry)  # the geometry is its core grown by this: so are the spheres
+    if _is_mesh(geometry):
+        vertices, triangles = _mesh_arrays(geometry)
+        centres, radii, looseness = _fit_mesh(vertices, triangles, geometry, options)
+        kind = "mesh"
+    else:
+        shape, dims = _primitive(geometry)
+        centres, radii, looseness = _fit_solid(shape, dims, options)
+        kind = "solid"
+    radii = radii + swept
+    fitted = GeometrySpheres(centres, radii, looseness, kind, key)
+    with _lock:
+        _memory[key] = fitted
+        _write_disk(path, key, fitted)
+    return fitted
+
+
+def _read_disk(path: Path) -> None:
+    if path in _disk_loaded:
+        return
+    _disk_loaded.add(path)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return  # no cache yet, or a broken one: fit again
+    if not isinstance(data, dict):
+        return
+    for key, entry in data.items():
+        try:
+            centres = np.array(entry["centres"], dtype=float).reshape(-1, 3)
+            radii = np.array(entry["radii"], dtype=float).reshape(-1)
+            if len(centres) != len(radii) or not len(radii):
+                continue
+            _memory.setdefault(key, GeometrySpheres(centres, radii, float(entry["looseness"]),
+                                                    str(entry["kind"]), key))
+        except (KeyError, TypeError, ValueError):
+            continue
+
+
+def _write_disk(path: Path, key: str, fitted: GeometrySpheres) -> None:
+    """Merge one entry into the cache file (atomically replaced; a failure only costs a
+    fit next time)."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            if not isinstance(data, dict):
+                data = {}
+        except (OSError, ValueError):
+            data = {}
+        data[key] = {"centres": fitted.centres.tolist(), "radii": fitted.radii.tolist(),
+                     "looseness": fitted.looseness, "kind": fitted.kind}
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".spheres.", suffix=".json")
+        with os.fdopen(fd, "w", encoding="utf-8") as out:
+            json.dump(data, out)
+        os.replace(tmp, path)
+    except OSError as exc:
+        log.debug("sphere cache not written (%s): %s", path, exc)
