@@ -56,7 +56,7 @@ from taskrunner.errors import (
     TaskrunnerError,
     UnknownNameError,
 )
-from taskrunner.kinds import BackendKind, ExitCode
+from taskrunner.kinds import BackendKind, CollisionChoice, ExitCode
 
 __all__ = ["main"]
 
@@ -79,7 +79,7 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--allow-missing-meshes", action="store_true",
                         help="load robots whose mesh files cannot be found (or that have "
                              "no collision geometry) without that geometry, with a warning")
-    parser.add_argument("--collision", choices=("exact", "convex", "auto"), default=None,
+    parser.add_argument("--collision", choices=tuple(CollisionChoice), default=None,
                         help="link geometry of every robot: exact meshes, convex hulls, or "
                              "auto (hulls where tight; default: each robot's own choice)")
 
@@ -303,7 +303,7 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--data-dir", "--state-dir", dest="data_dir", default=None,
                        help="where the server keeps its data, the run database "
                             "(TASKRUNNER_DATA_DIR, else state/)")
-    serve.add_argument("--collision", choices=("exact", "convex", "auto"), default=None,
+    serve.add_argument("--collision", choices=tuple(CollisionChoice), default=None,
                        help="link geometry of every robot the server loads (default: each "
                             "robot's own choice: its cell's or robot.yaml's collision:, else auto)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,

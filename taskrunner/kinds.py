@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from enum import IntEnum, StrEnum
 
-__all__ = ["BackendKind", "EventKind", "ExitCode", "FailureKind", "RunStatus", "StopReason"]
+__all__ = ["BackendKind", "CollisionChoice", "EventKind", "ExitCode", "FailureKind", "NodeStatus",
+           "RunStatus", "StopReason"]
 
 
 class BackendKind(StrEnum):
@@ -41,6 +42,31 @@ class RunStatus(StrEnum):
     CANCELLED = "cancelled"
     INTERRUPTED = "interrupted"
     """The process that ran it ended before the run did (read back from its journal)."""
+
+
+class NodeStatus(StrEnum):
+    """A tree node's status, in events (``node_finished``), records, the live tree and the
+    REST API: py_trees' :class:`~py_trees.common.Status` values, and ``CANCELLED``."""
+
+    SUCCESS = "SUCCESS"
+    FAILURE = "FAILURE"
+    RUNNING = "RUNNING"
+    INVALID = "INVALID"
+    """Not started (py_trees' stop also leaves a node INVALID)."""
+    CANCELLED = "CANCELLED"
+    """Running when the run was stopped (py_trees has no such status)."""
+
+
+class CollisionChoice(StrEnum):
+    """The link geometry collisions are checked with (``--collision``, a robot's or a cell
+    robot's ``collision:``, ``load_workcell(collision=)``)."""
+
+    EXACT = "exact"
+    """The links' meshes as they are."""
+    CONVEX = "convex"
+    """Each mesh's convex hull."""
+    AUTO = "auto"
+    """Hulls where they are tight, exact meshes where a hull would fill a gap."""
 
 
 class FailureKind(StrEnum):

@@ -21,6 +21,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import RobotDescriptionError, YamlError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot.description import RobotDescription
 from taskrunner.robot.missing_meshes import check_robot_geometry, resolve_allow_missing_meshes
 from taskrunner.robot.model import (
@@ -205,10 +206,10 @@ def _check_geometry(placements: Sequence[Placement],
 def _collision_choice(description: RobotDescription) -> str:
     """``TASKRUNNER_COLLISION`` (``run-task --collision``), else the robot's own choice."""
     env = os.environ.get("TASKRUNNER_COLLISION") or None
-    if env is not None and env not in ("exact", "convex", "auto"):
+    if env is not None and env not in tuple(CollisionChoice):
         raise RobotDescriptionError(
             f"'TASKRUNNER_COLLISION' must be one of exact, convex, auto (got {env!r})")
-    return env or description.collision or "auto"
+    return env or description.collision or CollisionChoice.AUTO
 
 
 def _scaling(description: RobotDescription) -> tuple[float, float]:

@@ -42,6 +42,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from taskrunner.errors import RobotDescriptionError, UnknownNameError, YamlError
 from taskrunner.folders import FileKind, FolderPolicy, PathNotAllowedError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.materials import Material, material_of
 from taskrunner.objectspec import ObjectFields
 from taskrunner.posespec import PoseFields
@@ -93,7 +94,7 @@ class RobotSpec(_Strict):
     prefix: str = ""
     base: PoseSpec = PoseSpec()
     poses: dict[str, dict[str, dict[str, Number]]] = {}
-    collision: Literal["exact", "convex", "auto"] | None = None
+    collision: CollisionChoice | None = None
     # How the mujoco backend holds a grasped object: one mode for the robot's arms, or
     # per arm group / end effector (the robot's own names).
     grasp_mode: GraspMode | dict[str, GraspMode] | None = None

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import TypeVar
 
 from taskrunner.errors import InputError, RobotDescriptionError, YamlError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot.configpackage import (
     ConfigFiles,
     find_config_files,
@@ -57,7 +58,7 @@ MANIFEST = "robot.yaml"
 _MANIFEST_KEYS = {"name", "urdf", "srdf", "kinematics", "joint_limits", "hardware", "xacro_args",
                   "ompl_planning", "initial_positions", "collision", "end_effectors",
                   "pilz_cartesian_limits"}
-COLLISION_CHOICES = ("exact", "convex", "auto")
+COLLISION_CHOICES = tuple(c.value for c in CollisionChoice)
 T = TypeVar("T")
 
 

@@ -23,6 +23,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import UnknownNameError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot.moveit_yaml import CartesianLimits, KinematicsSettings, OmplGroupSettings
 from taskrunner.types import JointState
 
@@ -151,7 +152,7 @@ class RobotInstance:
     layout: str = ""
     files: tuple[tuple[str, Path], ...] = ()
     notes: tuple[str, ...] = ()
-    collision: str = "auto"
+    collision: str = CollisionChoice.AUTO
     """Link geometry to check: exact meshes, convex hulls, or auto (hulls where tight)."""
     cartesian_limits: CartesianLimits | None = None
     """Its ``pilz_cartesian_limits.yaml``: bounds of straight-line tool motions."""

@@ -30,7 +30,7 @@ import py_trees
 from py_trees.common import Status
 
 from taskrunner.backends.base import ExecutionHandle
-from taskrunner.runtime.runner import CANCELLED
+from taskrunner.kinds import NodeStatus
 
 if TYPE_CHECKING:
     from taskrunner.runtime.runner import Runner
@@ -38,7 +38,9 @@ if TYPE_CHECKING:
 __all__ = ["LiveTree", "MotionProgress", "NodeView", "TerminalScreen", "layout_frame",
            "layout_tree", "progress_bar", "view_tree"]
 
-_MARKS = {"SUCCESS": "✔", "FAILURE": "✘", "RUNNING": "▶", "INVALID": "·", CANCELLED: "■"}
+_MARKS: dict[str, str] = {NodeStatus.SUCCESS: "✔", NodeStatus.FAILURE: "✘",
+                          NodeStatus.RUNNING: "▶", NodeStatus.INVALID: "·",
+                          NodeStatus.CANCELLED: "■"}
 _INDENT = "  "
 _ELLIPSIS = "…"
 _BAR_CELLS = 10
@@ -64,8 +66,8 @@ class NodeView:
 
     Attributes:
         name: the node's name.
-        status: ``"SUCCESS"``, ``"FAILURE"``, ``"RUNNING"``, ``"INVALID"`` (not started)
-            or ``"CANCELLED"`` (running when the run was stopped).
+        status: a :class:`~taskrunner.kinds.NodeStatus` value (``INVALID``: not started,
+            ``CANCELLED``: running when the run was stopped).
         children: the node's children, in order (none for a leaf).
         seconds: how long a running leaf has been at it (s), if known.
         motion: the motion a running leaf executes, if any.
@@ -129,8 +131,8 @@ class _Row:
 
 def _rows(node: NodeView, depth: int, out: list[_Row]) -> None:
     mark = _MARKS.get(node.status, "?")
-    running = node.status == "RUNNING"
-    keep = running or node.status in ("FAILURE", CANCELLED)
+    running = node.status == NodeStatus.RUNNING
+    keep = running or node.status in (NodeStatus.FAILURE, NodeStatus.CANCELLED)
     if not node.children:
         out.append(_Row(depth, f"{mark} {node.name}", _leaf_suffixes(node), keep,
                         leaf=True, running=running))
@@ -147,7 +149,7 @@ def _rows(node: NodeView, depth: int, out: list[_Row]) -> None:
 
 
 def _leaf_suffixes(node: NodeView) -> tuple[str, ...]:
-    if node.status != "RUNNING":
+    if node.status != NodeStatus.RUNNING:
         return ("",)
     if node.motion is not None:
         m = node.motion
@@ -341,7 +343,7 @@ class LiveTree:
 def _finished_leaves(node: NodeView) -> int:
     if node.children:
         return sum(_finished_leaves(c) for c in node.children)
-    return int(node.status in ("SUCCESS", "FAILURE"))
+    return int(node.status in (NodeStatus.SUCCESS, NodeStatus.FAILURE))
 
 
 def _last_message(runner: Runner) -> str | None:

@@ -39,7 +39,7 @@ from taskrunner.errors import (
     PlanningError,
     TaskrunnerError,
 )
-from taskrunner.kinds import ExitCode, FailureKind
+from taskrunner.kinds import ExitCode, FailureKind, NodeStatus
 from taskrunner.planning.service import PlanService
 from taskrunner.planning.timing import TimingOptions
 from taskrunner.robot.cell import Cell
@@ -78,7 +78,7 @@ def error_kind(exc: TaskrunnerError) -> str:
     return FailureKind.INVALID.value
 
 
-CANCELLED = "CANCELLED"
+CANCELLED = NodeStatus.CANCELLED.value
 """The status of a node that was running when the run was stopped (py_trees has none: its
 ``stop`` leaves every node ``INVALID``, as if it never ran)."""
 

@@ -35,7 +35,7 @@ from taskrunner.backends import (
 )
 from taskrunner.backends.base import Backend
 from taskrunner.errors import ArgumentError, InputError
-from taskrunner.kinds import BackendKind
+from taskrunner.kinds import BackendKind, NodeStatus
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.runtime.display import LiveTree
 from taskrunner.runtime.events import EventLog, RunEvent
@@ -321,10 +321,11 @@ def _log_line(event: RunEvent) -> str | None:
         return (f"{event.time:8.2f}s    planned in {1e3 * d.get('planning_time', 0):.0f} ms, "
                 f"motion {d.get('duration', 0):.2f} s")
     if event.kind == "node_finished":
-        mark = {"SUCCESS": "✔", "FAILURE": "✘"}.get(event.status or "", "■")
+        marks: dict[str, str] = {NodeStatus.SUCCESS: "✔", NodeStatus.FAILURE: "✘"}
+        mark = marks.get(event.status or "", "■")
         took = event.data.get("seconds")
         timing = f" in {took:.2f} s" if took is not None else ""
-        tail = f": {event.message}" if event.message and event.status == "FAILURE" else ""
+        tail = f": {event.message}" if event.message and event.status == NodeStatus.FAILURE else ""
         return f"{event.time:8.2f}s  {mark} {event.node}{timing}{tail}"
     if event.kind in ("run_started", "run_finished", "message"):
         return f"{event.time:8.2f}s  {event.message}"

@@ -32,6 +32,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import ArgumentError, InputError, TaskrunnerError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.resources import resolve_cell
 from taskrunner.robot import PackageMap, Placement, RobotModel, build_model, load_description
 from taskrunner.scene.geometry import LinkGeometry, robot_link_geometry
@@ -91,7 +92,7 @@ class MatrixOptions:
         if self.collision is not None:
             return self.collision
         if self.convex_meshes is not None:
-            return "convex" if self.convex_meshes else "exact"
+            return CollisionChoice.CONVEX if self.convex_meshes else CollisionChoice.EXACT
         return None
 
     def __post_init__(self) -> None:
@@ -319,7 +320,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                             check_self_collision=False)
         entries = generate_collision_matrix(
             robot, args.samples, args.seed,
-            MatrixOptions(collision="exact" if args.meshes else args.collision))
+            MatrixOptions(collision=CollisionChoice.EXACT if args.meshes else args.collision))
         sys.stdout.write(format_disable_collisions(entries, indent=""))
         counts = Counter(e.reason for e in entries)
         summary = ", ".join(f"{counts[r]} {r}" for r in REASONS)

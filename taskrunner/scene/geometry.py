@@ -19,6 +19,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import MissingMeshError, SceneError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot import RobotModel
 from taskrunner.scene.collision import Body
 from taskrunner.scene.hullfit import convex_hull
@@ -117,7 +118,7 @@ def robot_link_geometry(robot: RobotModel, collision: bool | str | Mapping[str, 
         tolerance: how far a hull may stand off its mesh under auto (m).
     """
     if isinstance(collision, bool):
-        collision = "convex" if collision else "exact"
+        collision = CollisionChoice.CONVEX if collision else CollisionChoice.EXACT
     plan = plan_link_geometry(robot, collision, tolerance)
     out = []
     for index, source in enumerate(robot.collision_model.geometryObjects):

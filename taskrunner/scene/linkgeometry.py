@@ -32,6 +32,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import InputError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot import RobotModel
 from taskrunner.scene.hullfit import hull_excess, shared_convex_hull
 
@@ -52,7 +53,7 @@ __all__ = [
     "set_collision_choice",
 ]
 
-COLLISION_CHOICES = ("exact", "convex", "auto")
+COLLISION_CHOICES = tuple(c.value for c in CollisionChoice)
 COLLISION_ENV = "TASKRUNNER_COLLISION"
 DEFAULT_HULL_TOLERANCE = 0.005
 HULL, MESH, PRIMITIVE = "convex hull", "exact mesh", "primitive"
@@ -122,7 +123,7 @@ class LinkGeometryPlan:
             if not links:
                 continue
             names = ", ".join(
-                f"{c.link} ({c.reason})" if kind == MESH and c.choice == "auto" else c.link
+                f"{c.link} ({c.reason})" if kind == MESH and c.choice == CollisionChoice.AUTO else c.link
                 for c in links)
             lines.append(f"{_PLURAL[kind]}: {names}")
         return lines
@@ -144,7 +145,7 @@ def collision_choices(robot: RobotModel, override: str | Mapping[str, str] | Non
         elif override is not None and inst.name in override:
             value = check_collision_choice(override[inst.name], f"collision of {inst.name}")
         else:
-            value = check_collision_choice(getattr(inst, "collision", "auto") or "auto",
+            value = check_collision_choice(getattr(inst, "collision", None) or CollisionChoice.AUTO,
                                            f"collision of {inst.name}")
         out[inst.name] = value
     return out
@@ -242,11 +243,11 @@ def plan_link_geometry(robot: RobotModel, collision: str | Mapping[str, str] | N
         meshes = [i for i in indices if isinstance(objects[i].geometry, coal.BVHModelBase)]
         if not meshes:
             links[link] = LinkChoice(link, PRIMITIVE, choice, "no mesh")
-        elif choice == "exact":
+        elif choice == CollisionChoice.EXACT:
             links[link] = LinkChoice(link, MESH, choice, "collision: exact")
         elif any(link_hull(robot, i) is None for i in meshes):
             links[link] = LinkChoice(link, MESH, choice, "flat mesh, no 3-D hull")
-        elif choice == "convex":
+        elif choice == CollisionChoice.CONVEX:
             links[link] = LinkChoice(link, HULL, choice, "collision: convex")
         else:
             excess = max(hull_excess([objects[i].geometry for i in meshes]))
@@ -257,7 +258,7 @@ def plan_link_geometry(robot: RobotModel, collision: str | Mapping[str, str] | N
             else:
                 links[link] = LinkChoice(link, HULL, choice, f"hull within {mm:.1f} mm of the mesh",
                                          excess)
-    if any(c.kind == HULL and c.choice == "auto" for c in links.values()):
+    if any(c.kind == HULL and c.choice == CollisionChoice.AUTO for c in links.values()):
         _keep_named_poses_free(robot, by_link, links)
     plan = LinkGeometryPlan(links)
     with _lock:
@@ -274,7 +275,7 @@ def _keep_named_poses_free(robot: RobotModel, by_link: Mapping[str, list[int]],
     current geometry, then, for the pairs that collide, with meshes."""
     states = _named_states(robot)
     for _ in range(_MAX_ROUNDS):
-        movable = {link for link, c in links.items() if c.kind == HULL and c.choice == "auto"}
+        movable = {link for link, c in links.items() if c.kind == HULL and c.choice == CollisionChoice.AUTO}
         names = sorted(by_link)
         pairs = [(a, b) for i, a in enumerate(names) for b in names[i + 1:]
                  if (a in movable or b in movable)
@@ -291,7 +292,7 @@ def _keep_named_poses_free(robot: RobotModel, by_link: Mapping[str, list[int]],
             for a, b in sorted(touching - exact.colliding(q)):
                 for link in (a, b):
                     old = links[link]
-                    if old.kind == HULL and old.choice == "auto":
+                    if old.kind == HULL and old.choice == CollisionChoice.AUTO:
                         links[link] = LinkChoice(
                             link, MESH, old.choice,
                             f"{name} collides as hulls ({a}–{b}), not as meshes", old.excess)

@@ -28,6 +28,7 @@ import numpy as np
 import pinocchio as pin
 
 from taskrunner.errors import ArgumentError, SceneError, UnknownNameError
+from taskrunner.kinds import CollisionChoice
 from taskrunner.robot import RobotModel
 from taskrunner.scene.allowed import AllowedCollisions
 from taskrunner.scene.collision import (
@@ -94,7 +95,7 @@ class SceneOptions:
         if self.collision is not None:
             return self.collision
         if self.convex_robot_meshes is not None:
-            return "convex" if self.convex_robot_meshes else "exact"
+            return CollisionChoice.CONVEX if self.convex_robot_meshes else CollisionChoice.EXACT
         return None
 
 
