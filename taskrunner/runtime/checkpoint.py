@@ -34,19 +34,18 @@ from __future__ import annotations
 import hashlib
 from collections.abc import Iterator
 from dataclasses import dataclass
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import py_trees
 from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
-from taskrunner.errors import InputError, TaskrunnerError
-from taskrunner.scene.objects import SceneObject, SceneSnapshot
-from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
+from taskrunner.errors import TaskrunnerError
+from taskrunner.runtime.replay import object_data, object_of
+from taskrunner.scene.objects import SceneSnapshot
 from taskrunner.tree.behaviours import TaskLeaf
 from taskrunner.tree.timeout import TaskTimeout
-from taskrunner.types import JointState, Pose
+from taskrunner.types import JointState
 
 if TYPE_CHECKING:
     from taskrunner.runtime.events import EventLog, RunEvent
@@ -84,42 +83,13 @@ def text_sha256(text: str) -> str:
 
 
 # ----------------------------------------------------------------------------- scene
-def _shape(shape: Shape) -> dict[str, Any]:
-    if isinstance(shape, Box):
-        return {"type": "box", "size": list(shape.size)}
-    if isinstance(shape, Cylinder):
-        return {"type": "cylinder", "radius": shape.radius, "length": shape.length}
-    if isinstance(shape, Sphere):
-        return {"type": "sphere", "radius": shape.radius}
-    if isinstance(shape, Mesh):  # the whole path: the resumed run loads it again
-        return {"type": "mesh", "file": str(shape.path), "scale": list(shape.scale)}
-    raise InputError(f"a checkpoint cannot hold a shape of type {type(shape).__name__}")
-
-
-def _shape_of(data: dict[str, Any]) -> Shape:
-    kind = data.get("type")
-    if kind == "box":
-        return Box(tuple(data["size"]))  # type: ignore[arg-type]
-    if kind == "cylinder":
-        return Cylinder(float(data["radius"]), float(data["length"]))
-    if kind == "sphere":
-        return Sphere(float(data["radius"]))
-    if kind == "mesh":
-        return Mesh(Path(data["file"]), tuple(data.get("scale", (1.0, 1.0, 1.0))))  # type: ignore[arg-type]
-    raise InputError(f"'shape.type' must be box, cylinder, sphere or mesh (got {kind!r})")
-
-
 def scene_state(scene: Scene) -> dict[str, Any]:
     """The scene in full, JSON-ready (exact numbers: a resumed run plans from them)."""
     snapshot = scene.snapshot()
     reasons = scene.allowed_collisions()
     return {
         "joints": {n: float(v) for n, v in zip(snapshot.state.names, snapshot.state.positions)},
-        "objects": [{"name": o.name, "shape": _shape(o.shape),
-                     "pose": {"xyz": list(o.pose.xyz), "quat": list(o.pose.quat),
-                              "frame": o.pose.frame},
-                     "attached_to": o.attached_to, "touch_links": list(o.touch_links)}
-                    for o in snapshot.objects],
+        "objects": [object_data(o, exact=True) for o in snapshot.objects],
         "allowed": [[a, b, reasons.get(frozenset((a, b)), "scene")]
                     for a, b in snapshot.allowed],
     }
@@ -128,12 +98,7 @@ def scene_state(scene: Scene) -> dict[str, Any]:
 def restore_scene(scene: Scene, data: dict[str, Any]) -> None:
     """Make ``scene`` what :func:`scene_state` wrote (objects, attachments, allowances
     with their reasons, joints)."""
-    objects = tuple(
-        SceneObject(o["name"], _shape_of(o["shape"]),
-                    Pose(tuple(o["pose"]["xyz"]), tuple(o["pose"]["quat"]),  # type: ignore[arg-type]
-                         o["pose"].get("frame", "world")),
-                    o.get("attached_to"), tuple(o.get("touch_links", ())))
-        for o in data.get("objects", ()))
+    objects = tuple(object_of(o) for o in data.get("objects", ()))
     joints = data.get("joints", {})
     names = scene.robot.joint_names
     q = scene.robot.state_with(scene.state, {n: v for n, v in joints.items() if n in names})

@@ -13,22 +13,27 @@ last kept), and numbers are rounded (positions to 10 µrad, times to 0.1 ms), wh
 viewer interpolating linearly cannot tell from the full trajectory. A pick_place record
 is about 100 kB.
 
-:func:`replay_of` reads those events back out of a record.
+:func:`replay_of` reads those events back out of a record. A scene's objects are written
+by :func:`object_data` (rounded for a viewer here; exact in a run's checkpoints,
+:mod:`taskrunner.runtime.checkpoint`) and read back by :func:`object_of`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from taskrunner.errors import InputError
 from taskrunner.runtime.records import RunRecord
 from taskrunner.scene.objects import SceneObject, SceneSnapshot
 from taskrunner.shapes import Box, Cylinder, Mesh, Shape, Sphere
 from taskrunner.types import JointTrajectory, Pose
 
-__all__ = ["Replay", "motion_data", "replay_of", "scene_data", "trajectory_data"]
+__all__ = ["Replay", "motion_data", "object_data", "object_of", "replay_of", "scene_data",
+           "shape_data", "shape_of", "trajectory_data"]
 
 MAX_RATE_HZ = 25.0   # samples kept per second of trajectory
 _POS_DIGITS = 5      # rad or m
@@ -63,28 +68,65 @@ def _thin(times: np.ndarray, rate_hz: float) -> np.ndarray:
     return np.array(keep)
 
 
-def _pose(pose: Pose) -> dict[str, Any]:
+def _pose(pose: Pose, exact: bool) -> dict[str, Any]:
+    if exact:
+        return {"xyz": list(pose.xyz), "quat": list(pose.quat), "frame": pose.frame}
     return {"xyz": [round(v, 6) for v in pose.xyz], "quat": [round(v, 6) for v in pose.quat],
             "frame": pose.frame}
 
 
-def _shape(shape: Shape) -> dict[str, Any]:
+def shape_data(shape: Shape, exact: bool = False) -> dict[str, Any]:
+    """A shape as JSON (``type`` and its sizes, m); a mesh by its file name, or with
+    ``exact`` by its whole path (a resumed run loads it again)."""
     if isinstance(shape, Box):
         return {"type": "box", "size": list(shape.size)}
     if isinstance(shape, Cylinder):
         return {"type": "cylinder", "radius": shape.radius, "length": shape.length}
     if isinstance(shape, Sphere):
         return {"type": "sphere", "radius": shape.radius}
-    if isinstance(shape, Mesh):  # the file name only: a record does not reveal folders
-        return {"type": "mesh", "file": shape.path.name, "scale": list(shape.scale)}
-    raise TypeError(f"unknown shape {type(shape).__name__}")
+    if isinstance(shape, Mesh):
+        return {"type": "mesh", "file": str(shape.path) if exact else shape.path.name,
+                "scale": list(shape.scale)}
+    raise InputError(f"a run record cannot hold a shape of type {type(shape).__name__}")
 
 
-def object_data(obj: SceneObject) -> dict[str, Any]:
+def shape_of(data: dict[str, Any]) -> Shape:
+    """The shape :func:`shape_data` wrote.
+
+    Raises:
+        InputError: an unknown ``type``.
+    """
+    kind = data.get("type")
+    if kind == "box":
+        return Box(tuple(data["size"]))  # type: ignore[arg-type]
+    if kind == "cylinder":
+        return Cylinder(float(data["radius"]), float(data["length"]))
+    if kind == "sphere":
+        return Sphere(float(data["radius"]))
+    if kind == "mesh":
+        return Mesh(Path(data["file"]), tuple(data.get("scale", (1.0, 1.0, 1.0))))  # type: ignore[arg-type]
+    raise InputError(f"'shape.type' must be box, cylinder, sphere or mesh (got {kind!r})")
+
+
+def object_data(obj: SceneObject, exact: bool = False) -> dict[str, Any]:
     """One scene object: ``name``, ``shape``, ``pose`` (in the world, or in the frame of
-    the link ``attached_to``)."""
-    return {"name": obj.name, "shape": _shape(obj.shape), "pose": _pose(obj.pose),
-            "attached_to": obj.attached_to}
+    the link ``attached_to``), rounded to 1 µm for a viewer; with ``exact`` (a checkpoint:
+    a resumed run plans from it) the numbers as they are, the links it may touch
+    (``touch_links``) and a mesh's whole path."""
+    data: dict[str, Any] = {"name": obj.name, "shape": shape_data(obj.shape, exact),
+                            "pose": _pose(obj.pose, exact), "attached_to": obj.attached_to}
+    if exact:
+        data["touch_links"] = list(obj.touch_links)
+    return data
+
+
+def object_of(data: dict[str, Any]) -> SceneObject:
+    """The scene object :func:`object_data` wrote."""
+    pose = data["pose"]
+    return SceneObject(data["name"], shape_of(data["shape"]),
+                       Pose(tuple(pose["xyz"]), tuple(pose["quat"]),  # type: ignore[arg-type]
+                            pose.get("frame", "world")),
+                       data.get("attached_to"), tuple(data.get("touch_links", ())))
 
 
 def scene_data(snapshot: SceneSnapshot) -> dict[str, Any]:
