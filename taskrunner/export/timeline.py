@@ -47,6 +47,7 @@ import numpy as np
 from taskrunner.errors import InputError, MissingMeshError, TaskrunnerError
 from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
+from taskrunner.export.physics import SentMotion, physics_path
 from taskrunner.export.rosmsg import LogLine, Marker, MessageType
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import RunEvent
@@ -120,6 +121,7 @@ class _Schedule:
     motions: list[_Motion] = field(default_factory=list)
     end: float = 0.0
     physics: list[RunEvent | None] = field(default_factory=list)  # per motion
+    reports: list[RunEvent] = field(default_factory=list)  # every physics event
     measured: bool = False      # motions are the physics' samples (no velocities)
 
 
@@ -158,6 +160,7 @@ def _schedule(record: RunRecord) -> _Schedule:
             out.motions.append(motion)
             out.physics.append(None)
         elif event.kind == "physics" and "t" in event.data:
+            out.reports.append(event)
             # Its node's motion: the latest one of that node without a report yet.
             for k in range(len(out.motions) - 1, -1, -1):
                 if out.motions[k].node == (event.node or "") and out.physics[k] is None:
@@ -179,60 +182,28 @@ def _schedule(record: RunRecord) -> _Schedule:
 
 def _measured(schedule: _Schedule) -> str | None:
     """Put the physics' own samples (the record's ``physics`` events) in place of the
-    trajectories sent, on task time; or say why not (the trajectories are kept).
-
-    Physics time stands still between motions (each motion ends settled, and the next
-    one starts at the physics time the last ended at), and a report holds a sample
-    every ``period`` s of physics from one after its motion started (the first at most
-    ``period`` after it: the sampling clock restarts with the motion). A motion's
-    samples at physics time ``p`` so go to task time ``t0 + (p - p0)``, ``t0`` its
-    start on the task's schedule, ``p0 = max(0, p_first - period)`` its physics start;
-    the settling after its trajectory is kept up to the start of the next motion.
-    """
+    trajectories sent, on task time (:mod:`taskrunner.export.physics`: every kept sample
+    is the whole cell's state at one moment, motions at once included); or say why not
+    (the trajectories are kept)."""
     motions = schedule.motions
     if not motions:
         return None
-    missing = [m for m, report in zip(motions, schedule.physics, strict=True) if report is None]
-    if missing:
-        more = f" (and {len(missing) - 1} more of {len(motions)})" if len(missing) > 1 else ""
-        return f"{missing[0].describe()} has no physics report{more}"
-    order = sorted(range(len(motions)), key=lambda k: motions[k].t0)
-    for a, b in zip(order, order[1:], strict=False):
-        if motions[b].t0 < motions[a].t0 + motions[a].until - 1e-6:
-            return (f"{motions[a].describe()} and {motions[b].describe()} overlap in time "
-                    "(their physics reports are not one motion's each)")
-    replaced = []
-    for position, k in enumerate(order):
-        motion, report = motions[k], schedule.physics[k]
-        assert report is not None
-        data = report.data
-        try:
-            joints = tuple(str(j) for j in data["joints"])
-            p = np.asarray(data["t"], dtype=float)
-            q = np.asarray(data["q"], dtype=float).reshape(len(p), len(joints))
-            period = float(data["period"])
-        except (KeyError, TypeError, ValueError) as exc:
-            raise InputError(f"event {report.seq} (physics of {report.node!r}): it must have "
-                             f"joints, t, q and period ({exc})") from None
-        if len(p) == 0:
-            return (f"the physics report of {motion.describe()} (event {report.seq}) has "
-                    "no samples")
-        times = p - max(0.0, float(p[0]) - period)
-        until = float(times[-1])
-        if position + 1 < len(order):
-            until = min(until, motions[order[position + 1]].t0 - motion.t0)
-        keep = times <= until + 1e-9
-        if not keep.any():
-            return (f"the physics samples of {motion.describe()} begin after the next "
-                    "motion starts")
-        replaced.append((k, _Motion(motion.node, motion.t0, joints, times[keep], q[keep],
-                                    np.zeros((int(keep.sum()), len(joints))),
-                                    float(times[keep][-1]), measured=True, seq=motion.seq,
-                                    location=motion.location)))
-    for k, motion in replaced:
-        motions[k] = motion
+    reports = schedule.reports
+    if not reports:
+        more = f" (and {len(motions) - 1} more)" if len(motions) > 1 else ""
+        return f"{motions[0].describe()} has no physics report{more}"
+    sent = [SentMotion(m.seq, m.t0, m.joints, m.times, m.positions, m.until, m.describe())
+            for m in motions]
+    path = physics_path(sent, reports)
+    if isinstance(path, str):
+        return path
+    first = motions[min(range(len(motions)), key=lambda k: motions[k].t0)]
+    t0 = float(path.times[0])
+    schedule.motions = [_Motion("physics", t0, path.joints, path.times - t0, path.positions,
+                                np.zeros_like(path.positions), float(path.times[-1] - t0),
+                                measured=True, seq=first.seq, location=first.location)]
     schedule.measured = True
-    schedule.end = max([schedule.end, *(m.t0 + m.until for m in motions)])
+    schedule.end = max(schedule.end, float(path.times[-1]))
     return None
 
 
