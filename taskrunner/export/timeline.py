@@ -104,6 +104,11 @@ class _Motion:
     def at(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """Positions and velocities ``t`` s after its start (held at its end)."""
         s = min(max(t, 0.0), self.until)
+        k = int(np.searchsorted(self.times, s - 1e-9))
+        if self.measured and k < len(self.times) and abs(self.times[k] - s) <= 1e-9:
+            # A physics sample's own time (up to the ns the stamps are rounded to): the
+            # sample itself, not a blend of it and its neighbour by a rounding.
+            return self.positions[k].copy(), np.zeros(len(self.joints))
         q = np.array([np.interp(s, self.times, self.positions[:, j])
                       for j in range(len(self.joints))])
         if t > self.until:

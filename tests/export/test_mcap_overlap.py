@@ -1,0 +1,98 @@
+"""A mujoco run whose two arms move at once exports without degradation: every
+/joint_states message after the start is one physics sample of the whole cell, and /tf
+is our forward kinematics of it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pinocchio as pin
+import pytest
+from rosbags.highlevel import AnyReader
+
+from taskrunner.cli import main
+from taskrunner.export.mcapfile import cell_of_record
+from taskrunner.kinematics import frame_pose
+from taskrunner.runtime.records import RunRecord, load_record
+
+TASK = Path(__file__).parent / "fixtures" / "two_arms_at_once.yaml"
+
+
+def _se3(transform: Any) -> pin.SE3:
+    t, r = transform.translation, transform.rotation
+    return pin.SE3(pin.Quaternion(r.w, r.x, r.y, r.z).normalized().matrix(),
+                   np.array([t.x, t.y, t.z]))
+
+
+class Overlapped:
+    def __init__(self, record: RunRecord, mcap: Path) -> None:
+        self.record = record
+        self.messages: dict[str, list[tuple[int, Any]]] = {}
+        with AnyReader([mcap]) as reader:
+            for connection, stamp, raw in reader.messages():
+                self.messages.setdefault(connection.topic, []).append(
+                    (stamp, reader.deserialize(raw, connection.msgtype)))
+
+
+@pytest.fixture(scope="module")
+def overlapped(tmp_path_factory: pytest.TempPathFactory) -> Overlapped:
+    tmp = tmp_path_factory.mktemp("overlap")
+    runs, out = tmp / "runs", tmp / "run.mcap"
+    # Without --mcap-allow-degraded: the export must not need it.
+    assert main(["run", str(TASK), "--backend", "mujoco", "--in-process", "--plain",
+                 "--runs-dir", str(runs), "--mcap", str(out)]) == 0
+    return Overlapped(load_record(next(runs.glob("*.json"))), out)
+
+
+def test_the_runs_motions_overlap_in_time(overlapped: Overlapped) -> None:
+    motions = sorted((e.data["sent"], e.data["sent"] + e.data["trajectory"]["duration"],
+                      e.data["trajectory"]["joints"][0][:5])
+                     for e in overlapped.record.events if e.kind == "motion")
+    assert len(motions) == 3
+    (a0, a1, arm_a), (b0, _, arm_b) = motions[0], motions[1]
+    assert arm_a != arm_b and a0 < b0 < a1  # the second arm starts while the first moves
+
+
+def test_every_joint_state_is_a_physics_sample_and_tf_is_its_fk(overlapped: Overlapped) -> None:
+    record, messages = overlapped.record, overlapped.messages
+    assert not [m.msg for _, m in messages["/rosout"] if m.level >= 30]
+    model = cell_of_record(record).model
+    reports = [e.data for e in record.events if e.kind == "physics"]
+    joints = reports[0]["joints"]
+    samples = np.concatenate([np.array(r["q"]) for r in reports])
+    states = messages["/joint_states"]
+    assert len(states) > 0.8 * len(samples)
+    names = list(states[0][1].name)
+    columns = [names.index(j) for j in joints]
+    static = {t.child_frame_id: (t.header.frame_id, _se3(t.transform))
+              for _, m in messages["/tf_static"] for t in m.transforms}
+    tfs = dict(messages["/tf"])
+    links = [f.name for f in model.model.frames if f.type == pin.BODY]
+    worst, last = 0.0, -1
+    for stamp, state in states[1:]:  # the first: the run's start state, before any motion
+        assert list(state.velocity) == []
+        q = np.array(state.position)[columns]
+        matches = np.flatnonzero(np.all(samples == q, axis=1))  # bit for bit
+        assert matches.size, f"joint state at {stamp} is no physics sample"
+        assert matches.max() >= last  # in the physics' order (a settled arm repeats)
+        last = int(matches.max())
+        qs = model.state_with(model.default_state(), dict(zip(joints, q)))
+        edges = dict(static)
+        for tf in tfs[stamp].transforms:
+            edges[tf.child_frame_id] = (tf.header.frame_id, _se3(tf.transform))
+        for link in links:
+            pose, frame = pin.SE3.Identity(), link
+            while frame in edges:
+                parent, relative = edges[frame]
+                pose, frame = relative * pose, parent
+            expected = frame_pose(model, qs, link)
+            worst = max(worst, float(np.linalg.norm(pose.translation - expected.translation)))
+    assert worst < 1e-6
+    # Both arms move between two consecutive messages somewhere: they are shown at once.
+    positions = np.array([s.position for _, s in states])
+    moving = np.abs(np.diff(positions, axis=0)) > 1e-4
+    left = [i for i, n in enumerate(names) if n.startswith("left_")]
+    right = [i for i, n in enumerate(names) if n.startswith("right_")]
+    assert (moving[:, left].any(axis=1) & moving[:, right].any(axis=1)).any()
