@@ -173,7 +173,11 @@ class ResumePlan:
                  f"the outcomes of its {len(self.replay)} finished leaves kept"]
         if self.world is not None:
             restore_scene(runner.scene, self.world.scene)
-        runner.ctx.sync_from_backend()  # the joints as they are now
+        if self._fresh_world(runner):  # its objects are not the run's: the scene's are kept
+            state = runner.backend.joint_state()
+            runner.scene.set_state(dict(zip(state.names, state.positions)))
+        else:
+            runner.ctx.sync_from_backend()  # the joints (and simulated objects) as they are now
         notes += self._moved_joints(runner)
         notes += self._reconcile(runner)
         self.played = list(self.replay)
@@ -293,22 +297,18 @@ class ResumePlan:
                               f"(held: {', '.join(held) or 'nothing'}); drop --released/"
                               f"--held {name}")
         notes: list[str] = []
+        fresh = self._fresh_world(runner)
+        if fresh and not isinstance(runner.backend, SceneMatching):
+            raise _refuse(record, f"the {self.backend} backend's new simulated world cannot "
+                          "be made the one the run left: resume it in the process that ran "
+                          f"it (TaskRun.resume, POST /runs/{record.run_id}/resume)")
         regrip: dict[str, str] = {}  # said held, in a simulated world that never held them
         for name, arm in held.items():
             if name in options.released or name in options.objects:
                 scene.detach_object(name)
                 end_lift_off(scene, name)  # as a detach step does
                 notes.append(f"{name!r} no longer held by {arm!r} (the operator says so)")
-            elif name in options.held and self.backend not in KINEMATIC \
-                    and isinstance(runner.backend, ObjectTracking) and not self.same_world:
-                if not isinstance(runner.backend, Gripping):
-                    raise _refuse(record, f"{name!r} cannot be put back in the grip of "
-                                  f"{arm!r} in a new simulated world (the {self.backend} "
-                                  "backend cannot close its fingers on it again): resume it "
-                                  "in the process that ran it (TaskRun.resume, POST /runs/"
-                                  f"{record.run_id}/resume), or say where it lies with "
-                                  f"--object {name}=X,Y,Z and resume --from the step that "
-                                  "picks it")
+            elif name in options.held and fresh:
                 regrip[name] = arm
             elif name in options.held:
                 notes.append(f"{name!r} still held by {arm!r} (the operator says so)")
@@ -338,15 +338,18 @@ class ResumePlan:
             scene.move_object(name, pose)
             notes.append(f"{name!r} at {tuple(round(v, 4) for v in pose.xyz)} (the operator "
                          "says so)")
-        if regrip:
-            notes += self._grip_again(runner, regrip)
+        if fresh:
+            notes += self._match_world(runner, regrip)
         return notes
 
-    def _grip_again(self, runner: Runner, held: dict[str, str]) -> list[str]:
-        """The objects the operator says are ``held``, put back in the grip of their arms
-        in a simulated world started afresh (its fingers driven to their closed pose), or
-        refused when the simulation does not hold them."""
-        assert isinstance(runner.backend, Gripping)
+    def _match_world(self, runner: Runner, held: dict[str, str]) -> list[str]:
+        """A simulated world started afresh made the scene's: its objects where the scene
+        has them, those the operator says are ``held`` back in the grip of their arms (the
+        fingers driven to their closed pose); refused when the simulation does not hold
+        them."""
+        backend = runner.backend
+        assert isinstance(backend, SceneMatching) and isinstance(backend, ObjectTracking)
+        backend.bind_scene(runner.scene, runner.ctx.materials)
         closed: dict[str, float] = {}
         for arm_name in sorted(set(held.values())):
             try:
@@ -359,13 +362,22 @@ class ResumePlan:
         names = ", ".join(map(repr, held))
         which = next(iter(held)) if len(held) == 1 else "NAME"
         try:
-            said = runner.backend.grip_held(closed)
+            said = backend.match_scene(closed)
         except BackendError as exc:
             raise _refuse(self.record, f"{names} said to be held, but the {self.backend} "
                           f"backend could not grip it again ({exc}); say where it lies with "
                           f"--object {which}=X,Y,Z and resume --from the step that picks "
                           "it") from None
-        return [f"{note} (the operator says it is held)" for note in said]
+        runner.ctx.sync_from_backend()  # the world now the scene's
+        return [note + (" (the operator says it is held)"
+                        if any(note.startswith(repr(name)) for name in held) else "")
+                for note in said]
+
+    def _fresh_world(self, runner: Runner) -> bool:
+        """Whether ``runner``'s backend simulates a world started afresh (a physics
+        backend in a new process), whose objects are not where the run left them."""
+        return self.backend not in KINEMATIC and not self.same_world \
+            and isinstance(runner.backend, ObjectTracking)
 
     def _rebuild_goals(self, runner: Runner, leaves: dict[int, Behaviour],
                        start_scene: dict[str, Any]) -> None:
@@ -397,11 +409,11 @@ class ResumePlan:
 
 
 @runtime_checkable
-class Gripping(Protocol):
-    """A simulated backend that can put what its bound scene holds back in a grip it never
-    made (:meth:`~taskrunner.backends.physics.MujocoBackend.grip_held`)."""
+class SceneMatching(Protocol):
+    """A simulated backend whose world can be made its bound scene's, objects held in a
+    grip it never made (:meth:`~taskrunner.backends.physics.MujocoBackend.match_scene`)."""
 
-    def grip_held(self, closed: Mapping[str, float]) -> list[str]:
+    def match_scene(self, closed: Mapping[str, float] | None = None) -> list[str]:
         ...
 
 

@@ -229,55 +229,62 @@ class MujocoBackend(BaseBackend):
         with self._lock:
             return dict(self._object_poses)
 
-    def grip_held(self, closed: Mapping[str, float]) -> list[str]:
-        """Put what the bound scene holds back in its grip, in a world that did not see it
-        grasped (a new process resuming a run stopped with an object held): each held
-        object goes where the scene holds it (its attachment pose, at the joints now), the
-        finger joints' targets become ``closed`` (rad or m: the gripper's closed pose)
-        and the fingers close on it for ``settle`` s without gravity; then ``settle`` s
-        with gravity, and the grip is checked as a motion checks it (touched by a hand,
-        within ``slip_distance`` and ``slip_angle`` of where it was put).
+    def match_scene(self, closed: Mapping[str, float] | None = None) -> list[str]:
+        """Make a world started afresh the bound scene's (a new process resuming a run):
+        every free object of the scene at rest where the scene has it, one the scene holds
+        where its gripper holds it (its attachment pose, at the joints now). With objects
+        held, the finger joints' targets become ``closed`` (rad or m: the grippers' closed
+        poses) and the fingers close on them for ``settle`` s, the held objects' weight
+        compensated; then ``settle`` s with their weight, and each grip is checked as a
+        motion checks it (touched by a hand, within ``slip_distance`` and ``slip_angle``
+        of where it was put).
 
         Returns:
-            One line per object gripped again (also in :attr:`notes`).
+            What was done, one line per object held (also in :attr:`notes`).
 
         Raises:
             BackendError: a motion runs, ``closed`` names a joint that is not a finger,
-                or an object is not held after (with the reason).
+                or a held object is not held after (with the reason).
         """
+        closed = closed or {}
         others = sorted(set(closed) - {n for n in self._names if self._finger[self._index[n]]})
         if others:
-            raise BackendError(f"grip_held: {', '.join(map(repr, others))} is no finger joint "
-                               "of the cell")
+            raise BackendError(f"match_scene: {', '.join(map(repr, others))} is no finger "
+                               "joint of the cell")
         with self._lock:
             if self._executions:
-                raise BackendError("grip_held: a motion runs; grip between motions")
+                raise BackendError("match_scene: a motion runs; match the scene between motions")
             scene, model, data = self._scene, self._model, self._data
-            held = {o.name: scene.object_pose(o.name) for o in (scene.objects if scene else ())
-                    if o.attached_to is not None and o.name in self._objects}
-            if not held:
-                return []
-            self._restore_objects(held)
-            for name in held:  # at rest where it is put
+            poses = {o.name: scene.object_pose(o.name) for o in (scene.objects if scene else ())
+                     if o.name in self._objects}
+            held = [o.name for o in (scene.objects if scene else ())
+                    if o.attached_to is not None and o.name in self._objects]
+            self._restore_objects(poses)
+            for name in poses:  # at rest where it is put
                 dof = model.jnt_dofadr[model.body_jntadr[self._objects[name]]]
                 data.qvel[dof:dof + 6] = 0.0
+            said = [f"the simulated world's {len(poses)} objects put where the scene has them"]
+            if not held:
+                self.notes.extend(said)
+                return said
             for name, value in closed.items():
                 self._targets[self._index[name]] = value
             self._held.clear()  # held where it was put: the slip checks' reference
             self._touched -= set(held)
             self._bind_held()
             self._apply_welds()
-            gravity = model.opt.gravity.copy()
+            bodies = [self._objects[name] for name in held]
             chunks = max(1, math.ceil(self._options.settle / (_CHUNK * model.opt.timestep)))
+            weight = model.body_mass[bodies, None] * model.opt.gravity[None, :]  # N
             try:
-                model.opt.gravity[:] = 0.0
-                for k in range(2 * chunks):  # closing without gravity, then holding with it
+                data.xfrc_applied[bodies, :3] = -weight  # at their centres of mass
+                for k in range(2 * chunks):  # closing on them weightless, then holding them
                     if k == chunks:
-                        model.opt.gravity[:] = gravity
+                        data.xfrc_applied[bodies, :3] = 0.0
                     self._step_chunk([])
                     self._targets[:] = self._chunk_targets
             finally:
-                model.opt.gravity[:] = gravity
+                data.xfrc_applied[bodies, :3] = 0.0
             self._publish()
             failure = self.failures.pop(0) if self.failures else self._slip()
             loose = [] if failure is not None else [
@@ -288,9 +295,9 @@ class MujocoBackend(BaseBackend):
             if failure is not None:
                 raise BackendError(failure)
             seconds = 2 * chunks * _CHUNK * model.opt.timestep
-            said = []
-            for name, pose in held.items():
-                gap = float(np.linalg.norm(np.subtract(self._object_poses[name].xyz, pose.xyz)))
+            for name in held:
+                gap = float(np.linalg.norm(np.subtract(self._object_poses[name].xyz,
+                                                       poses[name].xyz)))
                 said.append(f"{name!r} put back in the grip of {self._held[name].link!r} and "
                             f"held: {1e3 * gap:.1f} mm from where it was put after "
                             f"{seconds:.2f} s of physics")
