@@ -25,9 +25,9 @@ and scene those of the moment the run stopped:
    a physics backend that ran the stopped run (``same_world``: the same process, its
    world goes on) where the simulation has them (within :data:`HELD_GAP` of the gripper:
    still held; else lying where they are); elsewhere the operator says, per held object,
-   ``held`` (still in the gripper; a physics backend started afresh puts it back between
-   the fingers where the scene holds it and closes them on it, refused if it does not
-   hold),
+   ``held`` (still in the gripper; a physics backend started afresh, its objects first
+   put where the checkpoint has them, puts it back between the fingers where the scene
+   holds it and closes them on it, refused if it does not hold),
    ``released`` (no longer: detached where the scene has it) or ``objects`` (lying at a
    pose); a held object nobody vouches for is refused, naming the three options.
 

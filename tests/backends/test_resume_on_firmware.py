@@ -12,8 +12,8 @@ its gripper still holds an object: where one was held, resuming is refused until
 operator says ``--held``. Each point's test reads its stop and its continuation from the
 story.
 
-Cost on an idle 2-core machine (the stories are most of it, built once each): about 7 s
-for pick_place, 11 s for handoff, 10 s for stack_three; the tests themselves read them.
+Cost on a loaded 2-core machine (load 12; the stories are all of it, built once each):
+about 8 s for pick_place, 10 s for handoff, 8 s for stack_three; the tests read them.
 """
 
 from __future__ import annotations
