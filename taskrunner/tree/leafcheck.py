@@ -125,6 +125,31 @@ class _Unreachable(Exception):
     """No goal of a MoveToGoal has an IK solution (control flow inside this module)."""
 
 
+def _planners_first(states: list[np.ndarray], start: np.ndarray, options: PlannerOptions,
+                    scene: Scene) -> list[np.ndarray]:
+    """``states`` (collision-free goal states in the planner's order) with the one a
+    planner left to itself goes to put first: with ``options.direct``, the first whose
+    straight joint-space line from ``start`` passes the planner's exact verification
+    (:meth:`~taskrunner.planning.planner.MotionPlanner.verify_states`, the same
+    ``verify_margin``); the others keep their order. Where no line is free the planner
+    searches, and whichever goal its search reaches cannot be told here: the order stays.
+
+    Why: a run without the check's remembered choice (another process, a physics
+    backend's situation off the check's) goes where its planner goes, and the step
+    after it starts there. Following the first collision-free state instead, the check
+    judged later steps from a state no run reaches: 12 of 36 receiver grasp offsets of
+    ``handoff_so101`` were refused by the check (a hand-over or a set-down blocked) while
+    the run, having picked the bar up rolled the other way, succeeded.
+    """
+    if not options.direct or len(states) < 2:
+        return states
+    verifier = scene.path_verifier(options.verify_margin)
+    for i, q in enumerate(states):
+        if verifier.verify(np.vstack([start, q])).valid:
+            return [q, *states[:i], *states[i + 1:]] if i else states
+    return states
+
+
 
 
 class LeafPlayer:
@@ -221,7 +246,7 @@ class LeafPlayer:
             return f"{lead}{exc}"
         if not valid:
             return f"{word} in collision ({describe_pairs(scene.collisions(rejected[0]), scene)})"
-        return valid[:MAX_GOAL_STATES], key
+        return _planners_first(valid, start, options, scene)[:MAX_GOAL_STATES], key
 
     def candidates(self, goals: tuple[Any, ...], group: Group, start: np.ndarray,
                    options: PlannerOptions, scene: Scene) -> list[np.ndarray]:
