@@ -13,9 +13,9 @@ computation and times the path as a run does before it moves; a
 Of several collision-free goal states the one the run's planner goes to when left to
 itself (the first whose straight line is free; else the first) is followed and, where
 the rest of the step fails from it, the others; the state followed is remembered as the
-run's choice
-(:mod:`taskrunner.tree.choice`). After a failure, :meth:`LeafPlayer.force` finishes the
-leaves without checks so that later steps start about where a run would leave them.
+run's choice (:mod:`taskrunner.tree.choice`). After a failure, :meth:`LeafPlayer.force`
+finishes the leaves without checks so that later steps start about where a run would
+leave them.
 """
 
 from __future__ import annotations

@@ -1,11 +1,12 @@
 """A run's goal choice where the check's is not remembered: checked by the check's rule.
 
 ``run-task check`` follows, at each :class:`~taskrunner.tree.behaviours.MoveToGoal`, the
-first collision-free goal state and, where the rest of the step fails from it, the
-others (:meth:`~taskrunner.tree.leafcheck.LeafPlayer.play`), and remembers the state it
-followed (:mod:`taskrunner.tree.choice`); the run that follows plans to that state. That
-memory is keyed by the exact situation (state, objects, goals to 6 decimals), so a run
-finds it only right after a check in the same process, on a situation the check
+goal state the planner goes to when left to itself (else the first collision-free one)
+and, where the rest of the step fails from it, the others
+(:meth:`~taskrunner.tree.leafcheck.LeafPlayer.play`), and remembers the state it followed
+(:mod:`taskrunner.tree.choice`); the run that follows plans to that state. That memory
+is keyed by the exact situation (state, objects, goals to 6 decimals), so a run finds it
+only right after a check in the same process, on a situation the check
 predicted to the micrometre. Elsewhere (a physics backend, where a settled cube or a
 gripper closed on an object is a little off the check's; a run after a check in another
 process; a Python API run without a check) the planner chose by its own rule (the first
