@@ -151,7 +151,8 @@ def physics_path(motions: Sequence[SentMotion], reports: Sequence[RunEvent]
         starts[k] = _fit_start(motion, [index[name] for name in motion.joints], p, q,
                                ended, float(p[-1]) - motion.until)
     anchors = sorted((starts[k], motions[k].t0) for k in range(len(motions)))
-    times, kept = [], []
+    times: list[float] = []
+    kept: list[int] = []
     a = 0
     for i, sample in enumerate(p):
         while a + 1 < len(anchors) and sample >= anchors[a + 1][0] - 1e-9:

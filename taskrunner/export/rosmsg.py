@@ -21,9 +21,9 @@ import numpy as np
 
 from taskrunner.export.cdr import CdrWriter
 
-__all__ = ["JOINT_STATE", "LOG", "MARKER_ARRAY", "STRING", "TF_MESSAGE", "LogLine",
-           "Marker", "MessageType", "Transform", "encode_joint_state", "encode_log",
-           "encode_marker_array", "encode_string", "encode_tf_message"]
+__all__ = ["DISPLAY_TRAJECTORY", "JOINT_STATE", "LOG", "MARKER_ARRAY", "STRING", "TF_MESSAGE",
+           "LogLine", "Marker", "MessageType", "Transform", "encode_display_trajectory",
+           "encode_joint_state", "encode_log", "encode_marker_array", "encode_string", "encode_tf_message"]
 
 # One .msg text per type, as in its package (comments dropped).
 _MSG = {
@@ -65,6 +65,55 @@ _MSG = {
         "byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
         "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
         "string function\nuint32 line\n",
+    # moveit_msgs (BSD-3-Clause), its humble branch; same-package types without a
+    # package, as in the .msg files.
+    "geometry_msgs/msg/Twist": "Vector3 linear\nVector3 angular\n",
+    "geometry_msgs/msg/Wrench": "Vector3 force\nVector3 torque\n",
+    "sensor_msgs/msg/MultiDOFJointState":
+        "std_msgs/Header header\nstring[] joint_names\ngeometry_msgs/Transform[] transforms\n"
+        "geometry_msgs/Twist[] twist\ngeometry_msgs/Wrench[] wrench\n",
+    "trajectory_msgs/msg/JointTrajectoryPoint":
+        "float64[] positions\nfloat64[] velocities\nfloat64[] accelerations\nfloat64[] effort\n"
+        "builtin_interfaces/Duration time_from_start\n",
+    "trajectory_msgs/msg/JointTrajectory":
+        "std_msgs/Header header\nstring[] joint_names\nJointTrajectoryPoint[] points\n",
+    "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint":
+        "geometry_msgs/Transform[] transforms\ngeometry_msgs/Twist[] velocities\n"
+        "geometry_msgs/Twist[] accelerations\nbuiltin_interfaces/Duration time_from_start\n",
+    "trajectory_msgs/msg/MultiDOFJointTrajectory":
+        "std_msgs/Header header\nstring[] joint_names\nMultiDOFJointTrajectoryPoint[] points\n",
+    "shape_msgs/msg/SolidPrimitive":
+        "uint8 BOX=1\nuint8 SPHERE=2\nuint8 CYLINDER=3\nuint8 CONE=4\nuint8 PRISM=5\n"
+        "uint8 type\nfloat64[<=3] dimensions\nuint8 BOX_X=0\nuint8 BOX_Y=1\nuint8 BOX_Z=2\n"
+        "uint8 SPHERE_RADIUS=0\nuint8 CYLINDER_HEIGHT=0\nuint8 CYLINDER_RADIUS=1\n"
+        "uint8 CONE_HEIGHT=0\nuint8 CONE_RADIUS=1\nuint8 PRISM_HEIGHT=0\n"
+        "geometry_msgs/Polygon polygon\n",
+    "geometry_msgs/msg/Polygon": "Point32[] points\n",
+    "geometry_msgs/msg/Point32": "float32 x\nfloat32 y\nfloat32 z\n",
+    "shape_msgs/msg/MeshTriangle": "uint32[3] vertex_indices\n",
+    "shape_msgs/msg/Mesh": "MeshTriangle[] triangles\ngeometry_msgs/Point[] vertices\n",
+    "shape_msgs/msg/Plane": "float64[4] coef\n",
+    "object_recognition_msgs/msg/ObjectType": "string key\nstring db\n",
+    "moveit_msgs/msg/CollisionObject":
+        "std_msgs/Header header\ngeometry_msgs/Pose pose\nstring id\n"
+        "object_recognition_msgs/ObjectType type\nshape_msgs/SolidPrimitive[] primitives\n"
+        "geometry_msgs/Pose[] primitive_poses\nshape_msgs/Mesh[] meshes\n"
+        "geometry_msgs/Pose[] mesh_poses\nshape_msgs/Plane[] planes\n"
+        "geometry_msgs/Pose[] plane_poses\nstring[] subframe_names\n"
+        "geometry_msgs/Pose[] subframe_poses\nbyte ADD=0\nbyte REMOVE=1\nbyte APPEND=2\n"
+        "byte MOVE=3\nbyte operation\n",
+    "moveit_msgs/msg/AttachedCollisionObject":
+        "string link_name\nCollisionObject object\nstring[] touch_links\n"
+        "trajectory_msgs/JointTrajectory detach_posture\nfloat64 weight\n",
+    "moveit_msgs/msg/RobotState":
+        "sensor_msgs/JointState joint_state\n"
+        "sensor_msgs/MultiDOFJointState multi_dof_joint_state\n"
+        "AttachedCollisionObject[] attached_collision_objects\nbool is_diff\n",
+    "moveit_msgs/msg/RobotTrajectory":
+        "trajectory_msgs/JointTrajectory joint_trajectory\n"
+        "trajectory_msgs/MultiDOFJointTrajectory multi_dof_joint_trajectory\n",
+    "moveit_msgs/msg/DisplayTrajectory":
+        "string model_id\nRobotTrajectory[] trajectory\nRobotState trajectory_start\n",
 }
 
 _PRIMITIVES = {"bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16",
@@ -80,8 +129,8 @@ def _dependencies(name: str) -> list[str]:
             word = line.split()[0].split("[")[0]
             if "=" in line or word in _PRIMITIVES:
                 continue
-            package, _, short = word.partition("/")
-            full = f"{package}/msg/{short}"
+            package, _, short = word.rpartition("/")
+            full = f"{package or type_name.split('/')[0]}/msg/{short}"
             if full not in out:
                 out.append(full)
                 visit(full)
@@ -112,6 +161,8 @@ STRING = MessageType("std_msgs/msg/String", _definition("std_msgs/msg/String"))
 MARKER_ARRAY = MessageType("visualization_msgs/msg/MarkerArray",
                            _definition("visualization_msgs/msg/MarkerArray"))
 LOG = MessageType("rcl_interfaces/msg/Log", _definition("rcl_interfaces/msg/Log"))
+DISPLAY_TRAJECTORY = MessageType("moveit_msgs/msg/DisplayTrajectory",
+                                 _definition("moveit_msgs/msg/DisplayTrajectory"))
 
 
 def _time(w: CdrWriter, stamp_ns: int) -> None:
@@ -274,4 +325,48 @@ def encode_log(log: LogLine) -> bytes:
     w.string(log.file)
     w.string(log.function)
     w.uint32(log.line)
+    return w.getvalue()
+
+
+def _duration(w: CdrWriter, seconds: float) -> None:
+    sec, nanosec = divmod(int(round(seconds * 1e9)), 1_000_000_000)
+    w.int32(sec)
+    w.uint32(nanosec)
+
+
+def encode_display_trajectory(stamp_ns: int, model_id: str, joints: Sequence[str],
+                              times: np.ndarray, positions: np.ndarray,
+                              velocities: np.ndarray, accelerations: np.ndarray,
+                              start_names: Sequence[str], start: np.ndarray) -> bytes:
+    """A ``moveit_msgs/DisplayTrajectory`` of one joint trajectory (``times`` s from its
+    start; one row of ``positions`` (rad or m), ``velocities`` and ``accelerations``
+    per time, columns ``joints``), starting from the joint state ``start``
+    (``start_names``). No multi-DOF joints; no attached objects (see the caller)."""
+    w = CdrWriter()
+    w.string(model_id)
+    w.uint32(1)                          # trajectory: one RobotTrajectory
+    _header(w, stamp_ns, "")             # joint_trajectory.header
+    w.strings(joints)
+    w.uint32(len(times))
+    for k, t in enumerate(times):
+        w.float64s(positions[k])
+        w.float64s(velocities[k])
+        w.float64s(accelerations[k])
+        w.float64s(())                   # effort
+        _duration(w, float(t))
+    _header(w, stamp_ns, "")             # multi_dof_joint_trajectory: empty
+    w.strings(())
+    w.uint32(0)
+    _header(w, stamp_ns, "")             # trajectory_start.joint_state
+    w.strings(start_names)
+    w.float64s(start)
+    w.float64s(())
+    w.float64s(())
+    _header(w, stamp_ns, "")             # trajectory_start.multi_dof_joint_state: empty
+    w.strings(())
+    w.uint32(0)
+    w.uint32(0)
+    w.uint32(0)
+    w.uint32(0)                          # attached_collision_objects
+    w.bool(False)                        # is_diff
     return w.getvalue()

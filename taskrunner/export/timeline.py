@@ -66,6 +66,7 @@ TOPICS: dict[str, MessageType] = {
     "/scene_objects": rosmsg.MARKER_ARRAY,
     "/joint_states": rosmsg.JOINT_STATE,
     "/tf": rosmsg.TF_MESSAGE,
+    "/display_planned_path": rosmsg.DISPLAY_TRAJECTORY,
     "/rosout": rosmsg.LOG,
 }
 LATCHED = frozenset({"/robot_description", "/tf_static"})  # transient local, as published
@@ -252,6 +253,33 @@ def _joint_samples(schedule: _Schedule, start: np.ndarray, cell: Cell
         yield float(t), model.apply_mimic(q), qd
 
 
+def _robot_of(cell: Cell, joints: tuple[str, ...]) -> str:
+    """The name of the robot whose joints ``joints`` are (the longest prefix that fits)."""
+    fits = [i for i in cell.model.instances if all(j.startswith(i.prefix) for j in joints)]
+    return max(fits, key=lambda i: len(i.prefix)).name if fits else cell.name
+
+
+def _display_trajectory(event: RunEvent, stamp_ns: int, cell: Cell, start: np.ndarray) -> bytes:
+    """A motion's trajectory as RViz's MotionPlanning display takes it: the trajectory
+    as sent (the record's samples; accelerations are not recorded, so none is sent, as
+    ROS allows), from the whole cell's state when it started (its event's scene)."""
+    joints, times, positions, velocities = _trajectory(event)
+    if not event.data["trajectory"].get("velocities"):
+        velocities = np.zeros((len(times), 0))  # not recorded: none, not zeros
+    model = cell.model
+    scene = event.data.get("scene")
+    q = start.copy()
+    if isinstance(scene, dict) and isinstance(scene.get("joints"), dict):
+        q = model.state_with(q, {str(k): float(v) for k, v in scene["joints"].items()
+                                 if str(k) in model.joint_names})
+    # trajectory_start.attached_collision_objects stays empty: the record keeps an
+    # attached object's shape and pose but not its touch links or weight, and
+    # /scene_objects already shows it riding on its link.
+    return rosmsg.encode_display_trajectory(
+        stamp_ns, _robot_of(cell, joints), joints, times, positions, velocities,
+        np.zeros((len(times), 0)), model.joint_names, model.apply_mimic(q))
+
+
 # Marker colours (r, g, b, a): objects in the world, and objects a link carries.
 _WORLD_COLOUR = (0.55, 0.6, 0.7, 1.0)
 _CARRIED_COLOUR = (0.95, 0.55, 0.15, 1.0)
@@ -404,6 +432,7 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
     base_ns = int(datetime.fromisoformat(record.started).timestamp() * 1e9)
     meshes, no_meshes = record_meshes(record)
     schedule = _schedule(record)
+    planned = [(e, m.t0) for m in schedule.motions for e in record.events if e.seq == m.seq]
     not_measured = _measured(schedule) if record.backend == "mujoco" else None
     for motion in schedule.motions:
         _check_joints(record, cell, motion.joints)
@@ -423,12 +452,16 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
     add(0.0, "/robot_description", rosmsg.encode_string(robot_description(cell.model)))
     add(0.0, "/tf_static", rosmsg.encode_tf_message(tree.static_transforms(base_ns)))
     names = cell.model.joint_names
-    for t, q, qd in _joint_samples(schedule, _start_state(record, cell), cell):
+    start = _start_state(record, cell)
+    for t, q, qd in _joint_samples(schedule, start, cell):
         stamp = _stamp(base_ns, t)
         # The physics reports no velocities: none is sent rather than a made-up one.
         add(t, "/joint_states", rosmsg.encode_joint_state(
             stamp, names, q, () if schedule.measured else qd))
         add(t, "/tf", rosmsg.encode_tf_message(tree.moving_transforms(q, stamp)))
+    for event, t in planned:
+        add(t, "/display_planned_path", _display_trajectory(event, _stamp(base_ns, t), cell,
+                                                            start))
     for event in record.events:
         t = schedule.times[event.seq]
         stamp = _stamp(base_ns, t)

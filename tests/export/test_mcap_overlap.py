@@ -29,6 +29,7 @@ def _se3(transform: Any) -> pin.SE3:
 class Overlapped:
     def __init__(self, record: RunRecord, mcap: Path) -> None:
         self.record = record
+        self.mcap = mcap
         self.messages: dict[str, list[tuple[int, Any]]] = {}
         with AnyReader([mcap]) as reader:
             for connection, stamp, raw in reader.messages():
@@ -96,3 +97,25 @@ def test_every_joint_state_is_a_physics_sample_and_tf_is_its_fk(overlapped: Over
     left = [i for i, n in enumerate(names) if n.startswith("left_")]
     right = [i for i, n in enumerate(names) if n.startswith("right_")]
     assert (moving[:, left].any(axis=1) & moving[:, right].any(axis=1)).any()
+
+
+def test_each_arms_motion_is_a_display_trajectory_of_that_arm(overlapped: Overlapped) -> None:
+    from mcap.reader import make_reader
+    from mcap_ros2.decoder import DecoderFactory
+
+    motions = [e for e in overlapped.record.events if e.kind == "motion"]
+    with open(overlapped.mcap, "rb") as f:
+        second = [m for _, _, _, m in make_reader(f, decoder_factories=[DecoderFactory()])
+                  .iter_decoded_messages(topics=["/display_planned_path"])]
+    first = [m for _, m in overlapped.messages["/display_planned_path"]]
+    assert len(first) == len(second) == len(motions) == 3
+    for event, *decoded in zip(motions, first, second, strict=True):
+        trajectory = event.data["trajectory"]
+        for message in decoded:
+            assert message.model_id == trajectory["joints"][0].split("_")[0]  # left / right
+            points = message.trajectory[0].joint_trajectory.points
+            assert list(message.trajectory[0].joint_trajectory.joint_names) == \
+                trajectory["joints"]
+            assert [list(p.positions) for p in points] == trajectory["positions"]
+            assert [p.time_from_start.sec * 10**9 + p.time_from_start.nanosec
+                    for p in points] == [round(t * 1e9) for t in trajectory["times"]]

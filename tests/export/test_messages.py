@@ -25,6 +25,8 @@ def test_definitions_are_ros2_humbles(kind: rosmsg.MessageType) -> None:
     parsed = get_types_from_msg(kind.definition, kind.name)
     assert kind.name in parsed
     for name, (constants, fields) in parsed.items():
+        if name.startswith(("moveit_msgs/", "object_recognition_msgs/")):
+            continue  # not in rosbags' Humble store; test_mcap_export registers them
         assert fields == HUMBLE.fielddefs[name][1], name
         assert constants == HUMBLE.fielddefs[name][0], name
 
