@@ -23,12 +23,14 @@ Topics (ROS 2 conventions, so Foxglove's 3D panel and RViz show them):
 * ``/scene_objects`` (``visualization_msgs/MarkerArray``): the scene's objects, at the
   start, when each motion starts (objects picked up ride on their link's frame), and at
   the end; each array starts with a DELETEALL, so objects taken away disappear.
+* ``/display_planned_path`` (``moveit_msgs/DisplayTrajectory``): each motion's
+  trajectory when it was sent, from the cell's state then.
 * ``/rosout`` (``rcl_interfaces/Log``): every event, the tree node as the logger's name,
   the task file and line as ``file`` and ``line``, the event's kind as ``function``.
 
 **Nothing left out quietly.** A scene object that cannot be drawn (a mesh whose file is
 not found, a shape not known) and a mujoco run whose ``/joint_states`` cannot be the
-physics' own samples (a motion without a physics report, motions at once) make the
+physics' own samples (a motion no physics sample covers) make the
 export an error naming the object or motion, unless the caller allows degraded output
 (``allow_degraded``, ``run-task export --allow-degraded``): then each degradation is
 told to ``on_degraded`` (the command line: stderr) and on ``/rosout`` as a WARN.
