@@ -177,10 +177,9 @@ def test_a_run_stopped_by_a_link_fault_at_a_point_resumes_over_a_new_link(story,
                    for m in messages(then.record)), messages(then.record)
     assert then.record.resumes == stopped.record.run_id
     # The leaf that did not finish runs again first, planned from where the servos
-    # stopped (part of the way), not from where the step began.
+    # stopped, not from where the step began. (How far they got depends on when the
+    # link's loss is seen, in wall time: not asserted.)
     assert [e.node for e in then.record.events if e.kind == "node_started"][0] == node
-    assert any(m.startswith("joints not where the last finished step left them")
-               for m in messages(then.record)), messages(then.record)
     motion = next(e for e in then.record.events if e.kind == "motion")
     assert motion.node == node
     trajectory = motion.data["trajectory"]
