@@ -16,12 +16,14 @@ geometry, in the geometry's own frame:
   whose radius covers the gaps between them; a sphere as itself. Every point of the solid
   is covered by construction.
 
-Each set carries its *looseness*: the largest distance from a point of the union's surface
-to the geometry (outside a closed mesh or solid; for a mesh that is not closed, from its
-surface), estimated at ~100 points per sphere (those not inside another sphere), measured
-with coal for meshes and in closed form for primitives. Inside or outside a mesh is decided
-by its winding number (Jacobson et al., "Robust inside-outside segmentation using
-generalized winding numbers", SIGGRAPH 2013).
+Each set carries its *looseness*: how far the union of its spheres reaches outside the
+geometry (m). For a mesh it is a bound: a sphere of radius r about a centre at depth delta
+inside a closed mesh lies within r - delta of the mesh (within r of it for a centre on an open
+mesh's surface), so the largest r - delta bounds every point of the union. For a solid it is
+measured in closed form at ~100 points per sphere on the union's surface (those inside no
+other sphere): an estimate from below, within a millimetre or two of the truth. Inside or
+outside a mesh is decided by its winding number (Jacobson et al., "Robust inside-outside
+segmentation using generalized winding numbers", SIGGRAPH 2013).
 
 Results are kept in memory and in ``spheres.json`` under the user cache folder
 (:func:`taskrunner.resources.user_cache_dir`), keyed by a hash of the geometry's content
@@ -54,6 +56,8 @@ log = logging.getLogger(__name__)
 CACHE_FILE = "spheres.json"
 _METHOD = "v1"  # changing the construction must not reuse cached spheres
 _BOUNDARY_POINTS = 96  # looseness probes per sphere
+_SHORTLIST = 24  # candidates weighed for each sphere a mesh fit adds
+_GRID_POINTS = 1200  # about this many grid points over a mesh's box are tried as centres
 _GROW = 1e-9  # m, on every radius: float rounding never uncovers a corner
 
 _lock = threading.Lock()
@@ -93,8 +97,8 @@ class GeometrySpheres:
     Attributes:
         centres: (n, 3) sphere centres (m).
         radii: (n,) radii (m).
-        looseness: the largest distance (m) from the union's surface to the geometry
-            (outside it), estimated (see the module's text).
+        looseness: how far (m) the union reaches outside the geometry: a bound for a
+            mesh, a close estimate for a solid (see the module's text).
         kind: ``mesh`` (surface covered) or ``solid``.
         key: the content hash it is cached under.
     """
@@ -200,21 +204,23 @@ def _split_long_edges(corners: np.ndarray, max_edge: float) -> np.ndarray:
 
 def _fit_mesh(vertices: np.ndarray, triangles: np.ndarray, mesh: coal.CollisionGeometry,
               options: SphereOptions) -> tuple[np.ndarray, np.ndarray, float]:
-    """Spheres chosen greedily among candidate centres inside the mesh (for a closed mesh;
-    its triangles' centroids otherwise), each of depth ``delta`` (distance to the surface).
+    """Spheres chosen greedily among candidate centres inside the mesh (for a closed mesh)
+    and the triangles' centroids, each of depth ``delta`` (distance to the surface; 0 for a
+    centroid).
 
     A ball of radius r about a centre of depth delta lies within r - delta of the inscribed
     ball, hence of the mesh: a triangle's *cost* at a centre is its farthest corner's
     distance minus the depth. Each triangle goes to the chosen centre where its cost is
     least; while the worst triangle's cost exceeds the tolerance, the candidate where that
-    triangle's cost is least is added. Each radius is its triangles' farthest corner."""
+    triangle's cost is least is added (a triangle for which that candidate is already in is
+    as good as it gets, and is passed over from then on). Each radius is its triangles' farthest corner."""
     corners = _split_long_edges(vertices[triangles], options.max_edge)
     closed = _closed(triangles)
-    candidates = _inside_points(vertices, triangles) if closed else np.zeros((0, 3))
-    if len(candidates) >= 8:
-        depth = _distances(mesh, candidates)
-    else:
-        candidates, depth = corners.mean(axis=1), np.zeros(len(corners))
+    inside = _inside_points(vertices, triangles) if closed else np.zeros((0, 3))
+    # The triangles' own centroids (depth 0) too: a triangle far from every inside point
+    # (a thin wall, a shell) then costs at most its own circumradius.
+    candidates = np.concatenate([inside, corners.mean(axis=1)])
+    depth = np.concatenate([_distances(mesh, inside), np.zeros(len(corners))])
 
     def cost_at(j: int) -> np.ndarray:  # every triangle's cost at candidate j
         return np.linalg.norm(corners - candidates[j], axis=2).max(axis=1) - depth[j]
@@ -223,31 +229,44 @@ def _fit_mesh(vertices: np.ndarray, triangles: np.ndarray, mesh: coal.CollisionG
     chosen = [int(np.argmin(np.linalg.norm(candidates - first, axis=1) - depth))]
     best = cost_at(chosen[0])
     owner = np.zeros(len(corners), dtype=np.int64)
-    while best.max() > options.tolerance and len(chosen) < options.max_spheres:
-        worst = corners[int(np.argmax(best))]
-        j = int(np.argmin(np.linalg.norm(worst[None] - candidates[:, None], axis=2).max(axis=1)
-                          - depth))
-        if j in chosen:
+    settled = np.zeros(len(corners), dtype=bool)  # at the least cost any candidate gives
+    while len(chosen) < options.max_spheres:
+        open_cost = np.where(settled, -np.inf, best)
+        t = int(np.argmax(open_cost))
+        if not open_cost[t] > options.tolerance:
             break
+        at_t = np.linalg.norm(corners[t][None] - candidates[:, None], axis=2).max(axis=1) - depth
+        j = int(np.argmin(at_t))
+        if j in chosen:  # no candidate does better for this triangle: go on with the others
+            settled[t] = True
+            continue
+        # Of the candidates nearly as good for this triangle, the one that brings the most
+        # triangles within reach (the tolerance, or what this triangle can get at best).
+        goal = max(options.tolerance, float(at_t[j]))
+        shortlist = [k for k in np.argsort(at_t)[:_SHORTLIST] if at_t[k] <= goal + 1e-12]
+        gains = [int(np.count_nonzero((cost_at(int(k)) <= goal) & (best > goal)))
+                 for k in shortlist]
+        j = int(shortlist[int(np.argmax(gains))])
         cost = cost_at(j)
         better = cost < best
         best[better], owner[better] = cost[better], len(chosen)
         chosen.append(j)
-    centres, radii = [], []
+    centres, radii, depths = [], [], []
     for k, j in enumerate(chosen):
         mine = corners[owner == k].reshape(-1, 3)
         if len(mine):
             centres.append(candidates[j])
             radii.append(float(np.linalg.norm(mine - candidates[j], axis=1).max()) * (1 + 1e-9)
                          + _GROW)
-    c, r = np.array(centres), np.array(radii)
-    return c, r, _mesh_looseness(c, r, mesh, vertices, triangles, closed)
+            depths.append(depth[j])
+    r = np.array(radii)
+    return np.array(centres), r, float(np.max(r - np.array(depths)))
 
 
 def _inside_points(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
-    """Points of a grid over the mesh's box that lie inside the closed mesh (~1500)."""
+    """Points of a grid over the mesh's box that lie inside the closed mesh."""
     lo, hi = vertices.min(axis=0), vertices.max(axis=0)
-    step = float(np.prod(np.maximum(hi - lo, 1e-6)) / 3000) ** (1 / 3)
+    step = float(np.prod(np.maximum(hi - lo, 1e-6)) / _GRID_POINTS) ** (1 / 3)
     axes = [np.arange(lo[i] + step / 2, hi[i], step) for i in range(3)]
     grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
     return grid[np.abs(_winding(grid, vertices, triangles)) > 0.5]
@@ -274,19 +293,6 @@ def _winding(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray) ->
                + np.einsum("pmi,pmi->pm", b, c) * la + np.einsum("pmi,pmi->pm", c, a) * lb)
         out[start:start + 256] = np.arctan2(det, den).sum(axis=1) / (2 * math.pi)
     return out
-
-
-def _mesh_looseness(centres: np.ndarray, radii: np.ndarray, mesh: coal.CollisionGeometry,
-                    vertices: np.ndarray, triangles: np.ndarray, closed: bool) -> float:
-    """The largest distance from the union's surface probes outside the mesh (all of
-    them for an open mesh) to the mesh's triangles (coal)."""
-    probes = _union_surface(centres, radii)
-    if not len(probes):
-        return 0.0
-    if closed:
-        w = _winding(probes, vertices, triangles)
-        probes = probes[np.abs(w) < 0.5]
-    return float(_distances(mesh, probes).max(initial=0.0))
 
 
 def _distances(mesh: coal.CollisionGeometry, points: np.ndarray) -> np.ndarray:

@@ -5,6 +5,8 @@ and fits are cached by content."""
 
 from __future__ import annotations
 
+import os
+from collections.abc import Iterator
 from pathlib import Path
 
 import coal
@@ -18,17 +20,21 @@ from taskrunner.collision.spheres import SphereOptions, fit_spheres, geometry_ke
 from taskrunner.errors import ArgumentError, SceneError
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import load_robot
+from taskrunner.robot.packages import example_robot_data_dir
 
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 COARSE = SphereOptions(tolerance=0.02, max_spheres=16)
 
 
-@pytest.fixture(autouse=True)
-def _own_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """A cache folder per test, and the memory cache emptied: each test fits afresh."""
-    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
-    monkeypatch.setattr(spheres, "_memory", {})
-    monkeypatch.setattr(spheres, "_disk_loaded", set())
+@pytest.fixture(autouse=True, scope="module")
+def _own_cache(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """A cache folder of this module's own, and the memory cache emptied: fits made here
+    are shared by its tests (the Panda's are made once), never read from the user's."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("XDG_CACHE_HOME", str(tmp_path_factory.mktemp("cache")))
+        patch.setattr(spheres, "_memory", {})
+        patch.setattr(spheres, "_disk_loaded", set())
+        yield
 
 
 def _surface_samples(geometry: coal.CollisionGeometry, per_m2: float, rng: np.random.Generator
@@ -38,7 +44,7 @@ def _surface_samples(geometry: coal.CollisionGeometry, per_m2: float, rng: np.ra
     corners = vertices[triangles]
     areas = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0],
                                           corners[:, 2] - corners[:, 0]), axis=1)
-    n = int(per_m2 * areas.sum()) + 1
+    n = min(int(per_m2 * areas.sum()), 60_000) + 1
     faces = rng.choice(len(corners), n, p=areas / areas.sum())
     uv = rng.random((n, 2))
     flip = uv.sum(axis=1) > 1
@@ -120,6 +126,27 @@ def test_ur5_robotiq_gripper_and_wrist_mesh_are_inside_their_spheres() -> None:
         _check_covered(g.geometry, COARSE, rng)
 
 
+def test_a_mobile_manipulators_hand_and_torso_are_inside_their_spheres() -> None:
+    """TIAGo (example-robot-data): a Fetch-like robot with a torso lift, a head and a hand
+    of many small meshes."""
+    import warnings
+
+    share = example_robot_data_dir()
+    if share is None:
+        pytest.skip("the example-robot-data wheel is not installed")
+    urdf = share / "robots" / "tiago_description" / "robots" / "tiago.urdf"
+    model = pin.buildModelFromUrdf(str(urdf))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        geometry = pin.buildGeomFromUrdf(model, str(urdf), pin.COLLISION, [str(share.parent)])
+    rng = np.random.default_rng(7)
+    wanted = [g for g in geometry.geometryObjects
+              if model.frames[g.parentFrame].name.startswith(("hand_", "torso_lift"))]
+    assert sum(isinstance(g.geometry, coal.BVHModelBase) for g in wanted) >= 10
+    for g in wanted:
+        _check_covered(g.geometry, COARSE, rng)
+
+
 @pytest.mark.parametrize("shape", [
     coal.Box(0.3, 0.2, 0.01),        # a thin slab
     coal.Box(0.005, 0.005, 0.4),     # a rod
@@ -145,6 +172,23 @@ def test_looseness_is_what_a_denser_measurement_finds() -> None:
         assert fit.looseness >= dense - 0.002
     box = fit_spheres(coal.Box(0.1, 0.06, 0.02), SphereOptions(tolerance=0.005, max_spheres=200))
     assert box.looseness <= 0.005
+
+
+def test_a_mesh_fits_looseness_bounds_how_far_its_spheres_reach_out() -> None:
+    model = load_robot(DATA_ROOT / "robots" / "panda")
+    hand = next(g for g in model.collision_model.geometryObjects
+                if model.model.frames[g.parentFrame].name == "panda_hand").geometry
+    fit = fit_spheres(hand, COARSE)
+    vertices, triangles = spheres._mesh_arrays(hand)
+    unit = np.random.default_rng(6).normal(size=(400, 3))
+    unit /= np.linalg.norm(unit, axis=1)[:, None]
+    probes = np.concatenate([c + r * unit for c, r in zip(fit.centres, fit.radii, strict=True)])
+    probes = probes[~fit.contains(probes, slack=-1e-7)]  # on the union's surface
+    outside = probes[np.abs(spheres._winding(probes, vertices, triangles)) < 0.5]
+    reach = spheres._distances(hand, outside)
+    assert len(outside) > 100
+    assert reach.max() <= fit.looseness
+    assert reach.max() >= 0.5 * fit.looseness  # a bound, not a wild one
 
 
 def test_a_mesh_fit_meets_its_tolerance_with_more_spheres() -> None:
@@ -182,6 +226,7 @@ def _mesh(vertices: list[list[float]]) -> coal.BVHModelOBBRSS:
 
 def test_a_second_process_reads_the_fit_from_disk(monkeypatch: pytest.MonkeyPatch) -> None:
     first = fit_spheres(coal.Cylinder(0.04, 0.3))
+    assert (Path(os.environ["XDG_CACHE_HOME"]) / "taskrunner" / spheres.CACHE_FILE).is_file()
     monkeypatch.setattr(spheres, "_memory", {})
     monkeypatch.setattr(spheres, "_disk_loaded", set())
 
