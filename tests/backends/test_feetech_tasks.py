@@ -260,11 +260,11 @@ def test_pick_place_so101_on_one_bus_streams_then_a_fault_stops_the_arm_at_the_s
 
 def test_pick_place_so101_on_one_bus_places_the_cube_from_read_back_states(tmp_path: Path) -> None:
     """pick_place_so101 over one emulated bus to its end: the expectations met (the cube's
-    pose at the drop spot, released, on the table; the arm at rest), streamed at 50 Hz
-    or more, tracking reported per joint. The motions after a settle start from the
-    servos' read-back positions, up to a tick (2π/4096 rad) off the goal sent, plus the
-    backlash; the place still puts the cube within 2 mm and 1° (earlier, from such a
-    start, the 5-joint arm's goal choice set it down 13° off)."""
+    pose at the drop spot, released, on the table; the arm at rest), tracking reported
+    per joint. The motions after a settle start from the servos' read-back positions, up
+    to a tick (2π/4096 rad) off the goal sent, plus the backlash; the place still puts
+    the cube within 2 mm and 1° (earlier, from such a start, the 5-joint arm's goal
+    choice set it down 13° off)."""
     log = tmp_path / "bus.log"
     with bus_sim(str(FIXTURE), log) as (_, port):
         hardware = hardware_file(tmp_path, {"arm": port},
@@ -275,8 +275,7 @@ def test_pick_place_so101_on_one_bus_places_the_cube_from_read_back_states(tmp_p
     met = [e["data"]["expectations"] for e in record["events"]
            if (e.get("data") or {}).get("expectations")]
     assert met and met[-1]["met"] and not met[-1]["failures"], met
-    rate = streaming_rate(log)
-    assert rate >= 50.0, f"goals streamed at {rate:.1f} Hz"
+    # (its streaming rate on one bus: the fault test above)
     assert {ids for _, ids in goal_writes(log)} == {(1, 2, 3, 4, 5, 6)}
     assert_tracked(tracking_by_joint(record), set(ROBOT))
     # started from read-back states: some motion's start is off the last goal sent
