@@ -52,6 +52,7 @@ import mujoco
 import numpy as np
 
 from taskrunner.backends.base import BaseBackend, TrajectoryExecution
+from taskrunner.backends.execution import ExecutionStatus
 from taskrunner.backends.physics.mjcf import (
     MjcfOptions,
     ObjectPhysics,
@@ -118,6 +119,7 @@ class MujocoBackend(BaseBackend):
         self._history: deque[PhysicsSample] = deque(maxlen=100_000)
         self._unreported: deque[PhysicsSample] = deque(maxlen=20_000)
         self._grasp_log: list[dict[str, Any]] = []
+        self._motion_log: list[dict[str, Any]] = []  # motions ended since the last report
         self._weld_changes: list[tuple[str, _Held, bool]] = []
         self._materials: dict[str, ObjectPhysics] = {}
         self._cell_physics = {o.name: o.physics for o in cell.objects if o.physics is not None}
@@ -193,17 +195,22 @@ class MujocoBackend(BaseBackend):
     def physics_report(self) -> dict[str, Any] | None:
         """What the physics did since the last report (None: nothing): joints and free
         objects every ``history_period`` s (thinned evenly to at most 500 samples), and
-        the welds made and released (``grasp_mode`` weld). JSON-ready::
+        the welds made and released (``grasp_mode`` weld), and each motion that ended
+        since: its joints and first sample (rad or m), the physics time it started at
+        (``start``, s), its trajectory's seconds (``duration``), and the seconds of physics
+        it settled after its trajectory's end (``settle``; None: it ended before, stopped
+        or failed). JSON-ready::
 
             {"period": 0.04, "joints": [names], "t": [s], "q": [[rad or m]],
              "objects": {name: [[x, y, z, qx, qy, qz, qw] or None]},
-             "grasps": [{"time", "action": "welded" | "released", "object", "link", "arm"}]}
+             "grasps": [{"time", "action": "welded" | "released", "object", "link", "arm"}],
+             "motions": [{"joints", "first", "start", "duration", "settle", "status"}]}
         """
         with self._lock:
-            samples, grasps = list(self._unreported), self._grasp_log
+            samples, grasps, motions = list(self._unreported), self._grasp_log, self._motion_log
             self._unreported.clear()
-            self._grasp_log = []
-        if not samples and not grasps:
+            self._grasp_log, self._motion_log = [], []
+        if not samples and not grasps and not motions:
             return None
         if len(samples) > _REPORT_SAMPLES:
             step = len(samples) / _REPORT_SAMPLES
@@ -222,6 +229,7 @@ class MujocoBackend(BaseBackend):
             "objects": {name: [pose(sample.objects.get(name)) for sample in samples]
                         for name in names},
             "grasps": grasps,
+            "motions": motions,
         }
 
     def object_poses(self) -> dict[str, Pose]:
@@ -773,6 +781,22 @@ class MujocoBackend(BaseBackend):
             w, x, y, z = data.qpos[adr + 3:adr + 7]
             poses[name] = Pose(tuple(data.qpos[adr:adr + 3]), (x, y, z, w))
         self._object_poses = poses
+
+    def _finish(self, execution: TrajectoryExecution, status: ExecutionStatus, message: str,
+                error: BackendError | None = None,
+                data: Mapping[str, object] | None = None) -> None:
+        """Log the motion's physics start and settle for :meth:`physics_report`."""
+        start = self._starts.get(id(execution))
+        if start is not None and not execution.finished:
+            now, end = float(self._data.time), start + execution.duration
+            r = _REPORT_DECIMALS
+            self._motion_log.append({
+                "joints": list(execution.trajectory.names),
+                "first": [round(float(v), r) for v in execution.trajectory.positions[0]],
+                "start": round(start, 6), "duration": round(execution.duration, 6),
+                "settle": round(now - end, 6) if now >= end - 1e-9 else None,
+                "status": status})
+        super()._finish(execution, status, message, error, data)
 
     def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
         super()._cancel(execution, message)
