@@ -54,8 +54,9 @@ if TYPE_CHECKING:
         Wait,
     )
     from taskrunner.errors import TaskrunnerError
-    from taskrunner.kinds import BackendKind
+    from taskrunner.kinds import BackendKind, CollisionChoice
     from taskrunner.plan import Plan
+    from taskrunner.robot.options import LoadOptions
     from taskrunner.runtime.events import RunEvent
     from taskrunner.runtime.records import RunRecord
     from taskrunner.runtime.resume import ResumeOptions
@@ -69,6 +70,7 @@ __all__ = [
     "Attach",
     "Backend",
     "BackendKind",
+    "CollisionChoice",
     "Detach",
     "ExecutionHandle",
     "ExecutionResult",
@@ -80,6 +82,7 @@ __all__ = [
     "JointPath",
     "JointState",
     "JointTrajectory",
+    "LoadOptions",
     "Move",
     "Object",
     "Parallel",
@@ -118,7 +121,8 @@ _HOMES = {
                     "taskrunner.workcell"),
     **dict.fromkeys(("Backend", "ExecutionHandle", "ExecutionResult"),
                     "taskrunner.backends.base"),
-    "BackendKind": "taskrunner.kinds",
+    **dict.fromkeys(("BackendKind", "CollisionChoice"), "taskrunner.kinds"),
+    "LoadOptions": "taskrunner.robot.options",
     "Plan": "taskrunner.plan",
     "ResumeOptions": "taskrunner.runtime.resume",
     "RunRecord": "taskrunner.runtime.records",

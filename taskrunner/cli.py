@@ -38,7 +38,6 @@ Exit codes: 0 success, 2 invalid task or input, 3 planning failure, 4 execution 
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -57,6 +56,7 @@ from taskrunner.errors import (
     UnknownNameError,
 )
 from taskrunner.kinds import BackendKind, CollisionChoice, ExitCode
+from taskrunner.robot.options import LoadOptions
 
 __all__ = ["main"]
 
@@ -84,32 +84,24 @@ def _add_robot_options(parser: argparse.ArgumentParser) -> None:
                              "auto (hulls where tight; default: each robot's own choice)")
 
 
-# The variables of taskrunner.robot.notes.STRICT_ENV, taskrunner.robot.packages.PACKAGE_PATH_ENV
-# and taskrunner.scene.linkgeometry.COLLISION_ENV, named here: importing taskrunner.robot
-# takes 0.3 s, and run-task starts its planning worker (which inherits them) before that.
-STRICT_ENV, PACKAGE_PATH_ENV, COLLISION_ENV = (
-    "TASKRUNNER_STRICT", "TASKRUNNER_PACKAGE_PATH", "TASKRUNNER_COLLISION")
-# taskrunner.robot.missing_meshes.ALLOW_MISSING_MESHES_ENV
-ALLOW_MISSING_MESHES_ENV = "TASKRUNNER_ALLOW_MISSING_MESHES"
-
-
-def _apply_robot_options(args: argparse.Namespace) -> None:
-    """Hand ``--package-path`` and ``--strict`` to every robot loader, in this process and
-    in the worker processes it starts, through the environment."""
-    folders = [Path(p).expanduser().resolve() for p in getattr(args, "package_path", [])]
+def _load_options(args: argparse.Namespace) -> LoadOptions:
+    """How this command loads robots: ``--package-path``, ``--strict``,
+    ``--allow-missing-meshes`` and ``--collision`` over what the documented variables say
+    (``TASKRUNNER_PACKAGE_PATH`` … :meth:`LoadOptions.from_env`, read here only). The
+    command hands the result to the loaders and to the worker processes it starts; the
+    environment is not changed."""
+    from_env = LoadOptions.from_env()
+    folders = [Path(p).expanduser().resolve() for p in getattr(args, "package_path", None) or []]
     missing = [str(f) for f in folders if not f.is_dir()]
     if missing:
         raise InputError(f"'--package-path' must be a folder (got {', '.join(missing)})")
-    if folders:
-        before = os.environ.get(PACKAGE_PATH_ENV)
-        os.environ[PACKAGE_PATH_ENV] = os.pathsep.join(
-            [*map(str, folders), *([before] if before else [])])
-    if getattr(args, "strict", False):
-        os.environ[STRICT_ENV] = "1"
-    if getattr(args, "allow_missing_meshes", False):
-        os.environ[ALLOW_MISSING_MESHES_ENV] = "1"
-    if getattr(args, "collision", None):
-        os.environ[COLLISION_ENV] = args.collision
+    return LoadOptions(
+        strict=bool(getattr(args, "strict", False)) or from_env.strict,
+        package_path=(*folders, *from_env.package_path),
+        allow_missing_meshes=(bool(getattr(args, "allow_missing_meshes", False))
+                              or from_env.allow_missing_meshes),
+        collision=getattr(args, "collision", None) or from_env.collision,
+    )
 
 
 def cmd_export(args: argparse.Namespace) -> int:
@@ -387,7 +379,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "serve": cmd_serve, "test": cmd_test, "sweep": cmd_sweep,
                 "warm-up": cmd_warm_up, "export": cmd_export, "resume": cmd_resume}
     try:
-        _apply_robot_options(args)
+        if hasattr(args, "allow_missing_meshes"):  # a command that loads robots
+            args.load_options = _load_options(args)
         return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:
         print(f"error: {exc}", file=sys.stderr)

@@ -52,6 +52,7 @@ from taskrunner.poselike import PoseLike, Position, as_pose, waypoint, waypoint_
 from taskrunner.resources import resolve_cell, resolve_task
 from taskrunner.robot.cell import Cell, load_cell_or_robot
 from taskrunner.robot.model import RobotModel
+from taskrunner.robot.options import LoadOptions
 from taskrunner.robot.packages import PackageMap
 from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.session import make_backend
@@ -78,10 +79,9 @@ TaskLike = str | os.PathLike[str] | Task
 """A task file, a shipped example's name, or a :class:`~taskrunner.Task`."""
 
 
-def load_workcell(source: str | os.PathLike[str], *,
-                  packages: PackageMap | None = None,
-                  collision: str | Mapping[str, str] | None = None,
-                  allow_missing_meshes: bool | None = None) -> Workcell:
+def load_workcell(source: str | os.PathLike[str], *, packages: PackageMap | None = None,
+                  collision: str | Mapping[str, str] | None = None, allow_missing_meshes: bool | None = None,
+                  options: LoadOptions | None = None) -> Workcell:
     """Load a cell or a robot as a :class:`Workcell`.
 
     Args:
@@ -91,41 +91,42 @@ def load_workcell(source: str | os.PathLike[str], *,
             (``robot.yaml``) or its folder, a MoveIt config package (a folder with
             ``.setup_assistant``), or a ``.urdf`` / ``.xacro`` file. A robot becomes a
             one-robot cell with no objects, at the world origin.
-        packages: where ``package://`` and ``$(find pkg)`` resolve (default: folders
-            with a ``package.xml`` near the files).
+        packages: where ``package://`` and ``$(find pkg)`` resolve (default: the options' package
+            path, then folders with a ``package.xml`` near the files).
         collision: the link geometry collisions are checked with, for every robot or by
             robot name: ``"exact"`` meshes, ``"convex"`` hulls, or ``"auto"`` (hulls
             where they are tight); None: each robot's ``collision:`` in the cell or its
             robot.yaml, else auto. ``Workcell.scene.link_geometry`` tells which link got what.
         allow_missing_meshes: load robots whose mesh files cannot be found (or with no
             collision geometry at all) without that geometry, with one warning per robot;
-            None: ``TASKRUNNER_ALLOW_MISSING_MESHES``. Otherwise either is a
+            None: ``options.allow_missing_meshes``. Otherwise either is a
             :class:`~taskrunner.errors.MissingMeshError` listing every missing file.
+        options: how robots are loaded (``LoadOptions()``; not the environment), kept for later files.
 
     Raises:
         InputError: ``source`` is neither a file or folder nor a shipped name, or
             ``collision`` is not one of exact, convex, auto.
-        RobotDescriptionError, YamlError: the cell or a robot's files are invalid (with
-            file:line).
+        RobotDescriptionError, YamlError: the cell or a robot's files are invalid (file:line).
     """
-    cell = load_cell_or_robot(resolve_cell(source), packages,
+    cell = load_cell_or_robot(resolve_cell(source), packages, options=options,
                               allow_missing_meshes=allow_missing_meshes)
     if collision is not None:
         from taskrunner.scene.linkgeometry import set_collision_choice
 
         set_collision_choice(cell.model, collision)
-    return Workcell(cell)
+    return Workcell(cell, options)
 
 
 class Workcell:
     """A cell's robots and objects, ready to plan, execute and run tasks.
 
     Args:
-        cell: a loaded cell (see :func:`load_workcell`, the usual way to make one).
+        cell, options: a loaded cell and its load options (:func:`load_workcell` makes both).
     """
 
-    def __init__(self, cell: Cell) -> None:
+    def __init__(self, cell: Cell, options: LoadOptions | None = None) -> None:
         self._cell = cell
+        self._options = options or LoadOptions()
         self._scene = scene_from_cell(cell)
         self._planner: MotionPlanner | None = None
         self._cartesian: CartesianPlanner | None = None
@@ -354,7 +355,7 @@ class Workcell:
                 joint and link names (needed when several robots have the name).
             merge: keep the cell's objects; None keeps them for a diff scene and
                 replaces them for a full one (``is_diff: false``), as MoveIt does.
-            strict: unused or unsupported fields are errors, not warnings.
+            strict: unused or unsupported fields are errors (None: ``options.strict``).
 
         Returns:
             the scene objects the file added or changed (an object of several shapes
@@ -365,7 +366,8 @@ class Workcell:
         """
         from taskrunner.moveit import load_planning_scene
 
-        loaded = load_planning_scene(path, self.model, robot=robot, strict=strict)
+        loaded = load_planning_scene(path, self.model, robot=robot, package_path=self._options.package_path,
+                                     strict=self._options.strict if strict is None else strict)
         return loaded.apply(self._scene, merge=merge)
 
     def plan_request(self, path: str | os.PathLike[str], *,
@@ -381,7 +383,7 @@ class Workcell:
             group: plan for this group instead of the file's ``group_name``.
             seed: seeds OMPL and the IK goal sampling.
             strict: what would be a warning is an error (a joint state naming joints
-                the model does not have, an unused field); None: ``TASKRUNNER_STRICT``.
+                the model does not have, an unused field); None: ``options.strict``.
             start_state_max_bounds_error: a start joint outside its bounds by at most
                 this (rad or m) is moved onto the bound with a warning, as MoveIt's
                 ``FixStartStateBounds`` adapter does; the request file's own
@@ -397,7 +399,7 @@ class Workcell:
         if scene is not None:
             self.load_planning_scene(scene, robot=robot, strict=strict)
         request = load_motion_plan_request(path, self.model, robot=robot, group=group,
-                                           strict=strict)
+                                           strict=self._options.strict if strict is None else strict)
         report = plan_request_file(self._scene, request, seed=seed,
                                    start_state_max_bounds_error=start_state_max_bounds_error)
         for warning in request.warnings:  # the file's, and start joints moved onto bounds
@@ -743,11 +745,11 @@ def _backend_kind(kind: BackendKind | str) -> BackendKind:
 def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
              backend: BackendKind | str = BackendKind.MOCK, speed: float | None = None,
              seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
-             on_event: Callable[[RunEvent], None] | None = None) -> RunResult:
+             on_event: Callable[[RunEvent], None] | None = None, options: LoadOptions | None = None,
+             ) -> RunResult:
     """Run a task in its own cell, like ``run-task TASK``; returns its result.
 
-    The same as :func:`start_task` then :meth:`TaskRun.wait`; to run on a workcell you
-    hold (its backend, its state), use :meth:`Workcell.run_task`.
+    :func:`start_task` then :meth:`TaskRun.wait`; on a workcell you hold: :meth:`Workcell.run_task`.
 
     Args:
         task: a task file or a shipped example's name (the cell is the one the file
@@ -760,18 +762,20 @@ def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
         seed: seeds every planner call.
         runs_dir: write the run record there (None: not written).
         on_event: called with every event of the run.
+        options: how the cell's robots are loaded (default ``LoadOptions()``).
 
     Raises:
         TaskSpecError: the task is invalid (every problem with its file:line).
     """
     return start_task(task, parameters=parameters, backend=backend, speed=speed, seed=seed,
-                      runs_dir=runs_dir, on_event=on_event).wait()
+                      runs_dir=runs_dir, on_event=on_event, options=options).wait()
 
 
 def start_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
                backend: BackendKind | str = BackendKind.MOCK, speed: float | None = None,
                seed: int = 0, runs_dir: str | os.PathLike[str] | None = None,
-               on_event: Callable[[RunEvent], None] | None = None) -> TaskRun:
+               on_event: Callable[[RunEvent], None] | None = None, options: LoadOptions | None = None,
+               ) -> TaskRun:
     """Start a task in its own cell in a background thread (see :func:`run_task`);
     iterate over :meth:`TaskRun.events`, ``cancel()`` or ``wait()`` for the result.
     The run's backend is closed when the run ends."""
@@ -779,10 +783,10 @@ def start_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None
         if task.cell is None:
             raise ArgumentError(f"task {task.name!r} has no 'cell': build it with "
                                 "Task(..., cell=...) or run it with Workcell.run_task")
-        cell, loaded = load_workcell(task.cell), None
+        cell, loaded = load_workcell(task.cell, options=options), None
     elif isinstance(task, (str, os.PathLike)):
         loaded = load_task(resolve_task(task), parameters)  # read once: it names its cell
-        cell = load_workcell(loaded.cell)
+        cell = load_workcell(loaded.cell, options=options)
     else:
         raise ArgumentError(f"'task' must be a task file, an example's name or a Task "
                             f"(got {task!r})")

@@ -37,9 +37,9 @@ from taskrunner.taught import read_taught_poses
 
 def test_the_exported_names_are_pinned():
     assert taskrunner.__all__ == [
-        "AddObject", "Attach", "Backend", "BackendKind", "Detach", "ExecutionHandle",
+        "AddObject", "Attach", "Backend", "BackendKind", "CollisionChoice", "Detach", "ExecutionHandle",
         "ExecutionResult", "Expect", "Fallback", "Go", "Gripper", "Handoff", "JointPath",
-        "JointState", "JointTrajectory", "Move", "Object", "Parallel", "Pick", "Place", "Plan",
+        "JointState", "JointTrajectory", "LoadOptions", "Move", "Object", "Parallel", "Pick", "Place", "Plan",
         "Pose", "RemoveObject", "Repeat", "ResumeOptions", "Retry", "RunEvent", "RunRecord",
         "RunResult", "Sequence", "Task", "TaskRun", "TaskrunnerError", "TaughtPose", "Timeout",
         "Wait", "Workcell", "__version__", "load_workcell", "run_task", "start_task",

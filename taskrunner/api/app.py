@@ -61,7 +61,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                                 settings.planner, store, settings.planner_nice,
                                 policy=settings.folder_policy(),
                                 servo_port=settings.servo_port, servo_url=settings.servo_url,
-                                firmware_speedup=settings.firmware_speedup)
+                                firmware_speedup=settings.firmware_speedup,
+                                options=settings.load_options())
         feeds = None
         if settings.foxglove_port is not None:  # serve --foxglove: one feed per cell
             from taskrunner.export.cellfeeds import CellFeeds, CellFeedsOptions

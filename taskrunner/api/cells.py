@@ -24,6 +24,7 @@ from taskrunner.folders import FileKind, FolderPolicy
 from taskrunner.kinds import BackendKind
 from taskrunner.resources import cell_files
 from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.robot.options import LoadOptions
 from taskrunner.runtime.session import make_backend
 from taskrunner.scene import Scene
 from taskrunner.taught import apply_taught
@@ -68,6 +69,7 @@ class CellSession:
     servo_port: str | None = None
     servo_url: str | None = None
     firmware_speedup: float = 1.0
+    options: LoadOptions | None = None
 
     def teach(self, group: str, name: str, joints: dict[str, float]) -> None:
         """Make ``name`` a named pose of ``group`` in this cell's model (runs compiled from
@@ -136,7 +138,8 @@ class CellSession:
                 return worker
         from taskrunner.planning.worker import PlanningWorker
 
-        return PlanningWorker(self.key, wait_ready=False, nice=self.planner_nice)
+        return PlanningWorker(self.key, wait_ready=False, nice=self.planner_nice,
+                              options=self.options)
 
     def give_planner(self, planner: Any) -> None:
         if self.planner_kind == "inprocess":
@@ -184,8 +187,10 @@ class CellRegistry:
     def __init__(self, cells_dir: Path, speeds: dict[str, float | None],
                  planner_kind: str, store: Any = None, planner_nice: int = 0,
                  policy: FolderPolicy | None = None, servo_port: str | None = None,
-                 servo_url: str | None = None, firmware_speedup: float = 1.0) -> None:
+                 servo_url: str | None = None, firmware_speedup: float = 1.0,
+                 options: LoadOptions | None = None) -> None:
         self.cells_dir = cells_dir
+        self.options = options
         self.policy = policy
         self.servo_port = servo_port
         self.servo_url = servo_url
@@ -233,10 +238,10 @@ class CellRegistry:
             return session
         # Outside the lock (loading meshes takes a while); under the folder policy: a
         # task may name any cell file, only those of the allowed folders load.
-        cell = load_cell(path, policy=self.policy)
+        cell = load_cell(path, policy=self.policy, options=self.options)
         fresh = CellSession(path, cell, self._speeds, self._planner_kind, self._planner_nice,
                             servo_port=self.servo_port, servo_url=self.servo_url,
-                            firmware_speedup=self.firmware_speedup)
+                            firmware_speedup=self.firmware_speedup, options=self.options)
         if self._store is not None:
             for pose in apply_taught(cell, self._store.taught_poses(self.cells_dir)):
                 fresh.taught.add((pose.group, pose.name))

@@ -27,6 +27,7 @@ from typing import Any
 
 from taskrunner.errors import ServiceError
 from taskrunner.folders import FolderPolicy
+from taskrunner.robot.options import LoadOptions
 from taskrunner.taught import TaughtPoses
 
 __all__ = ["RequestWork", "WorkLimitError", "check_request", "load_request"]
@@ -255,10 +256,10 @@ def load_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: 
 
 def _check_report(policy: FolderPolicy, tasks_dir: Path, task: str | None,
                   yaml: str | None, parameters: dict[str, Any], seed: int,
-                  taught: TaughtPoses | None) -> Any:
+                  taught: TaughtPoses | None, options: LoadOptions | None = None) -> Any:
     """``check_task`` of a request's task under ``policy``: a file of the tasks folder, or
     inline YAML held in memory as ``inline.yaml`` of the tasks folder, with the ``taught``
-    poses of its cell as a run would have them."""
+    poses of its cell as a run would have them, its robots loaded with ``options``."""
     from taskrunner.tree.check import check_task
 
     if task is not None:
@@ -268,23 +269,26 @@ def _check_report(policy: FolderPolicy, tasks_dir: Path, task: str | None,
         assert yaml is not None
         path = inline_path(tasks_dir)
         given = policy.with_memory({path: yaml})
-    return check_task(path, parameters, seed=seed, policy=given, taught=taught)
+    return check_task(path, parameters, seed=seed, policy=given, taught=taught,
+                      options=options)
 
 
 def precheck_request(policy: FolderPolicy, tasks_dir: Path, task: str | None,
                      yaml: str | None, parameters: dict[str, Any], seed: int,
-                     taught: TaughtPoses | None = None) -> list[Any]:
+                     taught: TaughtPoses | None = None,
+                     options: LoadOptions | None = None) -> list[Any]:
     """The problems (:class:`~taskrunner.tasks.problem.Problem`) the static check finds in
     the task a run request names, checked as ``/tasks/check`` checks it; empty when the
     run may start. ``POST /runs`` calls this first so that nothing moves for a task that
     cannot succeed (as ``run-task`` does)."""
     return list(_check_report(policy, tasks_dir, task, yaml, parameters, seed,
-                              taught).problems)
+                              taught, options).problems)
 
 
 def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml: str | None,
                   parameters: dict[str, Any], seed: int,
-                  taught: TaughtPoses | None = None) -> dict[str, Any]:
+                  taught: TaughtPoses | None = None,
+                  options: LoadOptions | None = None) -> dict[str, Any]:
     """The ``/tasks/check`` answer (``ok``, ``cell``, ``steps``, ``problems``, what each
     parallel's ``schedules`` prove) for a
     task file of the tasks folder or inline YAML, checked under ``policy`` (an inline
@@ -292,7 +296,7 @@ def check_request(policy: FolderPolicy, tasks_dir: Path, task: str | None, yaml:
     ``taught`` poses of its cell as a run would have them."""
     from taskrunner.api.handlers import problem_out
 
-    report = _check_report(policy, tasks_dir, task, yaml, parameters, seed, taught)
+    report = _check_report(policy, tasks_dir, task, yaml, parameters, seed, taught, options)
     problems = [problem_out(p) for p in report.problems]
     return {"ok": not problems, "cell": report.cell, "steps": report.steps,
             "problems": problems, "schedules": [p.to_dict() for p in report.schedules]}

@@ -22,6 +22,8 @@ from pydantic_settings import BaseSettings, EnvSettingsSource, NoDecode, Setting
 from taskrunner import resources
 from taskrunner.errors import ArgumentError
 from taskrunner.folders import FolderPolicy
+from taskrunner.kinds import CollisionChoice
+from taskrunner.robot.options import LoadOptions
 
 __all__ = ["Settings"]
 
@@ -89,6 +91,13 @@ class Settings(BaseSettings):
         foxglove_port: serve the runs live over Foxglove's WebSocket protocol, one feed
             per cell on this port and the next ones (0: free ports; none: no feed; see
             :mod:`taskrunner.export.cellfeeds`).
+        collision: the link geometry of every robot the server loads (``run-task serve
+            --collision``; none: each robot's own choice).
+        strict: every robot load warning is an error (``TASKRUNNER_STRICT=1``).
+        allow_missing_meshes: load robots whose mesh files cannot be found without
+            that geometry, with a warning (``TASKRUNNER_ALLOW_MISSING_MESHES=1``).
+        The last three reach the loaders and the planning workers as one
+        :class:`~taskrunner.robot.options.LoadOptions` (:meth:`load_options`).
     """
 
     model_config = SettingsConfigDict(env_prefix="TASKRUNNER_", frozen=True, extra="forbid",
@@ -125,6 +134,9 @@ class Settings(BaseSettings):
     servo_url: str | None = None
     firmware_speedup: float = 1.0
     foxglove_port: int | None = None
+    collision: CollisionChoice | None = None
+    strict: bool = False
+    allow_missing_meshes: bool = False
 
     @model_validator(mode="before")
     @classmethod
@@ -152,7 +164,16 @@ class Settings(BaseSettings):
             raise ValueError(f"'token' must be at least 8 characters (got {len(value)})")
         return value or None
 
-    @field_validator("auth", "open_reads", mode="before")
+    @field_validator("collision", mode="before")
+    @classmethod
+    def _collision(cls, value: Any) -> Any:
+        if value is None or value == "":
+            return None
+        if value not in tuple(CollisionChoice):
+            raise ValueError(f"'collision' must be one of exact, convex, auto (got {value!r})")
+        return value
+
+    @field_validator("auth", "open_reads", "strict", "allow_missing_meshes", mode="before")
     @classmethod
     def _flag(cls, value: Any) -> Any:
         if isinstance(value, str):
@@ -251,6 +272,11 @@ class Settings(BaseSettings):
     def allowed_robots(self) -> tuple[Path, ...]:
         """The folders robots may load from: ``robots_dirs`` and the cells folder."""
         return (*self.robots_dirs, self.cells_dir)
+
+    def load_options(self) -> LoadOptions:
+        """How the server loads robots (its cells' and their planning workers')."""
+        return LoadOptions(strict=self.strict, allow_missing_meshes=self.allow_missing_meshes,
+                           collision=self.collision)
 
     def folder_policy(self) -> FolderPolicy:
         """What requests may make the server load: tasks from the tasks folder, cells

@@ -18,17 +18,19 @@ if TYPE_CHECKING:
 
     from taskrunner.kinematics import IkSolver
     from taskrunner.robot.cell import Cell
+    from taskrunner.robot.options import LoadOptions
     from taskrunner.scene import Scene
 
 __all__ = ["load_named_cell", "cmd_info", "cmd_plan", "cmd_demo", "cmd_collision_matrix"]
 
 
-def load_named_cell(name_or_path: str) -> Cell:
-    """A cell (or a lone robot as a cell) by path or by a shipped cell's name."""
+def load_named_cell(name_or_path: str, options: LoadOptions | None = None) -> Cell:
+    """A cell (or a lone robot as a cell) by path or by a shipped cell's name, loaded with
+    ``options`` (the command's ``--strict``, ``--package-path`` …)."""
     from taskrunner.resources import resolve_cell
     from taskrunner.robot.cell import load_cell_or_robot
 
-    return load_cell_or_robot(resolve_cell(name_or_path))
+    return load_cell_or_robot(resolve_cell(name_or_path), options=options)
 
 
 def _fmt(values: np.ndarray) -> str:
@@ -43,7 +45,7 @@ def cmd_info(args: argparse.Namespace) -> int:
     robot_log.addHandler(quiet)
     robot_log.propagate = False
     try:
-        cell = load_named_cell(args.path)
+        cell = load_named_cell(args.path, args.load_options)
     finally:
         robot_log.removeHandler(quiet)
         robot_log.propagate = propagate
@@ -91,9 +93,11 @@ def cmd_plan(args: argparse.Namespace) -> int:
 
     from taskrunner.moveit import plan_files
 
-    report, warnings = plan_files(load_named_cell(args.robot), args.request, args.scene,
+    options = args.load_options
+    report, warnings = plan_files(load_named_cell(args.robot, options), args.request, args.scene,
                                   robot=args.instance, group=args.group, seed=args.seed,
-                                  merge=True if args.merge else None)
+                                  merge=True if args.merge else None, strict=options.strict,
+                                  package_path=options.package_path)
     if args.json:
         print(json.dumps({**report.to_json(), "warnings": [str(w) for w in warnings]}, indent=2))
     else:
@@ -149,7 +153,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from taskrunner.scene import scene_from_cell
 
     t0 = time.perf_counter()
-    cell = load_named_cell(args.cell)
+    cell = load_named_cell(args.cell, args.load_options)
     model = cell.model
     scene = scene_from_cell(cell)
     print(f"loaded cell {cell.name!r} ({model.nq} joints, {len(cell.objects)} objects) "

@@ -117,7 +117,7 @@ def cmd_hw(args: argparse.Namespace) -> int:
 
     if args.action == "calibrate" and (sys.stdin is None or sys.stdin.closed):
         _ask_terminal("")  # refuses before anything is connected or moved
-    cell = load_named_cell(args.cell)
+    cell = load_named_cell(args.cell, args.load_options)
     kind = "http" if args.url else "serial"
     # serial and http backends are servo backends
     backend = cast(ServoBackend, make_backend(kind, cell, None, port=args.port, url=args.url,

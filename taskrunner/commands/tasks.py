@@ -50,7 +50,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     from taskrunner.tree.check import check_task
 
     report = check_task(resolve_task(args.file), _parameters(args.param), seed=args.seed,
-                        taught=_taught_poses(args))
+                        taught=_taught_poses(args), options=args.load_options)
     if getattr(args, "json", False):
         import json
 
@@ -98,7 +98,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         if not args.in_process:
             from taskrunner.runtime.prestart import start_worker_early
 
-            early = start_worker_early(path)
+            early = start_worker_early(path, options=args.load_options)
         return _check_and_run(args, path, parameters, early, collecting)
     finally:
         if collecting:
@@ -132,7 +132,8 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
     if not args.no_check:
         started = time.perf_counter()
         try:
-            report = check_before_run(path, parameters, seed=args.seed, taught=taught)
+            report = check_before_run(path, parameters, seed=args.seed, taught=taught,
+                                      options=args.load_options)
         except TaskSpecError as exc:
             problems = getattr(exc, "problems", None) or [exc]
             _print_problems(args.file, problems, "; nothing moved (--no-check runs anyway)")
@@ -147,7 +148,8 @@ def _check_and_run(args: argparse.Namespace, path: Path, parameters: dict[str, s
                          port=args.port, url=args.url, calibration=args.calibration,
                          hardware=args.hardware, firmware_speedup=args.firmware_speedup,
                          home=args.home, check=False, early=early,
-                         loaded=report, watch=_watches(args), taught=taught)
+                         loaded=report, watch=_watches(args), taught=taught,
+                         options=args.load_options)
 
 
 def _watches(args: argparse.Namespace) -> list:  # type: ignore[type-arg]

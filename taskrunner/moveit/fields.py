@@ -13,7 +13,7 @@ primitives[0].dimensions``).
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -225,12 +225,16 @@ class MessageReader:
 
     Args:
         path: the file (for messages).
-        strict: warnings are errors; None: the ``TASKRUNNER_STRICT`` environment variable.
+        strict: warnings are errors (None: no; the environment is not read).
+        package_path: folders searched for the ROS packages of ``package://`` resources
+            (``LoadOptions.package_path``), before the ROS environment's.
     """
 
-    def __init__(self, path: str | Path | None, strict: bool | None = None) -> None:
+    def __init__(self, path: str | Path | None, strict: bool | None = None,
+                 package_path: Sequence[Path] = ()) -> None:
         self.path = Path(path) if path is not None else None
         self.strict = resolve_strict(strict)
+        self.package_path = tuple(package_path)
         self.warnings: list[LoadWarning] = []
 
     def error(self, message: str, line: int | None) -> InputError:

@@ -170,7 +170,7 @@ def _resource_mesh(msg: Msg) -> Mesh:
     resource = msg.string("resource")
     base = msg.reader.path.parent if msg.reader.path is not None else Path.cwd()
     try:
-        path = default_package_map(base).resolve(resource, base)
+        path = default_package_map(base, msg.reader.package_path).resolve(resource, base)
     except RobotDescriptionError as exc:
         raise msg.error("resource", f"cannot be found: {exc.reason}") from None
     if not path.is_file():

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import os
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -100,10 +102,12 @@ def plan_files(cell: Cell, request_path: str | os.PathLike[str],
                robot: str | None = None, group: str | None = None, seed: int = 0,
                merge: bool | None = None, strict: bool | None = None,
                start_state_max_bounds_error: float | None = None,
+               package_path: Sequence[Path] = (),
                ) -> tuple[PlanReport, list[LoadWarning]]:
     """Load ``cell``'s scene, apply a PlanningScene file, plan a MotionPlanRequest file
     (``strict``: what would be a warning is an error; ``start_state_max_bounds_error``: see
-    :func:`plan_request_file`).
+    :func:`plan_request_file`; ``package_path``: folders searched first for the packages
+    of the scene's mesh resources).
 
     Returns:
         the report and every warning of both files.
@@ -114,7 +118,8 @@ def plan_files(cell: Cell, request_path: str | os.PathLike[str],
     scene = scene_from_cell(cell)
     warnings: list[LoadWarning] = []
     if scene_path is not None:
-        scene_file = load_planning_scene(scene_path, cell.model, robot=robot, strict=strict)
+        scene_file = load_planning_scene(scene_path, cell.model, robot=robot, strict=strict,
+                                         package_path=package_path)
         scene_file.apply(scene, merge=merge)
         warnings += scene_file.warnings
     request = load_motion_plan_request(request_path, cell.model, robot=robot, group=group,

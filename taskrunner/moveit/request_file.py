@@ -419,7 +419,7 @@ def load_motion_plan_request(path: str | os.PathLike[str], model: RobotModel, *,
         model: the robot or cell model.
         robot: the cell's robot instance the file is for (see :mod:`taskrunner.moveit.names`).
         group: plan for this group instead of ``group_name`` (a model group name).
-        strict: warnings are errors (None: ``TASKRUNNER_STRICT``).
+        strict: warnings are errors (None: no).
 
     Raises:
         YamlError: the file does not parse.

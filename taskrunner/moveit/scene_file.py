@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import logging
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -381,7 +382,8 @@ def _check_unused(msg: Msg) -> None:
 
 def load_planning_scene(path: str | os.PathLike[str], model: RobotModel, *, robot: str | None = None,
                         strict: bool | None = None,
-                        limits: YamlLimits | None = None) -> PlanningSceneFile:
+                        limits: YamlLimits | None = None,
+                        package_path: Sequence[Path] = ()) -> PlanningSceneFile:
     """Read a ``moveit_msgs/PlanningScene`` YAML file for ``model``.
 
     Args:
@@ -389,15 +391,17 @@ def load_planning_scene(path: str | os.PathLike[str], model: RobotModel, *, robo
         model: the robot or cell model the scene is for.
         robot: the cell's robot instance the file describes (names get its prefix;
             see :mod:`taskrunner.moveit.names`).
-        strict: warnings are errors (None: ``TASKRUNNER_STRICT``).
+        strict: warnings are errors (None: no).
         limits: YAML size and depth bounds.
+        package_path: folders searched first for the packages of a mesh ``resource``
+            (``LoadOptions.package_path``).
 
     Raises:
         YamlError: the file does not parse.
         InputError: a field of the wrong type or value, an unknown joint or link
             (file:line and field); in strict mode, the first warning.
     """
-    reader = MessageReader(Path(path), strict)
+    reader = MessageReader(Path(path), strict, package_path)
     names = NameMap(model, robot)
     document = load_yaml(Path(path), limits)
     msg = unwrap(document, ("planning_scene", "scene", "moveit_msgs/PlanningScene",

@@ -41,6 +41,7 @@ if TYPE_CHECKING:
     from typing import TypeAlias
 
     from taskrunner.planning.planner import MotionPlanner
+    from taskrunner.robot.options import LoadOptions
     from taskrunner.scene.objects import SceneObject
 
     SceneContent: TypeAlias = tuple[tuple[SceneObject, ...], tuple[tuple[str, str], ...]]
@@ -78,8 +79,12 @@ _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its ver
 
 
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
-           timing: bool = True) -> None:
+           timing: bool = True, options: LoadOptions | None = None) -> None:
     """The worker process: load the model, then answer requests until told to stop.
+
+    ``options``: how the cell is loaded (strict, package path, missing meshes,
+    collision), given by the process that starts this one (pickled with the process's
+    arguments): the worker loads what its parent loaded, whatever its environment says.
 
     ``timing``: import toppra before reporting ready (requests will ask for timed paths);
     False for a caller that times its paths itself (a request that asks still gets its
@@ -108,7 +113,7 @@ def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
     gc.disable()
     try:
         started = time.perf_counter()
-        cell = load_cell_or_robot(source)
+        cell = load_cell_or_robot(source, options=options)
         scene = Scene(cell.model)
         planner = MotionPlanner(scene)
         scene.checker  # noqa: B018 - build the collision geometry before the first request
@@ -215,6 +220,11 @@ class PlanningWorker:
             Unix ``nice``). Planning is throughput work: with 10, a busy worker leaves
             the CPU to latency work (a server answering, a trajectory being streamed)
             and still gets every cycle they leave idle.
+        started: a process already serving ``source`` to adopt
+            (:mod:`taskrunner.runtime.prestart`), loaded with the same ``options``.
+        options: how the worker loads ``source`` (strict, package path, missing meshes,
+            collision; default ``LoadOptions()``), handed to the process as an argument:
+            the worker's environment plays no part.
 
     One request is in flight at a time; :meth:`submit` while one is running waits for it.
     Use several workers for parallel planning. Close with :meth:`close` or a ``with``.
@@ -233,11 +243,13 @@ class PlanningWorker:
 
     def __init__(self, source: str | Path, start_timeout: float = 60.0,
                  wait_ready: bool = True, nice: int = 0,
-                 started: tuple[Any, Connection, Any] | None = None) -> None:
+                 started: tuple[Any, Connection, Any] | None = None,
+                 options: LoadOptions | None = None) -> None:
         if isinstance(nice, bool) or not isinstance(nice, int) or not 0 <= nice <= 19:
             raise ArgumentError(f"'nice' must be an integer from 0 to 19 (got {nice!r})")
         self.source = str(source)
         self.nice = nice
+        self.options = options
         self._ctx = mp.get_context("spawn")  # no fork: the parent may run threads
         # started: (process, connection, cancel value) of a process already serving
         # ``source`` (taskrunner.runtime.prestart), adopted instead of launching one.
@@ -272,7 +284,7 @@ class PlanningWorker:
         # multiprocessing joins its non-daemon children; a parent killed outright closes
         # the pipe, and the worker ends at its next read.
         self._process = self._ctx.Process(
-            target=_serve, args=(self.source, child, self._cancel, self.nice),
+            target=_serve, args=(self.source, child, self._cancel, self.nice, True, self.options),
             name="taskrunner-planner", daemon=False)
         start_ignoring_sigint(self._process)
         child.close()

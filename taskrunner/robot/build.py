@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import dataclasses
 import logging
-import os
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -93,6 +92,7 @@ def build_model(
     strict: bool | None = None,
     check_self_collision: bool = True,
     allow_missing_meshes: bool | None = None,
+    collision: CollisionChoice | None = None,
 ) -> RobotModel:
     """Build one model from one or more placed robot descriptions.
 
@@ -103,13 +103,13 @@ def build_model(
             ["left_arm", "right_arm"]}``; a named pose that every subgroup has becomes
             a named pose of the new group too.
         strict: turn every warning (content MoveIt would skip, a missing mesh, a named
-            pose in self-collision…) into an error; None: ``TASKRUNNER_STRICT``.
+            pose in self-collision…) into an error (None: no).
         check_self_collision: warn when the default state or a named pose is in
             self-collision (see :mod:`taskrunner.robot.selfcollision`).
         allow_missing_meshes: load a robot whose mesh files cannot be found, or that has
             no collision geometry at all, without that geometry (one warning per robot;
-            see :mod:`taskrunner.robot.missing_meshes`); None: the
-            ``TASKRUNNER_ALLOW_MISSING_MESHES`` variable.
+            see :mod:`taskrunner.robot.missing_meshes`; None: no).
+        collision: every robot's link geometry (None: each description's own, else auto).
 
     Raises:
         MissingMeshError: a robot's mesh files cannot be found, or it has no collision
@@ -140,7 +140,7 @@ def build_model(
             p.name, p.prefix, pin.SE3(p.base), p.description.source, p.description.hardware_path,
             *_scaling(p.description), p.description.layout,
             tuple(p.description.files.items()), tuple(p.description.notes),
-            _collision_choice(p.description), p.description.cartesian_limits,
+            _collision_choice(p.description, collision), p.description.cartesian_limits,
         )
         for p in placements
     )
@@ -203,13 +203,12 @@ def _check_geometry(placements: Sequence[Placement],
     return found
 
 
-def _collision_choice(description: RobotDescription) -> str:
-    """``TASKRUNNER_COLLISION`` (``run-task --collision``), else the robot's own choice."""
-    env = os.environ.get("TASKRUNNER_COLLISION") or None
-    if env is not None and env not in tuple(CollisionChoice):
+def _collision_choice(description: RobotDescription, override: CollisionChoice | None) -> str:
+    """``override`` (``LoadOptions.collision``), else the robot's own choice, else auto."""
+    if override is not None and override not in tuple(CollisionChoice):
         raise RobotDescriptionError(
-            f"'TASKRUNNER_COLLISION' must be one of exact, convex, auto (got {env!r})")
-    return env or description.collision or CollisionChoice.AUTO
+            f"'collision' must be one of exact, convex, auto (got {override!r})")
+    return override or description.collision or CollisionChoice.AUTO
 
 
 def _scaling(description: RobotDescription) -> tuple[float, float]:

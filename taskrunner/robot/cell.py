@@ -50,6 +50,7 @@ from taskrunner.robot.build import WORLD, Placement, build_model
 from taskrunner.robot.description import RobotDescription, load_description
 from taskrunner.robot.model import RobotModel
 from taskrunner.robot.notes import raise_if_strict
+from taskrunner.robot.options import LoadOptions
 from taskrunner.robot.packages import PackageMap
 from taskrunner.robot.selfcollision import self_collision_warnings
 from taskrunner.robot.tools import (
@@ -214,7 +215,8 @@ def _resolve_robot(value: str, cell_dir: Path, packages: PackageMap) -> Path:
 def load_cell(path: str | Path, packages: PackageMap | None = None,
               policy: FolderPolicy | None = None, strict: bool | None = None,
               allow_missing_meshes: bool | None = None,
-              taught: TaughtPoses | None = None) -> Cell:
+              taught: TaughtPoses | None = None, *,
+              options: LoadOptions | None = None) -> Cell:
     """Load a cell file (see the module docstring).
 
     Args:
@@ -224,11 +226,13 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
             loads). Robots outside the policy's robot folders are refused before any of
             their files is read (xacro runs code).
         strict: every warning of a robot is an error (see
-            :func:`taskrunner.robot.load_robot`).
+            :func:`taskrunner.robot.load_robot`); None: ``options.strict``.
         allow_missing_meshes: load robots whose mesh files cannot be found (see
-            :func:`taskrunner.robot.load_robot`).
+            :func:`taskrunner.robot.load_robot`); None: ``options.allow_missing_meshes``.
         taught: taught poses (:mod:`taskrunner.taught`): those of this cell file are
             added to its named poses (None: none).
+        options: how its robots are loaded (default ``LoadOptions()``); its
+            ``collision`` wins over the cell's and the robots' own choices.
 
     Raises:
         YamlError: the file does not match the cell schema (with file:line).
@@ -241,8 +245,9 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
     node = load_yaml(path)
     spec = validate_node(CellSpec, node, path)
     robots_node = node["robots"]
+    options = _options(options, strict, allow_missing_meshes)
     packages = packages if packages is not None else PackageMap(
-        search_roots=[path.parent.parent])
+        search_roots=[path.parent.parent], package_path=options.package_path)
 
     placements: list[Placement] = []
     descriptions: dict[Path, RobotDescription] = {}
@@ -292,8 +297,9 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
         )
     try:
         model = build_model(placements, name=spec.name, extra_groups=spec.groups,
-                            strict=strict, check_self_collision=False,
-                            allow_missing_meshes=allow_missing_meshes)
+                            strict=options.strict, check_self_collision=False,
+                            allow_missing_meshes=options.allow_missing_meshes,
+                            collision=options.collision)
     except RobotDescriptionError as exc:
         if exc.path is None:  # a problem with the cell's own declarations
             raise YamlError(exc.reason, path, line_of(node, "groups")) from None
@@ -344,7 +350,7 @@ def load_cell(path: str | Path, packages: PackageMap | None = None,
     # Self-collision from where the cell starts (its start poses), not the zero state.
     start_name = "the cell's start state" if spec.start else None
     found = self_collision_warnings(model, cell.start_state(), start_name)
-    raise_if_strict(found, strict)
+    raise_if_strict(found, options.strict)
     for warning in found:
         log.warning("%s", warning)
         model.warnings.append(str(warning))
@@ -382,15 +388,29 @@ def _grasp_modes(spec: CellSpec, node: LineDict, model: RobotModel, path: Path
 
 def load_cell_or_robot(path: str | Path, packages: PackageMap | None = None,
                        strict: bool | None = None,
-                       allow_missing_meshes: bool | None = None) -> Cell:
+                       allow_missing_meshes: bool | None = None, *,
+                       options: LoadOptions | None = None) -> Cell:
     """A cell file, or a robot (manifest, folder, URDF, xacro) as a one-robot cell with no
-    objects."""
+    objects; ``strict`` and ``allow_missing_meshes`` (None: the ``options``') and
+    ``options`` as :func:`load_cell`'s."""
     path = Path(path)
+    options = _options(options, strict, allow_missing_meshes)
     if path.suffix in (".yaml", ".yml") and path.name != "robot.yaml":
-        return load_cell(path, packages, strict=strict,
-                         allow_missing_meshes=allow_missing_meshes)
-    description = load_description(path, packages)
-    model = build_model([Placement(description)], name=description.name, strict=strict,
-                        allow_missing_meshes=allow_missing_meshes)
+        return load_cell(path, packages, options=options)
+    description = load_description(path, packages, options=options)
+    model = build_model([Placement(description)], name=description.name,
+                        strict=options.strict, allow_missing_meshes=options.allow_missing_meshes,
+                        collision=options.collision)
     return Cell(model.name, path, model, (), {},
                 tools=install_tools(model, description.end_effector_settings))
+
+
+def _options(options: LoadOptions | None, strict: bool | None,
+             allow_missing_meshes: bool | None) -> LoadOptions:
+    """``options`` (default ``LoadOptions()``) with the arguments given explicitly."""
+    options = options or LoadOptions()
+    if strict is not None:
+        options = options.replaced(strict=strict)
+    if allow_missing_meshes is not None:
+        options = options.replaced(allow_missing_meshes=allow_missing_meshes)
+    return options

@@ -44,6 +44,7 @@ from taskrunner.robot.moveit_yaml import (
     read_pilz_cartesian_limits_yaml,
 )
 from taskrunner.robot.notes import LoadWarning
+from taskrunner.robot.options import LoadOptions
 from taskrunner.robot.packages import PackageMap, default_package_map
 from taskrunner.robot.srdf import Srdf, read_srdf, srdf_from_document
 from taskrunner.robot.tools import DeclaredTool, read_end_effector_settings
@@ -114,13 +115,17 @@ def read_srdf_file(path: Path, packages: PackageMap,
     return srdf_from_document(doc)
 
 
-def load_description(path: str | Path, packages: PackageMap | None = None) -> RobotDescription:
+def load_description(path: str | Path, packages: PackageMap | None = None, *,
+                     options: LoadOptions | None = None) -> RobotDescription:
     """Read a robot from a manifest, a MoveIt config package, or a URDF/xacro file.
 
     Args:
         path: see the module docstring for what is accepted.
         packages: package map for ``package://`` and ``$(find)``; by default
-            :func:`~taskrunner.robot.packages.default_package_map` for ``path``.
+            :func:`~taskrunner.robot.packages.default_package_map` for ``path``, with
+            the ``options``' package path.
+        options: how robots are loaded (only its ``package_path`` is used here, and
+            only when ``packages`` is None).
 
     Raises:
         RobotDescriptionError, YamlError: a file is missing or invalid.
@@ -128,7 +133,8 @@ def load_description(path: str | Path, packages: PackageMap | None = None) -> Ro
     path = Path(path).resolve()
     if not path.exists():
         raise RobotDescriptionError("robot description not found", path)
-    packages = packages if packages is not None else default_package_map(path)
+    if packages is None:
+        packages = default_package_map(path, (options or LoadOptions()).package_path)
     seen_warnings = len(packages.warnings)
     if path.is_dir():
         if (path / MANIFEST).is_file():

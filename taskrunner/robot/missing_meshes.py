@@ -5,8 +5,8 @@ there at all: every state "valid", every path "collision-free". So a missing mes
 error (:class:`~taskrunner.errors.MissingMeshError`) listing every missing mesh of the
 robot at once, grouped by cause, with the folders looked in and what to pass. Loading
 without them is an explicit opt-out (``allow_missing_meshes=True`` in Python,
-``--allow-missing-meshes`` on the command line, ``TASKRUNNER_ALLOW_MISSING_MESHES=1`` in
-the environment, which the command line sets for its worker processes); it keeps the
+``LoadOptions(allow_missing_meshes=True)``, ``--allow-missing-meshes`` on the command
+line); it keeps the
 fallback (a visual is dropped; a link whose collision meshes are all missing uses its
 visual geometry, else has none) and logs one warning per robot summing up what was lost.
 
@@ -15,7 +15,6 @@ A robot with no collision geometry at all is refused the same way, with the same
 
 from __future__ import annotations
 
-import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -23,10 +22,7 @@ from pathlib import Path
 from taskrunner.errors import MissingMeshError
 from taskrunner.robot.notes import LoadWarning
 
-__all__ = ["ALLOW_MISSING_MESHES_ENV", "MissingMesh", "check_robot_geometry",
-           "resolve_allow_missing_meshes"]
-
-ALLOW_MISSING_MESHES_ENV = "TASKRUNNER_ALLOW_MISSING_MESHES"
+__all__ = ["MissingMesh", "check_robot_geometry", "resolve_allow_missing_meshes"]
 
 _WHAT_TO_PASS = (
     "add the folder holding a missing package with --package-path DIR (repeatable; or "
@@ -71,11 +67,8 @@ class MissingMesh:
 
 
 def resolve_allow_missing_meshes(allow: bool | None) -> bool:
-    """``allow`` itself, or when None the ``TASKRUNNER_ALLOW_MISSING_MESHES`` variable."""
-    if allow is not None:
-        return allow
-    value = os.environ.get(ALLOW_MISSING_MESHES_ENV, "").strip().lower()
-    return value in ("1", "true", "yes", "on")
+    """``allow`` itself; None (not given) does not allow. The environment is not read."""
+    return bool(allow)
 
 
 def _groups(missing: Sequence[MissingMesh]) -> dict[str, list[MissingMesh]]:

@@ -3,23 +3,19 @@
 MoveIt loads configuration files that are a little wrong: it skips what it cannot use
 and logs a line. taskrunner does the same, but never silently: every skipped element is
 a :class:`LoadWarning` naming the file, the line and the element. In strict mode
-(``strict=True`` in Python, ``--strict`` on the command line, ``TASKRUNNER_STRICT=1``
-in the environment, which the command line sets for its worker processes) the first
-warning is raised as a :class:`~taskrunner.errors.RobotDescriptionError` instead.
+(``strict=True`` in Python, ``LoadOptions(strict=True)``, ``--strict`` on the command
+line) the first warning is raised as a :class:`~taskrunner.errors.RobotDescriptionError` instead.
 """
 
 from __future__ import annotations
 
-import os
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 from taskrunner.errors import RobotDescriptionError
 
-__all__ = ["STRICT_ENV", "LoadWarning", "raise_if_strict", "resolve_strict"]
-
-STRICT_ENV = "TASKRUNNER_STRICT"
+__all__ = ["LoadWarning", "raise_if_strict", "resolve_strict"]
 
 
 @dataclass(frozen=True)
@@ -47,10 +43,9 @@ class LoadWarning:
 
 
 def resolve_strict(strict: bool | None) -> bool:
-    """``strict`` itself, or when None the ``TASKRUNNER_STRICT`` environment variable."""
-    if strict is not None:
-        return strict
-    return os.environ.get(STRICT_ENV, "").strip().lower() in ("1", "true", "yes", "on")
+    """``strict`` itself; None (not given) is not strict. The environment is not read:
+    the caller passes what its options say (:class:`~taskrunner.robot.options.LoadOptions`)."""
+    return bool(strict)
 
 
 def raise_if_strict(warnings: Iterable[LoadWarning], strict: bool | None) -> None:

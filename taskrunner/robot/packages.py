@@ -6,8 +6,9 @@ ROS workspace we resolve ``pkg`` from a :class:`PackageMap`, which looks in this
 gives a warning naming both folders):
 
 1. explicit ``{name: folder}`` entries given in code;
-2. ``--package-path DIR`` on the command line and ``TASKRUNNER_PACKAGE_PATH``
-   (``:``-separated folders, searched recursively);
+2. the load options' package path (``LoadOptions(package_path=…)``; on the command line
+   ``--package-path DIR`` and ``TASKRUNNER_PACKAGE_PATH``, ``:``-separated), folders
+   searched recursively;
 3. the folders searched for the robot at hand (its folder, and the one above it at most
    four folders deep);
 4. ``ROS_PACKAGE_PATH`` (searched recursively, as rospack does);
@@ -40,10 +41,7 @@ from taskrunner.errors import RobotDescriptionError
 from taskrunner.robot.notes import LoadWarning
 from taskrunner.robot.xmldoc import read_xml
 
-__all__ = ["PACKAGE_PATH_ENV", "PackageMap", "default_package_map", "example_robot_data_dir",
-           "package_of"]
-
-PACKAGE_PATH_ENV = "TASKRUNNER_PACKAGE_PATH"
+__all__ = ["PackageMap", "default_package_map", "example_robot_data_dir", "package_of"]
 
 # Folders never worth descending into while looking for package.xml files.
 _SKIP_DIRS = {".git", "__pycache__", "node_modules", ".venv", "build", "install", "log"}
@@ -72,10 +70,12 @@ def _env_folders(name: str) -> list[Path]:
     return [Path(p) for p in os.environ.get(name, "").split(os.pathsep) if p.strip()]
 
 
-def default_package_map(path: str | Path) -> PackageMap:
-    """The package map for a robot at ``path`` (file or folder): the environment's
-    packages plus every package in the robot's folder and the folder above it."""
-    packages = PackageMap()
+def default_package_map(path: str | Path, package_path: Iterable[str | Path] = ()
+                        ) -> PackageMap:
+    """The package map for a robot at ``path`` (file or folder): the packages under
+    ``package_path`` and the ROS environment's, plus every package in the robot's folder
+    and the folder above it."""
+    packages = PackageMap(package_path=package_path)
     packages.discover_around(path)
     return packages
 
@@ -86,8 +86,10 @@ class PackageMap:
     Args:
         packages: explicit ``{name: folder}`` entries; these win over found ones.
         search_roots: folders searched (recursively) for ``package.xml`` files.
-        environment: also search ``TASKRUNNER_PACKAGE_PATH``, ``ROS_PACKAGE_PATH`` and
-            ``AMENT_PREFIX_PATH`` (see the module docstring).
+        environment: also search ``ROS_PACKAGE_PATH`` and ``AMENT_PREFIX_PATH`` (ROS's
+            own variables, as rospack and ament read them; see the module docstring).
+        package_path: folders searched (recursively) before the robot's surroundings and
+            the ROS environment (:attr:`~taskrunner.robot.options.LoadOptions.package_path`).
 
     Attributes:
         warnings: a package found in two folders, once for each such package used.
@@ -98,6 +100,7 @@ class PackageMap:
         packages: Mapping[str, str | Path] | None = None,
         search_roots: Iterable[str | Path] = (),
         environment: bool = True,
+        package_path: Iterable[str | Path] = (),
     ) -> None:
         # name → [(tier, order, folder)], the first of each tier's search order first.
         self._entries: dict[str, list[tuple[int, int, Path]]] = {}
@@ -115,9 +118,9 @@ class PackageMap:
             # example_robot_descriptions: register both.
             self._register("example-robot-data", erd, _BUNDLED)
             self._register("example_robot_descriptions", erd, _BUNDLED)
+        for user_root in package_path:
+            self._discover(Path(user_root), _USER)
         if environment:
-            for user_root in _env_folders(PACKAGE_PATH_ENV):
-                self._discover(user_root, _USER)
             for ros_root in _env_folders("ROS_PACKAGE_PATH"):
                 self._discover(ros_root, _ROS)
             for prefix in _env_folders("AMENT_PREFIX_PATH"):
@@ -257,7 +260,7 @@ class PackageMap:
             searched = "; ".join(self.searched_folders()) or "no folder"
             raise RobotDescriptionError(
                 f"package {name!r} not found (searched: {searched}; known packages: "
-                f"{known}); add its folder with --package-path or {PACKAGE_PATH_ENV}, or "
+                f"{known}); add its folder with --package-path or TASKRUNNER_PACKAGE_PATH, or "
                 f"place a package.xml naming it under a search root{skipped}"
             )
         entries = self._entries[name]

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from taskrunner.folders import FolderPolicy
+from taskrunner.robot.options import LoadOptions
 from taskrunner.tasks.problem import raise_for_problems
 from taskrunner.taught import TaughtPoses
 from taskrunner.tree.check import CheckReport, check_task
@@ -22,19 +23,21 @@ __all__ = ["check_before_run"]
 
 def check_before_run(path: str | Path, parameters: Mapping[str, object] | None = None,
                      seed: int = 0, *, policy: FolderPolicy | None = None,
-                     taught: TaughtPoses | None = None) -> CheckReport:
+                     taught: TaughtPoses | None = None,
+                     options: LoadOptions | None = None) -> CheckReport:
     """Check the task file a run is about to run; returns the report when it has no problem.
 
     Args:
         path: the task file.
         parameters: the run's parameter overrides.
         seed: the run's seed (IK searches are seeded as the run seeds them).
-        policy, taught: as for :func:`~taskrunner.tree.check.check_task`.
+        policy, taught, options: as for :func:`~taskrunner.tree.check.check_task`.
 
     Raises:
         TaskSpecError: the check found problems; all of them are in its ``problems``
             attribute (each with file:line), the first gives its file and line.
     """
-    report = check_task(path, parameters, seed=seed, policy=policy, taught=taught)
+    report = check_task(path, parameters, seed=seed, policy=policy, taught=taught,
+                        options=options)
     raise_for_problems(report.problems)
     return report

@@ -35,9 +35,12 @@ import threading
 import weakref
 from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from taskrunner.processes import start_ignoring_sigint
+
+if TYPE_CHECKING:
+    from taskrunner.robot.options import LoadOptions
 
 __all__ = ["EarlyWorker", "start_worker_early", "task_cell"]
 
@@ -75,7 +78,7 @@ def task_cell(task: Path) -> Path | None:
 
 
 def _serve(source: str, conn: Connection, cancel: Any, timing: bool,
-           parent_end: Connection | None = None) -> None:
+           parent_end: Connection | None = None, options: LoadOptions | None = None) -> None:
     """The early process: the planning worker's own loop (imported here, in the child).
     ``parent_end``: the parent's end of the pipe, which a forked child holds too: closed,
     so that the child sees the pipe close when the parent dies."""
@@ -83,7 +86,7 @@ def _serve(source: str, conn: Connection, cancel: Any, timing: bool,
         parent_end.close()
     from taskrunner.planning.worker import _serve as serve_requests
 
-    serve_requests(source, conn, cancel, 0, timing)
+    serve_requests(source, conn, cancel, 0, timing, options)
 
 
 def _import_shared() -> None:
@@ -125,14 +128,18 @@ class EarlyWorker:
         source: the cell file it loads (resolved).
         timing: the worker imports toppra before it reports ready (False: the run
             times its paths in its own process, as ``run-task`` does).
+        options: how it loads the cell (passed to the process, not through the
+            environment): those the run loads the cell with.
 
     Attributes:
         source: the cell file it loads (resolved).
         start_method: ``fork`` or ``spawn`` (see the module docstring).
     """
 
-    def __init__(self, source: Path, timing: bool = True) -> None:
+    def __init__(self, source: Path, timing: bool = True,
+                 options: LoadOptions | None = None) -> None:
         self.source = source
+        self.options = options
         self.start_method = _start_method()
         context = mp.get_context("fork") if self.start_method == "fork" else mp.get_context("spawn")
         if self.start_method == "fork":
@@ -141,22 +148,27 @@ class EarlyWorker:
         self.conn, child = context.Pipe()
         parent_end = self.conn if self.start_method == "fork" else None
         self.process = context.Process(
-            target=_serve, args=(str(source), child, self.cancel, timing, parent_end),
+            target=_serve, args=(str(source), child, self.cancel, timing, parent_end, options),
             name="taskrunner-planner", daemon=False)
         start_ignoring_sigint(self.process)  # as PlanningWorker starts its own
         child.close()
         self._taken = False
         _OPEN.add(self)
 
-    def take(self, cell: str | Path) -> tuple[Any, Connection, Any] | None:
+    def take(self, cell: str | Path, options: LoadOptions | None = None
+             ) -> tuple[Any, Connection, Any] | None:
         """``(process, connection, cancel value)`` for a PlanningWorker to adopt when
-        ``cell`` is the file this process loads; otherwise stop it and return None."""
+        ``cell`` is the file this process loads, with the same ``options``; otherwise
+        stop it and return None."""
+        from taskrunner.robot.options import LoadOptions
+
         if self._taken:
             return None
         try:
             same = Path(cell).resolve() == self.source
         except (OSError, RuntimeError, ValueError):  # a symlink loop, a NUL, a name too long
             same = False
+        same = same and (options or LoadOptions()) == (self.options or LoadOptions())
         if not same or not self.process.is_alive():
             self.close()
             return None
@@ -176,15 +188,16 @@ class EarlyWorker:
         self.conn.close()
 
 
-def start_worker_early(task: Path, timing: bool = False) -> EarlyWorker | None:
+def start_worker_early(task: Path, timing: bool = False,
+                       options: LoadOptions | None = None) -> EarlyWorker | None:
     """An :class:`EarlyWorker` on the task's cell, or None when the task file does not
     name one plainly (see :func:`task_cell`). For the command line only: the worker
     loads the cell with no folder policy (a contained server checks every path before
     it is read, and does not call this). ``timing``: as :class:`EarlyWorker`'s;
     False by default: ``run-task`` times its motions in its own process
-    (``RunOptions.planner_times``)."""
+    (``RunOptions.planner_times``). ``options``: how it loads the cell."""
     cell = task_cell(task)
-    return EarlyWorker(cell, timing) if cell is not None else None
+    return EarlyWorker(cell, timing, options) if cell is not None else None
 
 
 _OPEN: weakref.WeakSet[EarlyWorker] = weakref.WeakSet()

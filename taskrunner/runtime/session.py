@@ -37,6 +37,7 @@ from taskrunner.backends.base import Backend
 from taskrunner.errors import ArgumentError, InputError
 from taskrunner.kinds import BackendKind, NodeStatus
 from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.robot.options import LoadOptions
 from taskrunner.runtime.display import LiveTree
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.preflight import check_before_run
@@ -344,7 +345,8 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                   loaded: CheckReport | None = None,
                   watch: Sequence[Callable[[Runner], AbstractContextManager[object]]] = (),
                   resume: ResumePlan | None = None,
-                  taught: TaughtPoses | None = None) -> int:
+                  taught: TaughtPoses | None = None,
+                  options: LoadOptions | None = None) -> int:
     """Run a task file; returns the exit code (see :data:`EXIT_CODES`).
 
     With ``check``, the task is checked first (:func:`check_before_run`) and nothing
@@ -360,7 +362,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     ``resume``: continue the run it was made from (:mod:`taskrunner.runtime.resume`;
     ``check`` is then not done: the task is not at its start); mock and sim start where
     that run left the arm. ``taught``: taught poses added to the cell's named poses
-    (:mod:`taskrunner.taught`; None: none), for the check and the run alike.
+    (:mod:`taskrunner.taught`; None: none), for the check and the run alike. ``options``:
+    how the cell's robots are loaded (:mod:`taskrunner.robot.options`), here and in the
+    planning worker, for the check and the run alike.
 
     Raises:
         InputError (TaskSpecError, YamlError, RobotDescriptionError): an invalid task or
@@ -370,7 +374,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
     out = out or sys.stdout
     live = live and _can_redraw()
     if check:
-        loaded = check_before_run(path, parameters, seed=seed, taught=taught)
+        loaded = check_before_run(path, parameters, seed=seed, taught=taught, options=options)
     reused = _from_check(loaded, path)
     stop = _StopSignals(out)
     with stop.installed():
@@ -381,14 +385,15 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         if worker:
             from taskrunner.planning.worker import PlanningWorker
 
-            started = early.take(spec.cell) if early is not None else None
-            planner_service = PlanningWorker(spec.cell, wait_ready=False, started=started)
+            started = early.take(spec.cell, options) if early is not None else None
+            planner_service = PlanningWorker(spec.cell, wait_ready=False, started=started,
+                                             options=options)
         elif early is not None:
             early.close()
         try:
             cell = reused[1] if reused is not None else _checked_cell(loaded, spec)
             if cell is None:
-                cell = load_cell(spec.cell, taught=taught)
+                cell = load_cell(spec.cell, taught=taught, options=options)
             if not worker:
                 from taskrunner.planning.service import InProcessPlanner
 

@@ -56,6 +56,7 @@ from py_trees.common import Status
 from taskrunner.errors import InputError, TaskrunnerError, TaskSpecError
 from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
+from taskrunner.robot.options import LoadOptions
 from taskrunner.scene import Scene, scene_from_cell
 from taskrunner.tasks import (
     AddObjectStep,
@@ -122,7 +123,8 @@ class CheckReport:
 
 def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
                seed: int = 0, *, policy: FolderPolicy | None = None,
-               taught: TaughtPoses | None = None) -> CheckReport:
+               taught: TaughtPoses | None = None,
+               options: LoadOptions | None = None) -> CheckReport:
     """Check a task file: structure, names, then a kinematic dry run (nothing moves).
 
     Args:
@@ -133,6 +135,8 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
             anything loads; see :mod:`taskrunner.folders`).
         taught: taught poses added to the cell's named poses, as a run has them (None:
             none; see :mod:`taskrunner.taught`).
+        options: how the cell's robots are loaded (default ``LoadOptions()``; see
+            :mod:`taskrunner.robot.options`), as the run loads them.
 
     Returns:
         The report; problems of the task or of its cell are in it, never raised.
@@ -144,7 +148,7 @@ def check_task(path: str | Path, parameters: Mapping[str, object] | None = None,
         found = getattr(exc, "problems", None) or [Problem(exc.path, exc.line, exc.reason)]
         return CheckReport("", 0, _ordered(found, root))
     try:
-        cell = load_cell(spec.cell, policy=policy, taught=taught)
+        cell = load_cell(spec.cell, policy=policy, taught=taught, options=options)
     except TaskrunnerError as exc:
         if isinstance(exc, InputError) and exc.path is not None:
             return CheckReport("", 0, [Problem(exc.path, exc.line, exc.reason)])

@@ -86,12 +86,18 @@ def test_the_opt_out_is_not_undone_by_strict_mode(make_mini):
     assert len(m.warnings) == 1 and "loaded WITHOUT 1 mesh file(s)" in m.warnings[0]
 
 
-def test_the_opt_out_comes_from_the_environment_too(make_mini, monkeypatch):
+def test_the_opt_out_comes_from_the_load_options_never_from_the_environment(
+        make_mini, monkeypatch):
+    from taskrunner.robot import LoadOptions, load_robot
+
     robot = make_mini({"mini.urdf": ('tetra.stl" scale', 'nope.stl" scale')})
+    allowed = load_robot(robot.folder, robot.packages,
+                         options=LoadOptions(allow_missing_meshes=True))
+    assert "loaded WITHOUT" in allowed.warnings[0]
+    # The variable is the command line's to read (LoadOptions.from_env); a loader does not.
     monkeypatch.setenv("TASKRUNNER_ALLOW_MISSING_MESHES", "1")
-    assert "loaded WITHOUT" in robot.load().warnings[0]
-    monkeypatch.setenv("TASKRUNNER_ALLOW_MISSING_MESHES", "0")
     robot.error(MissingMeshError)
+    assert LoadOptions.from_env().allow_missing_meshes
 
 
 def test_missing_collision_mesh_without_visual_leaves_the_link_without_geometry(make_mini):

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from taskrunner.errors import MissingMeshError, RobotDescriptionError
-from taskrunner.robot import load_robot
+from taskrunner.robot import LoadOptions, load_robot
 from taskrunner.robot.cell import load_cell, load_cell_or_robot
 from taskrunner.robot.description import load_description
 
@@ -99,9 +99,9 @@ def test_gripper_poses_take_both_spellings_and_mimic_joints_follow():
     assert q[m.joint("finger_joint2").index] == pytest.approx(0.04)
 
 
-def test_duplicate_package_names_first_in_search_order_wins_with_a_warning(monkeypatch):
-    monkeypatch.setenv("TASKRUNNER_PACKAGE_PATH", str(MOVEIT / "other"))
-    m = load_robot(SRC / "arm3_ros2_moveit_config")
+def test_duplicate_package_names_first_in_search_order_wins_with_a_warning():
+    m = load_robot(SRC / "arm3_ros2_moveit_config",
+                   options=LoadOptions(package_path=(MOVEIT / "other",)))
     dup = [w for w in m.warnings if "package 'arm3_description' is in two places" in w]
     assert len(dup) == 1
     assert f"{MOVEIT / 'other' / 'arm3_description'} (used" in dup[0]
@@ -158,12 +158,11 @@ def test_default_state_in_self_collision_is_a_warning_suggesting_collision_matri
     assert load_cell(robots_dir / "cells" / "servo_arm_table.yaml").model.warnings == []
 
 
-def test_gripper_pose_listing_a_mimic_joint_runs_on_mock(tmp_path, monkeypatch):
+def test_gripper_pose_listing_a_mimic_joint_runs_on_mock(tmp_path):
     """The odd config's 'close' lists the mimic finger (off its relation) and has no
     'closed' or 'open': a task saying action close/open runs (no stale-state refusal)."""
     from taskrunner.workcell import run_task
 
-    monkeypatch.setenv("TASKRUNNER_ALLOW_MISSING_MESHES", "1")  # its link2 mesh is missing
     (tmp_path / "cells").mkdir()
     (tmp_path / "cells" / "odd.yaml").write_text(
         "name: odd\nrobots:\n"
@@ -173,7 +172,8 @@ def test_gripper_pose_listing_a_mimic_joint_runs_on_mock(tmp_path, monkeypatch):
                     "  - gripper: {arm: arm, action: close}\n"
                     "  - gripper: {arm: arm, action: open}\n"
                     "  - go: {group: arm, to: ready}\n")
-    assert run_task(task).status == "succeeded"
+    # its link2 mesh is missing: loaded without it, as the options allow
+    assert run_task(task, options=LoadOptions(allow_missing_meshes=True)).status == "succeeded"
 
 
 @pytest.mark.parametrize("config", sorted(p.name for p in SRC.glob("*_moveit_config")))

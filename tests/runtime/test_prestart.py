@@ -83,16 +83,6 @@ def test_an_early_worker_on_another_cell_is_stopped(tmp_path):
     early.close()  # idempotent
 
 
-def test_the_cli_names_the_robot_loaders_variables_without_importing_them():
-    from taskrunner import cli
-    from taskrunner.robot.notes import STRICT_ENV
-    from taskrunner.robot.packages import PACKAGE_PATH_ENV
-    from taskrunner.scene.linkgeometry import COLLISION_ENV
-
-    assert (cli.STRICT_ENV, cli.PACKAGE_PATH_ENV, cli.COLLISION_ENV) == (
-        STRICT_ENV, PACKAGE_PATH_ENV, COLLISION_ENV)
-
-
 def test_run_task_starts_its_worker_before_importing_the_robot_loaders():
     """What the command line imports before the early worker starts stays light."""
     import subprocess
@@ -102,9 +92,12 @@ def test_run_task_starts_its_worker_before_importing_the_robot_loaders():
         "import sys\n"
         "import taskrunner.runtime.prestart as prestart\n"
         "seen = []\n"
+        "given = []\n"
         "class Stop(Exception): pass\n"
-        "def early(path):\n"
-        "    seen.extend(m for m in ('taskrunner.robot', 'taskrunner.tasks', 'pinocchio',\n"
+        "def early(path, options=None):\n"
+        "    given.append(options)\n"
+        "    seen.extend(m for m in ('taskrunner.robot.build', 'taskrunner.robot.cell',\n"
+        "                            'taskrunner.tasks', 'pinocchio',\n"
         "                            'scipy', 'pydantic') if m in sys.modules)\n"
         "    raise Stop\n"
         "prestart.start_worker_early = early\n"
@@ -112,11 +105,11 @@ def test_run_task_starts_its_worker_before_importing_the_robot_loaders():
         "try:\n"
         "    main(['pick_place', '--strict'])\n"
         "except Stop:\n"
-        "    print('imported before:', seen)\n"
+        "    print('imported before:', seen, 'strict:', given[0].strict)\n"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           timeout=120)
-    assert done.stdout.strip() == "imported before: []", done.stdout + done.stderr
+    assert done.stdout.strip() == "imported before: [] strict: True", done.stdout + done.stderr
 
 
 def test_with_other_threads_running_the_early_worker_is_spawned():

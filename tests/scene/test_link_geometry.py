@@ -185,13 +185,23 @@ def test_robot_yaml_cell_and_load_workcell_choose_and_the_latest_word_wins(tmp_p
         load_workcell(cells / "u_cell.yaml", collision={"v": "exact"})
 
 
-def test_environment_choice_wins_over_the_files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+def test_the_load_options_choice_wins_over_the_files(tmp_path: Path,
+                                                      monkeypatch: pytest.MonkeyPatch):
+    from taskrunner.errors import ArgumentError
+    from taskrunner.robot import LoadOptions
+
     folder = make_u_robot(tmp_path / "u", collision="convex")
+    assert load_robot(folder, options=LoadOptions(collision="exact")).instances[0].collision \
+        == "exact"
+    # The variable is read where a program starts (LoadOptions.from_env), not by a loader.
     monkeypatch.setenv("TASKRUNNER_COLLISION", "exact")
-    assert load_robot(folder).instances[0].collision == "exact"
+    assert load_robot(folder).instances[0].collision == "convex"
     monkeypatch.setenv("TASKRUNNER_COLLISION", "bogus")
-    with pytest.raises(Exception, match="'TASKRUNNER_COLLISION' must be one of exact, convex, auto"):
-        load_robot(folder)
+    with pytest.raises(ArgumentError,
+                       match="'TASKRUNNER_COLLISION' must be one of exact, convex, auto"):
+        LoadOptions.from_env()
+    with pytest.raises(ArgumentError, match="'collision' must be one of exact, convex, auto"):
+        LoadOptions(collision="bogus")  # type: ignore[arg-type]
 
 
 def test_a_bad_collision_word_in_robot_yaml_is_reported_at_its_line(tmp_path: Path):
@@ -225,21 +235,16 @@ def test_cli_info_lists_the_link_geometry_and_collision_overrides_it(tmp_path: P
     from taskrunner.cli import main
 
     folder = make_u_robot(tmp_path / "u")
-    saved = os.environ.get("TASKRUNNER_COLLISION")
-    try:
-        assert main(["info", str(folder)]) == 0
-        out = capsys.readouterr().out
-        assert "collision geometry (u auto):" in out
-        assert "  exact meshes: base_link (hull up to 49 mm off the mesh)" in out
-        assert "  primitive shapes: carriage, plunger" in out
-        assert main(["info", str(folder), "--collision", "convex"]) == 0
-        out = capsys.readouterr().out
-        assert "collision geometry (u convex):" in out and "  convex hulls: base_link" in out
-    finally:
-        if saved is None:
-            os.environ.pop("TASKRUNNER_COLLISION", None)
-        else:
-            os.environ["TASKRUNNER_COLLISION"] = saved
+    before = dict(os.environ)
+    assert main(["info", str(folder)]) == 0
+    out = capsys.readouterr().out
+    assert "collision geometry (u auto):" in out
+    assert "  exact meshes: base_link (hull up to 49 mm off the mesh)" in out
+    assert "  primitive shapes: carriage, plunger" in out
+    assert main(["info", str(folder), "--collision", "convex"]) == 0
+    out = capsys.readouterr().out
+    assert "collision geometry (u convex):" in out and "  convex hulls: base_link" in out
+    assert dict(os.environ) == before  # the flag reached the loader as an argument
 
 
 def test_run_task_check_names_the_geometry_of_a_target_in_collision(repo_root: Path):

@@ -82,7 +82,8 @@ async def start_run(body: RunCreate, response: Response,
             taught = await run_in_threadpool(store.taught_poses, settings.cells_dir)
             raise_for_problems(await run_in_threadpool(
                 work.call, precheck_request, settings.folder_policy(), settings.tasks_dir,
-                body.task, body.yaml, body.parameters, body.seed, taught))
+                body.task, body.yaml, body.parameters, body.seed, taught,
+                settings.load_options()))
     if body.cell is not None:
         spec = spec.model_copy(update={"cell": cells.path_of(body.cell)})
     live = await run_in_threadpool(

@@ -38,5 +38,6 @@ async def check(body: CheckRequest, settings: Annotated[Settings, Depends(get_se
         taught = await run_in_threadpool(store.taught_poses, settings.cells_dir)
         answer = await run_in_threadpool(work.call, check_request, settings.folder_policy(),
                                          settings.tasks_dir, body.task, body.yaml,
-                                         body.parameters, body.seed, taught)
+                                         body.parameters, body.seed, taught,
+                                         settings.load_options())
     return CheckResponse.model_validate(answer)
