@@ -198,3 +198,61 @@ def test_a_hostile_obstacle_is_refused_naming_the_field(reader, obstacles, expec
                                                "obstacles": obstacles})
     assert answer.status_code == 422, answer.text
     assert expected in answer.text
+
+
+# The same bad poses as /plan's and a task file's (tests/test_pose_bounds.py): the same
+# field, the same message, the same 422.
+SHARED_POSE_ERRORS = [
+    ({"xyz": [1e308, 0, 0.8], "quat": [0, 0, 0, 1]}, "xyz",
+     "must be a finite number within ±1000 m (got 1e+308)"),
+    ({"xyz": [0.1, 0, 0.8], "quat": [1e308, 0, 0, 0]}, "quat",
+     "must be a unit quaternion [x, y, z, w] (got norm 1e+308)"),
+    ({"xyz": [0.1, 0, 0.8], "quat": [0, 0, 0, 0.5]}, "quat",
+     "must be a unit quaternion [x, y, z, w] (got norm 0.5)"),
+    ({"xyz": [0.1, 0, 0.8], "rpy": [0, 1e308, 0]}, "rpy",
+     "must be a finite number within ±100 rad (got 1e+308)"),
+]
+
+
+def test_the_goal_pose_is_the_one_pose_model_with_its_bounds_and_messages(reader):
+    from taskrunner.api.routers.viewer_goal import GoalPose, ObstacleBody
+    from taskrunner.posespec import TransformFields
+
+    assert issubclass(GoalPose, TransformFields) and issubclass(ObstacleBody, TransformFields)
+    for pose, field, message in SHARED_POSE_ERRORS:
+        goal = reader.post(CELL + "/goal", json={"group": "arm", "pose": pose})
+        plan = reader.post("/plan", json={"cell": "servo_arm_table", "group": "arm",
+                                          "pose": pose})
+        assert goal.status_code == plan.status_code == 422, goal.text
+        got, planned = goal.json()["detail"][0], plan.json()["detail"][0]
+        assert got["loc"][:3] == ["body", "pose", field], got
+        assert message in got["msg"] and got["msg"] == planned["msg"], (got, planned)
+    both = reader.post(CELL + "/goal", json={"group": "arm", "pose": {
+        "xyz": [0.2, 0, 0.8], "rpy": [0, 0, 0], "quat": [0, 0, 0, 1]}})
+    assert both.status_code == 422 and "takes only one of 'rpy' or 'quat'" in both.text
+
+
+def test_a_goal_given_by_rpy_is_the_goal_given_by_quat(reader):
+    home = _home(reader)
+    at_home = reader.post(CELL + "/goal", json={"group": "arm", "joints": home}).json()
+    x, y, z, w = at_home["quat"]
+    roll = math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))
+    pitch = math.asin(max(-1.0, min(1.0, 2 * (w * y - z * x))))
+    yaw = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    target = [at_home["xyz"][0] + 0.02, at_home["xyz"][1], at_home["xyz"][2] - 0.03]
+    by_quat = reader.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": target, "quat": at_home["quat"]}, "seed": home}).json()
+    by_rpy = reader.post(CELL + "/goal", json={
+        "group": "arm", "pose": {"xyz": target, "rpy": [roll, pitch, yaw]}, "seed": home}).json()
+    assert by_quat["reachable"] and by_rpy["reachable"]
+    assert by_rpy["joints"] == pytest.approx(by_quat["joints"], abs=1e-6)
+
+
+def test_an_obstacle_pose_outside_the_shared_bounds_is_refused_naming_the_field(reader):
+    far = {"name": "b", "shape": "sphere", "radius": 0.1, "xyz": [0, 0, 1e4]}
+    answer = reader.post(CELL + "/goal", json={"group": "arm", "joints": {"Revolute 1": 0.8},
+                                               "obstacles": [far]})
+    assert answer.status_code == 422, answer.text
+    detail = answer.json()["detail"][0]
+    assert detail["loc"][:4] == ["body", "obstacles", 0, "xyz"], detail
+    assert "must be a finite number within ±1000 m (got 10000.0)" in detail["msg"]

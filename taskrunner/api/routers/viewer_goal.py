@@ -17,11 +17,11 @@ first point is off the current state.
 from __future__ import annotations
 
 import json
-import math
 import threading
 import time
 from typing import Annotated, Any, Literal, cast
 
+import pinocchio as pin
 from fastapi import APIRouter, Depends, Request, Response, status
 from pydantic import Field, model_validator
 from starlette.concurrency import run_in_threadpool
@@ -53,6 +53,7 @@ from taskrunner.api.schemas import (
 )
 from taskrunner.api.settings import Settings
 from taskrunner.errors import InputError, InvalidStateError
+from taskrunner.posespec import Position, TransformFields
 from taskrunner.tasks.nodes import ObjectSpec
 from taskrunner.tree.compiler import object_shape
 from taskrunner.viewer.goal import GoalSolver, Obstacle
@@ -64,7 +65,6 @@ _ERRORS: dict[int | str, dict[str, Any]] = {
     401: {"model": ErrorBody}, 404: {"model": ErrorBody}, 409: {"model": ErrorBody},
     422: {"model": ErrorBody}, 503: {"model": ErrorBody}}
 _NAME = Field(min_length=1, max_length=128)
-_REACH_M = 100.0  # no cell is larger: a coordinate beyond this is a mistake
 _SIZE_M = 10.0  # no obstacle is larger
 MAX_OBSTACLES = 32
 """Most obstacles one request may add."""
@@ -75,26 +75,29 @@ START_TOLERANCE = 0.01
 ``trajectory_execution/allowed_start_tolerance``)."""
 
 
-class GoalPose(_Request):
-    xyz: list[Number] = Field(min_length=3, max_length=3, description="m, world frame")
-    quat: list[Number] = Field(min_length=4, max_length=4,
-                               description="x, y, z, w (normalised by the server)")
+class GoalPose(_Request, TransformFields):
+    """A link's world pose: ``xyz`` (m) and ``quat`` (x, y, z, w) or ``rpy`` (rad; neither:
+    the identity): the pose model of task and cell files and of ``POST /plan``, with its
+    bounds and messages."""
+
+    xyz: Position
+    """Translation (m, world frame)."""
     link: str | None = Field(default=None, max_length=128,
                              description="the link to aim (default: the group's tip)")
 
-    @model_validator(mode="after")
-    def _in_reach(self) -> GoalPose:
-        if any(abs(v) > _REACH_M for v in self.xyz):
-            raise ValueError(f"'xyz' must be within {_REACH_M:g} m of the world origin "
-                             f"(got {self.xyz})")
-        if any(abs(v) > 1.0 + 1e-6 for v in self.quat) or sum(v * v for v in self.quat) < 1e-12:
-            raise ValueError(f"'quat' must be a unit quaternion x, y, z, w (got {self.quat})")
-        return self
+    def quaternion(self) -> tuple[float, float, float, float]:
+        """The orientation as a unit quaternion x, y, z, w."""
+        if self.quat is not None:
+            x, y, z, w = self.quat
+            return x, y, z, w
+        x, y, z, w = (float(v) for v in pin.Quaternion(self.rotation()).coeffs())
+        return x, y, z, w
 
 
-class ObstacleBody(_Request):
+class ObstacleBody(_Request, TransformFields):
     """A box, cylinder or sphere the page adds to the cell for its goals, plans and
-    Executes (the fields of a task file's object, the pose as a world xyz and quat)."""
+    Executes (the fields of a task file's object, its pose a world ``xyz`` and ``quat`` or
+    ``rpy`` of the one pose model)."""
 
     name: str = Field(pattern=_OBJECT_NAME)
     shape: Literal["box", "cylinder", "sphere"]
@@ -103,9 +106,8 @@ class ObstacleBody(_Request):
     radius: Number | None = Field(default=None, gt=0, le=_SIZE_M / 2, description="m")
     length: Number | None = Field(default=None, gt=0, le=_SIZE_M,
                                   description="a cylinder's, along its z (m)")
-    xyz: list[Number] = Field(min_length=3, max_length=3, description="m, world frame")
-    quat: list[Number] = Field(default=[0.0, 0.0, 0.0, 1.0], min_length=4, max_length=4,
-                               description="x, y, z, w (normalised by the server)")
+    xyz: Position
+    """Translation (m, world frame)."""
 
     @model_validator(mode="after")
     def _fields_of_shape(self) -> ObstacleBody:
@@ -116,21 +118,17 @@ class ObstacleBody(_Request):
                              f" (got {', '.join(sorted(given)) or 'none'})")
         if self.size is not None and not all(0 < v <= _SIZE_M for v in self.size):
             raise ValueError(f"'size' must be lengths in (0, {_SIZE_M:g}] m (got {self.size})")
-        if any(abs(v) > _REACH_M for v in self.xyz):
-            raise ValueError(f"'xyz' must be within {_REACH_M:g} m of the world origin "
-                             f"(got {self.xyz})")
-        if any(abs(v) > 1.0 + 1e-6 for v in self.quat) or sum(v * v for v in self.quat) < 1e-12:
-            raise ValueError(f"'quat' must be a unit quaternion x, y, z, w (got {self.quat})")
         return self
 
     def task_object(self) -> dict[str, Any]:
         """The obstacle as a task file's object."""
-        norm = math.sqrt(sum(v * v for v in self.quat))
         out: dict[str, Any] = {"name": self.name, "shape": self.shape}
         for field in ("size", "radius", "length"):
             if getattr(self, field) is not None:
                 out[field] = getattr(self, field)
-        out["pose"] = {"xyz": list(self.xyz), "quat": [v / norm for v in self.quat]}
+        out["pose"] = {"xyz": list(self.xyz)} | {
+            name: list(value) for name in ("quat", "rpy")
+            if (value := getattr(self, name)) is not None}
         return out
 
 
@@ -219,8 +217,8 @@ def _goal(cell_id: str, body: GoalBody, request: Request,
     solver = _solver(request, cell_id, session)
     obstacles = _obstacles(body.obstacles)
     if body.pose is not None:
-        state = solver.solve_pose(body.group, body.pose.xyz, body.pose.quat, body.pose.link,
-                                  body.seed, obstacles)
+        state = solver.solve_pose(body.group, body.pose.xyz, body.pose.quaternion(),
+                                  body.pose.link, body.seed, obstacles)
     else:
         assert body.joints is not None
         state = solver.check_joints(body.group, body.joints, body.seed, obstacles=obstacles)
