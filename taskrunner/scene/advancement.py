@@ -142,7 +142,10 @@ def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_
     last = cumulative.shape[0] - 1
     if to_end <= step:
         return float(last)
-    left = _COLUMNS
+    # The left lever arms' first column, _COLUMNS, read from the walk's width: passed as the
+    # constant, numba would type it Literal[int](8) and compile _bound and _levers_here once
+    # more for it than for the right ones' column (a second copy, ~0.3 s of first compilation).
+    left = walk.shape[1] - 2 * cumulative.shape[1]
     lo_node = int(start) + 1      # first node after start
     lo, f_lo = start, 0.0         # no motion yet
     if lo_node == last:           # the bound there is ``to_end``
@@ -233,7 +236,8 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, w
     margin, gain, early = settings[0], settings[2], settings[3]
     per_state = settings[_S_PER_STATE] != 0.0
     nq = cumulative.shape[1]
-    left, right = _COLUMNS, _COLUMNS + nq
+    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _position_for); then the right lever arms
+    right = left + nq
     last = float(cumulative.shape[0] - 1)
     if walk[k, _HAS_L] == 0.0:
         extends = True
@@ -424,9 +428,10 @@ def _segment_bounds(cumulative, geometries, pair_i, pair_levers, frames, nj, per
     nq = cumulative.shape[1]
     walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
     c0 = np.zeros(nq)
+    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _position_for)
     for k in range(pair_i.shape[0]):
-        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, _COLUMNS)
-        out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, _COLUMNS, 1.0)
+        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
+        out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, 1.0)
 
 
 @jit
