@@ -450,54 +450,41 @@ def _support_bounds(pair_i, geometries, frames, points, nj, out):  # type: ignor
                                 frames, points, nj)
 
 
-@jit
-def _group_pairs(pair_i, pair_levers, unit_of, representative):  # type: ignore[no-untyped-def]
+def _group_pairs(pair_i: np.ndarray, pair_levers: np.ndarray, unit_of: np.ndarray,
+                 representative: np.ndarray) -> int:
     """Sort the pairs into units of pairs whose motion bound is the same function (the
     same joints counting, each with the same code, moved geometry and lever arms; the
     codes may all name the other body, which bounds alike): ``unit_of[k]`` is pair ``k``'s
     unit, ``representative[u]`` the first pair of unit ``u``. Returns the count of units.
-    A link and each world object form such pairs: one unit per link."""
-    nq = pair_levers.shape[1]
-    units = 0
-    for k in range(pair_i.shape[0]):
-        count = pair_i[k, _PI_COUNT]
-        found = -1
-        for u in range(units):
-            r = representative[u]
-            if pair_i[r, _PI_COUNT] != count:
-                continue
-            same = True
-            for j in range(nq):
-                if pair_levers[r, j] != pair_levers[k, j]:
-                    same = False
-                    break
-            if not same:
-                continue
-            flip = count > 0 and (pair_i[r, _PI_JOINTS + nq] % 2) != (pair_i[k, _PI_JOINTS + nq] % 2)
-            for i in range(count):
-                code_r = pair_i[r, _PI_JOINTS + nq + i]
-                code_k = pair_i[k, _PI_JOINTS + nq + i]
-                if flip:
-                    code_k = code_k + 1 if code_k % 2 == 1 else code_k - 1
-                if (pair_i[r, _PI_JOINTS + i] != pair_i[k, _PI_JOINTS + i] or code_r != code_k
-                        or pair_i[r, _PI_JOINTS + 2 * nq + i] != pair_i[k, _PI_JOINTS + 2 * nq + i]
-                        or pair_i[r, _PI_JOINTS + 3 * nq + i] != pair_i[k, _PI_JOINTS + 3 * nq + i]):
-                    same = False
-                    break
-            if same:
-                found = u
-                break
-        if found < 0:
-            representative[units] = k
-            found = units
-            units += 1
-        unit_of[k] = found
-    return units
+    A link and each world object form such pairs: one unit per link.
+
+    Units are numbered in the order of their first pair. Plain NumPy, run once per
+    verifier (not a kernel: nothing to compile)."""
+    n, nq = pair_levers.shape
+    if n == 0:
+        return 0
+    count = pair_i[:, _PI_COUNT]
+    listed = np.arange(nq)[None, :] < count[:, None]        # the joints that count
+    block = pair_i[:, _PI_JOINTS:_PI_JOINTS + 4 * nq].reshape(n, 4, nq).copy()
+    codes = block[:, 1]
+    # Codes naming the other body bound alike: each row's codes flipped (1 <-> 2, 3 <-> 4)
+    # so that its first code names the first body.
+    flip = (codes[:, 0] % 2 == 0)[:, None] & listed
+    codes[flip] = np.where(codes[flip] % 2 == 1, codes[flip] + 1, codes[flip] - 1)
+    block[~np.broadcast_to(listed[:, None, :], block.shape)] = 0
+    levers = (pair_levers + 0.0).view(np.int64)              # -0.0 as 0.0, then its bits
+    keys = np.hstack([count[:, None], block.reshape(n, -1), levers])
+    _, first_at, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    rank = np.empty(len(first_at), dtype=np.int64)
+    rank[np.argsort(first_at, kind="stable")] = np.arange(len(first_at))
+    unit_of[:] = rank[inverse.reshape(-1)]
+    representative[rank] = first_at
+    return len(first_at)
 
 
-@jit
-def _pair_rows(first, second, levers, order, revolute, state_joint, supported,  # type: ignore[no-untyped-def]
-               pair_levers, pair_i):
+def _pair_rows(first: np.ndarray, second: np.ndarray, levers: np.ndarray, order: np.ndarray,
+               revolute: np.ndarray, state_joint: np.ndarray, supported: bool,
+               pair_levers: np.ndarray, pair_i: np.ndarray) -> None:
     """Per pair, its lever arms (``pair_levers``) and its row of ``pair_i``.
 
     Joints moving both bodies of a pair move them rigidly together: they do not count;
@@ -508,25 +495,23 @@ def _pair_rows(first, second, levers, order, revolute, state_joint, supported,  
     deeper in the tree lie between such a joint and the body: they move the body relative
     to its axis, so its lever arm grows by at most what they contribute."""
     nq = levers.shape[1]
-    for k in range(first.shape[0]):
-        a, b = first[k], second[k]
-        pair_i[k, _PI_FIRST] = a
-        pair_i[k, _PI_SECOND] = b
-        count = 0
-        for index in range(nq):
-            j = order[index]
-            moves_a = levers[a, j] > 0.0
-            moves_b = levers[b, j] > 0.0
-            if moves_a == moves_b:
-                continue
-            owner = a if moves_a else b
-            pair_levers[k, j] = levers[owner, j]
-            code = 1 if moves_a else 2
-            if supported and revolute[j] != 0:
-                code += 2
-            pair_i[k, _PI_JOINTS + count] = j
-            pair_i[k, _PI_JOINTS + nq + count] = code
-            pair_i[k, _PI_JOINTS + 2 * nq + count] = owner
-            pair_i[k, _PI_JOINTS + 3 * nq + count] = state_joint[j]
-            count += 1
-        pair_i[k, _PI_COUNT] = count
+    pair_i[:, _PI_FIRST] = first
+    pair_i[:, _PI_SECOND] = second
+    moves_a = levers[first][:, order] > 0.0                  # (pair, joint deepest first)
+    moves_b = levers[second][:, order] > 0.0
+    counts = moves_a != moves_b
+    slot = np.cumsum(counts, axis=1) - 1                     # its place in the pair's list
+    rows, cols = np.nonzero(counts)
+    joint = order[cols]
+    moves_first = moves_a[rows, cols]
+    owner = np.where(moves_first, first[rows], second[rows])
+    pair_levers[rows, joint] = levers[owner, joint]
+    code = np.where(moves_first, 1, 2)
+    if supported:
+        code = code + 2 * (revolute[joint] != 0)
+    at = _PI_JOINTS + slot[rows, cols]
+    pair_i[rows, at] = joint
+    pair_i[rows, at + nq] = code
+    pair_i[rows, at + 2 * nq] = owner
+    pair_i[rows, at + 3 * nq] = state_joint[joint]
+    pair_i[:, _PI_COUNT] = counts.sum(axis=1)
