@@ -196,9 +196,13 @@ class StateScreen:
         tail = self._tail(work, found)
         collide = checker.pairs_collide
 
+        no_values = np.zeros(0)
+        no_table = np.zeros((1, 0))
+
         def scan(states: np.ndarray) -> int:
-            return _until_collision(_first_uncleared, (states,), 0, tail, states, found,
-                                    collide, to_pin)
+            row, _ = _line_until_collision(states, no_table, no_values, no_values, 0, 0,
+                                           len(states), 1.0, tail, found, collide, to_pin)
+            return -1 if row < 0 else int(row)
 
         return scan
 
@@ -275,29 +279,14 @@ class StateScreen:
         return self.scanner()(states)
 
 
-def _until_collision(kernel: Callable[..., tuple[int, int]], head: tuple[object, ...], begin: int,
-                     tail: tuple[object, ...], rows: np.ndarray, found: np.ndarray,
-                     collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
-                     to_pin: Callable[[np.ndarray], np.ndarray]) -> int:
-    """Run ``kernel(*head, begin, *tail)`` from row ``begin`` on, asking coal about the
-    pairs it leaves at each row it stops at, until a row is in collision (its index) or
-    none is (-1)."""
-    while True:
-        row, count = kernel(*head, begin, *tail)
-        if row < 0:
-            return -1
-        if count < 0 or collide(to_pin(rows[row]), found[:count]):
-            return int(row)
-        begin = row + 1
-
-
 def _line_until_collision(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                           first: int, begin: int, steps: int, resolution: float,
                           tail: tuple[object, ...], found: np.ndarray,
                           collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
                           to_pin: Callable[[np.ndarray], np.ndarray]) -> tuple[int, int]:
-    """:func:`_until_collision` of :func:`_first_uncleared_on_line`: the first row in
-    collision (-1: none; -2: no fractions for the segment's steps) and the steps."""
+    """Run :func:`_first_uncleared_on_line` from row ``begin`` on, asking coal about the
+    pairs it leaves at each row it stops at, until a row is in collision: that row (-1:
+    none; -2: no fractions for the segment's steps) and the steps."""
     while True:
         row, count, counted = _first_uncleared_on_line(rows, table, a, b, first, begin, steps,
                                                        resolution, *tail)
@@ -531,29 +520,22 @@ def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  
 
 
 @jit
-def _first_uncleared(states, begin, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
-    """From row ``begin`` of ``states`` on, the first state at which some pairs are not
-    cleared: returns its row and how many (their indices in ``found``); ``(-1, 0)`` when
-    every state clears every pair. A state that is not finite clears nothing."""
-    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
-    for s in range(begin, states.shape[0]):
-        count = _uncleared(states[s], float(s), joints, gi, geo, pairs, reach2, moving, work, found)
-        if count != 0:
-            return s, count
-    return -1, 0
-
-
-@jit
 def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, joints, gi,  # type: ignore[no-untyped-def]
                              geo, pairs, reach2, moving, work, found):
-    """:func:`_first_uncleared` over states on the segment from ``a`` to ``b`` (the
-    values of columns ``first`` to ``first + len(a)``; the other columns are ``rows``'):
-    row ``s`` (``begin <= s < steps``) is written ``a + f (b - a)`` there, ``f`` the
-    fraction ``table[0, s]`` (``b`` itself at 1), before it is screened, so that a row
-    returned holds its state. ``steps`` 0: the segment's own count,
+    """From row ``begin`` of ``rows`` on, the first state at which some pairs are not
+    cleared: returns its row, how many pairs (their indices in ``found``; -1: a pair
+    surely collides) and ``steps``; ``(-1, 0, steps)`` when every state clears every pair.
+    A state that is not finite clears nothing. The one scan kernel of both scans.
+
+    On a segment from ``a`` to ``b`` (the values of columns ``first`` to
+    ``first + len(a)``; the other columns are ``rows``'): row ``s``
+    (``begin <= s < steps``) is written ``a + f (b - a)`` there, ``f`` the fraction
+    ``table[0, s]`` (``b`` itself at 1), before it is screened, so that a row returned
+    holds its state. ``steps`` 0: the segment's own count,
     ``max(1, ceil(max |b - a| / resolution))``, and the fractions ``table[steps]``
-    (``(-2, 0, steps)`` without such a row, or where it does not start with 1.0).
-    Returns the row, the pairs left (as :func:`_first_uncleared`) and ``steps``."""
+    (``(-2, 0, steps)`` without such a row, or where it does not start with 1.0). Rows
+    as they are (:meth:`StateScreen.scanner`): ``a`` and ``b`` empty, ``steps`` the
+    rows' count (``table`` is not read)."""
     n = a.shape[0]
     if steps > 0:
         fractions = table[0]
@@ -569,9 +551,10 @@ def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution,
         fractions = table[steps]
     _reset(joints.shape[0], gi.shape[0], gi, geo, work)
     for s in range(begin, steps):
-        f = fractions[s]
-        for i in range(n):
-            rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
+        if n > 0:
+            f = fractions[s]
+            for i in range(n):
+                rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
         count = _uncleared(rows[s], float(s), joints, gi, geo, pairs, reach2, moving, work,
                            found)
         if count != 0:
