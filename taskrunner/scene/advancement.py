@@ -225,7 +225,7 @@ def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
     return count, s
 
 
-@jit
+@inline
 def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
              settings):
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state

@@ -178,7 +178,7 @@ def _lower_bound(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
     return best
 
 
-@jit
+@inline
 def _support(g, dx, dy, dz, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
@@ -217,7 +217,7 @@ def _support(g, dx, dy, dz, geometries, frames, points, nj):  # type: ignore[no-
             oz + frames[row, 6] * px + frames[row, 7] * py + frames[row, 8] * pz)
 
 
-@jit
+@inline
 def _support_bound(a, b, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).

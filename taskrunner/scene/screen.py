@@ -476,7 +476,7 @@ def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
     return False
 
 
-@jit
+@inline
 def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
