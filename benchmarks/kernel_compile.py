@@ -37,8 +37,8 @@ scene = Scene(load_robot(DATA_ROOT / "robots" / "servo_arm"))
 q = scene.state
 robot = scene.robot
 states = np.ascontiguousarray(np.stack([q, np.clip(q + 1e-3, robot.lower, robot.upper)]))
-verifier = scene.path_verifier()
 c0, w0 = time.process_time(), time.perf_counter()
+verifier = scene.path_verifier()
 verifier.verify(states)
 c1, w1 = time.process_time(), time.perf_counter()
 _scan_both(StateScreen(verifier), states)
