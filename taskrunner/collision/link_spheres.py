@@ -2,23 +2,24 @@
 link (:mod:`taskrunner.collision.spheres`), placed on the joint that carries them, as
 records a compiled broad phase reads (:data:`SPHERE`).
 
-The spheres cover the geometry the exact check tests (the URDF's collision meshes and
-primitives as loaded into ``RobotModel.collision_model``), not the hulls that
-``collision: auto`` may choose: a hull contains its mesh, so spheres around the mesh
-do not contain the hull. A broad phase over these spheres may therefore clear a pair
-only for the exact check on meshes; where a link is checked as its hull, cover the hull
-instead (:func:`taskrunner.collision.spheres.fit_spheres` takes a ``coal.Convex`` too).
+By default the spheres cover the URDF's collision geometry as loaded into
+``RobotModel.collision_model`` (meshes as surfaces, primitives as solids). Where the scene
+checks a link as its convex hull (``collision: auto`` or ``convex``), pass the geometry it
+checks (``shapes``): a hull contains its mesh, so spheres around the mesh do not contain
+the hull, and a broad phase must cover what the exact check tests.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+import coal
 import numpy as np
 import pinocchio as pin
 
 from taskrunner.collision.spheres import GeometrySpheres, SphereOptions, fit_spheres
+from taskrunner.errors import ArgumentError
 from taskrunner.robot import RobotModel
 
 __all__ = ["SPHERE", "RobotSpheres", "robot_spheres"]
@@ -67,17 +68,29 @@ class RobotSpheres:
         return centres, self.spheres["radius"].copy()
 
 
-def robot_spheres(robot: RobotModel, options: SphereOptions | None = None) -> RobotSpheres:
+def robot_spheres(robot: RobotModel, options: SphereOptions | None = None,
+                  shapes: Sequence[coal.CollisionGeometry] | None = None) -> RobotSpheres:
     """The sphere model of every collision geometry of ``robot`` (fits cached by content).
 
+    Args:
+        robot: the model.
+        options: how finely to cover (default :class:`SphereOptions`).
+        shapes: the geometry each of the collision model's objects is checked with, in its
+            order (a link's hull where the scene uses it); default: the objects' own.
+
     Raises:
+        ArgumentError: ``shapes`` is not one per geometry object.
         SceneError: a geometry with no sphere model (a cone, plane, half-space, ellipsoid).
     """
+    objects = robot.collision_model.geometryObjects
+    if shapes is not None and len(shapes) != len(objects):
+        raise ArgumentError(f"'shapes' must hold one geometry per collision object "
+                            f"({len(objects)}) (got {len(shapes)})")
     rows = []
     fits, links = [], []
     frames = robot.model.frames
-    for index, g in enumerate(robot.collision_model.geometryObjects):
-        fit = fit_spheres(g.geometry, options)
+    for index, g in enumerate(objects):
+        fit = fit_spheres(g.geometry if shapes is None else shapes[index], options)
         placement: pin.SE3 = g.placement
         centres = fit.centres @ placement.rotation.T + placement.translation
         for c, r in zip(centres, fit.radii, strict=True):

@@ -4,12 +4,15 @@ A broad phase that tests spheres needs spheres that *contain* the geometry the e
 tests, or it clears pairs that collide. :func:`fit_spheres` builds such a set for one coal
 geometry, in the geometry's own frame:
 
-* a triangle mesh (or a convex polytope) as coal checks it, a surface: its triangles are
+* a triangle mesh as coal checks it, a surface: its triangles are
   split until no edge is longer than ``options.max_edge``,
   centres are chosen greedily inside the mesh (the deep ones stick out least; see
   :func:`_fit_mesh`), and each triangle goes to one sphere, whose radius reaches all of its
   triangles' corners. A ball is convex, so a triangle whose three corners are in it lies in it:
   every vertex and every point of every face is covered by construction.
+* a convex polytope (a link's hull) as coal checks it, a solid: cut into tetrahedra
+  (its centroid and each face), split and grouped as a mesh's triangles are; a ball
+  containing a tetrahedron's four corners contains it.
 * a box, cylinder, capsule or sphere as coal checks it, a solid: a box as a grid of cells,
   each inside its circumscribed sphere; a cylinder as a chain of spheres along its axis
   (a grid of cells where it is wide); a capsule as a chain of spheres
@@ -17,9 +20,9 @@ geometry, in the geometry's own frame:
   is covered by construction.
 
 Each set carries its *looseness*: how far the union of its spheres reaches outside the
-geometry (m). For a mesh it is a bound: a sphere of radius r about a centre at depth delta
-inside a closed mesh lies within r - delta of the mesh (within r of it for a centre on an open
-mesh's surface), so the largest r - delta bounds every point of the union. For a solid it is
+geometry (m). For a mesh or a convex polytope it is a bound: a sphere of radius r about a
+centre at depth delta inside lies within r - delta of the geometry (within r of it for a centre
+on a mesh's surface), so the largest r - delta bounds every point of the union. For a solid it is
 measured in closed form at ~100 points per sphere on the union's surface (those inside no
 other sphere): an estimate from below, within a millimetre or two of the truth. Inside or
 outside a mesh is decided by its winding number (Jacobson et al., "Robust inside-outside
@@ -56,7 +59,8 @@ log = logging.getLogger(__name__)
 CACHE_FILE = "spheres.json"
 _METHOD = "v1"  # changing the construction must not reuse cached spheres
 _BOUNDARY_POINTS = 96  # looseness probes per sphere
-_SHORTLIST = 24  # candidates weighed for each sphere a mesh fit adds
+_SHORTLIST = 8  # candidates weighed for each sphere a mesh fit adds
+_MAX_CANDIDATES = 4000  # candidate centres a fit chooses among, at most
 _GRID_POINTS = 1200  # about this many grid points over a mesh's box are tried as centres
 _GROW = 1e-9  # m, on every radius: float rounding never uncovers a corner
 
@@ -98,8 +102,9 @@ class GeometrySpheres:
         centres: (n, 3) sphere centres (m).
         radii: (n,) radii (m).
         looseness: how far (m) the union reaches outside the geometry: a bound for a
-            mesh, a close estimate for a solid (see the module's text).
-        kind: ``mesh`` (surface covered) or ``solid``.
+            mesh or a convex polytope, a close estimate for a primitive (see the module's
+            text).
+        kind: ``mesh`` (its surface covered) or ``solid`` (every point inside covered).
         key: the content hash it is cached under.
     """
 
@@ -130,8 +135,7 @@ def _mesh_arrays(geometry: coal.CollisionGeometry) -> tuple[np.ndarray, np.ndarr
                               for i in range(geometry.num_tris)], dtype=np.int64).reshape(-1, 3)
     else:
         vertices = np.array(geometry.points(), dtype=float).reshape(-1, 3)
-        polygons = geometry.polygons()
-        triangles = np.array([[polygons[i][k] for k in range(3)]
+        triangles = np.array([[geometry.polygons(i)[k] for k in range(3)]
                               for i in range(geometry.num_polygons)], dtype=np.int64).reshape(-1, 3)
     if len(triangles) == 0:
         raise SceneError("a mesh with no triangles has no sphere model")
@@ -180,50 +184,87 @@ def geometry_key(geometry: coal.CollisionGeometry, options: SphereOptions | None
 
 # ------------------------------------------------------------------- meshes
 def _split_long_edges(corners: np.ndarray, max_edge: float) -> np.ndarray:
-    """Triangles (m, 3, 3) split at the middle of their longest edge until no edge is
-    longer than ``max_edge``; their union is the input's."""
+    """Simplices (m, k, 3): triangles (k = 3) or tetrahedra (k = 4), split at the middle of
+    their longest edge until no edge is longer than ``max_edge``; their union is the input's."""
+    pairs = [(a, b) for a in range(corners.shape[1]) for b in range(a + 1, corners.shape[1])]
     done = []
     while len(corners):
-        edges = np.stack([np.linalg.norm(corners[:, (k + 1) % 3] - corners[:, k], axis=1)
-                          for k in range(3)], axis=1)
+        edges = np.stack([np.linalg.norm(corners[:, b] - corners[:, a], axis=1)
+                          for a, b in pairs], axis=1)
         longest = edges.argmax(axis=1)
         long = edges[np.arange(len(corners)), longest] > max_edge
         done.append(corners[~long])
         corners, longest = corners[long], longest[long]
         if not len(corners):
             break
-        # Rotate each triangle so that its longest edge runs from corner 0 to corner 1.
-        rows = np.arange(len(corners))[:, None]
-        corners = corners[rows, (longest[:, None] + np.arange(3)) % 3]
-        middle = 0.5 * (corners[:, 0] + corners[:, 1])
-        first = np.stack([corners[:, 0], middle, corners[:, 2]], axis=1)
-        second = np.stack([middle, corners[:, 1], corners[:, 2]], axis=1)
+        first, second = corners.copy(), corners.copy()
+        rows = np.arange(len(corners))
+        ends = np.array(pairs)[longest]  # (n, 2): the longest edge's two corners
+        middle = 0.5 * (corners[rows, ends[:, 0]] + corners[rows, ends[:, 1]])
+        first[rows, ends[:, 1]] = middle  # one half keeps the edge's first corner ...
+        second[rows, ends[:, 0]] = middle  # ... the other its second
         corners = np.concatenate([first, second])
     return np.concatenate(done)
 
 
 def _fit_mesh(vertices: np.ndarray, triangles: np.ndarray, mesh: coal.CollisionGeometry,
               options: SphereOptions) -> tuple[np.ndarray, np.ndarray, float]:
-    """Spheres chosen greedily among candidate centres inside the mesh (for a closed mesh)
-    and the triangles' centroids, each of depth ``delta`` (distance to the surface; 0 for a
-    centroid).
-
-    A ball of radius r about a centre of depth delta lies within r - delta of the inscribed
-    ball, hence of the mesh: a triangle's *cost* at a centre is its farthest corner's
-    distance minus the depth. Each triangle goes to the chosen centre where its cost is
-    least; while the worst triangle's cost exceeds the tolerance, the candidate where that
-    triangle's cost is least is added (a triangle for which that candidate is already in is
-    as good as it gets, and is passed over from then on). Each radius is its triangles' farthest corner."""
+    """A triangle mesh's surface, as coal's BVH checks it: the candidate centres are grid
+    points inside it (for a closed mesh) and its (split) triangles' centroids, at depth 0."""
     corners = _split_long_edges(vertices[triangles], options.max_edge)
-    closed = _closed(triangles)
-    inside = _inside_points(vertices, triangles) if closed else np.zeros((0, 3))
-    # The triangles' own centroids (depth 0) too: a triangle far from every inside point
-    # (a thin wall, a shell) then costs at most its own circumradius.
+    inside = _inside_points(vertices, triangles) if _closed(triangles) else np.zeros((0, 3))
+    # The triangles' own centroids too: a triangle far from every inside point (a thin
+    # wall, a shell) then costs at most its own circumradius.
     candidates = np.concatenate([inside, corners.mean(axis=1)])
     depth = np.concatenate([_distances(mesh, inside), np.zeros(len(corners))])
+    return _choose_spheres(corners, candidates, depth, options)
 
-    def cost_at(j: int) -> np.ndarray:  # every triangle's cost at candidate j
-        return np.linalg.norm(corners - candidates[j], axis=2).max(axis=1) - depth[j]
+
+def _fit_convex(vertices: np.ndarray, triangles: np.ndarray, options: SphereOptions
+                ) -> tuple[np.ndarray, np.ndarray, float]:
+    """A convex polytope as coal checks it, a solid: cut into tetrahedra (its centroid and
+    each face), split until short; the candidate centres are grid points inside it and
+    the tetrahedra's centroids, with their exact depth (the nearest face plane)."""
+    centre = vertices.mean(axis=0)
+    corners = vertices[triangles]
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
+    normal *= np.sign(np.einsum("ij,ij->i", normal, corners[:, 0] - centre))[:, None]
+    offset = np.einsum("ij,ij->i", normal, corners[:, 0])
+    tetrahedra = np.concatenate([np.repeat(centre[None, None], len(corners), axis=0), corners],
+                                axis=1)
+    # Inner tetrahedra may stay longer than the faces: deep centres cover them cheaply.
+    cells = _split_long_edges(tetrahedra, 2 * options.max_edge)
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    step = float(np.prod(np.maximum(hi - lo, 1e-6)) / _GRID_POINTS) ** (1 / 3)
+    grid = np.stack(np.meshgrid(*[np.arange(lo[i] + step / 2, hi[i], step) for i in range(3)],
+                                indexing="ij"), axis=-1).reshape(-1, 3)
+    candidates = np.concatenate([grid, cells.mean(axis=1)])
+    depth = np.min(offset[None] - candidates @ normal.T, axis=1)
+    keep = depth >= 0
+    return _choose_spheres(cells, candidates[keep], depth[keep], options)
+
+
+def _choose_spheres(corners: np.ndarray, candidates: np.ndarray, depth: np.ndarray,
+                    options: SphereOptions) -> tuple[np.ndarray, np.ndarray, float]:
+    """Spheres over simplices (m, k, 3), centred at some of the candidates (each of depth
+    ``delta`` in the geometry), and their looseness bound.
+
+    A ball of radius r about a centre of depth delta lies within r - delta of the inscribed
+    ball, hence of the geometry: a simplex's *cost* at a centre is its farthest corner's
+    distance minus the depth. Each simplex goes to the chosen centre where its cost is
+    least; while the worst simplex's cost exceeds the tolerance, a candidate where that
+    simplex's cost is least is added (of those nearly as good, the one that brings the most
+    simplices within reach; a simplex whose best candidate is already in is as good as it
+    gets, and is passed over from then on). Each radius reaches its simplices' farthest
+    corner: a ball is convex, so it contains every simplex whose corners it contains."""
+    if len(candidates) > _MAX_CANDIDATES:  # a seeded subset: enough to choose among
+        pick = np.random.default_rng(0).choice(len(candidates), _MAX_CANDIDATES, replace=False)
+        candidates, depth = candidates[pick], depth[pick]
+
+    def cost_at(j: int) -> np.ndarray:  # every simplex's cost at candidate j
+        gap = corners - candidates[j]
+        return np.sqrt(np.einsum("mki,mki->mk", gap, gap).max(axis=1)) - depth[j]
 
     first = corners.reshape(-1, 3).mean(axis=0)
     chosen = [int(np.argmin(np.linalg.norm(candidates - first, axis=1) - depth))]
@@ -260,7 +301,7 @@ def _fit_mesh(vertices: np.ndarray, triangles: np.ndarray, mesh: coal.CollisionG
                          + _GROW)
             depths.append(depth[j])
     r = np.array(radii)
-    return np.array(centres), r, float(np.max(r - np.array(depths)))
+    return np.array(centres), r, float(max(0.0, np.max(r - np.array(depths))))
 
 
 def _inside_points(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
@@ -411,7 +452,11 @@ def fit_spheres(geometry: coal.CollisionGeometry, options: SphereOptions | None 
         if key in _memory:
             return _memory[key]
     swept = _swept(geometry)  # the geometry is its core grown by this: so are the spheres
-    if _is_mesh(geometry):
+    if isinstance(geometry, coal.ConvexBase):
+        vertices, triangles = _mesh_arrays(geometry)
+        centres, radii, looseness = _fit_convex(vertices, triangles, options)
+        kind = "solid"
+    elif _is_mesh(geometry):
         vertices, triangles = _mesh_arrays(geometry)
         centres, radii, looseness = _fit_mesh(vertices, triangles, geometry, options)
         kind = "mesh"

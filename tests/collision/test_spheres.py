@@ -147,6 +147,40 @@ def test_a_mobile_manipulators_hand_and_torso_are_inside_their_spheres() -> None
         _check_covered(g.geometry, COARSE, rng)
 
 
+def test_the_hulls_the_planner_checks_are_covered_as_solids() -> None:
+    """Under ``collision: auto`` the Panda's links are checked as their convex hulls, which
+    coal treats as solids: every point inside a hull, and on it, is in its spheres."""
+    from taskrunner.scene.linkgeometry import HULL, link_hull, plan_link_geometry
+
+    model = load_robot(DATA_ROOT / "robots" / "panda")
+    plan = plan_link_geometry(model, "auto")
+    objects = model.collision_model.geometryObjects
+    shapes = [link_hull(model, i) if plan.kind(model.model.frames[g.parentFrame].name) == HULL
+              else g.geometry for i, g in enumerate(objects)]
+    hulls = [i for i, shape in enumerate(shapes) if isinstance(shape, coal.ConvexBase)]
+    assert hulls
+    model_spheres = robot_spheres(model, COARSE, shapes)
+    rng = np.random.default_rng(8)
+    for i in hulls:
+        hull, fit = shapes[i], model_spheres.fits[i]
+        assert fit.kind == "solid"
+        vertices, triangles = spheres._mesh_arrays(hull)
+        lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+        points = lo + (hi - lo) * rng.random((20000, 3))
+        # Inside: behind every face's plane (Qhull's faces are not wound alike: each
+        # normal is turned away from the centroid).
+        corners = vertices[triangles]
+        normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        normal *= np.sign(np.einsum("ij,ij->i", normal, corners[:, 0] - vertices.mean(axis=0)))[:, None]
+        offset = np.einsum("ij,ij->i", normal, corners[:, 0])
+        inside = points[np.all(points @ normal.T <= offset, axis=1)]
+        surface = _surface_samples(hull, 2e5, rng)
+        assert len(inside) > 2000
+        assert fit.contains(np.concatenate([inside, surface])).all()
+    with pytest.raises(ArgumentError, match="'shapes' must hold one geometry per collision"):
+        robot_spheres(model, COARSE, shapes[:-1])
+
+
 @pytest.mark.parametrize("shape", [
     coal.Box(0.3, 0.2, 0.01),        # a thin slab
     coal.Box(0.005, 0.005, 0.4),     # a rod
