@@ -4,18 +4,28 @@ The record's ``physics`` events (one when each motion's node ends) hold every jo
 the cell every ``period`` s of physics time ``p`` since the report before: together
 they are one stream of samples, whichever motions ran at once. What places a sample on
 task time ``t`` (:mod:`taskrunner.tree.clock`) is where each motion started on both
-clocks, ``(p0, t0)``; ``t0`` is its ``sent`` time, and ``p0``:
+clocks, ``(p0, t0)``; ``t0`` is its ``sent`` time, and ``p0`` is the physics time the
+backend reports it started at: each report lists the motions that ended since the one
+before (``motions``: joints, first sample, ``start``), and a motion is the first listed,
+in order of start, with its joints and first sample (within ``_SAME_SAMPLE``) not
+started before the motion sent before it. Records made before the reports listed
+motions have no such start; ``p0`` is then found from the other motions:
 
 * **nothing ran when it was sent** (every motion sent before it had its physics report
   already): the world was paused since the last sample reported, so ``p0`` is that
   sample's time (0 for the run's first motion, or one ``period`` before its first sample
   if later);
-* **another motion's trajectory was running** at ``t0``: task time ran with that
-  motion's progress, which is physics time, so ``p0 = p0' + (t0 - t0')``;
+* **another motion's trajectory was running** at ``t0``: if task time ran with that
+  motion's progress, which is physics time, ``p0 = p0' + (t0 - t0')``; but it stands
+  still while any motion settles, so this is an estimate (a two-arm run measured
+  0.24 s late);
 * **only settling motions ran** (after a trajectory's end the physics settles the world
   before the motion ends, and task time stands still meanwhile): ``p0`` lies between the
   last trajectory's end and the last sample; it is the start that fits the motion's
-  joints to its trajectory best (least squares, on a 0.5 ms grid).
+  joints to its trajectory best (least squares, on a 0.5 ms grid): an estimate too.
+
+:attr:`PhysicsPath.how` tells, per motion, which of these placed it; the export calls
+the estimates (:attr:`PhysicsPath.estimated`) a degradation.
 
 Between two motion starts ``a`` and ``b`` (by ``p0``) a sample at ``p`` goes to
 ``t = t0_a + (p - p0_a)``; samples whose ``t`` would reach ``t0_b`` while ``p < p0_b`` are
@@ -38,6 +48,7 @@ __all__ = ["PhysicsPath", "SentMotion", "physics_path"]
 
 _FIT_STEP = 5e-4   # s: the grid a start is fitted on
 _FIT_BEFORE = 0.1  # s before a fitted start whose samples must hold still at its start
+_SAME_SAMPLE = 1e-4  # rad or m: a reported first sample is the motion's (both are rounded)
 
 
 @dataclass(frozen=True)
@@ -59,12 +70,52 @@ class SentMotion:
 class PhysicsPath:
     """The physics samples kept, on task time: ``times`` (s, strictly increasing) and
     ``positions`` (one row per time, columns ``joints``, rad or m); ``starts``: each
-    motion's physics start ``p0`` (s), in the order given."""
+    motion's physics start ``p0`` (s), in the order given; ``how``: per motion, what
+    gave its start (module docstring): "reported", "paused" (both exact), "running"
+    or "fitted" (estimates)."""
 
     joints: tuple[str, ...]
     times: np.ndarray
     positions: np.ndarray
     starts: tuple[float, ...]
+    how: tuple[str, ...]
+
+    @property
+    def estimated(self) -> tuple[int, ...]:
+        """The motions (indices) whose start is an estimate, not exact."""
+        return tuple(k for k, how in enumerate(self.how) if how in ("running", "fitted"))
+
+
+def _reported_starts(motions: Sequence[SentMotion], reports: Sequence[RunEvent]
+                     ) -> dict[int, float]:
+    """Each motion's physics start as the reports list it (by index in ``motions``;
+    motions the reports do not list are left out)."""
+    listed: list[tuple[float, tuple[str, ...], np.ndarray]] = []
+    for report in reports:
+        for entry in report.data.get("motions") or ():
+            try:
+                listed.append((float(entry["start"]), tuple(str(j) for j in entry["joints"]),
+                               np.asarray(entry["first"], dtype=float)))
+            except (KeyError, TypeError, ValueError) as exc:
+                raise InputError(f"event {report.seq} (physics of {report.node!r}): each of "
+                                 f"its motions must have start, joints and first ({exc})"
+                                 ) from None
+    listed.sort(key=lambda item: item[0])
+    used: set[int] = set()
+    found: dict[int, float] = {}
+    earliest = -np.inf
+    for k in sorted(range(len(motions)), key=lambda k: motions[k].seq):
+        motion = motions[k]
+        first = motion.positions[0] if len(motion.positions) else np.zeros(0)
+        for i, (start, joints, reported) in enumerate(listed):
+            if (i in used or start < earliest - 1e-9 or joints != motion.joints
+                    or reported.shape != first.shape
+                    or not np.all(np.abs(reported - first) <= _SAME_SAMPLE)):
+                continue
+            used.add(i)
+            found[k] = earliest = start
+            break
+    return found
 
 
 def _samples(reports: Sequence[RunEvent]) -> tuple[tuple[str, ...], np.ndarray, np.ndarray,
@@ -133,23 +184,29 @@ def physics_path(motions: Sequence[SentMotion], reports: Sequence[RunEvent]
     unknown = [j for m in motions for j in m.joints if j not in index]
     if unknown:
         return f"joint {unknown[0]!r} moved by a motion is not in the physics reports"
-    starts: dict[int, float] = {}
+    starts = _reported_starts(motions, reports)
+    how = {k: "reported" for k in starts}
     by_seq = sorted(range(len(motions)), key=lambda k: motions[k].seq)
     for position, k in enumerate(by_seq):
         motion, earlier = motions[k], by_seq[:position]
+        if k in starts:
+            continue
         reported = [end for r, end in zip(reports, ends, strict=True) if r.seq < motion.seq]
         if len(reported) >= len(earlier):  # every earlier motion's report came before
             starts[k] = max(reported) if reported else max(0.0, float(p[0]) - period)
+            how[k] = "paused"
             continue
         running = [j for j in earlier
                    if motions[j].t0 <= motion.t0 < motions[j].t0 + motions[j].until]
         if running:
             j = max(running, key=lambda i: motions[i].t0)
             starts[k] = starts[j] + motion.t0 - motions[j].t0
+            how[k] = "running"
             continue
         ended = max(starts[j] + motions[j].until for j in earlier)
         starts[k] = _fit_start(motion, [index[name] for name in motion.joints], p, q,
                                ended, float(p[-1]) - motion.until)
+        how[k] = "fitted"
     anchors = sorted((starts[k], motions[k].t0) for k in range(len(motions)))
     times: list[float] = []
     kept: list[int] = []
@@ -173,4 +230,5 @@ def physics_path(motions: Sequence[SentMotion], reports: Sequence[RunEvent]
             return (f"{motion.name or f'the motion of event {motion.seq}'} has no physics "
                     "sample")
     return PhysicsPath(joints, np.asarray(times), q[kept],
-                       tuple(starts[k] for k in range(len(motions))))
+                       tuple(starts[k] for k in range(len(motions))),
+                       tuple(how[k] for k in range(len(motions))))

@@ -30,7 +30,9 @@ Topics (ROS 2 conventions, so Foxglove's 3D panel and RViz show them):
 
 **Nothing left out quietly.** A scene object that cannot be drawn (a mesh whose file is
 not found, a shape not known) and a mujoco run whose ``/joint_states`` cannot be the
-physics' own samples (a motion no physics sample covers) make the
+physics' own samples (a motion no physics sample covers), or whose samples are placed
+by a motion start estimated, not reported (a record made before the physics reports
+listed the motions' starts, :mod:`taskrunner.export.physics`) make the
 export an error naming the object or motion, unless the caller allows degraded output
 (``allow_degraded``, ``run-task export --allow-degraded``): then each degradation is
 told to ``on_degraded`` (the command line: stderr) and on ``/rosout`` as a WARN.
@@ -188,23 +190,32 @@ def _schedule(record: RunRecord) -> _Schedule:
     return out
 
 
-def _measured(schedule: _Schedule) -> str | None:
+def _measured(schedule: _Schedule) -> tuple[str | None, list[str]]:
     """Put the physics' own samples (the record's ``physics`` events) in place of the
     trajectories sent, on task time (:mod:`taskrunner.export.physics`: every kept sample
     is the whole cell's state at one moment, motions at once included); or say why not
-    (the trajectories are kept)."""
+    (the trajectories are kept). Also the motions whose physics start was estimated
+    (a record whose physics reports list no motions), each with why."""
     motions = schedule.motions
     if not motions:
-        return None
+        return None, []
     reports = schedule.reports
     if not reports:
         more = f" (and {len(motions) - 1} more)" if len(motions) > 1 else ""
-        return f"{motions[0].describe()} has no physics report{more}"
+        return f"{motions[0].describe()} has no physics report{more}", []
     sent = [SentMotion(m.seq, m.t0, m.joints, m.times, m.positions, m.until, m.describe())
             for m in motions]
     path = physics_path(sent, reports)
     if isinstance(path, str):
-        return path
+        return path, []
+    estimated = [f"{motions[k].describe()}: its start on the physics clock "
+                 f"({path.starts[k]:.4f} s) is estimated "
+                 + ("by fitting its joints to its trajectory" if path.how[k] == "fitted" else
+                    "from the motion running when it was sent, as if task time had run "
+                    "with physics time since")
+                 + " (the record's physics reports do not list the motions' starts: made "
+                 "before they did), so its samples may be placed off in time"
+                 for k in path.estimated]
     first = motions[min(range(len(motions)), key=lambda k: motions[k].t0)]
     t0 = float(path.times[0])
     schedule.motions = [_Motion("physics", t0, path.joints, path.times - t0, path.positions,
@@ -212,7 +223,7 @@ def _measured(schedule: _Schedule) -> str | None:
                                 measured=True, seq=first.seq, location=first.location)]
     schedule.measured = True
     schedule.end = max(schedule.end, float(path.times[-1]))
-    return None
+    return None, estimated
 
 
 def _start_state(record: RunRecord, cell: Cell) -> np.ndarray:
@@ -406,14 +417,15 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
         cell: the cell the run used (its model gives the links' poses).
         allow_degraded: write the messages even where they cannot be what the run was:
             an object not drawn, a mujoco run's trajectories sent in place of its
-            physics' samples. Each such degradation is then told to ``on_degraded``
-            (once) and on ``/rosout`` (WARN).
+            physics' samples, or its samples placed by an estimated start. Each such
+            degradation is then told to ``on_degraded`` (once) and on ``/rosout`` (WARN).
         source: the record's file, for messages (default: the run's id).
 
     Raises:
         InputError: the record names a joint the cell does not have, or holds a
             trajectory that cannot be read; or (without ``allow_degraded``) a mujoco
-            run's motion has no physics report, naming the motion.
+            run's motion has no physics report, or its physics start is estimated (an
+            older record), naming the motion.
         MissingMeshError: (without ``allow_degraded``) a scene object's mesh cannot be
             found, naming the object and its file.
     """
@@ -435,7 +447,7 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
     meshes, no_meshes = record_meshes(record)
     schedule = _schedule(record)
     planned = [(e, m.t0) for m in schedule.motions for e in record.events if e.seq == m.seq]
-    not_measured = _measured(schedule) if record.backend == "mujoco" else None
+    not_measured, estimated = _measured(schedule) if record.backend == "mujoco" else (None, [])
     for motion in schedule.motions:
         _check_joints(record, cell, motion.joints)
     out: list[tuple[int, int, TimedMessage]] = []
@@ -451,6 +463,10 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
         degraded(not_measured)
         add(0.0, "/rosout", rosmsg.encode_log(LogLine(
             base_ns, rosmsg.WARN, "taskrunner.export", not_measured)))
+    for reason in estimated:
+        degraded(reason)
+        add(0.0, "/rosout", rosmsg.encode_log(LogLine(
+            base_ns, rosmsg.WARN, "taskrunner.export", reason)))
     add(0.0, "/robot_description", rosmsg.encode_string(robot_description(cell.model)))
     add(0.0, "/tf_static", rosmsg.encode_tf_message(tree.static_transforms(base_ns)))
     names = cell.model.joint_names

@@ -1,9 +1,12 @@
 """A mujoco run whose two arms move at once exports without degradation: every
 /joint_states message after the start is one physics sample of the whole cell, and /tf
-is our forward kinematics of it."""
+is our forward kinematics of it; every motion's physics start is the one the physics
+reports list, none fitted. A record made before the reports listed them (the same run
+with the list taken out) still exports, the start it must fit called a degradation."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -13,8 +16,12 @@ import pytest
 from rosbags.highlevel import AnyReader
 
 from taskrunner.cli import main
+from taskrunner.errors import InputError
 from taskrunner.export.mcapfile import cell_of_record
+from taskrunner.export.physics import SentMotion, physics_path
+from taskrunner.export.timeline import record_messages
 from taskrunner.kinematics import frame_pose
+from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.records import RunRecord, load_record
 
 TASK = Path(__file__).parent / "fixtures" / "two_arms_at_once.yaml"
@@ -53,7 +60,9 @@ def test_the_runs_motions_overlap_in_time(overlapped: Overlapped) -> None:
                      for e in overlapped.record.events if e.kind == "motion")
     assert len(motions) == 3
     (a0, a1, arm_a), (b0, _, arm_b) = motions[0], motions[1]
-    assert arm_a != arm_b and a0 < b0 < a1  # the second arm starts while the first moves
+    # The second arm starts while the first moves (at once, when the tree sent it before
+    # the physics stepped).
+    assert arm_a != arm_b and a0 <= b0 < a1
 
 
 def test_every_joint_state_is_a_physics_sample_and_tf_is_its_fk(overlapped: Overlapped) -> None:
@@ -119,3 +128,65 @@ def test_each_arms_motion_is_a_display_trajectory_of_that_arm(overlapped: Overla
             assert [list(p.positions) for p in points] == trajectory["positions"]
             assert [p.time_from_start.sec * 10**9 + p.time_from_start.nanosec
                     for p in points] == [round(t * 1e9) for t in trajectory["times"]]
+
+
+def _sent(record: RunRecord) -> list[SentMotion]:
+    motions = []
+    for event in record.events:
+        if event.kind == "motion":
+            trajectory = event.data["trajectory"]
+            times = np.array(trajectory["times"])
+            motions.append(SentMotion(event.seq, event.data["sent"],
+                                      tuple(trajectory["joints"]), times,
+                                      np.array(trajectory["positions"]), float(times[-1])))
+    return motions
+
+
+def _without_listed_motions(record: RunRecord) -> RunRecord:
+    """The record as the physics reports were before they listed the motions."""
+    events = [replace(e, data={k: v for k, v in e.data.items() if k != "motions"})
+              if e.kind == "physics" else e for e in record.events]
+    return replace(record, events=events)
+
+
+def _physics(record: RunRecord) -> list[RunEvent]:
+    return [e for e in record.events if e.kind == "physics"]
+
+
+def test_every_motions_physics_start_is_reported_not_fitted(overlapped: Overlapped) -> None:
+    record = overlapped.record
+    sent = _sent(record)
+    listed = sorted((m["start"], m["joints"], m["settle"])
+                    for e in _physics(record) for m in e.data["motions"])
+    assert len(listed) == len(sent) == 3
+    assert all(settle is not None and settle > 0 for *_, settle in listed)
+    path = physics_path(sent, _physics(record))
+    assert not isinstance(path, str)
+    assert path.how == ("reported",) * 3 and path.estimated == ()
+    by_seq = sorted(range(len(sent)), key=lambda k: sent[k].seq)
+    assert [path.starts[k] for k in by_seq] == [start for start, *_ in listed]
+    assert [list(sent[k].joints) for k in by_seq] == [joints for _, joints, _ in listed]
+
+
+def test_an_older_record_exports_an_estimated_start_only_as_degraded(
+        overlapped: Overlapped) -> None:
+    # Without the list, the right arm's motion is placed after the left arm's first one,
+    # running when it was sent; the left arm's second one after the right arm's, or
+    # fitted while it settles, as fast as the physics ran beside the tree. Estimates,
+    # each said, and nothing else.
+    record, older = overlapped.record, _without_listed_motions(overlapped.record)
+    sent = _sent(record)
+    new, old = physics_path(sent, _physics(record)), physics_path(sent, _physics(older))
+    assert not isinstance(new, str) and not isinstance(old, str)
+    assert old.how[:2] == ("paused", "running") and old.how[2] in ("running", "fitted")
+    assert old.starts[0] == new.starts[0] == 0.0  # exact: nothing ran before it
+    if old.how[2] == "fitted":
+        assert abs(old.starts[2] - new.starts[2]) < 0.05
+    cell = cell_of_record(record)
+    with pytest.raises(InputError, match=r"(?s)is estimated.*--allow-degraded"):
+        record_messages(older, cell)
+    told: list[str] = []
+    messages = record_messages(older, cell, allow_degraded=True, on_degraded=told.append)
+    assert len(told) == 2
+    assert f"event {sent[1].seq}" in told[0] and f"event {sent[2].seq}" in told[1]
+    assert any(m.topic == "/rosout" and b"is estimated" in m.data for m in messages)
