@@ -4,29 +4,26 @@ A broad phase that tests spheres needs spheres that *contain* the geometry the e
 tests, or it clears pairs that collide. :func:`fit_spheres` builds such a set for one coal
 geometry, in the geometry's own frame:
 
-* a triangle mesh as coal checks it, a surface: its triangles are
-  split until no edge is longer than ``options.max_edge``,
-  centres are chosen greedily inside the mesh (the deep ones stick out least; see
-  :func:`_fit_mesh`), and each triangle goes to one sphere, whose radius reaches all of its
-  triangles' corners. A ball is convex, so a triangle whose three corners are in it lies in it:
-  every vertex and every point of every face is covered by construction.
+* a triangle mesh as coal checks it, a surface: its triangles are split until no edge is
+  longer than ``options.max_edge``, centres are chosen greedily inside the mesh (the deep
+  ones stick out least; see :func:`_choose_spheres`), and each triangle goes to one
+  sphere, whose radius reaches all of its corners. A ball is convex, so a triangle whose
+  three corners are in it lies in it: every vertex and every point of every face is
+  covered by construction.
 * a convex polytope (a link's hull) as coal checks it, a solid: cut into tetrahedra
   (its centroid and each face), split and grouped as a mesh's triangles are; a ball
   containing a tetrahedron's four corners contains it.
-* a box, cylinder, capsule or sphere as coal checks it, a solid: a box as a grid of cells,
-  each inside its circumscribed sphere; a cylinder as a chain of spheres along its axis
-  (a grid of cells where it is wide); a capsule as a chain of spheres
-  whose radius covers the gaps between them; a sphere as itself. Every point of the solid
-  is covered by construction.
+* a box, cylinder, capsule or sphere as coal checks it, a solid: grids of cells, or chains
+  of spheres along the axis (:mod:`taskrunner.collision.sphere_primitives`).
 
 Each set carries its *looseness*: how far the union of its spheres reaches outside the
 geometry (m). For a mesh or a convex polytope it is a bound: a sphere of radius r about a
 centre at depth delta inside lies within r - delta of the geometry (within r of it for a centre
-on a mesh's surface), so the largest r - delta bounds every point of the union. For a solid it is
-measured in closed form at ~100 points per sphere on the union's surface (those inside no
-other sphere): an estimate from below, within a millimetre or two of the truth. Inside or
-outside a mesh is decided by its winding number (Jacobson et al., "Robust inside-outside
-segmentation using generalized winding numbers", SIGGRAPH 2013).
+on a mesh's surface), so the largest r - delta bounds every point of the union. For a
+primitive it is measured in closed form on the union's surface: an estimate from below,
+within a millimetre or two of the truth. Inside or outside a mesh is decided by its winding
+number (Jacobson et al., "Robust inside-outside segmentation using generalized winding
+numbers", SIGGRAPH 2013).
 
 Results are kept in memory and in ``spheres.json`` under the user cache folder
 (:func:`taskrunner.resources.user_cache_dir`), keyed by a hash of the geometry's content
@@ -49,6 +46,7 @@ from pathlib import Path
 import coal
 import numpy as np
 
+from taskrunner.collision.sphere_primitives import GROW, fit_primitive
 from taskrunner.errors import ArgumentError, SceneError
 from taskrunner.resources import user_cache_dir
 
@@ -58,11 +56,9 @@ log = logging.getLogger(__name__)
 
 CACHE_FILE = "spheres.json"
 _METHOD = "v1"  # changing the construction must not reuse cached spheres
-_BOUNDARY_POINTS = 96  # looseness probes per sphere
 _SHORTLIST = 8  # candidates weighed for each sphere a mesh fit adds
 _MAX_CANDIDATES = 4000  # candidate centres a fit chooses among, at most
 _GRID_POINTS = 1200  # about this many grid points over a mesh's box are tried as centres
-_GROW = 1e-9  # m, on every radius: float rounding never uncovers a corner
 
 _lock = threading.Lock()
 _memory: dict[str, GeometrySpheres] = {}
@@ -298,7 +294,7 @@ def _choose_spheres(corners: np.ndarray, candidates: np.ndarray, depth: np.ndarr
         if len(mine):
             centres.append(candidates[j])
             radii.append(float(np.linalg.norm(mine - candidates[j], axis=1).max()) * (1 + 1e-9)
-                         + _GROW)
+                         + GROW)
             depths.append(depth[j])
     r = np.array(radii)
     return np.array(centres), r, float(max(0.0, np.max(r - np.array(depths))))
@@ -348,93 +344,6 @@ def _distances(mesh: coal.CollisionGeometry, points: np.ndarray) -> np.ndarray:
     return out
 
 
-# ------------------------------------------------------------------- solids
-def _fit_solid(kind: str, dims: tuple[float, ...], options: SphereOptions
-               ) -> tuple[np.ndarray, np.ndarray, float]:
-    if kind == "sphere":
-        return np.zeros((1, 3)), np.array([dims[0] * (1 + 1e-9) + _GROW]), 0.0
-    if kind == "capsule":  # spheres of radius R' every s: R'^2 = R^2 + (s/2)^2 covers between
-        radius, half = dims
-        gap = math.sqrt((radius + options.tolerance) ** 2 - radius ** 2)
-        n = max(1, min(options.max_spheres - 1, math.ceil(half / gap)))
-        z = np.linspace(-half, half, n + 1)
-        centres = np.column_stack([np.zeros(n + 1), np.zeros(n + 1), z])
-        radii = np.full(n + 1, math.hypot(radius, half / n) * (1 + 1e-9) + _GROW)
-        return centres, radii, _solid_looseness(kind, dims, centres, radii)
-    halves = np.array((dims[0], dims[0], dims[1]) if kind == "cylinder" else dims)
-    best: tuple[np.ndarray, np.ndarray, float] | None = None
-    edge = 2 * float(halves.max())
-    while True:
-        fit = _grid(kind, halves, dims, edge)
-        if len(fit[1]) > options.max_spheres and best is not None:
-            return best
-        looseness = _solid_looseness(kind, dims, *fit)
-        if best is None or looseness < best[2]:
-            best = (*fit, looseness)
-        if looseness <= options.tolerance:
-            return best
-        edge *= 0.85
-
-
-def _grid(kind: str, half: np.ndarray, dims: tuple[float, ...], edge: float
-          ) -> tuple[np.ndarray, np.ndarray]:
-    """Cells of about ``edge`` over the solid's box that meet the solid, each in the sphere
-    through its corners (a cylinder one cell wide: spheres on its axis through its rims)."""
-    counts = np.maximum(1, np.ceil(2 * half / edge - 1e-9)).astype(int)
-    cell = 2 * half / counts
-    axes = [-half[i] + cell[i] * (np.arange(counts[i]) + 0.5) for i in range(3)]
-    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-    radius = float(np.linalg.norm(cell)) / 2
-    if kind == "cylinder" and counts[0] == 1:
-        radius = math.hypot(dims[0], cell[2] / 2)
-    elif kind == "cylinder":  # keep the cells whose square meets the disk
-        gap = np.maximum(np.abs(grid[:, :2]) - cell[:2] / 2, 0.0)
-        grid = grid[np.hypot(gap[:, 0], gap[:, 1]) <= dims[0]]
-    return grid, np.full(len(grid), radius * (1 + 1e-9) + _GROW)
-
-
-def _solid_looseness(kind: str, dims: tuple[float, ...], centres: np.ndarray,
-                     radii: np.ndarray) -> float:
-    probes = _union_surface(centres, radii)
-    return float(max(0.0, _solid_distance(kind, dims, probes).max(initial=0.0)))
-
-
-def _solid_distance(kind: str, dims: tuple[float, ...], p: np.ndarray) -> np.ndarray:
-    """Signed distance (m) from points to the solid (negative inside)."""
-    if kind == "sphere":
-        return np.linalg.norm(p, axis=1) - dims[0]
-    if kind == "capsule":
-        z = np.clip(p[:, 2], -dims[1], dims[1])
-        return np.linalg.norm(p - np.column_stack([0 * z, 0 * z, z]), axis=1) - dims[0]
-    if kind == "cylinder":
-        d = np.column_stack([np.hypot(p[:, 0], p[:, 1]) - dims[0], np.abs(p[:, 2]) - dims[1]])
-    else:
-        d = np.abs(p) - np.array(dims)
-    return np.linalg.norm(np.maximum(d, 0.0), axis=1) + np.minimum(d.max(axis=1), 0.0)
-
-
-# ------------------------------------------------------------------- common
-def _unit_sphere(n: int) -> np.ndarray:
-    """``n`` points spread evenly on the unit sphere (a Fibonacci lattice)."""
-    i = np.arange(n) + 0.5
-    z = 1 - 2 * i / n
-    phi = math.pi * (1 + math.sqrt(5)) * i
-    s = np.sqrt(1 - z * z)
-    return np.column_stack([s * np.cos(phi), s * np.sin(phi), z])
-
-
-def _union_surface(centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
-    """Points on the union's surface: each sphere's probes not inside another sphere."""
-    unit = _unit_sphere(_BOUNDARY_POINTS)
-    out = []
-    for j, (c, r) in enumerate(zip(centres, radii, strict=True)):
-        p = c + r * unit
-        d = np.linalg.norm(p[:, None, :] - centres[None], axis=2) - radii[None]
-        d[:, j] = np.inf
-        out.append(p[d.min(axis=1) >= -1e-9])
-    return np.concatenate(out) if out else np.zeros((0, 3))
-
-
 def fit_spheres(geometry: coal.CollisionGeometry, options: SphereOptions | None = None
                 ) -> GeometrySpheres:
     """Spheres containing ``geometry`` (see the module's text), from the memory or disk
@@ -462,7 +371,8 @@ def fit_spheres(geometry: coal.CollisionGeometry, options: SphereOptions | None 
         kind = "mesh"
     else:
         shape, dims = _primitive(geometry)
-        centres, radii, looseness = _fit_solid(shape, dims, options)
+        centres, radii, looseness = fit_primitive(shape, dims, options.tolerance,
+                                                  options.max_spheres)
         kind = "solid"
     radii = radii + swept
     fitted = GeometrySpheres(centres, radii, looseness, kind, key)

@@ -16,6 +16,7 @@ import pytest
 
 from taskrunner.collision import spheres
 from taskrunner.collision.link_spheres import robot_spheres
+from taskrunner.collision.sphere_primitives import primitive_distance
 from taskrunner.collision.spheres import SphereOptions, fit_spheres, geometry_key
 from taskrunner.errors import ArgumentError, SceneError
 from taskrunner.resources import DATA_ROOT
@@ -62,7 +63,7 @@ def _solid_samples(geometry: coal.CollisionGeometry, n: int, rng: np.random.Gene
     geometry.computeLocalAABB()
     lo, hi = np.array(geometry.aabb_local.min_), np.array(geometry.aabb_local.max_)
     points = lo + (hi - lo) * rng.random((n, 3))
-    inside = points[spheres._solid_distance(kind, dims, points) <= 0]
+    inside = points[primitive_distance(kind, dims, points) <= 0]
     corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
                         for z in (lo[2], hi[2])])
     if kind == "box":  # the surface: each sample pushed to the nearest face, and the corners
@@ -193,6 +194,13 @@ def test_primitive_solids_are_inside_their_spheres(shape: coal.CollisionGeometry
     _check_covered(shape, SphereOptions(), np.random.default_rng(3))
 
 
+@pytest.mark.parametrize("shape", [coal.Box(0.3, 0.2, 0.01), coal.Cylinder(0.2, 0.02),
+                                   coal.Capsule(0.03, 0.25)], ids=["box", "cylinder", "capsule"])
+def test_one_sphere_when_only_one_is_allowed(shape: coal.CollisionGeometry) -> None:
+    fit = _check_covered(shape, SphereOptions(max_spheres=1), np.random.default_rng(9))
+    assert len(fit) == 1
+
+
 def test_looseness_is_what_a_denser_measurement_finds() -> None:
     for shape in (coal.Box(0.1, 0.06, 0.02), coal.Cylinder(0.05, 0.2)):
         fit = fit_spheres(shape, SphereOptions(tolerance=0.008))
@@ -201,7 +209,7 @@ def test_looseness_is_what_a_denser_measurement_finds() -> None:
         unit /= np.linalg.norm(unit, axis=1)[:, None]
         probes = np.concatenate([c + r * unit for c, r in zip(fit.centres, fit.radii, strict=True)])
         probes = probes[~fit.contains(probes, slack=-1e-7)]  # on the union's surface only
-        dense = float(spheres._solid_distance(kind, dims, probes).max())
+        dense = float(primitive_distance(kind, dims, probes).max())
         assert fit.looseness <= dense + 1e-9  # an estimate from fewer probes: never more
         assert fit.looseness >= dense - 0.002
     box = fit_spheres(coal.Box(0.1, 0.06, 0.02), SphereOptions(tolerance=0.005, max_spheres=200))
@@ -267,7 +275,7 @@ def test_a_second_process_reads_the_fit_from_disk(monkeypatch: pytest.MonkeyPatc
     def refit(*args: object) -> None:
         raise AssertionError("fitted again instead of read from the cache")
 
-    monkeypatch.setattr(spheres, "_fit_solid", refit)
+    monkeypatch.setattr(spheres, "fit_primitive", refit)
     again = fit_spheres(coal.Cylinder(0.04, 0.3))
     np.testing.assert_array_equal(again.centres, first.centres)
     np.testing.assert_array_equal(again.radii, first.radii)
