@@ -33,7 +33,7 @@ from taskrunner.runtime.replay import motion_data
 from taskrunner.tree.choice import arm_part, choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.reach import StagedGoals
-from taskrunner.tree.schedule import LAG, LATE, Admission, Blocked, LaneKey
+from taskrunner.tree.schedule import LAG, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
 __all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "TaskLeaf", "TaskParallel", "lane_of"]
@@ -122,16 +122,6 @@ def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
     return tuple(reversed(path))
 
 
-LEAD = 0.1
-"""s of task time ahead of now a motion is admitted on a backend that plays time. One the
-tree reaches more than :data:`~taskrunner.tree.schedule.LATE` after that start (or after
-another arm's motion it relied on was taken back, cut or retimed) is admitted again,
-verified from then, with no lead, every time; one that still starts late (the clock moved
-while it was verified or sent) is verified at its real start as soon as it is sent, and
-stopped at once where it meets another arm there. The ``motion`` event's ``sent`` is its
-real start, which the record's verifier replays."""
-
-
 def _plays_time(backend: object) -> bool:
     """Whether motions on ``backend`` take their time (a mock without ``speed`` ends each
     at once: its schedule is the planned one, never held against the wall clock)."""
@@ -146,7 +136,8 @@ class _Executes(TaskLeaf):
     Before it is sent, the trajectory is admitted to the run's motion schedule
     (:meth:`~taskrunner.tree.schedule.MotionSchedule.admit`): verified against the motions
     of the branches running beside it, and started later (a ``wait`` event) where it would
-    meet one; on a backend that plays motions in time, the leaf holds it until then.
+    meet one; on a backend that plays motions in time, the leaf holds it until then
+    (its planned start plus the schedule's slip, which grows where it is sent late).
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext,
@@ -159,10 +150,9 @@ class _Executes(TaskLeaf):
         self.pending: JointTrajectory | None = None  # admitted, held until its start
         # Not admitted yet: another branch's arm rests in its way (trajectory, revision seen).
         self.held: tuple[JointTrajectory, int] | None = None
-        self.lead = LEAD  # s of task time a motion is admitted ahead of now (timed backends)
-        self.fresh = False  # admitted in this tick: sent even if the clock moved meanwhile
-        self.since: float | None = None  # s: verify from here (its arm rested late since)
+        self.since: float | None = None  # s, planned: admitted again, verified from here
         self.lagged = False  # its motion was retimed: it ran behind its schedule
+        self.holding = False  # held at its start: another arm runs earlier than planned
 
     def start(self) -> None:
         self.handle = None
@@ -170,10 +160,9 @@ class _Executes(TaskLeaf):
         self.admission = None
         self.pending = None
         self.held = None
-        self.lead = LEAD
-        self.fresh = False
         self.since = None
         self.lagged = False
+        self.holding = False
 
     def execute_path(self, path: JointPath, planning_time: float,
                      trajectory: JointTrajectory | None = None) -> Status:
@@ -207,22 +196,14 @@ class _Executes(TaskLeaf):
         if self.held is not None and self.held[1] == -1:
             self.held = None  # its turn has come
         timed = _plays_time(self.ctx.backend)
-        # Where time passes, the motion is admitted a little ahead (the verification and
-        # the next tick take some): it is held until then, then sent on time.
-        clock = self.ctx.clock.now() if timed else 0.0
-        late = schedule.overdue(lane, clock) if timed else None
-        if late is not None:
-            # Another arm has not started a motion it was due to: it rests where the
-            # schedule has it moving. Held until its branch has admitted it again.
-            if self.held is None:
-                self.ctx.events.emit("wait", f"{self.location or 'this motion'} holds: "
-                                     f"{late.location or 'another branch'} is late",
-                                     node=self.name, location=self.location, hold=True,
-                                     other=late.location, late=True)
-            self.held = (trajectory, schedule.changes)
-            return Status.RUNNING
-        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location,
-                               clock + self.lead, since=self.since)
+        # Its start is the schedule's (planned time): where time passes, it is held until
+        # then, and the whole schedule slips where it is sent late. Only a motion
+        # admitted again (stopped, or verified against a promise since broken) starts
+        # from now at the earliest.
+        since = self.since if timed else None
+        now = schedule.planned(self.ctx.clock.now()) if since is not None else 0.0
+        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location, now,
+                               since=since)
         if isinstance(found, Blocked):
             refusal = schedule.refusal(lane, found, self.location)
             if refusal is not None:
@@ -250,8 +231,7 @@ class _Executes(TaskLeaf):
                 bodies=list(conflict.bodies), at=round(conflict.time, 6),
                 distance=round(conflict.distance, 6))
         if timed:
-            self.pending = trajectory  # sent at its start (admitted again if late)
-            self.fresh = True
+            self.pending = trajectory  # sent at its start (the schedule slips if late)
             return self.poll_execution()
         return self._send(trajectory)
 
@@ -259,6 +239,9 @@ class _Executes(TaskLeaf):
         self.pending = None
         timed = _plays_time(self.ctx.backend)
         before = self.ctx.clock.now() if timed else 0.0
+        slips = len(self.ctx.schedule.slips)
+        if timed and self.admission is not None:
+            self.ctx.schedule.slip_to(self.admission, before)
         try:
             handle = self.ctx.motion_backend().execute(trajectory)
         except BackendError as exc:  # refused, or stopped on a fault since the last motion
@@ -278,6 +261,11 @@ class _Executes(TaskLeaf):
             handle.cancel()
             shown = self._cut_short()
         lane = lane_of(self)
+        for _, planned, delay in self.ctx.schedule.slips[slips:]:
+            self.ctx.events.emit("wait", f"the schedule slips {delay:.2f} s: "
+                                 f"{self.location or 'this motion'} was due at {planned:.2f} s",
+                                 node=self.name, location=self.location, slip=round(delay, 6),
+                                 since=round(planned, 6))
         self.ctx.executed.append(ExecutedMotion(self.name, self.location, shown, snapshot,
                                                 lane, start))
         verified = self.admission.seconds if self.admission is not None else 0.0
@@ -310,8 +298,7 @@ class _Executes(TaskLeaf):
                              location=self.location, hold=True, stopped=round(progress, 6))
         self.handle = None
         self.admission = None
-        self.lead = 0.0
-        self.since = self.ctx.clock.now()
+        self.since = self.ctx.schedule.planned(self.ctx.clock.now())
         rest = _rest(trajectory, progress)
         if rest is None:
             return Status.SUCCESS
@@ -350,21 +337,32 @@ class _Executes(TaskLeaf):
                 return self.fail(str(exc))
         if self.pending is not None:
             assert self.admission is not None
-            fresh, self.fresh = self.fresh, False
             now = self.ctx.clock.now()
-            if now < self.admission.start:
+            if now < schedule.due(self.admission):
                 return Status.RUNNING
             try:
-                if not fresh and (now > self.admission.start + LATE
-                                  or schedule.stale(self.admission)
-                                  or schedule.overdue(lane_of(self), now) is not None):
-                    # Verified for another start, or against a promise since broken:
-                    # verified again from now (its arm rested here since its start).
-                    self.since = min(self.admission.start, now)
+                if schedule.stale(self.admission):
+                    # Verified against a promise since broken: verified again from now
+                    # (its arm rested here since its start).
+                    self.since = min(self.admission.start, schedule.planned(now))
                     schedule.withdraw(self.admission)
                     trajectory, self.pending = self.pending, None
-                    self.lead = 0.0
                     return self._admit(trajectory)
+                # In planned order: after another arm's motion due before it, and clear
+                # of the motions running earlier than planned since the schedule slipped.
+                if schedule.overdue(lane_of(self), self.admission.start) is not None:
+                    return Status.RUNNING
+                conflict = schedule.clear_to_send(self.ctx.scene, self.admission, now)
+                if conflict is not None:
+                    if not self.holding:
+                        self.holding = True
+                        self.ctx.events.emit(
+                            "wait", f"{self.location or 'this motion'} holds: another arm "
+                            f"runs earlier than planned against it: {conflict.describe()}",
+                            node=self.name, location=self.location, hold=True,
+                            bodies=list(conflict.bodies), at=round(conflict.time, 6),
+                            distance=round(conflict.distance, 6))
+                    return Status.RUNNING
                 return self._send(self.pending)
             except TaskrunnerError as exc:
                 return self.fail(str(exc))
@@ -392,7 +390,8 @@ class _Executes(TaskLeaf):
             return Status.RUNNING
         now = self.ctx.clock.now()
         entry = admission.entry
-        behind = min(now, entry.motion.end) - entry.motion.start - float(handle.progress)
+        behind = (min(now - entry.offset, entry.motion.end) - entry.motion.start
+                  - float(handle.progress))
         if behind > LAG and handle.progress < entry.motion.trajectory.duration:
             first = admission.entry is not None and admission.entry.motion.start == \
                 admission.start and not self.lagged

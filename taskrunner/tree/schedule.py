@@ -37,21 +37,28 @@ slow for one arm, a loaded machine).
 a *floor* under its lane (:meth:`MotionSchedule.not_before`): the lane's next motions start
 no earlier than the named step's last motion ended (:meth:`MotionSchedule.finish_step`).
 
-*The clock.* Seconds of task time. A motion starts at the earliest when every motion it
-follows has ended (planning counts as no time: what a mock run, which plays no time,
-shows) and, on a backend that plays motions in time, not before now
-(:class:`~taskrunner.tree.clock.TaskClock`). Where a motion was admitted to start later
-than now, its leaf holds it until then; one reached more than :data:`LATE` after its
-admitted start, or after a motion it relied on was taken back, cut or retimed
-(:attr:`MotionSchedule.retractions`), is admitted again from then, every time. Once sent,
-its real start (:meth:`~taskrunner.tree.clock.TaskClock.track`) is what the schedule
-keeps (:meth:`MotionSchedule.confirm`): verified again there when it is late, and stopped
-at once where it meets another arm. A motion is held while another arm is overdue
-(:meth:`MotionSchedule.overdue`). An arm that *lags* its trajectory (physics, servos) by
-more than :data:`LAG` is retimed where it really is, and the motions verified against it
-are verified again (:meth:`MotionSchedule.recheck`): held, or stopped and their rest
-admitted again (stop-and-go), so a late arm makes the cell slower. What it does not yet
-measure: lag in joint space (a backend whose progress runs on while its arm trails).
+*Planned time.* Seconds. A motion's start is decided by the schedule alone: the end of
+the motions it follows, a ``wait_for``'s floor, the other arms' committed motions (its
+waits); planning counts as no time, on every backend. A backend that plays motions in
+time is told to start it at its planned start plus the schedule's :attr:`~MotionSchedule.
+slip` on the run's clock (:class:`~taskrunner.tree.clock.TaskClock`); its leaf holds it
+until then. Where it is sent later than :data:`LATE` after that (its plan took longer
+than its place on the schedule left it), the whole schedule slips
+(:meth:`MotionSchedule.slip_to`: every motion not sent yet goes as much later, the delay
+kept in :attr:`MotionSchedule.slips`), never a different plan: the same task gives the
+same trajectories and the same planned starts whatever the machine's load. A motion of
+another arm already running when the schedule slipped runs earlier against it than
+planned: before it is sent, the motion is verified against that one where both really
+run (:meth:`MotionSchedule.clear_to_send`) and held while it would meet it. Each motion
+sent keeps its *offset* (its real start less its planned start). A motion held while
+another arm is overdue (:meth:`MotionSchedule.overdue`) goes when that one has gone. An
+arm that *lags* its trajectory (physics, servos) by more than :data:`LAG` is retimed
+where it really is (its offset grows), and the motions verified against it are verified
+again (:meth:`MotionSchedule.recheck`): held, or stopped and their rest admitted again
+(stop-and-go), so a late arm makes the cell slower. A motion verified against a promise
+since taken back or cut (:attr:`MotionSchedule.retractions`) is admitted again. What it
+does not yet measure: lag in joint space (a backend whose progress runs on while its arm
+trails).
 """
 
 from __future__ import annotations
@@ -118,6 +125,7 @@ class Committed:
             it clear, so it is verified again before it is sent.
         progress: s of its trajectory the backend has played (once sent): how far
             behind its schedule the arm runs (:meth:`MotionSchedule.lagging`).
+        motion: at its *planned* start (:attr:`MotionSchedule.slip`).
     """
 
     lane: LaneKey
@@ -126,6 +134,9 @@ class Committed:
     sent: bool = False
     seen: int = 0
     progress: Callable[[], float] | None = field(default=None, compare=False)
+    offset: float = 0.0
+    """s: once sent, its real start on the run's clock less its planned start
+    (``motion.start``): the schedule's :attr:`~MotionSchedule.slip` when it was sent."""
 
 
 @dataclass(frozen=True)
@@ -210,6 +221,12 @@ class MotionSchedule:
     stops: dict[int, Conflict] = field(default_factory=dict)
     """Motions asked to stop (by ``id`` of their entry), and the conflict why: a late arm
     rests where a running motion was verified to pass after it had gone (stop-and-go)."""
+    slip: float = 0.0
+    """s: how far the run's clock is behind the plan (module text, *Planned time*): a
+    motion planned to start at ``t`` is sent at ``t + slip``."""
+    slips: list[tuple[str | None, float, float]] = field(default_factory=list)
+    """Every slip of the whole schedule: (the step whose motion was not sent at its
+    planned start, that start (s, planned), the delay (s)), in order."""
     _changes: int = 0
     _instances: int = 0
     _branches: dict[int, Callable[[int], bool]] = field(default_factory=dict)
@@ -251,6 +268,98 @@ class MotionSchedule:
     def _admitted(self, branch: LaneKey) -> int:
         return sum(1 for c in self.committed if _within(c.lane, branch))
 
+    def planned(self, now: float) -> float:
+        """The schedule's (planned) time at ``now`` s on the run's clock."""
+        return now - self.slip
+
+    def due(self, admission: Admission) -> float:
+        """When, on the run's clock, an admitted motion is to be sent (s)."""
+        return admission.start + self.slip
+
+    def slip_to(self, admission: Admission, now: float) -> float:
+        """The admitted motion is sent only at ``now`` (s on the run's clock), more than
+        :data:`LATE` after it was due (its plan took longer than its place on the
+        schedule left it, the tree reached it late, or it was held): the whole schedule
+        slips, every motion not sent yet as much as this one, and keeps its plan.
+        Returns the delay (s; 0: on time)."""
+        delay = now - self.due(admission)
+        if delay <= LATE:
+            return 0.0
+        self.slip += delay
+        entry = admission.entry
+        self.slips.append((entry.location if entry is not None else None, admission.start,
+                           delay))
+        return delay
+
+    def _framed(self, others: Sequence[Committed], frame: float) -> list[Committed]:
+        """``others`` as a motion that runs ``frame`` s after its planned start sees
+        them: each sent one at its own offset, each not sent yet at the current slip,
+        its lane's last offset or ``frame`` itself, whichever is latest (it goes no
+        earlier than its arm's last motion, nor than this one: the schedule slips to it)."""
+        lanes: dict[LaneKey, float] = {}
+        for c in self.committed:
+            if c.sent:
+                lanes[c.lane] = max(lanes.get(c.lane, self.slip), c.offset)
+        out = []
+        for c in others:
+            shift = (c.offset if c.sent else max(lanes.get(c.lane, self.slip), frame)) - frame
+            if shift != 0.0:
+                c = replace(c, motion=TimedMotion(c.motion.trajectory, c.motion.start + shift,
+                                                  c.motion.label))
+            out.append(c)
+        return out
+
+    def _verify_in_frame(self, scene: Scene, entry: Committed, frame: float,
+                         begin: float) -> Conflict | None:
+        """Verify ``entry`` run ``frame`` s after its planned start, from ``begin`` (s,
+        planned) on, against the concurrent lanes where they really run (sent ones at
+        their offsets): the conflict, or None."""
+        others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
+        if not others:
+            return None
+        framed = self._framed(others, frame)
+        before = tuple(c.motion for c in self._framed(
+            [c for c in self.committed if c.lane == entry.lane and c is not entry
+             and c.motion.start < entry.motion.start], frame))
+        lanes = [Lane("this motion", (*before, entry.motion))] + lanes_of(framed)
+        horizon = max([entry.motion.end] + [c.motion.end for c in framed])
+        if begin >= horizon:
+            return None
+        return verify_lanes(scene, lanes, (begin, horizon),
+                            SpacetimeOptions(clearance=self.clearance)).conflict
+
+    def clear_to_send(self, scene: Scene, admission: Admission, now: float
+                      ) -> Conflict | None:
+        """Whether the admitted motion may be sent at ``now`` (s on the run's clock),
+        the schedule slipped to it (:meth:`slip_to`): where another arm's motion was
+        sent before the slip, it runs earlier against this one than planned, and the
+        motion is verified against it there, from now on. None: clear; else the
+        conflict (the caller holds the motion, and a motion of another arm running
+        through its resting arm is asked to stop, :attr:`stops`)."""
+        entry = admission.entry
+        assert entry is not None
+        conflict = self._verify_sent(scene, entry, max(now - admission.start, self.slip))
+        if conflict is not None and conflict.motions[0] is None:
+            # Its arm, resting, is in the way of a motion running earlier than planned.
+            others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
+            framed = self._framed(others, self.slip)
+            runner = _blocking(framed, conflict)
+            if runner is not None:
+                runner = others[framed.index(runner)]
+                if runner.sent and id(runner) not in self.stops:
+                    self.stops[id(runner)] = conflict
+                    self._changes += 1
+        return conflict
+
+    def _verify_sent(self, scene: Scene, entry: Committed, frame: float) -> Conflict | None:
+        """Verify ``entry`` run ``frame`` s after its planned start, from its start on,
+        where a motion of another arm was sent at another offset (else it runs as
+        planned against them)."""
+        if all(not c.sent or abs(c.offset - frame) <= LATE for c in self.committed
+               if concurrent(c.lane, entry.lane)):
+            return None
+        return self._verify_in_frame(scene, entry, frame, entry.motion.start)
+
     @property
     def revision(self) -> int:
         """How many motions were committed."""
@@ -264,7 +373,8 @@ class MotionSchedule:
 
     def overdue(self, lane: LaneKey, now: float) -> Committed | None:
         """A motion of a lane concurrent with ``lane`` due more than :data:`LATE` before
-        ``now`` (s) and not sent: its arm rests where the schedule has it moving."""
+        ``now`` (s, planned: :meth:`planned`) and not sent: its arm rests where the
+        schedule has it moving."""
         late = [c for c in self.committed if concurrent(c.lane, lane) and not c.sent
                 and c.motion.start + LATE < now]
         return min(late, key=lambda c: c.motion.start) if late else None
@@ -276,7 +386,7 @@ class MotionSchedule:
         for c in self.committed:
             if not (c.sent and c.progress is not None and concurrent(c.lane, lane)):
                 continue
-            due = min(now, c.motion.end) - c.motion.start
+            due = min(now - c.offset, c.motion.end) - c.motion.start
             if due <= 0.0:
                 continue
             behind = due - float(c.progress())
@@ -419,69 +529,53 @@ class MotionSchedule:
                 ) -> tuple[Admission, Conflict | None]:
         """The admitted motion was sent, and started at ``at`` (s, on the run's clock).
 
-        Within :data:`LATE` of its admitted start it is on time. Later, it was verified
-        for another start: it is verified again where it really is (its arm resting at
-        its start until ``at``, then moving) against the other lanes' committed motions.
+        Within :data:`LATE` of when it was due (:meth:`due`) it is on time. Later, the
+        whole schedule slips (:meth:`slip_to`): it keeps its planned start, the motions
+        not sent yet go as much later. Where a motion of another arm was sent at another
+        offset, it is verified against that one where both really run.
 
         Args:
             progress: s of its trajectory the backend has played, when asked.
 
         Returns:
-            The admission as sent (its entry at its real start), and the conflict it
-            meets there (None: clear): the caller then stops it at once (:meth:`stop`).
+            The admission as sent (its entry with its offset), and the conflict it meets
+            where it runs (None: clear): the caller then stops it at once (:meth:`stop`).
         """
         entry = admission.entry
         assert entry is not None
-        sent = Committed(entry.lane, TimedMotion(entry.motion.trajectory, at, entry.location),
-                         entry.location, sent=True, seen=entry.seen, progress=progress)
-        conflict = None
-        if at - admission.start > LATE:
-            others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
-            if others:
-                before = tuple(c.motion for c in self.committed
-                               if c.lane == entry.lane and c is not entry)
-                lanes = [Lane("this motion", (*before, sent.motion))] + lanes_of(others)
-                horizon = max([sent.motion.end] + [c.motion.end for c in others])
-                conflict = verify_lanes(scene, lanes, (min(admission.start, at), horizon),
-                                        SpacetimeOptions(clearance=self.clearance)).conflict
-            self.retractions += 1  # its admitted start was a promise others may have used
+        self.slip_to(admission, at)
+        sent = replace(entry, sent=True, progress=progress, offset=at - admission.start)
         self.committed = [sent if c is entry else c for c in self.committed]
+        conflict = self._verify_sent(scene, sent, sent.offset)
         self._changes += 1
-        return replace(admission, start=at, entry=sent), conflict
+        return replace(admission, entry=sent), conflict
 
     def retime(self, admission: Admission, start: float) -> Admission:
         """The sent motion runs behind its schedule (an arm that lags: physics, servos):
-        it is put where it really is, as started at ``start`` (s). The motions verified
-        against where it should have been are verified again (:meth:`recheck`)."""
+        it is put where it really is, as started at ``start`` (s on the run's clock; its
+        plan unchanged, its offset grown). The motions verified against where it should
+        have been are verified again (:meth:`recheck`)."""
         entry = admission.entry
         assert entry is not None
-        moved = Committed(entry.lane, TimedMotion(entry.motion.trajectory, start,
-                                                  entry.location),
-                          entry.location, entry.sent, entry.seen, entry.progress)
+        moved = replace(entry, offset=start - entry.motion.start)
         self.committed = [moved if c is entry else c for c in self.committed]
         self.retractions += 1
         self._changes += 1
-        return replace(admission, start=start, entry=moved)
+        return replace(admission, entry=moved)
 
     def recheck(self, scene: Scene, admission: Admission, now: float
                 ) -> tuple[Admission, Conflict | None]:
-        """Verify a sent, running motion again from ``now`` (s) on, against the other
-        lanes as they are committed now (a motion it relied on was taken back, cut or
-        retimed since): the conflict ahead, None when it stays clear."""
+        """Verify a sent, running motion again from ``now`` (s on the run's clock) on,
+        against the other lanes as they are committed and run now (a motion it relied on
+        was taken back, cut or retimed since): the conflict ahead, None when it stays
+        clear."""
         entry = admission.entry
         assert entry is not None
         fresh = replace(entry, seen=self.retractions)
         self.committed = [fresh if c is entry else c for c in self.committed]
         admission = replace(admission, entry=fresh)
-        others = [c for c in self.committed if concurrent(c.lane, entry.lane)]
-        horizon = max([entry.motion.end] + [c.motion.end for c in others])
-        if not others or now >= horizon:
-            return admission, None
-        before = tuple(c.motion for c in self.committed if c.lane == entry.lane)
-        lanes = [Lane("this motion", before)] + lanes_of(others)
-        found = verify_lanes(scene, lanes, (now, horizon),
-                             SpacetimeOptions(clearance=self.clearance))
-        return admission, found.conflict
+        return admission, self._verify_in_frame(scene, fresh, fresh.offset,
+                                                now - fresh.offset)
 
     def stop(self, admission: Admission, progress: float) -> None:
         """The admitted motion stopped ``progress`` s into its trajectory (cancelled, or
@@ -491,7 +585,7 @@ class MotionSchedule:
             return
         cut = TimedMotion(_cut(entry.motion.trajectory, max(progress, 0.0)),
                           entry.motion.start, entry.motion.label)
-        self.committed = [Committed(c.lane, cut, c.location, c.sent, c.seen) if c is entry
+        self.committed = [replace(c, motion=cut, progress=None) if c is entry
                           else c for c in self.committed]
         self.stops.pop(id(entry), None)
         self.retractions += 1

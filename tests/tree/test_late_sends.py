@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from taskrunner.backends.mock import MockBackend, MockOptions
-from taskrunner.collision.spacetime import Lane, verify_lanes
+from taskrunner.collision.spacetime import Lane, TimedMotion, verify_lanes
 from taskrunner.planning.service import InProcessPlanner
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
@@ -159,21 +159,31 @@ def test_a_motion_sent_within_late_of_its_start_is_on_time_and_not_verified_agai
     schedule, reach, _, _ = in_and_out(scene)
     sent, conflict = schedule.confirm(scene, reach, LATE / 2)
     assert conflict is None and sent.entry is not None and sent.entry.sent
-    assert sent.start == LATE / 2 and schedule.retractions == 0
+    assert sent.start == 0.0 and sent.entry.offset == LATE / 2
+    assert schedule.slip == 0.0 and schedule.retractions == 0
 
 
-def test_a_motion_sent_late_is_verified_where_it_really_started(scene):
+def test_a_motion_sent_late_slips_the_whole_schedule_and_keeps_the_plan(scene):
     schedule, reach, back, left = in_and_out(scene)
     schedule.confirm(scene, reach, 0.0)
-    # Backing out 1.5 s late is still clear of the left arm (in from 4 s); 2 s late,
-    # the two meet on the way: found where it really started.
-    assert schedule.confirm(scene, back, 3.5)[1] is None
-    schedule, reach, back, left = in_and_out(scene)
+    # Backing out 2 s late: the left arm's reach, not sent yet, goes 2 s later too, so
+    # the two keep their planned places against each other (they would meet otherwise).
     late, conflict = schedule.confirm(scene, back, 4.0)
-    assert conflict is not None and conflict.motions == ("t.yaml:2", "t.yaml:3")
-    assert conflict.time > 4.0 and conflict.distance < schedule.clearance + 1e-5
-    assert late.entry is not None and late.entry.motion.start == 4.0
-    assert schedule.stale(left)  # the left arm's reach relied on the old start
+    assert conflict is None and schedule.slip == pytest.approx(2.0)
+    assert schedule.slips == [("t.yaml:2", 2.0, pytest.approx(2.0))]
+    assert late.start == 2.0 and late.entry is not None and late.entry.offset == 2.0
+    assert not schedule.stale(left) and schedule.due(left) == pytest.approx(6.0)
+
+
+def test_a_motion_running_when_the_schedule_slipped_is_verified_against_the_next(scene):
+    # The right arm reaches in (0-2 s) and backs out (2-4 s); the left arm reaches in
+    # from 4 s, its plan a second late: the schedule slips 1 s, the right arm's back-out
+    # sent before the slip runs a second earlier against it: still clear.
+    schedule, reach, back, left = in_and_out(scene)
+    schedule.confirm(scene, reach, 0.0)
+    back, _ = schedule.confirm(scene, back, 2.0)
+    assert schedule.slip_to(left, 5.0) == pytest.approx(1.0)
+    assert schedule.clear_to_send(scene, left, 5.0) is None
 
 
 def test_another_arm_overdue_holds_a_motion_until_its_branch_admits_it_again(scene):
@@ -236,13 +246,16 @@ def test_a_lagging_arm_makes_the_cell_slower_and_the_schedule_follows_it(tmp_pat
     lagged = [e for e in events if e.kind == "message" and "behind its schedule" in e.message]
     assert lagged and all(e.location.endswith(("tray_pair.yaml:21", "tray_pair.yaml:22"))
                           for e in lagged)
-    assert any(e.kind == "wait" and e.data.get("hold") for e in events)
-    # The schedule, retimed to where the arms were, keeps them apart all along.
+    # The left arm's motions go as much later as the right arm's lag (the schedule slips).
+    assert any(e.kind == "wait" and e.data.get("slip", 0.0) > 0.5 for e in events)
+    # The schedule, retimed to where the arms were (each motion at its offset), keeps
+    # them apart all along.
     schedule = runner.ctx.schedule
     by_instance: dict[int, dict[tuple, list]] = {}
     for c in schedule.committed:
         if c.lane:
-            by_instance.setdefault(c.lane[0][0], {}).setdefault(c.lane, []).append(c.motion)
+            real = TimedMotion(c.motion.trajectory, c.motion.start + c.offset, c.motion.label)
+            by_instance.setdefault(c.lane[0][0], {}).setdefault(c.lane, []).append(real)
     for lanes in by_instance.values():
         found = verify_lanes(scene_from_cell(cell),  # the robots alone: links against links
                              [Lane(str(k), tuple(m)) for k, m in lanes.items()])
