@@ -103,6 +103,15 @@ class Vamp:
         return True, wall, own, np.asarray(simple.path.numpy(), dtype=float), ""
 
 
+def _vamp_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("vamp-planner")
+    except PackageNotFoundError:  # built in place, not installed as a distribution
+        return "unknown version"
+
+
 def run(per_class: int, classes: Sequence[str], seed: int, problems: Path | None,
         cap: float) -> dict[str, Any]:
     folder = problems
@@ -118,7 +127,7 @@ def run(per_class: int, classes: Sequence[str], seed: int, problems: Path | None
     out: dict[str, Any] = {"benchmark": "planning_vamp", "date": time.strftime(
         "%Y-%m-%d %H:%M UTC", time.gmtime(started)), "load_before": pc._load(),
         "per_class": per_class, "seed": seed, "cap_s": cap,
-        "vamp": getattr(vamp, "__version__", "?"), "classes": {}}
+        "vamp": _vamp_version(), "classes": {}}
     warmed = False
     for c in classes:
         rows: dict[str, list[dict[str, Any]]] = {"ours": [], "vamp": []}
