@@ -3,7 +3,8 @@
 :class:`FoxgloveFeed` serves the topics of an MCAP export (:mod:`.timeline`) live, with
 the same ROS 2 messages and bytes: ``/joint_states`` and ``/tf`` from the backend's
 joint state polled ``rate_hz`` times a second while a run goes (what the controller
-reports, not the plan), ``/rosout`` for each event, ``/scene_objects`` when a motion
+reports, not the plan), ``/rosout`` for each event, ``/scene_objects`` and
+``/display_planned_path`` (the trajectory sent, from the cell's state then) when a motion
 starts, and ``/robot_description`` and ``/tf_static`` once, sent again to each client
 that subscribes to them (the protocol keeps no latched messages).
 
@@ -28,7 +29,14 @@ import numpy as np
 from taskrunner.errors import ArgumentError, TaskrunnerError
 from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
-from taskrunner.export.timeline import LATCHED, TOPICS, log_line, scene_markers, task_meshes
+from taskrunner.export.timeline import (
+    LATCHED,
+    TOPICS,
+    display_trajectory,
+    log_line,
+    scene_markers,
+    task_meshes,
+)
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import RunEvent
 
@@ -83,6 +91,7 @@ class FoxgloveFeed:
         self.tree = FrameTree(cell.model)
         self._lock = threading.Lock()  # one FK pass at a time (the tree's data)
         self._q = cell.start_state()
+        self._sent = self._q  # the state last sent on /joint_states
         self._context = foxglove.Context()
         self._channels = {
             topic: foxglove.Channel(topic, message_encoding="cdr", context=self._context,
@@ -138,15 +147,26 @@ class FoxgloveFeed:
         q = self.cell.model.apply_mimic(np.asarray(q, dtype=float))
         with self._lock:
             transforms = self.tree.moving_transforms(q, stamp)
+            self._sent = q
         self._channels["/joint_states"].log(
             rosmsg.encode_joint_state(stamp, self.cell.model.joint_names, q), log_time=stamp)
         self._channels["/tf"].log(rosmsg.encode_tf_message(transforms), log_time=stamp)
 
     def publish_event(self, event: RunEvent, runner: Runner, logger_prefix: str = "") -> None:
-        """Send an event as ``/rosout`` (and the scene's objects, if it carries them);
-        ``logger_prefix`` goes before the logger's name (the node's)."""
+        """Send an event as ``/rosout`` (and the scene's objects, if it carries them; a
+        motion's trajectory on ``/display_planned_path``, as an MCAP export has it);
+        ``logger_prefix`` goes before the logger's name (the node's).
+
+        Raises:
+            InputError: a motion's trajectory cannot be read (nothing of it is sent).
+        """
         stamp = time.time_ns()
         scene = event.data.get("scene")
+        if event.kind == "motion" and "trajectory" in event.data:
+            with self._lock:
+                start = self._sent
+            self._channels["/display_planned_path"].log(
+                display_trajectory(event, stamp, self.cell, start), log_time=stamp)
         if isinstance(scene, dict):
             markers, _ = scene_markers(scene.get("objects"), stamp, self.cell, self.tree.root,
                                        task_meshes(runner.spec))

@@ -18,7 +18,7 @@ motions have no such start; ``p0`` is then found from the other motions:
 * **another motion's trajectory was running** at ``t0``: if task time ran with that
   motion's progress, which is physics time, ``p0 = p0' + (t0 - t0')``; but it stands
   still while any motion settles, so this is an estimate (a two-arm run measured
-  0.24 s late);
+  0.24 s early);
 * **only settling motions ran** (after a trajectory's end the physics settles the world
   before the motion ends, and task time stands still meanwhile): ``p0`` lies between the
   last trajectory's end and the last sample; it is the start that fits the motion's

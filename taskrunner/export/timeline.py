@@ -60,8 +60,8 @@ from taskrunner.shapes import Mesh
 from taskrunner.tasks import AddObjectStep, load_task_text
 from taskrunner.tasks.spec import TaskSpec
 
-__all__ = ["LATCHED", "TOPICS", "TimedMessage", "log_line", "record_meshes", "record_messages",
-           "scene_markers", "task_meshes"]
+__all__ = ["LATCHED", "TOPICS", "TimedMessage", "display_trajectory", "log_line",
+           "record_meshes", "record_messages", "scene_markers", "task_meshes"]
 
 # topic → message type, in the order channels are declared.
 TOPICS: dict[str, MessageType] = {
@@ -272,10 +272,15 @@ def _robot_of(cell: Cell, joints: tuple[str, ...]) -> str:
     return max(fits, key=lambda i: len(i.prefix)).name if fits else cell.name
 
 
-def _display_trajectory(event: RunEvent, stamp_ns: int, cell: Cell, start: np.ndarray) -> bytes:
-    """A motion's trajectory as RViz's MotionPlanning display takes it: the trajectory
-    as sent (the record's samples; accelerations are not recorded, so none is sent, as
-    ROS allows), from the whole cell's state when it started (its event's scene)."""
+def display_trajectory(event: RunEvent, stamp_ns: int, cell: Cell, start: np.ndarray) -> bytes:
+    """A ``motion`` event's trajectory as RViz's MotionPlanning display takes it
+    (``/display_planned_path``): the trajectory as sent (the record's samples;
+    accelerations are not recorded, so none is sent, as ROS allows), from the whole
+    cell's state when it started (its event's scene, over ``start``: a state vector).
+
+    Raises:
+        InputError: the event's trajectory cannot be read.
+    """
     joints, times, positions, velocities = _trajectory(event)
     if not event.data["trajectory"].get("velocities"):
         velocities = np.zeros((len(times), 0))  # not recorded: none, not zeros
@@ -478,8 +483,8 @@ def record_messages(record: RunRecord, cell: Cell, *, allow_degraded: bool = Fal
             stamp, names, q, () if schedule.measured else qd))
         add(t, "/tf", rosmsg.encode_tf_message(tree.moving_transforms(q, stamp)))
     for event, t in planned:
-        add(t, "/display_planned_path", _display_trajectory(event, _stamp(base_ns, t), cell,
-                                                            start))
+        add(t, "/display_planned_path", display_trajectory(event, _stamp(base_ns, t), cell,
+                                                           start))
     for event in record.events:
         t = schedule.times[event.seq]
         stamp = _stamp(base_ns, t)

@@ -1,5 +1,7 @@
 """A test client of Foxglove's WebSocket protocol (``foxglove.sdk.v1``): subscribes to
-topics and decodes their ROS 2 messages with rosbags (imported by the feed tests)."""
+topics and decodes their ROS 2 messages, with rosbags' Humble types or, for a type that
+is not one (``moveit_msgs``), with ``mcap-ros2-support`` from the schema the channel
+advertises (imported by the feed tests)."""
 
 from __future__ import annotations
 
@@ -15,9 +17,22 @@ from websockets.sync.client import connect
 HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
 
 
-def subscribe(ws: Any, topics: list[str]) -> dict[int, tuple[str, str]]:
+def decode(data: bytes, schema: str, definition: str) -> Any:
+    """A CDR message of type ``schema`` (its ROS 2 message ``definition``, as advertised)."""
+    if schema in HUMBLE.fielddefs:
+        return HUMBLE.deserialize_cdr(data, schema)
+    from mcap.records import Schema
+    from mcap_ros2.decoder import DecoderFactory
+
+    decoder = DecoderFactory().decoder_for("cdr", Schema(
+        id=1, name=schema, encoding="ros2msg", data=definition.encode()))
+    assert decoder is not None
+    return decoder(data)
+
+
+def subscribe(ws: Any, topics: list[str]) -> dict[int, tuple[str, str, str]]:
     """Read the server's hello and channels; subscribe to ``topics``: subscription id →
-    (topic, schema name)."""
+    (topic, schema name, schema text)."""
     channels: dict[str, dict[str, Any]] = {}
     deadline = time.monotonic() + 10
     while not set(topics) <= set(channels) and time.monotonic() < deadline:
@@ -29,7 +44,7 @@ def subscribe(ws: Any, topics: list[str]) -> dict[int, tuple[str, str]]:
         {"id": i, "channelId": c["id"]} for i, c in subscriptions.items()]}))
     for channel in subscriptions.values():
         assert (channel["encoding"], channel["schemaEncoding"]) == ("cdr", "ros2msg")
-    return {i: (c["topic"], c["schemaName"]) for i, c in subscriptions.items()}
+    return {i: (c["topic"], c["schemaName"], c["schema"]) for i, c in subscriptions.items()}
 
 
 class Listener:
@@ -54,9 +69,9 @@ class Listener:
                     continue
                 if isinstance(frame, bytes) and frame[0] == 1:  # message data
                     sub, _ = struct.unpack_from("<IQ", frame, 1)
-                    topic, schema = subscriptions[sub]
+                    topic, schema, definition = subscriptions[sub]
                     self.received.append((time.monotonic(), topic,
-                                          HUMBLE.deserialize_cdr(frame[13:], schema)))
+                                          decode(frame[13:], schema, definition)))
 
     def stop(self) -> None:
         self._done.set()

@@ -1,6 +1,7 @@
 """The live Foxglove feed: a WebSocket client speaking Foxglove's protocol receives
 /joint_states while a run goes (the servo arm's go_home on the mock backend played at
-4x), and /robot_description when it subscribes, after it was first sent."""
+4x), each motion's /display_planned_path as it is sent, and /robot_description when it
+subscribes, after it was first sent."""
 
 from __future__ import annotations
 
@@ -12,13 +13,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from foxglove_client import HUMBLE, subscribe
+from foxglove_client import decode, subscribe
 from websockets.sync.client import connect
 
 from taskrunner.errors import ArgumentError
 from taskrunner.export.live import FoxgloveFeed, FoxgloveFeedOptions
 from taskrunner.resources import DATA_ROOT, resolve_cell
 from taskrunner.robot.cell import load_cell
+from taskrunner.runtime.records import load_record
 from taskrunner.runtime.session import run_task_file
 
 
@@ -29,7 +31,8 @@ def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
     with FoxgloveFeed(cell, FoxgloveFeedOptions(port=0, rate_hz=50)) as feed:
         def client() -> None:
             with connect(feed.url, subprotocols=["foxglove.sdk.v1"]) as ws:
-                subscriptions = subscribe(ws, ["/joint_states", "/robot_description"])
+                subscriptions = subscribe(ws, ["/joint_states", "/robot_description",
+                                               "/display_planned_path"])
                 ready.set()
                 while not done.is_set():
                     try:
@@ -38,9 +41,9 @@ def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
                         continue
                     if isinstance(frame, bytes) and frame[0] == 1:  # message data
                         sub, _ = struct.unpack_from("<IQ", frame, 1)
-                        topic, schema = subscriptions[sub]
+                        topic, schema, definition = subscriptions[sub]
                         received.append((time.monotonic(), topic,
-                                         HUMBLE.deserialize_cdr(frame[13:], schema)))
+                                         decode(frame[13:], schema, definition)))
 
         listener = threading.Thread(target=client, daemon=True)
         listener.start()
@@ -63,6 +66,26 @@ def test_a_client_receives_joint_states_during_a_run(tmp_path: Path) -> None:
     assert len({round(float(m.position[joint]), 4) for m in during}) >= 5  # it moved
     descriptions = [m for _, topic, m in received if topic == "/robot_description"]
     assert descriptions and descriptions[0].data.startswith("<robot")
+    # One /display_planned_path per motion, as sent: the record's trajectory, from the
+    # cell's state then.
+    record = load_record(next(tmp_path.glob("*.json")))
+    motions = [e for e in record.events if e.kind == "motion"]
+    planned = [(t, m) for t, topic, m in received if topic == "/display_planned_path"]
+    assert len(motions) == len(planned) == 2
+    for event, (t, message) in zip(motions, planned, strict=True):
+        assert t > started
+        trajectory = event.data["trajectory"]
+        sent = message.trajectory[0].joint_trajectory
+        assert message.model_id == cell.model.instances[0].name
+        assert list(sent.joint_names) == trajectory["joints"]
+        assert [list(p.positions) for p in sent.points] == trajectory["positions"]
+        assert [p.time_from_start.sec * 10**9 + p.time_from_start.nanosec
+                for p in sent.points] == [round(s * 1e9) for s in trajectory["times"]]
+        state = message.trajectory_start.joint_state
+        assert list(state.name) == list(cell.model.joint_names)
+        start = dict(zip(state.name, state.position))
+        assert [start[j] for j in trajectory["joints"]] == pytest.approx(
+            trajectory["positions"][0], abs=1e-6)
 
 
 def test_feed_options_are_checked() -> None:
