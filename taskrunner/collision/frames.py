@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable
-from typing import Any, TypeVar
+from typing import Any, ParamSpec, TypeVar
 
 import numpy as np
 
@@ -39,6 +39,7 @@ os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
 # numba after the cache folder is chosen
 import numba
 from numba.core import config as _numba_config
+from numba.core.dispatcher import Dispatcher
 
 if not getattr(_numba_config, "CACHE_DIR", ""):  # numba was imported first, by someone else:
     _numba_config.reload_config()  # it reads the environment again (NUMBA_CACHE_DIR above)
@@ -50,28 +51,27 @@ ROTATION, ORIGIN, AXIS = 0, 9, 12
 """Columns of a frame row: rotation (9, row-major), origin (3, m), a joint's axis (3)."""
 FRAME_COLUMNS = 15
 
-_F = TypeVar("_F", bound=Callable[..., Any])
-_jit: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy")
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
 # A helper has no entry from Python: without numba's CPython and C wrappers (the code that
 # unboxes each argument from a Python object), which cost 25-90 ms of compilation per
-# helper of 8-19 arguments and were never called.
-_inline: Callable[[Any], Any] = numba.njit(cache=True, nogil=True, error_model="numpy",
-                                           no_cpython_wrapper=True, no_cfunc_wrapper=True)
+# helper of 8-19 arguments and were never called. (Options numba's typed signature of
+# ``njit`` does not list; it passes every keyword on to its compiler.)
+_HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True}
 
 
-def jit(function: _F) -> _F:
+def jit(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
     """Compile ``function`` as a kernel called from Python (or called, not inlined, by
-    other kernels), cached on disk."""
-    compiled: _F = _jit(function)
-    return compiled
+    other kernels), cached on disk. The dispatcher is typed as the function: mypy checks
+    the calls' arguments and results against its annotations."""
+    return numba.njit(function, cache=True, nogil=True, error_model="numpy")
 
 
-def inline(function: _F) -> _F:
+def inline(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
     """Compile ``function`` as a helper of the kernels that call it: compiled once and
     called (the name is from when helpers were inlined; see the module docstring); not
     callable from Python."""
-    compiled: _F = _inline(function)
-    return compiled
+    return numba.njit(function, cache=True, nogil=True, error_model="numpy", **_HELPER_OPTIONS)
 
 
 _REVOLUTE = int(JointKind.REVOLUTE)

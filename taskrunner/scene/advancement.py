@@ -48,7 +48,8 @@ _NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
 
 
 @inline
-def _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, column):  # type: ignore[no-untyped-def]
+def _levers_here(k: int, pair_i: np.ndarray, pair_levers: np.ndarray, geometries: np.ndarray,
+                 frames: np.ndarray, nj: int, per_state: bool, walk: np.ndarray, column: int) -> None:
     """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
     for the joints that count): for a revolute joint, the distance from its axis to the
     moved body's bounding sphere centre plus the radius (never more than the full-reach
@@ -75,7 +76,7 @@ def _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk
 
 
 @inline
-def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
+def _cumulative_at(cumulative: np.ndarray, position: float, out: np.ndarray) -> None:
     n = cumulative.shape[0]
     if n == 1:
         for j in range(cumulative.shape[1]):
@@ -90,7 +91,8 @@ def _cumulative_at(cumulative, position, out):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # type: ignore[no-untyped-def]
+def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, k: int,
+           c0: np.ndarray, walk: np.ndarray, column: int, position: float) -> float:
     """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
     is ``c0`` to ``position``, with the lever arms ``walk[k, column + j]`` taken at the
     former.
@@ -133,7 +135,8 @@ def _bound(cumulative, pair_i, pair_levers, k, c0, walk, column, position):  # t
 
 
 @inline
-def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end):  # type: ignore[no-untyped-def]
+def _position_for(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, k: int,
+                  start: float, c0: np.ndarray, walk: np.ndarray, step: float, to_end: float) -> float:
     """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
     arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
     one: the last node where it is, then within that node's segment to ``_CLOSE`` of
@@ -194,7 +197,8 @@ def _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_
 
 
 @inline
-def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
+def _pick(walk: np.ndarray, schedule: np.ndarray, selected: np.ndarray, states: np.ndarray,
+          q: np.ndarray) -> tuple[int, float]:
     """The next position to evaluate (the earliest due pair's), the pairs measured there
     (written to ``selected``: due there, or due soon and past their early position) and
     the state there (written to ``q``). Count 0: done."""
@@ -226,8 +230,9 @@ def _pick(walk, schedule, selected, states, q):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, walk, schedule, c0,  # type: ignore[no-untyped-def]
-             settings):
+def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndarray,
+             pair_levers: np.ndarray, geometries: np.ndarray, frames: np.ndarray, nj: int,
+             walk: np.ndarray, schedule: np.ndarray, c0: np.ndarray, settings: np.ndarray) -> None:
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
     of ``frames``) and schedule the pair's next measurement. A called function, not
     inlined: the walk takes measurements in two places (a unit's exact distances, its
@@ -288,9 +293,11 @@ def _measure(k, d, s, cumulative, pair_i, pair_levers, geometries, frames, nj, w
 
 
 @jit
-def _walk(joints, geometries, points, pair_i, unit_i, unit_levers, members,  # type: ignore[no-untyped-def]
-          unit_from, unit_of, states, cumulative, frames, walk, schedule, picked, selected,
-          distances, q, settings):
+def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i: np.ndarray,
+          unit_i: np.ndarray, unit_levers: np.ndarray, members: np.ndarray, unit_from: np.ndarray,
+          unit_of: np.ndarray, states: np.ndarray, cumulative: np.ndarray, frames: np.ndarray,
+          walk: np.ndarray, schedule: np.ndarray, picked: np.ndarray, selected: np.ndarray,
+          distances: np.ndarray, q: np.ndarray, settings: np.ndarray) -> int:
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -422,7 +429,9 @@ def _walk(joints, geometries, points, pair_i, unit_i, unit_levers, members,  # t
 
 
 @jit
-def _segment_bounds(cumulative, geometries, pair_i, pair_levers, frames, nj, per_state, out):  # type: ignore[no-untyped-def]
+def _segment_bounds(cumulative: np.ndarray, geometries: np.ndarray, pair_i: np.ndarray,
+                    pair_levers: np.ndarray, frames: np.ndarray, nj: int, per_state: bool,
+                    out: np.ndarray) -> None:
     """Per pair, the motion bound from the first state to the second (``cumulative``:
     their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
     nq = cumulative.shape[1]
@@ -435,7 +444,8 @@ def _segment_bounds(cumulative, geometries, pair_i, pair_levers, frames, nj, per
 
 
 @jit
-def _lower_bounds(pair_i, geometries, frames, nj, out):  # type: ignore[no-untyped-def]
+def _lower_bounds(pair_i: np.ndarray, geometries: np.ndarray, frames: np.ndarray, nj: int,
+                  out: np.ndarray) -> None:
     """Per pair, :func:`_lower_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
         out[k] = _lower_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
@@ -443,7 +453,8 @@ def _lower_bounds(pair_i, geometries, frames, nj, out):  # type: ignore[no-untyp
 
 
 @jit
-def _support_bounds(pair_i, geometries, frames, points, nj, out):  # type: ignore[no-untyped-def]
+def _support_bounds(pair_i: np.ndarray, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
+                    nj: int, out: np.ndarray) -> None:
     """Per pair, :func:`_support_bound` at the state of ``frames``."""
     for k in range(pair_i.shape[0]):
         out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,

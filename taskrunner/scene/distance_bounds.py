@@ -39,7 +39,7 @@ _SUPPORT_TOLERANCE = 0.05  # ... until the bound is within this fraction of the 
 # the helpers (``inline``, ``jit``): each compiled once and called, not inlined into every
 # caller (inlined, the first compilation took 38 % longer for no measurable speed).
 @jit
-def _forward(q, joints, geometries, frames):  # type: ignore[no-untyped-def]
+def _forward(q: np.ndarray, joints: np.ndarray, geometries: np.ndarray, frames: np.ndarray) -> None:
     """World frames of the joints and the geometries at state ``q`` (into ``frames``,
     columns ``_FR_*``: geometry ``g`` is row ``n_joints + g``)."""
     joint_frames(q, joints, frames)
@@ -49,7 +49,7 @@ def _forward(q, joints, geometries, frames):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _geometry_frame(g, geometries, frames, nj):  # type: ignore[no-untyped-def]
+def _geometry_frame(g: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> None:
     """Geometry ``g``'s world frame, bounding sphere and box centres (row ``nj + g`` of
     ``frames``) from its joint's frame."""
     jid = geometries[g].joint
@@ -66,14 +66,14 @@ def _geometry_frame(g, geometries, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _place(g, geometries, frames, nj, stamp):  # type: ignore[no-untyped-def]
+def _place(g: int, geometries: np.ndarray, frames: np.ndarray, nj: int, stamp: float) -> None:
     """Place geometry ``g`` at the state of the joint frames (compiled state ``stamp``)."""
     _geometry_frame(g, geometries, frames, nj)
     frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
 
 
 @jit
-def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyped-def]
+def _farthest_point_centre(points: np.ndarray, centre: np.ndarray, iterations: int) -> float:
     """Badoiu-Clarkson: move ``centre`` (in place) towards the farthest point, with
     shrinking steps; returns the distance from the final centre to the farthest point."""
     for i in range(iterations + 1):
@@ -92,7 +92,8 @@ def _farthest_point_centre(points, centre, iterations):  # type: ignore[no-untyp
 
 
 @inline
-def _sphere_to_box(frames, row, radius, box, geometries, nj):  # type: ignore[no-untyped-def]
+def _sphere_to_box(frames: np.ndarray, row: int, radius: float, box: int, geometries: np.ndarray,
+                   nj: int) -> float:
     """Distance from the bounding sphere of frames row ``row`` (radius ``radius``) to
     geometry ``box``'s bounding box (negative: may overlap)."""
     other = nj + box
@@ -109,7 +110,7 @@ def _sphere_to_box(frames, row, radius, box, geometries, nj):  # type: ignore[no
 
 
 @inline
-def _box_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
+def _box_gap(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> float:
     """The largest gap between the projections of geometries ``a``'s and ``b``'s bounding
     boxes on their six face normals: a lower bound on their distance where positive.
 
@@ -143,7 +144,7 @@ def _box_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _sphere_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
+def _sphere_gap(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> float:
     """The distance of geometries ``a``'s and ``b``'s bounding spheres (placed): the first
     of :func:`_lower_bound`'s bounds, which is at least this."""
     ra, rb = nj + a, nj + b
@@ -154,7 +155,7 @@ def _sphere_gap(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _lower_bound(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
+def _lower_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> float:
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
     bounding box and the boxes' separation along their face normals."""
@@ -179,7 +180,8 @@ def _lower_bound(a, b, geometries, frames, nj):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _support(g, dx, dy, dz, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
+def _support(g: int, dx: float, dy: float, dz: float, geometries: np.ndarray, frames: np.ndarray,
+             points: np.ndarray, nj: int) -> tuple[float, float, float]:
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
     row = nj + g
@@ -218,7 +220,8 @@ def _support(g, dx, dy, dz, geometries, frames, points, nj):  # type: ignore[no-
 
 
 @inline
-def _support_bound(a, b, geometries, frames, points, nj):  # type: ignore[no-untyped-def]
+def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
+                   nj: int) -> float:
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).
 

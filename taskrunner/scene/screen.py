@@ -281,7 +281,7 @@ class StateScreen:
 
 def _line_until_collision(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                           first: int, begin: int, steps: int, resolution: float,
-                          tail: tuple[object, ...], found: np.ndarray,
+                          tail: tuple[np.ndarray, ...], found: np.ndarray,
                           collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
                           to_pin: Callable[[np.ndarray], np.ndarray]) -> tuple[int, int]:
     """Run :func:`_first_uncleared_on_line` from row ``begin`` on, asking coal about the
@@ -371,7 +371,7 @@ def _compile_alone() -> None:
 
 
 @inline
-def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
+def _place_box(g: int, s: float, jid: int, nj: int, geo: np.ndarray, work: np.ndarray) -> None:
     """Geometry ``g``'s box in the world at the current state (``s``: its stamp)."""
     ng = (work.shape[0] - nj) // 2
     placed = work[nj + g, 3]
@@ -394,7 +394,8 @@ def _place_box(g, s, jid, nj, geo, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _sphere_box(cx, cy, cz, radius, g, nj, ng, geo, work):  # type: ignore[no-untyped-def]
+def _sphere_box(cx: float, cy: float, cz: float, radius: float, g: int, nj: int, ng: int,
+                geo: np.ndarray, work: np.ndarray) -> float:
     """Distance from a sphere to geometry ``g``'s (placed) box; negative: may overlap."""
     row = nj + ng + g
     dx = cx - work[row, ORIGIN]
@@ -410,7 +411,7 @@ def _sphere_box(cx, cy, cz, radius, g, nj, ng, geo, work):  # type: ignore[no-un
 
 
 @inline
-def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
+def _boxes_gap(a: int, b: int, nj: int, ng: int, geo: np.ndarray, work: np.ndarray) -> float:
     """The largest gap between the (placed) boxes' projections on their face normals."""
     ra, rb = nj + ng + a, nj + ng + b
     best = -np.inf
@@ -434,7 +435,7 @@ def _boxes_gap(a, b, nj, ng, geo, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
+def _reset(nj: int, ng: int, gi: np.ndarray, geo: np.ndarray, work: np.ndarray) -> None:
     """No geometry box placed yet; the fixed geometries' sphere centres placed."""
     for g in range(ng):
         work[nj + g, 3] = -1.0
@@ -444,7 +445,7 @@ def _reset(nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _inner_centre(g, jid, geo, work):  # type: ignore[no-untyped-def]
+def _inner_centre(g: int, jid: int, geo: np.ndarray, work: np.ndarray) -> tuple[float, float, float]:
     """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed)."""
     x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
     return (work[jid, ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
@@ -453,7 +454,8 @@ def _inner_centre(g, jid, geo, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
+def _proven(a: int, b: int, nj: int, ng: int, gi: np.ndarray, geo: np.ndarray,
+            work: np.ndarray) -> bool:
     """True when geometries ``a`` and ``b`` surely overlap (by more than
     :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
     box where that box is the geometry (a box shape; placed already)."""
@@ -477,7 +479,9 @@ def _proven(a, b, nj, ng, gi, geo, work):  # type: ignore[no-untyped-def]
 
 
 @inline
-def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  # type: ignore[no-untyped-def]
+def _uncleared(q: np.ndarray, stamp: float, joints: np.ndarray, gi: np.ndarray, geo: np.ndarray,
+               pairs: np.ndarray, reach2: np.ndarray, moving: np.ndarray, work: np.ndarray,
+               found: np.ndarray) -> int:
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
     since :func:`_reset`. Compiled once, called by both scans (inlined into each, the
@@ -520,8 +524,11 @@ def _uncleared(q, stamp, joints, gi, geo, pairs, reach2, moving, work, found):  
 
 
 @jit
-def _first_uncleared_on_line(rows, table, a, b, first, begin, steps, resolution, joints, gi,  # type: ignore[no-untyped-def]
-                             geo, pairs, reach2, moving, work, found):
+def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
+                             first: int, begin: int, steps: int, resolution: float,
+                             joints: np.ndarray, gi: np.ndarray, geo: np.ndarray,
+                             pairs: np.ndarray, reach2: np.ndarray, moving: np.ndarray,
+                             work: np.ndarray, found: np.ndarray) -> tuple[int, int, int]:
     """From row ``begin`` of ``rows`` on, the first state at which some pairs are not
     cleared: returns its row, how many pairs (their indices in ``found``; -1: a pair
     surely collides) and ``steps``; ``(-1, 0, steps)`` when every state clears every pair.
