@@ -122,7 +122,7 @@ _COPIES = {**{s.value: NodeStatus for s in NodeStatus},
            **{c.value: CollisionChoice for c in CollisionChoice if c is not CollisionChoice.AUTO}}
 # "auto" also names Ray's cluster discovery: a copy of the collision choice only where a
 # collision is in the same statement.
-_STRAGGLERS = {("export/timeline.py", "FAILURE")}
+_STRAGGLERS: set[tuple[str, str]] = set()
 """Copies in modules being rewritten elsewhere at the time of writing, to convert there."""
 
 

@@ -53,6 +53,7 @@ from taskrunner.export import rosmsg
 from taskrunner.export.frames import FrameTree, robot_description
 from taskrunner.export.physics import SentMotion, physics_path
 from taskrunner.export.rosmsg import LogLine, Marker, MessageType
+from taskrunner.kinds import NodeStatus
 from taskrunner.robot.cell import Cell
 from taskrunner.runtime.events import RunEvent
 from taskrunner.runtime.records import RunRecord
@@ -389,7 +390,7 @@ def _log_level(event: RunEvent) -> int:
     if event.kind == "run_finished":
         return {"succeeded": rosmsg.INFO, "failed": rosmsg.ERROR}.get(event.status or "",
                                                                        rosmsg.WARN)
-    if event.kind == "node_finished" and event.status == "FAILURE":
+    if event.kind == "node_finished" and event.status == NodeStatus.FAILURE:
         return rosmsg.WARN
     if event.kind == "node_started":
         return rosmsg.DEBUG
