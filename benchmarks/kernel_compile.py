@@ -1,9 +1,10 @@
 """First compilation of the compiled collision kernels, on a fresh numba cache.
 
 Each run is a fresh process with ``NUMBA_CACHE_DIR`` pointing at a new empty folder: it
-builds the servo arm's scene, then times (process CPU and wall) the path verifier's first
-verification (compiles its kernels) and the state screen's first scans (every scan
-kernel), one after the other in that process, as :func:`taskrunner.scene.screen.warm_kernels`
+builds the servo arm's scene, then times (process CPU and wall) the path verifier's build
+and first verification (the kernels both compile, and numba's one-time set-up of its
+compiler) and the state screen's first scans (every scan kernel), one after the other in
+that process, as :func:`taskrunner.scene.screen.warm_kernels`
 would without its second process. Then the same again with the cache filled (loads).
 
     python benchmarks/kernel_compile.py [--runs 1] [--json] [--coal]
