@@ -448,19 +448,35 @@ class _Walk:
         t0, t1 = self.timeline.times[k - 1], self.timeline.times[k]
         return float(t0 + s * (t1 - t0))
 
+    def times_of(self, pairs: np.ndarray, levels: np.ndarray) -> np.ndarray:
+        """:meth:`time_of` of each of ``pairs`` at its level in ``levels``, at once."""
+        column = self.bound[:, pairs]
+        times = self.timeline.times
+        k = np.count_nonzero(column < levels, axis=0)  # searchsorted, side="left"
+        upper = np.minimum(k, len(times) - 1)
+        lower = np.maximum(upper - 1, 0)
+        cols = np.arange(len(pairs))
+        lo, hi = column[lower, cols], column[upper, cols]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            s = np.where(hi <= lo, 0.0, (levels - lo) / (hi - lo))
+        out = times[lower] + s * (times[upper] - times[lower])
+        out = np.where(k == 0, times[0], out)
+        return np.where(levels > column[-1], math.inf, out)
+
     def measure(self, t: float, pairs: Sequence[int]) -> np.ndarray:
         q = self.timeline.state(t)
         out = self._out[:len(pairs)]
         self.checker.pair_distances(self.model.to_pin(q), [self.pairs[p][0] for p in pairs], out)
         self.queries += len(pairs)
         distances = out - _SLACK
-        for p, d in zip(pairs, distances):
-            if d < self.least:
+        if len(distances):
+            i = int(np.argmin(distances))
+            if distances[i] < self.least:
+                p = int(pairs[i])
                 _, a, b = self.pairs[p]
-                self.least, self.least_pair, self.least_time = (float(d + _SLACK),
-                                                                (self.names[a], self.names[b]),
-                                                                float(t))
-                self.least_index = int(p)
+                self.least, self.least_pair, self.least_time = (
+                    float(distances[i] + _SLACK), (self.names[a], self.names[b]), float(t))
+                self.least_index = p
         return distances.copy()
 
     def run(self) -> Conflict | None:
@@ -479,19 +495,26 @@ class _Walk:
             reach = due - last
             pick = np.flatnonzero((due <= now) | ((now - last) >= _EARLY * reach))
             distances = self.measure(now, pick.tolist())
-            reached = self.bound_at(now)
-            for p, d in zip(pick, distances):
-                steps[p] += 1
-                if d < clearance + _SLACK:  # at the clearance: no step would be safe
-                    return self.conflict(int(p), float(last[p]), now, float(d))
-                if steps[p] > self.options.max_steps:
-                    return self.conflict(int(p), float(last[p]), now, float(d), proven=False)
-                last[p] = now
-                level = float(reached[p]) + (d - clearance)
-                nxt = self.time_of(int(p), level)
-                due[p] = math.inf if nxt > t_end else max(nxt, now)
-                if due[p] == now:  # no progress possible: d is at the clearance
-                    return self.conflict(int(p), float(last[p]), now, float(d), proven=False)
+            steps[pick] += 1
+            # The next time each pair must be measured: where its motion bound has grown
+            # by its distance less the clearance (all picked pairs at once).
+            levels = self.bound_at(now)[pick] + (distances - clearance)
+            nxt = self.times_of(pick, levels)
+            following = np.where(nxt > t_end, math.inf, np.maximum(nxt, now))
+            touching = distances < clearance + _SLACK  # at the clearance: no step is safe
+            endless = steps[pick] > self.options.max_steps
+            stuck = following == now  # no progress possible: d is at the clearance
+            failed = np.flatnonzero(touching | endless | stuck)
+            if len(failed):
+                i = int(failed[0])
+                p, d = int(pick[i]), float(distances[i])
+                if touching[i]:
+                    return self.conflict(p, float(last[p]), now, d)
+                if endless[i]:
+                    return self.conflict(p, float(last[p]), now, d, proven=False)
+                return self.conflict(p, now, now, d, proven=False)
+            last[pick] = now
+            due[pick] = following
             if now >= t_end:
                 return None
 
