@@ -373,7 +373,8 @@ class MujocoBackend(BaseBackend):
         self._robot_of = {b: cell.link_robots[model.body(b).name] for b in self._robot_bodies
                           if model.body(b).name in cell.link_robots}
         data.qpos[self._qadr] = self._positions
-        if old is not None:  # a rebuild: the objects that were there stay where they were
+        if old is not None:  # a rebuild: the objects that were there stay where they were,
+            data.time = old.time  # and the clock goes on (physics time is the run's)
             for name, body in self._objects.items():
                 pose = self._object_poses.get(name)
                 if pose is not None:
@@ -390,7 +391,7 @@ class MujocoBackend(BaseBackend):
         self._object_poses: dict[str, Pose] = {}
         self._publish()
         self._starts: dict[int, float] = {}
-        self._next_sample = 0.0
+        self._next_sample = float(data.time)
         self._finish_pending: dict[int, float] = {}
         self.build_seconds = time.perf_counter() - started
 
