@@ -63,6 +63,7 @@ from taskrunner.backends.physics.mjcf import (
     weld_name,
 )
 from taskrunner.backends.physics.options import MujocoOptions, PhysicsSample
+from taskrunner.backends.physics.report import motion_entry, physics_report_of
 from taskrunner.errors import BackendError
 from taskrunner.types import JointState, Pose
 
@@ -74,8 +75,6 @@ _SATURATION = {"hinge": 0.05, "slide": 0.005}  # rad / m of error at which effor
 _FINGER_SATURATION = {"hinge": 0.2, "slide": 0.01}  # a finger: full grip this far off
 _STABLE_STEP = 0.3  # omega * dt at most: armature added where a servo would be too stiff
 _DEFAULT_EFFORT = 10.0  # N m or N, for a URDF joint without an effort limit
-_REPORT_SAMPLES = 500  # at most this many samples in one physics_report (thinned evenly)
-_REPORT_DECIMALS = 5  # 10 um, 1e-5 rad
 
 
 @dataclass
@@ -210,27 +209,8 @@ class MujocoBackend(BaseBackend):
             samples, grasps, motions = list(self._unreported), self._grasp_log, self._motion_log
             self._unreported.clear()
             self._grasp_log, self._motion_log = [], []
-        if not samples and not grasps and not motions:
-            return None
-        if len(samples) > _REPORT_SAMPLES:
-            step = len(samples) / _REPORT_SAMPLES
-            samples = [samples[int(k * step)] for k in range(_REPORT_SAMPLES - 1)] + [samples[-1]]
-        names = sorted({name for sample in samples for name in sample.objects})
-        r = _REPORT_DECIMALS
-
-        def pose(p: Pose | None) -> list[float] | None:
-            return None if p is None else [round(float(v), r) for v in (*p.xyz, *p.quat)]
-
-        return {
-            "period": self._options.history_period,
-            "joints": list(self._names),
-            "t": [round(sample.time, 4) for sample in samples],
-            "q": [[round(float(v), r) for v in sample.joints.positions] for sample in samples],
-            "objects": {name: [pose(sample.objects.get(name)) for sample in samples]
-                        for name in names},
-            "grasps": grasps,
-            "motions": motions,
-        }
+        return physics_report_of(samples, grasps, motions, self._options.history_period,
+                                 self._names)
 
     def object_poses(self) -> dict[str, Pose]:
         """World pose of every free object, as the physics has it now."""
@@ -239,78 +219,19 @@ class MujocoBackend(BaseBackend):
 
     def match_scene(self, closed: Mapping[str, float] | None = None) -> list[str]:
         """Make a world started afresh the bound scene's (a new process resuming a run):
-        every free object of the scene at rest where the scene has it, one the scene holds
-        where its gripper holds it (its attachment pose, at the joints now). With objects
-        held, the finger joints' targets become ``closed`` (rad or m: the grippers' closed
-        poses) and the fingers close on them for ``settle`` s, the held objects' weight
-        compensated; then ``settle`` s with their weight, and each grip is checked as a
-        motion checks it (touched by a hand, within ``slip_distance`` and ``slip_angle``
-        of where it was put).
+        objects where the scene has them, the held ones gripped again (``closed``: the
+        finger joints' closed poses, rad or m) and checked; see
+        :func:`~taskrunner.backends.physics.matching.match_scene`.
 
         Returns:
             What was done, one line per object held (also in :attr:`notes`).
 
         Raises:
-            BackendError: a motion runs, ``closed`` names a joint that is not a finger,
-                or a held object is not held after (with the reason).
+            BackendError: the scene cannot be matched (with the reason).
         """
-        closed = closed or {}
-        others = sorted(set(closed) - {n for n in self._names if self._finger[self._index[n]]})
-        if others:
-            raise BackendError(f"match_scene: {', '.join(map(repr, others))} is no finger "
-                               "joint of the cell")
-        with self._lock:
-            if self._executions:
-                raise BackendError("match_scene: a motion runs; match the scene between motions")
-            scene, model, data = self._scene, self._model, self._data
-            poses = {o.name: scene.object_pose(o.name) for o in (scene.objects if scene else ())
-                     if o.name in self._objects}
-            held = [o.name for o in (scene.objects if scene else ())
-                    if o.attached_to is not None and o.name in self._objects]
-            self._restore_objects(poses)
-            for name in poses:  # at rest where it is put
-                dof = model.jnt_dofadr[model.body_jntadr[self._objects[name]]]
-                data.qvel[dof:dof + 6] = 0.0
-            said = [f"the simulated world's {len(poses)} objects put where the scene has them"]
-            if not held:
-                self.notes.extend(said)
-                return said
-            for name, value in closed.items():
-                self._targets[self._index[name]] = value
-            self._held.clear()  # held where it was put: the slip checks' reference
-            self._touched -= set(held)
-            self._bind_held()
-            self._apply_welds()
-            bodies = [self._objects[name] for name in held]
-            chunks = max(1, math.ceil(self._options.settle / (_CHUNK * model.opt.timestep)))
-            weight = model.body_mass[bodies, None] * model.opt.gravity[None, :]  # N
-            try:
-                data.xfrc_applied[bodies, :3] = -weight  # at their centres of mass
-                for k in range(2 * chunks):  # closing on them weightless, then holding them
-                    if k == chunks:
-                        data.xfrc_applied[bodies, :3] = 0.0
-                    self._step_chunk([])
-                    self._targets[:] = self._chunk_targets
-            finally:
-                data.xfrc_applied[bodies, :3] = 0.0
-            self._publish()
-            failure = self.failures.pop(0) if self.failures else self._slip()
-            loose = [] if failure is not None else [
-                n for n in held if n not in self._touched and self._held[n].weld is None]
-            if loose:  # a weld holds without a touch; fingers do not
-                failure = (f"object {loose[0]!r}, put back where the scene holds it, is not "
-                           "touched by the hand after its fingers closed")
-            if failure is not None:
-                raise BackendError(failure)
-            seconds = 2 * chunks * _CHUNK * model.opt.timestep
-            for name in held:
-                gap = float(np.linalg.norm(np.subtract(self._object_poses[name].xyz,
-                                                       poses[name].xyz)))
-                said.append(f"{name!r} put back in the grip of {self._held[name].link!r} and "
-                            f"held: {1e3 * gap:.1f} mm from where it was put after "
-                            f"{seconds:.2f} s of physics")
-            self.notes.extend(said)
-            return said
+        from taskrunner.backends.physics.matching import match_scene
+
+        return match_scene(self, closed)
 
     def history(self) -> list[PhysicsSample]:
         """Joints and free objects every ``history_period`` s of physics while anything
@@ -789,14 +710,8 @@ class MujocoBackend(BaseBackend):
         """Log the motion's physics start and settle for :meth:`physics_report`."""
         start = self._starts.get(id(execution))
         if start is not None and not execution.finished:
-            now, end = float(self._data.time), start + execution.duration
-            r = _REPORT_DECIMALS
-            self._motion_log.append({
-                "joints": list(execution.trajectory.names),
-                "first": [round(float(v), r) for v in execution.trajectory.positions[0]],
-                "start": round(start, 6), "duration": round(execution.duration, 6),
-                "settle": round(now - end, 6) if now >= end - 1e-9 else None,
-                "status": status})
+            self._motion_log.append(motion_entry(execution, start, float(self._data.time),
+                                                 status))
         super()._finish(execution, status, message, error, data)
 
     def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
