@@ -1,4 +1,5 @@
-"""Seeded MotionBenchMaker-style Panda problem sets, written as MoveIt YAML files.
+"""Seeded MotionBenchMaker-style problem sets, written as MoveIt YAML files, for the Panda
+and for any robot given its SRDF group, ready state and placement (:class:`RobotSpec`).
 
 Each problem is a ``moveit_msgs/PlanningScene`` (``NNNN_scene.yaml``: the objects, the
 start state, the allowed-collision matrix) and a ``moveit_msgs/MotionPlanRequest``
@@ -7,7 +8,18 @@ same goal as a pose of the hand's TCP), in the layout MotionBenchMaker writes (R
 field names, the whole message at the top level), so that any tool reading those files
 reads these, and ``run-task plan panda --scene … --request …`` plans them.
 
-Classes (world frame = the Panda's base, z up, m), after MotionBenchMaker's:
+Robots (``--robot``): ``panda`` (taskrunner's Panda, group ``arm``), ``ur5_robotiq`` (a UR5
+with a Robotiq 2F-85 of collision meshes, group ``manipulator``, on the table as the Panda)
+and ``tiago`` (PAL's TIAGo without its hand, group ``arm_torso``: the torso lift and the
+arm; a mobile base standing on the floor in front of the table), the last two from
+``benchmarks/robots`` (see its README). Both arms reach as far as the Panda's (0.85-0.87 m
+against 0.855 m), so the scenes are placed, not scaled: each robot's :class:`RobotSpec`
+puts the scene's origin (the point where the Panda's base stands) in the robot's frame,
+drops what would stand inside its base (the pedestal under a mobile base) and starts the
+table in front of a base that is not mounted on it. The Panda's files are unchanged by
+this (byte for byte, for the same seed).
+
+Classes (scene frame = the Panda's base, z up, m), after MotionBenchMaker's:
 
 * ``table_pick``: objects on a table; ready → hand above a random object, pointing down.
 * ``table_under_pick``: the Panda on a pedestal; ready → hand under a table top.
@@ -26,7 +38,8 @@ only on the seed, the class and ``i``.
 
 Usage::
 
-    python benchmarks/make_problems.py [--count 100] [--seed 0] [--out benchmarks/problems]
+    python benchmarks/make_problems.py [--robot panda] [--count 100] [--seed 0]
+                                       [--out benchmarks/problems]
                                        [--classes table_pick,cage] [--check]
                                        [--plan N [--pose]]   # then plan N per class
 """
@@ -39,7 +52,8 @@ import math
 import re
 import sys
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -67,6 +81,57 @@ SHIFT, YAW = 0.04, 0.1  # m, rad: how far each problem's scene moves
 
 Placed = tuple[str, Shape, Pose]
 Target = Callable[[np.random.Generator], Pose]
+ROBOT_FILES = BENCH / "robots"
+
+
+@dataclass(frozen=True)
+class RobotSpec:
+    """How a robot meets the problem classes.
+
+    Attributes:
+        robot_dir: the robot's folder (``robot.yaml``).
+        group: the SRDF group planned for (its tip link is the tool point: z along the
+            approach).
+        ready: the start state's joints (rad, m), or the name of an SRDF group state.
+        root_link: the URDF's root link (the scene file's fixed frame).
+        model_name: ``robot_model_name`` of the scene files.
+        mount_link: the link standing on the table or pedestal (allowed to touch it), or
+            None for a robot not mounted on them.
+        origin: the scene frame's origin in the robot's root frame (m).
+        table_near_x: where the table starts in the scene frame (m; None: as the Panda's).
+        drop: scene objects left out (they would stand inside the robot's base).
+    """
+
+    robot_dir: Path
+    group: str
+    ready: Mapping[str, float] | str
+    root_link: str
+    model_name: str
+    mount_link: str | None
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    table_near_x: float | None = None
+    drop: frozenset[str] = field(default_factory=frozenset)
+
+    def ready_state(self, robot: RobotModel) -> Mapping[str, float]:
+        if isinstance(self.ready, str):
+            state = robot.named_state(self.group, self.ready)
+            return {n: float(v) for n, v in zip(state.names, state.positions)}
+        return self.ready
+
+
+ROBOTS: dict[str, RobotSpec] = {
+    "panda": RobotSpec(DATA_ROOT / "robots" / "panda", GROUP, ps.READY, "panda_link0", "panda",
+                       "panda_link0"),
+    # On the table as the Panda: its base link stands on the table top.
+    "ur5_robotiq": RobotSpec(ROBOT_FILES / "ur5_robotiq", "manipulator", "ready", "world",
+                             "ur5_robotiq85", "base_link"),
+    # On the floor: the table top 0.55 m up (its shoulder 0.33-0.68 m above it over the
+    # torso's travel, the Panda's 0.33 m), the scene 0.1 m forward, the table starting
+    # 0.3 m in front of the base's centre (the base's radius is 0.27 m).
+    "tiago": RobotSpec(ROBOT_FILES / "tiago", "arm_torso", "ready", "base_footprint", "tiago",
+                       None, origin=(0.1, 0.0, 0.55), table_near_x=0.2,
+                       drop=frozenset({"pedestal"})),
+}
 
 
 def _placed(objects: Sequence[ps.Placed]) -> list[Placed]:
@@ -98,11 +163,22 @@ def _in_compartment(boards: Sequence[float], usable: int, x: tuple[float, float]
     return target
 
 
-def class_layout(name: str) -> tuple[list[Placed], list[tuple[str, str]], Target | None, Target]:
-    """Objects, allowed pairs, start target (None: ready) and goal target of a class."""
+def class_layout(name: str, spec: RobotSpec | None = None
+                 ) -> tuple[list[Placed], list[tuple[str, str]], Target | None, Target]:
+    """Objects, allowed pairs, start target (None: ready) and goal target of a class, in
+    the scene frame, for ``spec``'s robot (default: the Panda)."""
+    spec = spec or ROBOTS["panda"]
     ready = None
     table = _placed([ps.TABLE])
-    base_pair = [("panda_link0", "table")]
+    if spec.table_near_x is not None:
+        _, top, (x, y, z) = ps.TABLE
+        assert isinstance(top, Box)
+        size_x, size_y, size_z = top.size
+        far = x + size_x / 2
+        table = [("table", Box((far - spec.table_near_x, size_y, size_z)),
+                  Pose(((far + spec.table_near_x) / 2, y, z)))]
+    mount = spec.mount_link
+    base_pair = [(mount, "table")] if mount is not None else []
     if name == "table_pick":
         return table + _placed(ps.PICK_OBJECTS), base_pair, ready, ps._grasp_target(ps.PICK_OBJECTS)
     if name == "table_under_pick":
@@ -116,7 +192,8 @@ def class_layout(name: str) -> tuple[list[Placed], list[tuple[str, str]], Target
             objects.append((f"leg_{i}", Box((0.04, 0.04, 0.70)), (x, y, top_z - 0.015 - 0.35)))
         goal = ps._pose_target((0.48, -0.25, -0.25), (0.62, 0.25, -0.05), ps.FORWARD, tilt=0.3,
                                spin=math.pi)
-        return _placed(objects), [("panda_link0", "pedestal")], ready, goal
+        objects = [o for o in objects if o[0] not in spec.drop]
+        return _placed(objects), ([(mount, "pedestal")] if mount is not None else []), ready, goal
     if name == "bookshelf_small":
         boards = (0.02, 0.31, 0.61)
         return (table + _shelf(0.3, 0.6, boards, 0.02), base_pair, ready,
@@ -162,6 +239,11 @@ def _moved(pose: Pose, shift: pin.SE3) -> Pose:
     return Pose.from_se3(shift * pose.se3)
 
 
+def _in_frame(target: Target, frame: pin.SE3) -> Target:
+    """``target``'s poses, given in ``frame``, in the frame ``frame`` is given in."""
+    return lambda rng: _moved(target(rng), frame)
+
+
 def _shift(rng: np.random.Generator, about: tuple[float, float]) -> pin.SE3:
     """A yaw about the vertical through ``about`` and a shift in x, y."""
     yaw = rng.uniform(-YAW, YAW)
@@ -171,11 +253,21 @@ def _shift(rng: np.random.Generator, about: tuple[float, float]) -> pin.SE3:
     return pin.SE3(rotation, centre - rotation @ centre + offset)
 
 
-def make_problem(base: Scene, sampler: ps._StateSampler, name: str, rng: np.random.Generator
+def make_problem(base: Scene, sampler: ps._StateSampler, name: str, rng: np.random.Generator,
+                 spec: RobotSpec | None = None
                  ) -> tuple[list[Placed], list[tuple[str, str]], np.ndarray, np.ndarray, Pose]:
-    """One problem: its objects (moved), allowed pairs, start, goal state and goal pose."""
-    objects, allowed, start_target, goal_target = class_layout(name)
+    """One problem: its objects (moved), allowed pairs, start, goal state and goal pose,
+    in the robot's root frame."""
+    spec = spec or ROBOTS["panda"]
+    objects, allowed, start_target, goal_target = class_layout(name, spec)
     shift = _shift(rng, (0.6, 0.0))
+    if spec.origin != (0.0, 0.0, 0.0):
+        # The scene frame in the robot's: the table and the floor are placed by it too.
+        origin = pin.SE3(np.eye(3), np.array(spec.origin))
+        objects = [(n, s, _moved(p, origin)) for n, s, p in objects]
+        shift = origin * shift * origin.inverse()
+        start_target = None if start_target is None else _in_frame(start_target, origin)
+        goal_target = _in_frame(goal_target, origin)
     # The table and the pedestal carry the robot: they do not move with the scene.
     fixed = {"table", "pedestal", "floor"}
     moved = [(n, s, p if n in fixed else _moved(p, shift)) for n, s, p in objects]
@@ -224,13 +316,15 @@ def _joint_state(model: RobotModel, q: np.ndarray) -> dict[str, Any]:
 
 
 def scene_message(model: RobotModel, name: str, objects: list[Placed],
-                  allowed: list[tuple[str, str]], start: np.ndarray) -> dict[str, Any]:
+                  allowed: list[tuple[str, str]], start: np.ndarray,
+                  spec: RobotSpec | None = None) -> dict[str, Any]:
+    spec = spec or ROBOTS["panda"]
     entries = sorted({n for pair in allowed for n in pair})
     matrix = [{"enabled": [frozenset((a, b)) in {frozenset(p) for p in allowed} for b in entries]}
               for a in entries]
     return {
         "name": name,
-        "fixed_frame_transforms": [{"header": _header(), "child_frame_id": "panda_link0",
+        "fixed_frame_transforms": [{"header": _header(), "child_frame_id": spec.root_link,
                                     "transform": {"translation": {"x": 0.0, "y": 0.0, "z": 0.0},
                                                   "rotation": {"x": 0.0, "y": 0.0, "z": 0.0,
                                                                "w": 1.0}}}],
@@ -238,7 +332,7 @@ def scene_message(model: RobotModel, name: str, objects: list[Placed],
                         "multi_dof_joint_state": {"header": _header(), "joint_names": [],
                                                   "transforms": [], "twist": [], "wrench": []},
                         "attached_collision_objects": [], "is_diff": False},
-        "robot_model_name": "panda",
+        "robot_model_name": spec.model_name,
         "world": {"collision_objects": [
             {"header": _header(), "id": n, "type": {"key": "", "db": ""},
              "primitives": [_primitive(s)], "primitive_poses": [_pose_msg(p)],
@@ -253,8 +347,8 @@ def scene_message(model: RobotModel, name: str, objects: list[Placed],
 
 
 def request_message(model: RobotModel, start: np.ndarray, goal: np.ndarray,
-                    pose: Pose | None, tip: str) -> dict[str, Any]:
-    group = model.group(GROUP)
+                    pose: Pose | None, tip: str, group_name: str = GROUP) -> dict[str, Any]:
+    group = model.group(group_name)
     empty = {"name": "", "joint_constraints": [], "position_constraints": [],
              "orientation_constraints": [], "visibility_constraints": []}
     if pose is None:
@@ -286,7 +380,7 @@ def request_message(model: RobotModel, start: np.ndarray, goal: np.ndarray,
         "reference_trajectories": [],
         "pipeline_id": "ompl",
         "planner_id": "RRTConnect",
-        "group_name": GROUP,
+        "group_name": group_name,
         "num_planning_attempts": 1,
         "allowed_planning_time": PLANNING_TIME,
         "max_velocity_scaling_factor": 1.0,
@@ -392,16 +486,28 @@ def plan_problems(model: RobotModel, folder: Path, count: int, pose: bool = Fals
             "failures": failures}
 
 
+def robot_spec(name: str) -> RobotSpec:
+    """The :class:`RobotSpec` of a robot of ``ROBOTS``."""
+    if name not in ROBOTS:
+        raise SystemExit(f"error: unknown robot {name!r}; known: {', '.join(ROBOTS)}")
+    return ROBOTS[name]
+
+
 def generate(out: Path, count: int, seed: int = 0, classes: Sequence[str] = CLASSES,
-             check: bool = False) -> dict[str, Any]:
-    """Write ``count`` problems per class under ``out/<class>/``; returns a summary."""
-    robot = load_robot(DATA_ROOT / "robots" / "panda")
+             check: bool = False, robot_name: str = "panda") -> dict[str, Any]:
+    """Write ``count`` problems per class under ``out/<class>/`` for a robot of
+    ``ROBOTS``; returns a summary."""
+    spec = robot_spec(robot_name)
+    robot = load_robot(spec.robot_dir)
     base = Scene(robot)
-    base.set_state(ps.READY)
-    sampler = ps._StateSampler(base, GROUP)
-    tip = robot.group(GROUP).tip_link
+    base.set_state(spec.ready_state(robot))
+    if not ps.is_valid_state(base, base.state):
+        raise SystemExit(f"error: {robot_name}'s ready state collides or is out of limits "
+                         f"({base.collisions(base.state)[:2]})")
+    sampler = ps._StateSampler(base, spec.group)
+    tip = robot.group(spec.group).tip_link
     assert tip is not None
-    summary: dict[str, Any] = {"seed": seed, "count": count, "classes": {}}
+    summary: dict[str, Any] = {"robot": robot_name, "seed": seed, "count": count, "classes": {}}
     for name in classes:
         if name not in CLASSES:
             raise SystemExit(f"error: unknown class {name!r}; known: {', '.join(CLASSES)}")
@@ -410,12 +516,14 @@ def generate(out: Path, count: int, seed: int = 0, classes: Sequence[str] = CLAS
         folder.mkdir(parents=True, exist_ok=True)
         for i in range(count):
             rng = np.random.default_rng([seed, CLASSES.index(name), i])
-            objects, allowed, start, goal, pose = make_problem(base, sampler, name, rng)
+            objects, allowed, start, goal, pose = make_problem(base, sampler, name, rng, spec)
             stem = f"{i + 1:04d}"
-            _dump(scene_message(robot, f"{name}_{stem}", objects, allowed, start),
+            _dump(scene_message(robot, f"{name}_{stem}", objects, allowed, start, spec),
                   folder / f"{stem}_scene.yaml")
-            _dump(request_message(robot, start, goal, None, tip), folder / f"{stem}_request.yaml")
-            _dump(request_message(robot, start, goal, pose, tip), folder / f"{stem}_pose_request.yaml")
+            _dump(request_message(robot, start, goal, None, tip, spec.group),
+                  folder / f"{stem}_request.yaml")
+            _dump(request_message(robot, start, goal, pose, tip, spec.group),
+                  folder / f"{stem}_pose_request.yaml")
             if check:
                 check_problem(robot, folder, stem)
         summary["classes"][name] = {"problems": count,
@@ -425,6 +533,7 @@ def generate(out: Path, count: int, seed: int = 0, classes: Sequence[str] = CLAS
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--robot", default="panda", help=f"robot ({', '.join(ROBOTS)}; panda)")
     parser.add_argument("--count", type=int, default=100, help="problems per class (100)")
     parser.add_argument("--seed", type=int, default=0, help="seed (0)")
     parser.add_argument("--out", type=Path, default=BENCH / "problems",
@@ -439,10 +548,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--pose", action="store_true", help="with --plan: the pose-goal requests")
     args = parser.parse_args(argv)
     started = time.perf_counter()
-    summary = generate(args.out, args.count, args.seed, args.classes.split(","), args.check)
+    summary = generate(args.out, args.count, args.seed, args.classes.split(","), args.check,
+                       args.robot)
     summary["seconds"] = round(time.perf_counter() - started, 2)
     if args.plan:
-        robot = load_robot(DATA_ROOT / "robots" / "panda")
+        robot = load_robot(robot_spec(args.robot).robot_dir)
         for name in summary["classes"]:
             summary["classes"][name]["plan"] = plan_problems(
                 robot, args.out / name, min(args.plan, args.count), args.pose)
