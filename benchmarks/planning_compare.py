@@ -104,6 +104,21 @@ ROBOPLAN_MAX_NODES = 1_000_000
 PANDA_SRDF = DATA_ROOT / "robots" / "panda" / "config" / "panda.srdf"
 
 
+def robot_files(robot: str) -> tuple[Path, list[Path], Path, make_problems.RobotSpec]:
+    """A robot of ``make_problems.ROBOTS``: its plain URDF, the folders its ``package://``
+    paths live in, its SRDF and its spec (the Panda: example-robot-data's URDF, our SRDF)."""
+    spec = make_problems.robot_spec(robot)
+    if robot == "panda":
+        urdf, root = panda_urdf()
+        return urdf, [root], PANDA_SRDF, spec
+    share = example_robot_data_dir()
+    if share is None:
+        raise SystemExit("error: the example-robot-data wheel is not installed")
+    name = spec.robot_dir.name
+    return (spec.robot_dir / f"{name}.urdf", [share.parent, spec.robot_dir.parent],
+            spec.robot_dir / f"{name}.srdf", spec)
+
+
 def panda_urdf() -> tuple[Path, Path]:
     """example-robot-data's Panda URDF and the folder its ``package://`` paths live in."""
     share = example_robot_data_dir()
@@ -193,6 +208,13 @@ def _coal_shape(kind: str, dims: tuple[float, ...]) -> coal.CollisionGeometry:
 
 
 # ------------------------------------------------------------------- validator
+_PRISMATIC = ("JointModelPX", "JointModelPY", "JointModelPZ", "JointModelPrismaticUnaligned")
+
+
+def _prismatic(model: pin.Model, joint: int) -> bool:
+    return str(model.joints[joint].shortname()) in _PRISMATIC
+
+
 @dataclass
 class Verdict:
     valid: bool
@@ -206,14 +228,15 @@ class ExactValidator:
     """Checks joint paths against exact meshes at ≤ 0.5 mm of link motion between checks
     (see the module docstring)."""
 
-    def __init__(self, urdf: Path, package_root: Path, srdf: Path,
+    def __init__(self, urdf: Path, package_root: Path | Sequence[Path], srdf: Path,
                  resolution: float = RESOLUTION) -> None:
         self.resolution = resolution
         self.model = pin.buildModelFromUrdf(str(urdf))
+        roots = [package_root] if isinstance(package_root, Path) else list(package_root)
         with warnings.catch_warnings():  # pinocchio's note on how package dirs are passed
             warnings.simplefilter("ignore", UserWarning)
             self.geom = pin.buildGeomFromUrdf(self.model, str(urdf), pin.COLLISION,
-                                              [str(package_root)])
+                                              [str(r) for r in roots])
         for g in self.geom.geometryObjects:
             if isinstance(g.geometry, coal.ConvexBase) or "Convex" in type(g.geometry).__name__:
                 raise RuntimeError(f"{g.name}: loaded as a convex hull, not the mesh")
@@ -238,7 +261,9 @@ class ExactValidator:
 
     def _lever_arms(self) -> np.ndarray:
         """``r[g, j]``: a bound on the distance from joint j's axis to any point of
-        geometry g, over every configuration (0 where g is not downstream of j)."""
+        geometry g, over every configuration (0 where g is not downstream of j); for a
+        prismatic joint, 1 (every point moves as far as the joint), its travel added to
+        the reach of the joints above it."""
         model = self.model
         r = np.zeros((len(self.geom.geometryObjects), model.njoints))
         for gi, g in enumerate(self.geom.geometryObjects):
@@ -247,7 +272,12 @@ class ExactValidator:
             reach = float(np.max(np.linalg.norm(local, axis=1)))  # from its joint's origin
             joint = g.parentJoint
             while joint > 0:
-                r[gi, joint] = reach
+                if _prismatic(model, joint):
+                    r[gi, joint] = 1.0
+                    i = model.joints[joint].idx_q
+                    reach += max(abs(model.lowerPositionLimit[i]), abs(model.upperPositionLimit[i]))
+                else:
+                    r[gi, joint] = reach
                 reach += float(np.linalg.norm(model.jointPlacements[joint].translation))
                 joint = model.parents[joint]
         return r
@@ -282,8 +312,9 @@ class ExactValidator:
                 return Verdict(False, f"unknown joint {name!r}")
             j = model.getJointId(name)
             if model.joints[j].nq != 1 or model.joints[j].shortname() not in (
-                    "JointModelRZ", "JointModelRX", "JointModelRY", "JointModelRevoluteUnaligned"):
-                return Verdict(False, f"joint {name!r} is not a revolute joint")
+                    "JointModelRZ", "JointModelRX", "JointModelRY", "JointModelRevoluteUnaligned",
+                    *_PRISMATIC):
+                return Verdict(False, f"joint {name!r} is not a revolute or prismatic joint")
             cols.append(j)
         idx_q = np.array([model.joints[j].idx_q for j in cols])
         q0 = self.full_state(start)
@@ -377,18 +408,22 @@ class ExactValidator:
 class Roboplan:
     """roboplan's RRT-Connect on a problem (see the module docstring)."""
 
-    def __init__(self, urdf: Path, package_root: Path, srdf: Path, cap: float,
-                 max_nodes: int = ROBOPLAN_MAX_NODES, shortcut: bool = False) -> None:
+    def __init__(self, urdf: Path, package_root: Path | Sequence[Path], srdf: Path, cap: float,
+                 max_nodes: int = ROBOPLAN_MAX_NODES, shortcut: bool = False,
+                 group: str = GROUP) -> None:
         if rp_core is None:
             raise RuntimeError("roboplan is not installed (pip install 'taskrunner[bench]')")
-        self.urdf, self.package_root = urdf, package_root
+        self.urdf, self.group = urdf, group
+        self.package_roots = ([package_root] if isinstance(package_root, Path)
+                              else list(package_root))
         self.srdf_xml = srdf.read_text()
         self.links = sorted({str(link.get("name")) for link in ET.parse(urdf).getroot().iter("link")})
         self.cap, self.max_nodes, self.shortcut = cap, max_nodes, shortcut
         self.version = rp_core.__version__
 
     def scene(self, problem: SceneFile, start: dict[str, float]) -> Any:
-        description = rp_core.loadUrdfSceneDescription(str(self.urdf), [str(self.package_root)])
+        description = rp_core.loadUrdfSceneDescription(str(self.urdf),
+                                                       [str(r) for r in self.package_roots])
         scene = rp_core.Scene(f"problem_{problem.path.stem}", description)
         scene.importSrdf(self.srdf_xml)
         scene.allowAdjacentLinkCollisions()
@@ -417,18 +452,19 @@ class Roboplan:
     def plan(self, scene: Any, start: dict[str, float], goal: dict[str, float], seed: int
              ) -> tuple[bool, float, list[str], np.ndarray | None, str]:
         options = rp_rrt.RRTOptions()
-        options.group_name = GROUP
+        options.group_name = self.group
         options.rrt_connect = True
         options.max_planning_time = self.cap
         options.max_nodes = self.max_nodes
         planner = rp_rrt.RRT(scene, options)
         planner.setRngSeed(seed)
-        names = list(scene.getJointGroupInfo(GROUP).joint_names)
+        names = list(scene.getJointGroupInfo(self.group).joint_names)
         q_start = rp_core.JointConfiguration(names, np.array([start[n] for n in names]))
         q_goal = rp_core.JointConfiguration(names, np.array([goal[n] for n in names]))
         shortcutter = None
         if self.shortcut:
-            shortcutter = rp_core.PathShortcutter(scene, rp_core.PathShortcuttingOptions(GROUP))
+            shortcutter = rp_core.PathShortcutter(scene,
+                                                  rp_core.PathShortcuttingOptions(self.group))
         t0 = time.perf_counter()
         try:
             path = planner.plan(q_start, q_goal)
@@ -520,7 +556,7 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
         roboplan: bool = True, roboplan_shortcut: bool = False,
         roboplan_max_nodes: int = ROBOPLAN_MAX_NODES, progress: bool = False,
         cold_scene: bool = False,
-        problem_dir: Path | None = None) -> dict[str, Any]:
+        problem_dir: Path | None = None, robot: str = "panda") -> dict[str, Any]:
     """Plan ``per_class`` problems of each class with both planners; see the docstring.
     ``roboplan=False`` runs our side only (no ratios). Without ``problems``, the problems
     are generated into ``problem_dir`` (default ``benchmarks/problems``)."""
@@ -530,13 +566,13 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
     folder = problems
     if folder is None:
         folder = problem_dir or BENCH / "problems"
-        make_problems.generate(folder, per_class, problem_seed, classes)
-    urdf, package_root = panda_urdf()
-    model = load_robot(DATA_ROOT / "robots" / "panda")
+        make_problems.generate(folder, per_class, problem_seed, classes, robot_name=robot)
+    urdf, package_roots, srdf, spec = robot_files(robot)
+    model = load_robot(spec.robot_dir)
     base = Scene(model)
-    validator = ExactValidator(urdf, package_root, PANDA_SRDF)
-    other = Roboplan(urdf, package_root, PANDA_SRDF, cap, roboplan_max_nodes,
-                     roboplan_shortcut) if roboplan else None
+    validator = ExactValidator(urdf, package_roots, srdf)
+    other = Roboplan(urdf, package_roots, srdf, cap, roboplan_max_nodes,
+                     roboplan_shortcut, spec.group) if roboplan else None
     sides = ["ours", "roboplan"] if other is not None else ["ours"]
     started = time.time()
     load_before = _load()
@@ -587,7 +623,7 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
         if progress:
             print(file=sys.stderr)
     result: dict[str, Any] = {
-        "benchmark": "planning_compare",
+        "benchmark": "planning_compare", "robot": robot,
         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(started)),
         "machine": f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, "
                    f"Python {platform.python_version()}",
@@ -653,6 +689,8 @@ def table(result: dict[str, Any]) -> list[str]:
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--robot", default="panda",
+                        help=f"robot of make_problems.py ({', '.join(make_problems.ROBOTS)}; panda)")
     parser.add_argument("--per-class", type=int, default=100, help="problems per class (100)")
     parser.add_argument("--classes", default=",".join(CLASSES),
                         help=f"comma-separated classes ({','.join(CLASSES)})")
@@ -681,8 +719,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     result = run(args.per_class, [c for c in args.classes.split(",") if c], args.seed,
                  args.problem_seed, args.problems, args.cap,
                  not args.ours_only, args.roboplan_shortcut, args.roboplan_max_nodes,
-                 progress=sys.stderr.isatty(), cold_scene=args.cold_scene)
-    print(f"{result['date']}; {result['machine']}; load {result['load_before']} -> "
+                 progress=sys.stderr.isatty(), cold_scene=args.cold_scene, robot=args.robot)
+    print(f"{result['robot']}; {result['date']}; {result['machine']}; load {result['load_before']} -> "
           f"{result['load_after']}; {result['per_class']} problems per class, seed "
           f"{result['seed']}, cap {result['cap_s']} s; {result['seconds']} s")
     if result["roboplan"] is not None:
