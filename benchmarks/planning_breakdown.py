@@ -4,6 +4,7 @@ gripper; and whether VAMP can run beside it here.
 
     python benchmarks/planning_breakdown.py [--robot DIR] [--problem DIR/STEM] [--seeds 10]
     python benchmarks/planning_breakdown.py --panda-sets [--per-class 10] [--problems DIR]
+    python benchmarks/planning_breakdown.py --sets ROBOT [--per-class 10] [--problems DIR]
 
 Default problem: MotionBenchMaker's UR5 table scene and request as kept in
 ``tests/fixtures/motionbenchmaker`` (``ur5_table_scene.yaml`` / ``ur5_table_request.yaml``),
@@ -15,7 +16,10 @@ of a candidate path: the returned path and the shortcut candidates).
 
 ``--panda-sets``: the seeded Panda problems of ``make_problems.py`` instead (as
 ``planning_compare.py`` plans them: regenerated into ``benchmarks/problems`` unless
-``--problems DIR``), each planned once with its problem's seed.
+``--problems DIR``), each planned once with its problem's seed. ``--sets ROBOT``: the same
+for another robot of ``make_problems.py`` (``ur5_robotiq``: the UR5 with the Robotiq
+2F-85's meshes; ``tiago``), regenerated into ``benchmarks/problems_ROBOT`` unless
+``--problems DIR``.
 
 VAMP (``vamp-planner``) is reported as importable or not; it has no model of this UR5
 (VAMP's own UR5 is compiled into it), so it is not planned here.
@@ -42,7 +46,6 @@ if str(BENCH.parent) not in sys.path:
 from taskrunner.errors import PlanningError
 from taskrunner.moveit import load_motion_plan_request, load_planning_scene
 from taskrunner.planning import MotionPlanner
-from taskrunner.resources import DATA_ROOT
 from taskrunner.robot import RobotModel, load_robot
 from taskrunner.scene import Scene
 
@@ -106,14 +109,14 @@ def run(robot_dir: Path, problem: Path, seeds: int) -> dict[str, Any]:
                                          "seeds": seeds}
 
 
-def run_sets(per_class: int, problems: Path | None) -> dict[str, Any]:
+def run_sets(per_class: int, problems: Path | None, robot: str = "panda") -> dict[str, Any]:
     import make_problems
 
     folder = problems
     if folder is None:
-        folder = BENCH / "problems"
-        make_problems.generate(folder, per_class, 0, make_problems.CLASSES)
-    model = load_robot(DATA_ROOT / "robots" / "panda")
+        folder = BENCH / ("problems" if robot == "panda" else f"problems_{robot}")
+        make_problems.generate(folder, per_class, 0, make_problems.CLASSES, robot_name=robot)
+    model = load_robot(make_problems.robot_spec(robot).robot_dir)
     base = Scene(model)
     plan_once(model, base, folder / make_problems.CLASSES[0] / "0001", 0)  # warm-up
     out: dict[str, Any] = _header() | {"classes": {}}
@@ -121,7 +124,7 @@ def run_sets(per_class: int, problems: Path | None) -> dict[str, Any]:
         rows = [plan_once(model, base, folder / c / f"{i + 1:04d}", k * 1000 + i)
                 for i in range(per_class)]
         out["classes"][c] = _summary(rows)
-    return out | {"per_class": per_class}
+    return out | {"per_class": per_class, "robot": robot}
 
 
 def _summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
@@ -158,13 +161,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seeds", type=int, default=10)
     parser.add_argument("--panda-sets", action="store_true",
                         help="the Panda problem sets of make_problems.py instead")
+    parser.add_argument("--sets", metavar="ROBOT",
+                        help="the problem sets of make_problems.py for this robot instead")
     parser.add_argument("--per-class", type=int, default=10)
-    parser.add_argument("--problems", type=Path, help="with --panda-sets: read them from here")
+    parser.add_argument("--problems", type=Path, help="with --panda-sets / --sets: read them from here")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
-    if args.panda_sets:
-        sets = run_sets(args.per_class, args.problems)
-        print(f"{sets['date']}; {sets['machine']}; load {sets['load']} (at the start)")
+    if args.panda_sets or args.sets:
+        sets = run_sets(args.per_class, args.problems, args.sets or "panda")
+        print(f"{sets['robot']}; {sets['date']}; {sets['machine']}; load {sets['load']} "
+              f"(at the start)")
         print(sets["vamp"])
         for c, e in sets["classes"].items():
             print(f"{c:<17} median {e['median_ms']:7.2f} ms, exact verification "
