@@ -12,6 +12,16 @@ one cycle earlier minus the position read), reported in the execution's message 
 result data (``tracking``: max and RMS per joint, rad) and by
 :meth:`FeetechBackend.tracking`.
 
+The trajectories' clock advances with the wall clock, but by at most two periods a cycle:
+after a late cycle (a host busy for a while, a reply waited for) the goals go on from
+where the last ones were, not from where the wall clock says the plan is by now. A goal
+that leapt ahead would have the servos cut across the planned path at their full speed
+and read as a tracking error the servos could not help; while no goal comes the servos
+hold the last one, and the motion ends later than planned. That lateness is the
+execution's ``slip`` (s of the trajectory's time, in its result data and message) and
+:attr:`FeetechBackend.slip`, the same for every trajectory running: the arms stay on
+one clock.
+
 Faults end everything at once: a link fault (no reply, bad checksum, wrong ID, unplugged
 adapter) raised by the bus, a status flag set by a servo (overload, overheat, voltage,
 angle sensor, over-current), a stall (the load at ``stall_load`` or more for
@@ -52,6 +62,7 @@ __all__ = ["BusMotors", "FaultRecord", "FeetechBackend", "FeetechOptions", "Join
            "tracking_data"]
 
 _JOIN_TIMEOUT = 2.0  # s
+_MAX_STEP = 2.0  # periods: the most a cycle advances the trajectories' clock
 _KINDS = frozenset(k.value for k in FaultKind)
 
 
@@ -174,6 +185,8 @@ class _Stream:
     execution: TrajectoryExecution
     buses: tuple[int, ...]  # the buses its joints are on
     started: float | None = None  # time.monotonic() of its first cycle
+    clock: float = 0.0  # the trajectory's time played, s from its first sample
+    slip: float = 0.0  # s of the trajectory's time lost to late cycles
     tracking: dict[str, JointTracking] = field(default_factory=dict)
     cycles: int = 0
 
@@ -236,6 +249,8 @@ class FeetechBackend(BaseBackend):
         self.fault: FaultRecord | None = None
         self.cycles = 0
         self.overruns = 0
+        self.slip = 0.0  # s of trajectory time lost to late cycles, every execution's
+        self._last_cycle: float | None = None  # time.monotonic() of the last cycle
         self._halt = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"FeetechBackend-{id(self):x}",
                                         daemon=True)
@@ -379,8 +394,15 @@ class FeetechBackend(BaseBackend):
             streams = list(self._streams.values())
             previous_q = self._sent_q.copy()
             now = time.monotonic()  # one instant for every arm
+            # the trajectories' clock: the wall clock's step, at most _MAX_STEP periods
+            wall = 0.0 if self._last_cycle is None else \
+                (now - self._last_cycle) * self._options.time_scale
+            self._last_cycle = now
+            step = min(wall, _MAX_STEP / self._options.rate_hz)
+            if streams:
+                self.slip += wall - step
             for stream in streams:
-                self._sample(stream, now)
+                self._sample(stream, now, step, wall - step)
             for b in sorted({b for stream in streams for b in stream.buses}):
                 self._links[b].bus.write_goals(self._goals[b], self._options.speed,
                                                self._options.acceleration)
@@ -408,12 +430,17 @@ class FeetechBackend(BaseBackend):
                 raise
             raise BusFaultError(f"joint {joint!r}: {exc}", exc.kind, exc.servo_id) from None
 
-    def _sample(self, stream: _Stream, now: float) -> None:
-        """Goals of ``stream``'s joints: its trajectory at ``now``."""
+    def _sample(self, stream: _Stream, now: float, step: float, slip: float) -> None:
+        """Goals of ``stream``'s joints: its trajectory ``step`` s (its time) after the
+        last cycle's (its first sample in its first cycle); ``slip``: the wall clock's step
+        beyond ``step``."""
         if stream.started is None:
             stream.started = now
+        else:
+            stream.clock += step
+            stream.slip += slip
         trajectory, execution = stream.execution.trajectory, stream.execution
-        elapsed = min((now - stream.started) * self._options.time_scale, execution.duration)
+        elapsed = min(stream.clock, execution.duration)
         q = sample_positions(trajectory, float(trajectory.times[0]) + elapsed)
         for name, value in zip(trajectory.names, q):
             b, motor = self._where[name]
@@ -439,18 +466,20 @@ class FeetechBackend(BaseBackend):
             return
         final = execution.trajectory.positions[-1]
         gaps = np.abs(final - self._positions[execution.columns])
-        late = (time.monotonic() - stream.started) * self._options.time_scale \
-            - execution.duration
+        late = stream.clock - execution.duration
         if np.all(gaps <= self._options.settle_tolerance):
             self._end_stream(stream)
+            slip = (f"; {1e3 * stream.slip:.0f} ms behind the plan (late cycles: the goals "
+                    "went on from the last ones)") if stream.slip > 0.0005 else ""
             self._finish(execution, "succeeded",
                          f"trajectory executed in {stream.cycles} cycles at "
-                         f"{self._options.rate_hz:g} Hz; tracking error max/rms: "
+                         f"{self._options.rate_hz:g} Hz{slip}; tracking error max/rms: "
                          + ", ".join(f"{n} {math.degrees(t.largest):.1f}°/"
                                      f"{math.degrees(t.rms):.1f}°"
                                      for n, t in stream.tracking.items()),
                          data={"tracking": tracking_data(stream.tracking),
-                               "cycles": stream.cycles, "rate_hz": self._options.rate_hz})
+                               "cycles": stream.cycles, "rate_hz": self._options.rate_hz,
+                               "slip": round(stream.slip, 4)})
         elif late > self._options.settle_timeout:
             j = int(np.argmax(gaps))
             name = execution.trajectory.names[j]

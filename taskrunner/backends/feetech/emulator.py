@@ -14,7 +14,9 @@ flag, torque cut as the servo does), ``unplug`` (the pty closes, as a pulled USB
 Time is the wall clock (``time.monotonic``) times ``time_scale`` (1: real time; 2: the
 servos move twice as fast, for tests, with the backend's ``time_scale`` the same): the
 model is advanced in 1 ms steps of its own time up to now whenever a packet arrives and
-every few milliseconds otherwise. Every SYNC WRITE received is logged
+every few milliseconds otherwise, over the whole time since it last ran however long that
+was (a real servo goes on moving while the host is busy: an emulator kept from running
+catches up, a servo at rest at once). Every SYNC WRITE received is logged
 (:attr:`BusEmulator.sync_writes`, and a file with ``log``), with the model's time, so the
 rate a backend streams at can be measured on the bus's side. Units: ticks (4096 a turn,
 0.088°), ticks/s, s.
@@ -162,9 +164,12 @@ class ServoModel:
         while elapsed > 1e-9:
             dt = min(_DT, elapsed)
             elapsed -= dt
+            before = (self.motor, self.actual, self.velocity, self.load)
             self._step(dt, torque, goal, speed, acc)
             if abs(self.load) <= limit:
                 self.over_since = None
+                if (self.motor, self.actual, self.velocity, self.load) == before:
+                    return  # at rest: the steps left change nothing
             else:
                 self.over_since = (self.over_since or 0.0) + dt
                 if self.over_since >= protection:
@@ -353,7 +358,7 @@ class BusEmulator:
 
     def _advance(self) -> None:
         now = time.monotonic()
-        elapsed = min(now - self._last, 0.5) * self.time_scale
+        elapsed = (now - self._last) * self.time_scale  # all of it (see the module's doc)
         self._last = now
         self.clock += elapsed
         for servo in self.servos.values():
