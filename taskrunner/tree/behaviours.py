@@ -36,7 +36,8 @@ from taskrunner.tree.reach import StagedGoals
 from taskrunner.tree.schedule import LAG, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
-__all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "TaskLeaf", "TaskParallel", "lane_of"]
+__all__ = ["MoveJoints", "MoveStraight", "MoveToGoal", "TaskLeaf", "TaskParallel", "lane_of",
+           "plays_time"]
 
 
 class TaskLeaf(py_trees.behaviour.Behaviour):
@@ -122,7 +123,7 @@ def lane_of(node: py_trees.behaviour.Behaviour) -> LaneKey:
     return tuple(reversed(path))
 
 
-def _plays_time(backend: object) -> bool:
+def plays_time(backend: object) -> bool:
     """Whether motions on ``backend`` take their time (a mock without ``speed`` ends each
     at once: its schedule is the planned one, never held against the wall clock)."""
     from taskrunner.backends.mock import MockBackend
@@ -195,7 +196,7 @@ class _Executes(TaskLeaf):
             return Status.RUNNING
         if self.held is not None and self.held[1] == -1:
             self.held = None  # its turn has come
-        timed = _plays_time(self.ctx.backend)
+        timed = plays_time(self.ctx.backend)
         # Its start is the schedule's (planned time): where time passes, it is held until
         # then, and the whole schedule slips where it is sent late. Only a motion
         # admitted again (stopped, or verified against a promise since broken) starts
@@ -237,7 +238,7 @@ class _Executes(TaskLeaf):
 
     def _send(self, trajectory: JointTrajectory) -> Status:
         self.pending = None
-        timed = _plays_time(self.ctx.backend)
+        timed = plays_time(self.ctx.backend)
         before = self.ctx.clock.now() if timed else 0.0
         slips = len(self.ctx.schedule.slips)
         if timed and self.admission is not None:
@@ -386,7 +387,7 @@ class _Executes(TaskLeaf):
         cut) is verified again from now, and stopped where it would meet another arm."""
         schedule, admission, handle = self.ctx.schedule, self.admission, self.handle
         if admission is None or admission.entry is None or handle is None \
-                or not _plays_time(self.ctx.backend):
+                or not plays_time(self.ctx.backend):
             return Status.RUNNING
         now = self.ctx.clock.now()
         entry = admission.entry

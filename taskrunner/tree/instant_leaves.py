@@ -10,7 +10,7 @@ from collections.abc import Callable
 from py_trees.common import Status
 
 from taskrunner.errors import TaskrunnerError
-from taskrunner.tree.behaviours import TaskLeaf
+from taskrunner.tree.behaviours import TaskLeaf, lane_of, plays_time
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.outcome import Outcome
 
@@ -74,15 +74,41 @@ class CheckOutcome(TaskLeaf):
 
 
 class Wait(TaskLeaf):
-    """Succeed after ``seconds`` of wall time."""
+    """A ``wait`` step: its branch goes on ``seconds`` later, the others keep their pace.
+
+    On the run's schedule (planned time) the wait starts where its branch stands and the
+    branch's next motions start no earlier than its end
+    (:meth:`~taskrunner.tree.schedule.MotionSchedule.pause`); in a ``parallel`` the other
+    branches go on. On a backend that plays time the leaf holds until that end on the
+    run's clock (plus the schedule's slip), so what follows it in the branch happens
+    then; on one that plays no time (the mock without ``speed``) it holds ``seconds``
+    of wall time. A "wait" event gives the planned ``since`` and ``until``.
+    """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext, seconds: float) -> None:
         super().__init__(name, location, ctx)
         self.seconds = seconds
-        self.until = 0.0
+        self.until = 0.0  # s: planned (a backend that plays time), else wall time
+        self.timed = False
 
     def start(self) -> None:
-        self.until = time.monotonic() + self.seconds
+        schedule, lane = self.ctx.schedule, lane_of(self)
+        since, until = schedule.pause(lane, self.seconds)
+        self.ctx.events.emit("wait", f"{self.location or 'this step'} waits "
+                             f"{self.seconds:g} s", node=self.name, location=self.location,
+                             since=round(since, 6), until=round(until, 6))
+        self.timed = plays_time(self.ctx.backend)
+        self.until = until if self.timed else time.monotonic() + self.seconds
 
     def update(self) -> Status:
-        return Status.SUCCESS if time.monotonic() >= self.until else Status.RUNNING
+        if self.timed:
+            done = self.ctx.clock.now() >= self.until + self.ctx.schedule.slip
+        else:
+            done = time.monotonic() >= self.until
+        if not done:
+            return Status.RUNNING
+        self.ctx.schedule.pausing.pop(lane_of(self), None)
+        return Status.SUCCESS
+
+    def abort(self) -> None:
+        self.ctx.schedule.pausing.pop(lane_of(self), None)

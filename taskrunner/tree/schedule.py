@@ -36,6 +36,10 @@ slow for one arm, a loaded machine).
 *Waits between branches.* A step with ``wait_for`` (:mod:`taskrunner.tree.waiting`) sets
 a *floor* under its lane (:meth:`MotionSchedule.not_before`): the lane's next motions start
 no earlier than the named step's last motion ended (:meth:`MotionSchedule.finish_step`).
+A ``wait`` step sets one too (:meth:`MotionSchedule.pause`): its lane's next motions start
+its seconds after where the lane stands (its planned time), the other lanes go on; while
+its leaf holds, its branch is passed over in the turns (as one that holds). A lane that
+follows another starts no earlier than that one's floor.
 
 *Planned time.* Seconds. A motion's start is decided by the schedule alone: the end of
 the motions it follows, a ``wait_for``'s floor, the other arms' committed motions (its
@@ -215,6 +219,9 @@ class MotionSchedule:
     step_waits: list[tuple[str | None, float, float, str]] = field(default_factory=list)
     """Every ``wait_for`` that held a lane back: (the waiting step's file:line, s when
     its lane could have gone on, s when it may, the name of the step waited for)."""
+    pausing: dict[LaneKey, float] = field(default_factory=dict)
+    """Lanes in a ``wait`` step (:meth:`pause`), and when it ends (s, planned): passed
+    over in the turns while their leaf holds."""
     retractions: int = 0
     """How many committed motions were taken back (:meth:`withdraw`) or cut short
     (:meth:`stop`, :meth:`confirm`): promises other motions may have relied on."""
@@ -259,7 +266,7 @@ class MotionSchedule:
                 if other == index or not running(other):
                     continue
                 branch = (*lane[:depth], (instance, other))
-                if any(_within(key, branch) for key in self.holding):
+                if any(_within(key, branch) for key in (*self.holding, *self.pausing)):
                     continue
                 if self._admitted(branch) < mine + (other < index):
                     return False
@@ -426,14 +433,27 @@ class MotionSchedule:
         """When a motion of ``lane`` may start at the earliest: every motion of a lane it
         follows has ended (s)."""
         ends = [c.motion.end for c in self.committed if not concurrent(c.lane, lane)]
-        ends += [floor for key, floor in self.floors.items() if _within(lane, key)]
+        ends += [floor for key, floor in self.floors.items() if not concurrent(key, lane)]
         return max(ends, default=0.0)
 
     def lane_end(self, lane: LaneKey) -> float:
-        """When the motions ``lane`` (and the lanes inside it) committed so far end: where
-        it stands on the schedule now (s)."""
+        """When the motions ``lane`` (and the lanes inside it) committed so far end, or
+        its floor where later: where it stands on the schedule now (s)."""
         ends = [c.motion.end for c in self.committed if _within(c.lane, lane)]
+        ends += [floor for key, floor in self.floors.items()
+                 if _within(key, lane) or _within(lane, key)]
         return max(ends, default=self.earliest(lane))
+
+    def pause(self, lane: LaneKey, seconds: float) -> tuple[float, float]:
+        """A ``wait`` of ``seconds`` in ``lane``: from where the lane stands (:meth:`lane_end`,
+        at least :meth:`earliest`), its next motions start ``seconds`` later; the other
+        lanes keep their schedule. Returns (since, until), s planned; the lane is
+        :attr:`pausing` until the caller clears it."""
+        since = max(self.lane_end(lane), self.earliest(lane))
+        until = since + seconds
+        self.floors[lane] = max(self.floors.get(lane, 0.0), until)
+        self.pausing[lane] = until
+        return since, until
 
     def finish_step(self, lane: LaneKey, name: str) -> float:
         """The step ``name`` of ``lane``, which another branch waits for, has finished:
