@@ -7,7 +7,7 @@ detection time (both ``time.monotonic``, same process); nothing else is timed.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -22,6 +22,7 @@ from taskrunner.backends.feetech import (
     FeetechBus,
     FeetechOptions,
     LeRobotCalibration,
+    ServoState,
     calibrated_servos,
     load_lerobot_calibration,
 )
@@ -87,6 +88,37 @@ def test_a_trajectory_streams_as_sync_writes_and_reports_tracking_per_joint(
         assert cycles >= 0.8 * 50 * 0.6
         assert emulator.packets - packets >= 2 * cycles
 
+
+
+class _LateBus(FeetechBus):
+    """A bus whose next read comes ``late`` s after the goals went out: the host kept from
+    running between the two (as a loaded machine does now and then)."""
+
+    late = 0.0
+
+    def read_states(self, servo_ids: Sequence[int]) -> dict[int, ServoState]:
+        delay, self.late = self.late, 0.0
+        time.sleep(delay)
+        return super().read_states(servo_ids)
+
+
+def test_a_late_cycle_slips_the_plan_instead_of_leaping_the_goals(emulator: BusEmulator) -> None:
+    """After a cycle 0.3 s late, the goals go on from the last ones (at most two periods
+    further along the plan), not from where the wall clock has the plan by then (0.3 s of
+    a motion at nearly 1 rad/s: a leap the servos would cross at full speed, read as a
+    tracking error); the time lost is reported as the execution's slip."""
+    bus = _LateBus(emulator.port, reply_timeout=0.3)
+    with FeetechBackend([BusMotors(bus, _arm())]) as backend:
+        handle = backend.execute(_move(backend, [0.5, -0.4, 0.4, 0.3, 0.5, 0.6], duration=1.0))
+        _wait_progress(handle, 0.3)
+        bus.late = 0.3
+        result = handle.wait(5.0)
+        assert result.status == "succeeded", result.message
+        slip = result.data["slip"]
+        assert isinstance(slip, float) and slip >= 0.3 - 2 / 60, result.data
+        assert backend.slip >= slip and "behind the plan" in result.message
+        tracking = backend.tracking()
+        assert all(t.largest < 0.1 for t in tracking.values()), tracking
 
 def test_cancel_holds_the_servos_where_they_are(emulator: BusEmulator) -> None:
     with _backend(emulator, reply_timeout=0.3) as backend:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import pytest
 
 from taskrunner.backends.feetech.emulator import (
@@ -80,3 +82,28 @@ def test_inject_refuses_unknown_faults_and_servos() -> None:
         emulator.inject("fire")
     with pytest.raises(ValueError, match=r"'servo_id' must be one of \[1, 2, 3, 4, 5, 6\]"):
         emulator.inject("drop", 9)
+
+
+def test_an_emulator_kept_from_running_catches_up_as_a_servo_moves_meanwhile() -> None:
+    """The servos move over all the wall-clock time since the emulator last ran (a real
+    servo does not wait for the host), however long: here 1 s or more without running,
+    for a move that takes about 0.8 s, where a step capped at 0.5 s left the servo half
+    way. A servo at rest then stays, over an hour of its time, and a stalled one still
+    trips its protection after any pause."""
+    servos = so101_servos()
+    emulator = BusEmulator(servos)  # not serving: the model advances only when told
+    moving, stalled = servos[0], servos[4]
+    for servo, goal in ((moving, moving.present() + 1600), (stalled, stalled.present() + 400)):
+        servo.put("Torque_Enable", 1)
+        servo.put("Goal_Velocity", 2000)  # ticks/s: 0.8 s for 1600 ticks
+        servo.put("Goal_Position", goal)
+    stalled.stalled = True
+    start = emulator.clock
+    time.sleep(1.0)
+    emulator.inject("drop", 6)  # brings the model up to now, as any packet does
+    assert emulator.clock - start >= 1.0
+    assert moving.present() == moving.get("Goal_Position") and moving.velocity == 0.0
+    assert stalled.flags == StatusFlag.OVERLOAD
+    at_rest = moving.actual
+    moving.advance(3600.0)
+    assert moving.actual == at_rest and moving.velocity == 0.0
