@@ -116,7 +116,8 @@ def test_a_late_cycle_slips_the_plan_instead_of_leaping_the_goals(emulator: BusE
         assert result.status == "succeeded", result.message
         slip = result.data["slip"]
         assert isinstance(slip, float) and slip >= 0.3 - 2 / 60, result.data
-        assert backend.slip >= slip and "behind the plan" in result.message
+        # (the data rounds to 0.1 ms)
+        assert backend.slip >= slip - 1e-4 and "behind the plan" in result.message
         tracking = backend.tracking()
         assert all(t.largest < 0.1 for t in tracking.values()), tracking
 
