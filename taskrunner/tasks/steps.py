@@ -48,7 +48,7 @@ from taskrunner.tasks.nodes import (
 from taskrunner.validation import MAX_METRES, Integer, Number
 
 __all__ = [
-    "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "ExpectStep", "FallbackStep",
+    "MOMENTS", "AddObjectStep", "AttachStep", "CompositeStep", "DetachStep", "ExpectStep", "FallbackStep",
     "GoStep", "GraspPose",
     "GripperStep", "HandoffStep", "IncludeBody", "IncludeStep", "MOTION_OPTIONS",
     "MOTION_VERBS", "MotionOptions", "MotionStep", "MoveStep", "Offset", "OutcomeTolerance",
@@ -87,12 +87,25 @@ def _named_or_mapping(value: Any) -> str:
     return "<pose>" if isinstance(value, (dict, Node)) else "<name>"
 
 
+MOMENTS: dict[str, tuple[str, ...]] = {
+    "place": ("set_down", "released"),
+    "pick": ("grasped",),
+}
+"""The moments within a step, by verb, that a ``wait_for`` can name (``until``) besides
+``finished`` (every step has it): a ``place``'s object ``set_down`` at its target (still
+held) and ``released`` (the gripper opened, before the retreat); a ``pick``'s object
+``grasped`` (the gripper closed on it, before the lift)."""
+
+
 class WaitFor(Node):
     """What a step of a ``parallel``'s branch waits for before it starts."""
 
     step: str = Field(min_length=1)
     """The ``name`` of a step of another branch of the same ``parallel``: this step
-    starts when that one has finished."""
+    starts when that one has reached ``until``."""
+    until: Literal["finished", "set_down", "released", "grasped"] = "finished"
+    """The moment of that step: ``finished`` (all of it), or one within it
+    (:data:`MOMENTS`: which verbs have which)."""
 
 
 # ------------------------------------------------------------------------- base classes
@@ -144,7 +157,8 @@ class MotionStep(StepNode, MotionOptions):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
 
 
 # ------------------------------------------------------------------------------- leaves
@@ -347,7 +361,8 @@ class AttachStep(StepNode):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
     object: str
     """The object to attach."""
     arm: str | None = None
@@ -372,7 +387,8 @@ class DetachStep(StepNode):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
     object: str
     """The object to detach."""
 
@@ -415,7 +431,8 @@ class WaitStep(StepNode):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
     seconds: Number = Field(ge=0, le=MAX_SECONDS)
     """Duration (s), at most a day."""
 
@@ -467,7 +484,8 @@ class _DoComposite(StepNode):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
     do: StepList
     """The steps, run as a sequence."""
 
@@ -513,7 +531,8 @@ class IncludeBody(Node):
     name: str | None = None
     """Label for displays."""
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
 
 
 class IncludeStep(StepNode):
@@ -529,7 +548,8 @@ class IncludeStep(StepNode):
     steps: StepList
     name: str | None = None
     wait_for: WaitFor | None = None
-    """In a ``parallel``'s branch: start when a step of another branch has finished."""
+    """In a ``parallel``'s branch: start when a step of another branch has finished (or
+    reached a moment within it: ``until``)."""
 
     @property
     def children(self) -> tuple[StepNode, ...]:

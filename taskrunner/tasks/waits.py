@@ -2,7 +2,10 @@
 
 A step in a branch of a ``parallel`` may say ``wait_for: {step: NAME}``: it starts when
 the step of that ``name`` in *another branch of the same parallel* has finished (the
-right arm starts stacking when the left arm has put the base down). The loader checks
+right arm starts stacking when the left arm has put the base down), or, with ``until:``,
+when that step has reached a moment within it (:data:`~taskrunner.tasks.steps.MOMENTS`:
+a ``place``'s ``released``, the base let go before its arm retreats). A moment the
+named step does not have is refused here too. The loader checks
 every ``wait_for`` here (:func:`wait_problems`): the name is given to exactly one step,
 the two steps are in different branches of a ``parallel`` around both (steps of one
 sequence already run in order), and no set of waits can hold every step back (a cycle,
@@ -18,9 +21,9 @@ from dataclasses import dataclass
 
 from taskrunner.errors import did_you_mean
 from taskrunner.tasks.problem import Problem
-from taskrunner.tasks.steps import ParallelStep, StepNode
+from taskrunner.tasks.steps import MOMENTS, ParallelStep, StepNode
 
-__all__ = ["WaitPair", "named_steps", "wait_pairs", "wait_problems"]
+__all__ = ["FINISHED", "WaitPair", "named_steps", "wait_pairs", "wait_problems"]
 
 @dataclass(frozen=True)
 class WaitPair:
@@ -36,6 +39,16 @@ class WaitPair:
     @property
     def name(self) -> str:
         return str(getattr(self.named, "name", ""))
+
+    @property
+    def moment(self) -> str:
+        """The moment of ``named`` waited for: ``finished`` or one of :data:`MOMENTS`."""
+        wait_for = getattr(self.waiter, "wait_for", None)
+        return str(getattr(wait_for, "until", FINISHED))
+
+
+FINISHED = "finished"
+"""The moment a ``wait_for`` waits for by default: the whole named step has finished."""
 
 
 def _walk(steps: Sequence[StepNode], path: tuple[tuple[StepNode | None, int], ...] = (),
@@ -107,6 +120,13 @@ def _resolve(steps: Sequence[StepNode]) -> tuple[list[WaitPair], list[Problem]]:
         if not isinstance(parent, ParallelStep):
             refuse(f"{wait_for.step!r} ({_line(other)}) is not in another branch of a "
                    "'parallel' around this step (steps of one sequence run in order already)")
+            continue
+        moment = wait_for.until
+        if moment != FINISHED and moment not in MOMENTS.get(other.verb, ()):
+            has = MOMENTS.get(other.verb, ())
+            refuse(f"step {wait_for.step!r} ({_line(other)}) is a '{other.verb}', which has no "
+                   f"moment {moment!r} (it has: "
+                   f"{', '.join(repr(m) for m in (FINISHED, *has))})")
             continue
         pairs.append(WaitPair(step, other, parent, path[common][1], there[common][1]))
     return pairs, problems

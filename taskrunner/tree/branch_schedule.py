@@ -16,9 +16,11 @@ import numpy as np
 from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.scene import Scene
+from taskrunner.tasks.waits import FINISHED
 from taskrunner.tree.leafcheck import Motion
 from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
 from taskrunner.tree.schedule_proof import ScheduleProof, prove_schedule
+from taskrunner.tree.waiting import reached
 from taskrunner.types import JointPath, JointTrajectory
 
 __all__ = ["schedule_branches"]
@@ -34,10 +36,11 @@ class _Queued:
     where: str | None
     trajectory: JointTrajectory | None = None
     name: str = ""
+    moment: str = FINISHED
 
 
 def schedule_branches(scene: Scene, branches: list[list[Motion]],
-                      waits: Sequence[tuple[int, int, int, int, str, str | None]] = (),
+                      waits: Sequence[tuple[int, int, int, int, str, str | None, str]] = (),
                       proofs: list[ScheduleProof] | None = None
                       ) -> tuple[str | None, list[str]]:
     """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
@@ -46,7 +49,8 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
     Args:
         waits: each ``wait_for`` between the branches: (branch of the waiting step, the
             index in that branch of its first motion, branch of the step waited for, the
-            index after its last motion, that step's name, the waiting step's file:line);
+            index after its last motion made by the moment waited for, that step's name,
+            the waiting step's file:line, the moment: ``finished`` or one within it);
             followed as the run's leaves follow it (:mod:`taskrunner.tree.waiting`).
         proofs: where the schedule holds, what it proves is appended here
             (:func:`~taskrunner.tree.schedule_proof.prove_schedule`; its lines are notes).
@@ -61,9 +65,10 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
     for index, motions in enumerate(branches):
         queue = queues.setdefault(((instance, index),), [])
         for position in range(len(motions) + 1):
-            queue += [_Queued("done", None, name=name) for _, _, b, at, name, _ in waits
-                      if (b, at) == (index, position)]
-            queue += [_Queued("wait", where, name=name) for b, at, _, _, name, where in waits
+            queue += [_Queued("done", None, name=name, moment=moment)
+                      for _, _, b, at, name, _, moment in waits if (b, at) == (index, position)]
+            queue += [_Queued("wait", where, name=name, moment=moment)
+                      for b, at, _, _, name, where, moment in waits
                       if (b, at) == (index, position)]
             if position == len(motions):
                 break
@@ -89,14 +94,14 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                 continue
             item = queue[0]
             if item.kind == "done":
-                schedule.finish_step(lane, item.name)
+                schedule.finish_step(lane, item.name, item.moment)
             elif item.kind == "wait":
-                at = schedule.finished.get((instance, item.name))
+                at = schedule.finished.get((instance, item.name, item.moment))
                 if at is None:
                     continue  # the other branch has not got there yet
                 if at > schedule.lane_end(lane):
-                    notes.append(f"{item.where or 'a step'} waits until step {item.name!r} "
-                                 f"has finished, at {at:.2f} s")
+                    notes.append(f"{item.where or 'a step'} waits until "
+                                 f"{reached(item.name, item.moment)}, at {at:.2f} s")
                 schedule.not_before(lane, at, item.where, item.name)
             if item.kind != "motion":
                 queue.pop(0)

@@ -40,6 +40,7 @@ from taskrunner.tree.branch_schedule import schedule_branches
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.leafcheck import Motion, leaves_of
 from taskrunner.tree.schedule_proof import ScheduleProof
+from taskrunner.tree.waiting import moment_end
 
 __all__ = ["CheckBranch", "CheckFallback", "CheckLane", "CheckMode", "CheckStep", "Checker", "JointParallel",
            "ScheduledParallel", "StepSpan", "run_branches"]
@@ -206,14 +207,16 @@ class ScheduledParallel(py_trees.decorators.Decorator):
         branches = [c.trace[start:end] for start, end in spans]
         # wait_for between these branches: where in its branch a step waits, and where
         # the step it waits for ends.
-        waits: list[tuple[int, int, int, int, str, str | None]] = []
+        waits: list[tuple[int, int, int, int, str, str | None, str]] = []
         for pair in c.waits:
             waiter, named = c.spans.get(id(pair.waiter)), c.spans.get(id(pair.named))
             if pair.parallel is step and waiter is not None and named is not None:
                 i, j = pair.waiter_branch, pair.named_branch
                 where = str(pair.waiter.loc) if pair.waiter.loc is not None else None
-                waits.append((i, waiter[0] - spans[i][0], j, named[1] - spans[j][0],
-                              pair.name, where))
+                made = moment_end([m[0] for m in c.trace[named[0]:named[1]]], pair.moment)
+                end = named[1] if made is None else named[0] + made
+                waits.append((i, waiter[0] - spans[i][0], j, end - spans[j][0],
+                              pair.name, where, pair.moment))
         assert self.before is not None
         text, notes = schedule_branches(self.before, branches, waits, c.proofs)
         c.notes += [_at(step, note) for note in notes]

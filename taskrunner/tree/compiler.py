@@ -58,7 +58,7 @@ from taskrunner.tasks import (
     WaitStep,
 )
 from taskrunner.tasks.steps import ExpectStep
-from taskrunner.tasks.waits import wait_pairs
+from taskrunner.tasks.waits import FINISHED, wait_pairs
 from taskrunner.tree import idioms
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal, TaskParallel
 from taskrunner.tree.context import TaskContext
@@ -67,7 +67,7 @@ from taskrunner.tree.grasps import allow_lift_off, end_lift_off, end_lift_offs_l
 from taskrunner.tree.instant_leaves import SceneAction, Wait
 from taskrunner.tree.outcome import Orientation, Tolerance
 from taskrunner.tree.timeout import TaskTimeout
-from taskrunner.tree.waiting import StepFinished, WaitForStep
+from taskrunner.tree.waiting import StepFinished, WaitForStep, mark_moment
 from taskrunner.types import Pose
 
 __all__ = ["CheckHooks", "compile_task", "object_shape", "planner_options", "timing_options"]
@@ -98,19 +98,22 @@ def compile_task(spec: TaskSpec, ctx: TaskContext, check: CheckHooks | None = No
         TaskSpecError: a step that names something the cell does not have, with file:line.
     """
     pairs = wait_pairs(spec.steps)
-    waits = _Waits({id(p.waiter): p.name for p in pairs}, {id(p.named): p.name for p in pairs},
-                   check)
+    waited: dict[int, dict[str, str]] = {}
+    for p in pairs:
+        waited.setdefault(id(p.named), {})[p.moment] = p.name
+    waits = _Waits({id(p.waiter): (p.name, p.moment) for p in pairs}, waited, check)
     children = _compile_list(spec.steps, ctx, waits)
     return py_trees.composites.Sequence(spec.name, memory=True, children=children)
 
 
 @dataclass(frozen=True)
 class _Waits:
-    """The ``wait_for`` of the steps compiled (by ``id`` of the step): the name each
-    waiting step waits for, and the name of each step waited for."""
+    """The ``wait_for`` of the steps compiled (by ``id`` of the step): the name and moment
+    each waiting step waits for, and the moments of each step waited for (its name by
+    moment)."""
 
-    waiting: Mapping[int, str] = field(default_factory=dict)
-    waited: Mapping[int, str] = field(default_factory=dict)
+    waiting: Mapping[int, tuple[str, str]] = field(default_factory=dict)
+    waited: Mapping[int, Mapping[str, str]] = field(default_factory=dict)
     check: CheckHooks | None = None  # the check mode's (compile_task)
 
     def joins(self, step: StepNode) -> bool:
@@ -195,11 +198,14 @@ def _compile(step: StepNode, ctx: TaskContext, waits: _Waits = _NO_WAITS) -> Beh
         return behaviour
     children = [behaviour]
     if id(step) in waits.waiting:
-        name = waits.waiting[id(step)]
+        name, moment = waits.waiting[id(step)]
         children.insert(0, WaitForStep(f"{step.label}: wait for {name!r}", _where(step), ctx,
-                                       name))
-    if id(step) in waits.waited:
-        children.append(StepFinished(waits.waited[id(step)], ctx))
+                                       name, moment))
+    for moment, name in waits.waited.get(id(step), {}).items():
+        if moment == FINISHED:
+            children.append(StepFinished(name, ctx))
+        else:  # within the step: after the leaves that make the moment
+            mark_moment(behaviour, StepFinished(name, ctx, moment))
     return py_trees.composites.Sequence(f"{step.label} (wait_for)", memory=True,
                                         children=children)
 

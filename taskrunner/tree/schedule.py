@@ -207,9 +207,10 @@ class MotionSchedule:
     clearance: float = CLEARANCE
     committed: list[Committed] = field(default_factory=list)
     holding: dict[LaneKey, LaneKey] = field(default_factory=dict)
-    finished: dict[tuple[int, str], float] = field(default_factory=dict)
-    """When each step another branch waits for (``wait_for``) finished, s, by (instance
-    of a ``parallel`` around it, its name)."""
+    finished: dict[tuple[int, str, str], float] = field(default_factory=dict)
+    """When each step another branch waits for (``wait_for``) finished or reached the
+    moment waited for, s, by (instance of a ``parallel`` around it, its name, the
+    moment: ``finished`` or one within it)."""
     floors: dict[LaneKey, float] = field(default_factory=dict)
     """s: the earliest start of a lane's (and its inner lanes') next motions, set where a
     step of it waited for another branch's step."""
@@ -455,12 +456,13 @@ class MotionSchedule:
         self.pausing[lane] = until
         return since, until
 
-    def finish_step(self, lane: LaneKey, name: str) -> float:
-        """The step ``name`` of ``lane``, which another branch waits for, has finished:
-        when its motions end (s), recorded for every ``parallel`` around it."""
+    def finish_step(self, lane: LaneKey, name: str, moment: str = "finished") -> float:
+        """The step ``name`` of ``lane``, which another branch waits for, has finished
+        (or reached ``moment`` within it): when its motions so far end (s), recorded for
+        every ``parallel`` around it."""
         at = self.lane_end(lane)
         for instance, _ in lane:
-            self.finished[(instance, name)] = at
+            self.finished[(instance, name, moment)] = at
         return at
 
     def not_before(self, lane: LaneKey, at: float, location: str | None = None,

@@ -105,3 +105,35 @@ def test_waits_in_one_direction_across_branches_are_no_cycle(tmp_path: Path) -> 
               - go: {group: right_arm, to: Home, name: d}
     """)
     assert [p.name for p in wait_pairs(spec.steps)] == ["c", "a"]
+
+
+PLACED = """\
+  - parallel:
+      - sequence:
+          - place: {arm: left_arm, object: base, at: {xyz: [0, 0, 0.77]}, name: base down}
+          - go: {group: left_arm, to: Home}
+      - sequence:
+          - go: {group: right_arm, to: Up}
+          - go: {group: right_arm, to: Home, wait_for: {step: base down, until: released}}
+"""
+
+
+def test_wait_for_a_moment_within_a_place_resolves_with_its_moment(tmp_path: Path) -> None:
+    (pair,) = wait_pairs(load(tmp_path, PLACED).steps)
+    assert (pair.name, pair.moment) == ("base down", "released")
+    (plain,) = wait_pairs(load(tmp_path, STACK).steps)
+    assert plain.moment == "finished"
+
+
+def test_wait_for_an_unknown_moment_is_refused_at_its_line(tmp_path: Path) -> None:
+    found = problems(tmp_path, PLACED.replace("until: released", "until: dropped"))
+    assert len(found) == 1 and found[0][0] == 10
+    assert found[0][1] == ("'go.wait_for.until' must be 'finished', 'set_down', 'released' or "
+                           "'grasped' (got 'dropped')")
+
+
+def test_wait_for_a_moment_the_named_step_has_not_is_refused_at_its_line(tmp_path: Path) -> None:
+    found = problems(tmp_path, STACK.replace("{step: base down}",
+                                             "{step: base down, until: released}"))
+    assert found == [(10, "'wait_for': step 'base down' (line 6) is a 'go', which has no "
+                          "moment 'released' (it has: 'finished')")]
