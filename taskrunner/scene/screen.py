@@ -40,11 +40,19 @@ import numba
 import numpy as np
 
 from taskrunner.collision import frames as collision_frames
-from taskrunner.collision.frames import FRAME_COLUMNS, ORIGIN, inline, jit, joint_frames
+from taskrunner.collision.frames import ORIGIN, inline, jit, joint_frames
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
 from taskrunner.scene.coalpath import exact_line_scanner
+from taskrunner.scene.distance_bounds import (
+    _FR_CENTRE,
+    _FR_COLUMNS,
+    _FR_PLACED,
+    _box_gap,
+    _place,
+    _sphere_to_box,
+)
 from taskrunner.scene.collision import CollisionChecker
 from taskrunner.scene.path_verifier import PathVerifier
 
@@ -56,22 +64,22 @@ PROVEN = 1e-5
 """m: a pair whose inner volumes overlap by more than this collides at that state (coal
 agrees without being asked: well beyond its 1 µm tolerance)."""
 
-# The screen's own rows per geometry, derived from the verifier's GEOMETRY records
-# (taskrunner.collision.geometry) in the joint's frame. Plain arrays, not records: with
-# records here the scan measured 8-10 % slower per state (numba 0.6x; the verifier's kernels
-# read records at the old speed). Columns of the float rows (``geo``): the sphere's centre
-# in its joint's frame and radius; the box's axes (a rotation, row-major) and centre in the
-# joint's frame and half extents.
-_G_CENTRE, _G_RADIUS, _G_ROT, _G_BOX, _G_HALF = 0, 3, 4, 13, 16
-# ... and a sphere inside the geometry: its centre in the joint's frame and radius (0: none).
-_G_INNER, _G_INNER_RADIUS = 19, 22
-_G_COLUMNS = 23
+# The screen's own rows per geometry (``geo``), derived from the verifier's GEOMETRY
+# records (taskrunner.collision.geometry) in the joint's frame, for what the screen places
+# at every state: the bounding sphere's centre in its joint's frame and its radius, then a
+# sphere inside the geometry: its centre in the joint's frame and radius (0: none). Plain
+# float rows, not records: read for every pair at every state (with records for these the
+# scan measured 8-10 % slower per state). The boxes are the verifier's, placed by its
+# kernels (taskrunner.scene.distance_bounds) when a pair needs them.
+_G_CENTRE, _G_RADIUS, _G_INNER, _G_INNER_RADIUS = 0, 3, 4, 7
+_G_COLUMNS = 8
 # Per-geometry int rows (``gi``): the joint, whether it has a box, whether the box is the
 # geometry itself (a box shape).
 _I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
-# Work rows: the joints' frame rows (:func:`taskrunner.collision.frames.joint_frames`), then
-# per geometry its sphere centre (columns 0-2) and the state its box was last placed at
-# (column 3), then per geometry its box in the world (a frame row: rotation, centre).
+# Work rows: the verifier's frames (taskrunner.scene.distance_bounds: the joints' frame
+# rows, then a row per geometry, of which the screen writes the bounding sphere's centre at
+# every state and the rest, with the box, when a pair needs it), then two rows whose centre
+# columns hold the pair's inner spheres' centres.
 
 
 _INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
@@ -154,20 +162,18 @@ class StateScreen:
         self._gi[:, _I_JOINT] = geometries["joint"]
         self._gi[:, _I_BOX] = geometries["has_box"]
         self._gi[:, _I_EXACT] = inner[:, 4]
-        # Each geometry's sphere centre and box in its joint's frame (the records give
-        # them in the geometry's own frame, and its placement on the joint).
+        # Each geometry's sphere centres in its joint's frame (the records give them in
+        # the geometry's own frame, and its placement on the joint).
         placement = geometries["placement"]
         rot = placement[:, :9].reshape(n, 3, 3)
         trans = placement[:, 9:]
         geo = np.zeros((n, _G_COLUMNS))
         geo[:, _G_CENTRE:_G_CENTRE + 3] = np.einsum("gij,gj->gi", rot, geometries["centre"]) + trans
         geo[:, _G_RADIUS] = geometries["radius"]
-        geo[:, _G_ROT:_G_ROT + 9] = rot.reshape(n, 9)
-        geo[:, _G_BOX:_G_BOX + 3] = np.einsum("gij,gj->gi", rot, geometries["box"]) + trans
-        geo[:, _G_HALF:_G_HALF + 3] = geometries["half"]
         geo[:, _G_INNER:_G_INNER + 3] = np.einsum("gij,gj->gi", rot, inner[:, :3]) + trans
         geo[:, _G_INNER_RADIUS] = inner[:, 3]
         self._geo = geo
+        self._geometries = geometries
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
         reach = geo[self._pairs[:, 0], _G_RADIUS] + geo[self._pairs[:, 1], _G_RADIUS] + CLEAR
@@ -176,13 +182,13 @@ class StateScreen:
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
         nj, ng = len(self._joints), len(self._gi)
-        work = np.zeros((nj + 2 * ng, FRAME_COLUMNS))
+        work = np.zeros((nj + ng + 2, _FR_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
 
     def _tail(self, work: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, ...]:
         """The kernels' arguments after the states: this screen's arrays and the work ones."""
-        return (self._joints, self._gi, self._geo, self._pairs, self._reach2,
-                self._moving, work, found)
+        return (self._joints, self._geometries, self._gi, self._geo, self._pairs,
+                self._reach2, self._moving, work, found)
 
     def scanner(self) -> Callable[[np.ndarray], int]:
         """:meth:`first_in_collision` with work arrays of its own, for one thread: what a
@@ -371,91 +377,28 @@ def _compile_alone() -> None:
 
 
 @inline
-def _place_box(g: int, s: float, jid: int, nj: int, geo: np.ndarray, work: np.ndarray) -> None:
-    """Geometry ``g``'s box in the world at the current state (``s``: its stamp)."""
-    ng = (work.shape[0] - nj) // 2
-    placed = work[nj + g, 3]
-    if placed == s or (jid == 0 and placed >= 0.0):  # fixed: placed once per scan
-        return
-    work[nj + g, 3] = s
-    # compose() of taskrunner.collision.frames, written out for a plain row: inlined inside
-    # the scan's branches, a call with array slices costs numba reference-count operations
-    # on them (the scan measured 17 % slower per state with the call).
-    row = nj + ng + g
-    for a in range(3):
-        origin = work[jid, ORIGIN + a]
-        for b in range(3):
-            origin += work[jid, 3 * a + b] * geo[g, _G_BOX + b]
-            total = 0.0
-            for c in range(3):
-                total += work[jid, 3 * a + c] * geo[g, _G_ROT + 3 * c + b]
-            work[row, 3 * a + b] = total
-        work[row, ORIGIN + a] = origin
-
-
-@inline
-def _sphere_box(cx: float, cy: float, cz: float, radius: float, g: int, nj: int, ng: int,
-                geo: np.ndarray, work: np.ndarray) -> float:
-    """Distance from a sphere to geometry ``g``'s (placed) box; negative: may overlap."""
-    row = nj + ng + g
-    dx = cx - work[row, ORIGIN]
-    dy = cy - work[row, ORIGIN + 1]
-    dz = cz - work[row, ORIGIN + 2]
-    outside = 0.0
-    for b in range(3):
-        local = work[row, b] * dx + work[row, 3 + b] * dy + work[row, 6 + b] * dz
-        excess = abs(local) - geo[g, _G_HALF + b]
-        if excess > 0.0:
-            outside += excess * excess
-    return math.sqrt(outside) - radius
-
-
-@inline
-def _boxes_gap(a: int, b: int, nj: int, ng: int, geo: np.ndarray, work: np.ndarray) -> float:
-    """The largest gap between the (placed) boxes' projections on their face normals."""
-    ra, rb = nj + ng + a, nj + ng + b
-    best = -np.inf
-    for side in range(2):
-        owner = ra if side == 0 else rb
-        for axis in range(3):
-            ux = work[owner, axis]
-            uy = work[owner, 3 + axis]
-            uz = work[owner, 6 + axis]
-            gap = abs((work[rb, ORIGIN] - work[ra, ORIGIN]) * ux
-                      + (work[rb, ORIGIN + 1] - work[ra, ORIGIN + 1]) * uy
-                      + (work[rb, ORIGIN + 2] - work[ra, ORIGIN + 2]) * uz)
-            for j in range(3):
-                gap -= geo[a, _G_HALF + j] * abs(work[ra, j] * ux + work[ra, 3 + j] * uy
-                                                 + work[ra, 6 + j] * uz)
-                gap -= geo[b, _G_HALF + j] * abs(work[rb, j] * ux + work[rb, 3 + j] * uy
-                                                 + work[rb, 6 + j] * uz)
-            if gap > best:
-                best = gap
-    return best
-
-
-@inline
 def _reset(nj: int, ng: int, gi: np.ndarray, geo: np.ndarray, work: np.ndarray) -> None:
-    """No geometry box placed yet; the fixed geometries' sphere centres placed."""
+    """No geometry placed yet; the fixed geometries' sphere centres placed."""
     for g in range(ng):
-        work[nj + g, 3] = -1.0
-        if gi[g, 0] == 0:
+        work[nj + g, _FR_PLACED] = -1.0
+        if gi[g, _I_JOINT] == 0:
             for a in range(3):
-                work[nj + g, a] = geo[g, a]
+                work[nj + g, _FR_CENTRE + a] = geo[g, _G_CENTRE + a]
 
 
 @inline
-def _inner_centre(g: int, jid: int, geo: np.ndarray, work: np.ndarray) -> tuple[float, float, float]:
-    """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed)."""
+def _inner_centre(g: int, jid: int, row: int, geo: np.ndarray, work: np.ndarray) -> None:
+    """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed), into
+    the centre columns of work row ``row``."""
     x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
-    return (work[jid, ORIGIN] + work[jid, 0] * x + work[jid, 1] * y + work[jid, 2] * z,
-            work[jid, ORIGIN + 1] + work[jid, 3] * x + work[jid, 4] * y + work[jid, 5] * z,
-            work[jid, ORIGIN + 2] + work[jid, 6] * x + work[jid, 7] * y + work[jid, 8] * z)
+    for a in range(3):
+        work[row, _FR_CENTRE + a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * x
+                                     + work[jid, 3 * a + 1] * y + work[jid, 3 * a + 2] * z)
 
 
 @inline
-def _proven(a: int, b: int, nj: int, ng: int, gi: np.ndarray, geo: np.ndarray,
-            work: np.ndarray) -> bool:
+def _proven(a: int, b: int, nj: int, ng: int, geometries: np.ndarray, gi: np.ndarray,
+            geo: np.ndarray, work: np.ndarray) -> bool:
     """True when geometries ``a`` and ``b`` surely overlap (by more than
     :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
     box where that box is the geometry (a box shape; placed already)."""
@@ -463,60 +406,66 @@ def _proven(a: int, b: int, nj: int, ng: int, gi: np.ndarray, geo: np.ndarray,
     rb = geo[b, _G_INNER_RADIUS]
     if ra <= 0.0 and rb <= 0.0:
         return False
-    ax, ay, az = _inner_centre(a, gi[a, _I_JOINT], geo, work)
-    bx, by, bz = _inner_centre(b, gi[b, _I_JOINT], geo, work)
+    row_a, row_b = nj + ng, nj + ng + 1
+    _inner_centre(a, gi[a, _I_JOINT], row_a, geo, work)
+    _inner_centre(b, gi[b, _I_JOINT], row_b, geo, work)
     if ra > 0.0 and rb > 0.0:
         reach = ra + rb - PROVEN
-        if reach > 0.0 and (ax - bx) ** 2 + (ay - by) ** 2 + (az - bz) ** 2 < reach * reach:
+        gap = 0.0
+        for i in range(3):
+            gap += (work[row_a, _FR_CENTRE + i] - work[row_b, _FR_CENTRE + i]) ** 2
+        if reach > 0.0 and gap < reach * reach:
             return True
     if ra > 0.0 and gi[b, _I_EXACT] != 0 and gi[b, _I_BOX] != 0:
-        if _sphere_box(ax, ay, az, ra, b, nj, ng, geo, work) < -PROVEN:
+        if _sphere_to_box(work, row_a, ra, b, geometries, nj) < -PROVEN:
             return True
     if rb > 0.0 and gi[a, _I_EXACT] != 0 and gi[a, _I_BOX] != 0:
-        if _sphere_box(bx, by, bz, rb, a, nj, ng, geo, work) < -PROVEN:
+        if _sphere_to_box(work, row_b, rb, a, geometries, nj) < -PROVEN:
             return True
     return False
 
 
 @inline
-def _uncleared(q: np.ndarray, stamp: float, joints: np.ndarray, gi: np.ndarray, geo: np.ndarray,
-               pairs: np.ndarray, reach2: np.ndarray, moving: np.ndarray, work: np.ndarray,
-               found: np.ndarray) -> int:
+def _uncleared(q: np.ndarray, stamp: float, joints: np.ndarray, geometries: np.ndarray,
+               gi: np.ndarray, geo: np.ndarray, pairs: np.ndarray, reach2: np.ndarray,
+               moving: np.ndarray, work: np.ndarray, found: np.ndarray) -> int:
     """How many pairs the bounding volumes leave at state ``q`` (their indices in
     ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
-    since :func:`_reset`. Compiled once, called by both scans (inlined into each, the
-    kernels took twice as long to compile: 11 s of CPU on a fresh machine)."""
+    since :func:`_reset`. The bounding spheres are placed here, the boxes by the path
+    verifier's kernels, which also measure a sphere against a box and two boxes."""
     nj = joints.shape[0]
     ng = gi.shape[0]
     joint_frames(q, joints, work)
     for m in range(moving.shape[0]):
         g = moving[m]
-        jid = gi[g, 0]
+        jid = gi[g, _I_JOINT]
         for a in range(3):
-            work[nj + g, a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * geo[g, 0]
-                               + work[jid, 3 * a + 1] * geo[g, 1]
-                               + work[jid, 3 * a + 2] * geo[g, 2])
+            work[nj + g, _FR_CENTRE + a] = (work[jid, ORIGIN + a]
+                                            + work[jid, 3 * a] * geo[g, _G_CENTRE]
+                                            + work[jid, 3 * a + 1] * geo[g, _G_CENTRE + 1]
+                                            + work[jid, 3 * a + 2] * geo[g, _G_CENTRE + 2])
     count = 0
     for k in range(pairs.shape[0]):
         a, b = pairs[k, 0], pairs[k, 1]
-        dx = work[nj + a, 0] - work[nj + b, 0]
-        dy = work[nj + a, 1] - work[nj + b, 1]
-        dz = work[nj + a, 2] - work[nj + b, 2]
+        ra, rb = nj + a, nj + b
+        dx = work[ra, _FR_CENTRE] - work[rb, _FR_CENTRE]
+        dy = work[ra, _FR_CENTRE + 1] - work[rb, _FR_CENTRE + 1]
+        dz = work[ra, _FR_CENTRE + 2] - work[rb, _FR_CENTRE + 2]
         if dx * dx + dy * dy + dz * dz > reach2[k]:
             continue
-        if gi[b, 1] != 0:
-            _place_box(b, stamp, gi[b, 0], nj, geo, work)
-            if _sphere_box(work[nj + a, 0], work[nj + a, 1], work[nj + a, 2],
-                           geo[a, _G_RADIUS], b, nj, ng, geo, work) > CLEAR:
+        if gi[b, _I_BOX] != 0:
+            if work[rb, _FR_PLACED] < stamp:
+                _place(b, geometries, work, nj, stamp)
+            if _sphere_to_box(work, ra, geo[a, _G_RADIUS], b, geometries, nj) > CLEAR:
                 continue
-        if gi[a, 1] != 0:
-            _place_box(a, stamp, gi[a, 0], nj, geo, work)
-            if _sphere_box(work[nj + b, 0], work[nj + b, 1], work[nj + b, 2],
-                           geo[b, _G_RADIUS], a, nj, ng, geo, work) > CLEAR:
+        if gi[a, _I_BOX] != 0:
+            if work[ra, _FR_PLACED] < stamp:
+                _place(a, geometries, work, nj, stamp)
+            if _sphere_to_box(work, rb, geo[b, _G_RADIUS], a, geometries, nj) > CLEAR:
                 continue
-            if gi[b, 1] != 0 and _boxes_gap(a, b, nj, ng, geo, work) > CLEAR:
+            if gi[b, _I_BOX] != 0 and _box_gap(a, b, geometries, work, nj) > CLEAR:
                 continue
-        if _proven(a, b, nj, ng, gi, geo, work):
+        if _proven(a, b, nj, ng, geometries, gi, geo, work):
             return -1
         found[count] = k
         count += 1
@@ -526,9 +475,9 @@ def _uncleared(q: np.ndarray, stamp: float, joints: np.ndarray, gi: np.ndarray, 
 @jit
 def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                              first: int, begin: int, steps: int, resolution: float,
-                             joints: np.ndarray, gi: np.ndarray, geo: np.ndarray,
-                             pairs: np.ndarray, reach2: np.ndarray, moving: np.ndarray,
-                             work: np.ndarray, found: np.ndarray) -> tuple[int, int, int]:
+                             joints: np.ndarray, geometries: np.ndarray, gi: np.ndarray,
+                             geo: np.ndarray, pairs: np.ndarray, reach2: np.ndarray,
+                             moving: np.ndarray, work: np.ndarray, found: np.ndarray) -> tuple[int, int, int]:
     """From row ``begin`` of ``rows`` on, the first state at which some pairs are not
     cleared: returns its row, how many pairs (their indices in ``found``; -1: a pair
     surely collides) and ``steps``; ``(-1, 0, steps)`` when every state clears every pair.
@@ -562,8 +511,8 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
             f = fractions[s]
             for i in range(n):
                 rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), joints, gi, geo, pairs, reach2, moving, work,
-                           found)
+        count = _uncleared(rows[s], float(s), joints, geometries, gi, geo, pairs, reach2, moving,
+                           work, found)
         if count != 0:
             return s, count, steps
     return -1, 0, steps
