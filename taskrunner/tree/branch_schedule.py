@@ -17,6 +17,7 @@ from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.scene import Scene
 from taskrunner.tasks.waits import FINISHED
+from taskrunner.tree.instant_leaves import Wait
 from taskrunner.tree.leafcheck import Motion
 from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
 from taskrunner.tree.schedule_proof import ScheduleProof, prove_schedule
@@ -29,14 +30,15 @@ __all__ = ["schedule_branches"]
 @dataclass(frozen=True)
 class _Queued:
     """What comes next in a branch the check schedules: a motion (``trajectory``), a step
-    waiting for another branch's step ``name`` ("wait"), or the end of a step another
-    branch waits for ("done")."""
+    waiting for another branch's step ``name`` ("wait"), the end of a step another
+    branch waits for ("done"), or a ``wait`` step of ``seconds`` ("pause")."""
 
     kind: str
     where: str | None
     trajectory: JointTrajectory | None = None
     name: str = ""
     moment: str = FINISHED
+    seconds: float = 0.0
 
 
 def schedule_branches(scene: Scene, branches: list[list[Motion]],
@@ -73,6 +75,10 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             if position == len(motions):
                 break
             leaf, start, end, path = motions[position]
+            if isinstance(leaf, Wait):
+                queue.append(_Queued("pause", getattr(leaf, "location", None),
+                                     seconds=leaf.seconds))
+                continue
             if path is None:
                 moved = np.flatnonzero(np.abs(np.asarray(end) - np.asarray(start)) > 1e-9)
                 if len(moved) == 0:
@@ -103,6 +109,11 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                     notes.append(f"{item.where or 'a step'} waits until "
                                  f"{reached(item.name, item.moment)}, at {at:.2f} s")
                 schedule.not_before(lane, at, item.where, item.name)
+            elif item.kind == "pause":
+                since, until = schedule.pause(lane, item.seconds)
+                schedule.pausing.pop(lane, None)  # nothing here holds in real time
+                notes.append(f"{item.where or 'a step'} waits {item.seconds:g} s, from "
+                             f"{since:.2f} s to {until:.2f} s (its branch only)")
             if item.kind != "motion":
                 queue.pop(0)
                 progressed = True

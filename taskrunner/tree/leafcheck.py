@@ -48,7 +48,7 @@ from taskrunner.tasks import StepNode
 from taskrunner.tree.behaviours import MoveJoints, MoveStraight, MoveToGoal
 from taskrunner.tree.choice import remember
 from taskrunner.tree.context import TaskContext
-from taskrunner.tree.instant_leaves import CheckOutcome, SceneAction
+from taskrunner.tree.instant_leaves import CheckOutcome, SceneAction, Wait
 from taskrunner.tree.occupancy import target_overlap
 from taskrunner.tree.outcome import Outcome
 from taskrunner.tree.reach import StagedGoals
@@ -307,6 +307,8 @@ class LeafPlayer:
                 scene.set_state(goal)
             elif isinstance(leaf, SceneAction):
                 leaf.action(ctx)
+            elif isinstance(leaf, Wait):  # no motion: its branch's schedule waits there
+                self.trace.append((leaf, scene.state, scene.state, None))
             elif isinstance(leaf, CheckOutcome):
                 self.outcome = leaf.measure(ctx)  # the run's own measure
                 failure = self.outcome.failure

@@ -16,6 +16,7 @@ from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import Runner, RunOptions
 from taskrunner.tasks import load_task
+from taskrunner.tree.check import check_task
 from taskrunner.tree.clock import TaskClock
 from taskrunner.tree.expect import arm_conflicts
 from taskrunner.tree.schedule import LATE, MotionSchedule
@@ -123,3 +124,12 @@ def test_a_pause_moves_its_lanes_next_start_and_no_other():
     assert schedule.earliest(((1, 0), (2, 1))) == 1.5  # a parallel inside the branch too
     assert schedule.earliest(()) == 1.5  # what follows the parallel follows the wait
     assert schedule.pause(left, 0.5) == (1.5, 2.0)  # a second wait from where it stands
+
+
+def test_the_check_schedules_a_wait_in_a_branch_as_the_run_does(tmp_path):
+    path = _task(tmp_path, "- wait: {seconds: 1.0}")
+    report = check_task(path)
+    assert report.ok, report.problems
+    notes = [n.message for n in report.notes]
+    assert f"{path}:7 waits 1 s, from 2.35 s to 3.35 s (its branch only)" in notes, notes
+    assert any(n.startswith(f"{path}:8 and {path}:13 move at once from 3.35 s") for n in notes)
