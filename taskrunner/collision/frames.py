@@ -55,9 +55,14 @@ _P = ParamSpec("_P")
 _R = TypeVar("_R")
 # A helper has no entry from Python: without numba's CPython and C wrappers (the code that
 # unboxes each argument from a Python object), which cost 25-90 ms of compilation per
-# helper of 8-19 arguments and were never called. (Options numba's typed signature of
-# ``njit`` does not list; it passes every keyword on to its compiler.)
-_HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True}
+# helper of 8-19 arguments and were never called. And without numba's reference counting
+# (``_nrt``): a helper allocates no array and only reads and writes those it is given,
+# which its caller holds; counted, each call of a helper that does not get inlined by
+# LLVM paid an atomic increment and decrement per array argument (the state screen's
+# scan 6 % slower per state with them). (Options numba's typed signature of ``njit`` does
+# not list; it passes every keyword on to its compiler.)
+_HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True,
+                                   "_nrt": False}
 
 
 def jit(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
