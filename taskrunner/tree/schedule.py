@@ -38,8 +38,12 @@ a *floor* under its lane (:meth:`MotionSchedule.not_before`): the lane's next mo
 no earlier than the named step's last motion ended (:meth:`MotionSchedule.finish_step`).
 A ``wait`` step sets one too (:meth:`MotionSchedule.pause`): its lane's next motions start
 its seconds after where the lane stands (its planned time), the other lanes go on; while
-its leaf holds, its branch is passed over in the turns (as one that holds). A lane that
-follows another starts no earlier than that one's floor.
+its leaf holds, its branch is passed over in the turns (as one that holds). How many
+motions the other branches admit before the paused branch's next one then depends on
+when their plans finish: every one is verified all the same, but which of two meeting
+motions waits may differ between runs (``run-task check`` admits the paused branch's
+next motion in its turn). A lane that follows another starts no earlier than that one's
+floor.
 
 *Planned time.* Seconds. A motion's start is decided by the schedule alone: the end of
 the motions it follows, a ``wait_for``'s floor, the other arms' committed motions (its
