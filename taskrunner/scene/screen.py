@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from taskrunner.collision import frames as collision_frames
-from taskrunner.collision.frames import ORIGIN, inline, jit, joint_frames
+from taskrunner.collision.frames import ORIGIN, jit, joint_frames
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
@@ -50,7 +50,7 @@ from taskrunner.scene.distance_bounds import (
     _FR_COLUMNS,
     _FR_PLACED,
     _box_gap,
-    _place,
+    _geometry_frame,
     _sphere_to_box,
 )
 from taskrunner.scene.collision import CollisionChecker
@@ -376,108 +376,13 @@ def _compile_alone() -> None:
     _scan_both(scene.state_screen(), states)
 
 
-@inline
-def _reset(nj: int, ng: int, gi: np.ndarray, geo: np.ndarray, work: np.ndarray) -> None:
-    """No geometry placed yet; the fixed geometries' sphere centres placed."""
-    for g in range(ng):
-        work[nj + g, _FR_PLACED] = -1.0
-        if gi[g, _I_JOINT] == 0:
-            for a in range(3):
-                work[nj + g, _FR_CENTRE + a] = geo[g, _G_CENTRE + a]
-
-
-@inline
-def _inner_centre(g: int, jid: int, row: int, geo: np.ndarray, work: np.ndarray) -> None:
-    """Geometry ``g``'s inner sphere centre in the world (its joint ``jid`` placed), into
-    the centre columns of work row ``row``."""
-    x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
-    for a in range(3):
-        work[row, _FR_CENTRE + a] = (work[jid, ORIGIN + a] + work[jid, 3 * a] * x
-                                     + work[jid, 3 * a + 1] * y + work[jid, 3 * a + 2] * z)
-
-
-@inline
-def _proven(a: int, b: int, nj: int, ng: int, geometries: np.ndarray, gi: np.ndarray,
-            geo: np.ndarray, work: np.ndarray) -> bool:
-    """True when geometries ``a`` and ``b`` surely overlap (by more than
-    :data:`PROVEN`): their inner spheres do, or one's inner sphere overlaps the other's
-    box where that box is the geometry (a box shape; placed already)."""
-    ra = geo[a, _G_INNER_RADIUS]
-    rb = geo[b, _G_INNER_RADIUS]
-    if ra <= 0.0 and rb <= 0.0:
-        return False
-    row_a, row_b = nj + ng, nj + ng + 1
-    _inner_centre(a, gi[a, _I_JOINT], row_a, geo, work)
-    _inner_centre(b, gi[b, _I_JOINT], row_b, geo, work)
-    if ra > 0.0 and rb > 0.0:
-        reach = ra + rb - PROVEN
-        gap = 0.0
-        for i in range(3):
-            gap += (work[row_a, _FR_CENTRE + i] - work[row_b, _FR_CENTRE + i]) ** 2
-        if reach > 0.0 and gap < reach * reach:
-            return True
-    if ra > 0.0 and gi[b, _I_EXACT] != 0 and gi[b, _I_BOX] != 0:
-        if _sphere_to_box(work, row_a, ra, b, geometries, nj) < -PROVEN:
-            return True
-    if rb > 0.0 and gi[a, _I_EXACT] != 0 and gi[a, _I_BOX] != 0:
-        if _sphere_to_box(work, row_b, rb, a, geometries, nj) < -PROVEN:
-            return True
-    return False
-
-
-@inline
-def _uncleared(q: np.ndarray, stamp: float, joints: np.ndarray, geometries: np.ndarray,
-               gi: np.ndarray, geo: np.ndarray, pairs: np.ndarray, reach2: np.ndarray,
-               moving: np.ndarray, work: np.ndarray, found: np.ndarray) -> int:
-    """How many pairs the bounding volumes leave at state ``q`` (their indices in
-    ``found``), or -1 when a pair surely collides; ``stamp``: a number of this state, new
-    since :func:`_reset`. The bounding spheres are placed here, the boxes by the path
-    verifier's kernels, which also measure a sphere against a box and two boxes."""
-    nj = joints.shape[0]
-    ng = gi.shape[0]
-    joint_frames(q, joints, work)
-    for m in range(moving.shape[0]):
-        g = moving[m]
-        jid = gi[g, _I_JOINT]
-        for a in range(3):
-            work[nj + g, _FR_CENTRE + a] = (work[jid, ORIGIN + a]
-                                            + work[jid, 3 * a] * geo[g, _G_CENTRE]
-                                            + work[jid, 3 * a + 1] * geo[g, _G_CENTRE + 1]
-                                            + work[jid, 3 * a + 2] * geo[g, _G_CENTRE + 2])
-    count = 0
-    for k in range(pairs.shape[0]):
-        a, b = pairs[k, 0], pairs[k, 1]
-        ra, rb = nj + a, nj + b
-        dx = work[ra, _FR_CENTRE] - work[rb, _FR_CENTRE]
-        dy = work[ra, _FR_CENTRE + 1] - work[rb, _FR_CENTRE + 1]
-        dz = work[ra, _FR_CENTRE + 2] - work[rb, _FR_CENTRE + 2]
-        if dx * dx + dy * dy + dz * dz > reach2[k]:
-            continue
-        if gi[b, _I_BOX] != 0:
-            if work[rb, _FR_PLACED] < stamp:
-                _place(b, geometries, work, nj, stamp)
-            if _sphere_to_box(work, ra, geo[a, _G_RADIUS], b, geometries, nj) > CLEAR:
-                continue
-        if gi[a, _I_BOX] != 0:
-            if work[ra, _FR_PLACED] < stamp:
-                _place(a, geometries, work, nj, stamp)
-            if _sphere_to_box(work, rb, geo[b, _G_RADIUS], a, geometries, nj) > CLEAR:
-                continue
-            if gi[b, _I_BOX] != 0 and _box_gap(a, b, geometries, work, nj) > CLEAR:
-                continue
-        if _proven(a, b, nj, ng, geometries, gi, geo, work):
-            return -1
-        found[count] = k
-        count += 1
-    return count
-
-
 @jit
 def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                              first: int, begin: int, steps: int, resolution: float,
                              joints: np.ndarray, geometries: np.ndarray, gi: np.ndarray,
                              geo: np.ndarray, pairs: np.ndarray, reach2: np.ndarray,
-                             moving: np.ndarray, work: np.ndarray, found: np.ndarray) -> tuple[int, int, int]:
+                             moving: np.ndarray, work: np.ndarray, found: np.ndarray
+                             ) -> tuple[int, int, int]:
     """From row ``begin`` of ``rows`` on, the first state at which some pairs are not
     cleared: returns its row, how many pairs (their indices in ``found``; -1: a pair
     surely collides) and ``steps``; ``(-1, 0, steps)`` when every state clears every pair.
@@ -491,7 +396,13 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
     ``max(1, ceil(max |b - a| / resolution))``, and the fractions ``table[steps]``
     (``(-2, 0, steps)`` without such a row, or where it does not start with 1.0). Rows
     as they are (:meth:`StateScreen.scanner`): ``a`` and ``b`` empty, ``steps`` the
-    rows' count (``table`` is not read)."""
+    rows' count (``table`` is not read).
+
+    At each state the bounding spheres are placed here; the boxes (when a pair needs one)
+    are placed, and a sphere measured against a box and two boxes against each other, by
+    the path verifier's kernels (:mod:`taskrunner.scene.distance_bounds`). One function
+    with no helpers of its own: each level of called kernels has LLVM optimize the code
+    beneath it once more at the first compilation."""
     n = a.shape[0]
     if steps > 0:
         fractions = table[0]
@@ -505,14 +416,82 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
         if steps >= table.shape[0] or steps > rows.shape[0] or table[steps, 0] != 1.0:
             return -2, 0, steps
         fractions = table[steps]
-    _reset(joints.shape[0], gi.shape[0], gi, geo, work)
+    nj = joints.shape[0]
+    ng = gi.shape[0]
+    inner_a, inner_b = nj + ng, nj + ng + 1  # the pair's inner sphere centres
+    for g in range(ng):  # no geometry placed yet; the fixed ones' sphere centres placed
+        work[nj + g, _FR_PLACED] = -1.0
+        if gi[g, _I_JOINT] == 0:
+            for i in range(3):
+                work[nj + g, _FR_CENTRE + i] = geo[g, _G_CENTRE + i]
     for s in range(begin, steps):
         if n > 0:
             f = fractions[s]
             for i in range(n):
                 rows[s, first + i] = b[i] if f == 1.0 else a[i] + f * (b[i] - a[i])
-        count = _uncleared(rows[s], float(s), joints, geometries, gi, geo, pairs, reach2, moving,
-                           work, found)
+        stamp = float(s)
+        joint_frames(rows[s], joints, work)
+        for m in range(moving.shape[0]):
+            g = moving[m]
+            jid = gi[g, _I_JOINT]
+            for i in range(3):
+                work[nj + g, _FR_CENTRE + i] = (work[jid, ORIGIN + i]
+                                                + work[jid, 3 * i] * geo[g, _G_CENTRE]
+                                                + work[jid, 3 * i + 1] * geo[g, _G_CENTRE + 1]
+                                                + work[jid, 3 * i + 2] * geo[g, _G_CENTRE + 2])
+        count = 0
+        for k in range(pairs.shape[0]):
+            ga, gb = pairs[k, 0], pairs[k, 1]
+            row_a, row_b = nj + ga, nj + gb
+            dx = work[row_a, _FR_CENTRE] - work[row_b, _FR_CENTRE]
+            dy = work[row_a, _FR_CENTRE + 1] - work[row_b, _FR_CENTRE + 1]
+            dz = work[row_a, _FR_CENTRE + 2] - work[row_b, _FR_CENTRE + 2]
+            if dx * dx + dy * dy + dz * dz > reach2[k]:
+                continue
+            if gi[gb, _I_BOX] != 0:
+                if work[row_b, _FR_PLACED] < stamp:  # placed once per scan if fixed
+                    _geometry_frame(gb, geometries, work, nj)
+                    work[row_b, _FR_PLACED] = np.inf if gi[gb, _I_JOINT] == 0 else stamp
+                if _sphere_to_box(work, row_a, geo[ga, _G_RADIUS], gb, geometries, nj) > CLEAR:
+                    continue
+            if gi[ga, _I_BOX] != 0:
+                if work[row_a, _FR_PLACED] < stamp:  # placed once per scan if fixed
+                    _geometry_frame(ga, geometries, work, nj)
+                    work[row_a, _FR_PLACED] = np.inf if gi[ga, _I_JOINT] == 0 else stamp
+                if _sphere_to_box(work, row_b, geo[gb, _G_RADIUS], ga, geometries, nj) > CLEAR:
+                    continue
+                if gi[gb, _I_BOX] != 0 and _box_gap(ga, gb, geometries, work, nj) > CLEAR:
+                    continue
+            # Surely overlapping (by more than PROVEN): the inner spheres do, or one's
+            # inner sphere overlaps the other's box where that box is the geometry.
+            ra = geo[ga, _G_INNER_RADIUS]
+            rb = geo[gb, _G_INNER_RADIUS]
+            if ra > 0.0 or rb > 0.0:
+                for side in range(2):
+                    g = ga if side == 0 else gb
+                    jid = gi[g, _I_JOINT]
+                    x, y, z = geo[g, _G_INNER], geo[g, _G_INNER + 1], geo[g, _G_INNER + 2]
+                    for i in range(3):
+                        work[inner_a + side, _FR_CENTRE + i] = (
+                            work[jid, ORIGIN + i] + work[jid, 3 * i] * x
+                            + work[jid, 3 * i + 1] * y + work[jid, 3 * i + 2] * z)
+                proven = False
+                if ra > 0.0 and rb > 0.0:
+                    reach = ra + rb - PROVEN
+                    gap = 0.0
+                    for i in range(3):
+                        gap += (work[inner_a, _FR_CENTRE + i] - work[inner_b, _FR_CENTRE + i]) ** 2
+                    proven = reach > 0.0 and gap < reach * reach
+                if (not proven and ra > 0.0 and gi[gb, _I_EXACT] != 0 and gi[gb, _I_BOX] != 0
+                        and _sphere_to_box(work, inner_a, ra, gb, geometries, nj) < -PROVEN):
+                    proven = True
+                if (not proven and rb > 0.0 and gi[ga, _I_EXACT] != 0 and gi[ga, _I_BOX] != 0
+                        and _sphere_to_box(work, inner_b, rb, ga, geometries, nj) < -PROVEN):
+                    proven = True
+                if proven:
+                    return s, -1, steps
+            found[count] = k
+            count += 1
         if count != 0:
             return s, count, steps
     return -1, 0, steps
