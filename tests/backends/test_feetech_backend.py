@@ -6,9 +6,12 @@ detection time (both ``time.monotonic``, same process); nothing else is timed.
 
 from __future__ import annotations
 
+import os
 import time
+import tty
 from collections.abc import Iterator, Sequence
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -26,6 +29,7 @@ from taskrunner.backends.feetech import (
     calibrated_servos,
     load_lerobot_calibration,
 )
+from taskrunner.backends.feetech import bus as bus_module
 from taskrunner.errors import BackendError, BusFaultError, ExecutionCancelledError
 from taskrunner.types import JointTrajectory
 
@@ -120,6 +124,38 @@ def test_a_late_cycle_slips_the_plan_instead_of_leaping_the_goals(emulator: BusE
         assert backend.slip >= slip - 1e-4 and "behind the plan" in result.message
         tracking = backend.tracking()
         assert all(t.largest < 0.1 for t in tracking.values()), tracking
+
+
+def test_a_write_that_went_out_is_not_a_fault_however_late_its_thread_runs_again(
+        emulator: BusEmulator, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every byte written, then the thread kept from running past the reply timeout (a busy
+    host): no fault (pyserial's timed write called that a 'Write timeout': the adapter
+    unplugged); a port that takes no byte for the timeout is one."""
+    bus = FeetechBus(emulator.port, reply_timeout=0.05)
+    try:
+        def write_then_wait(fd: int, data: bytes) -> int:
+            written = os.write(fd, data)
+            time.sleep(0.1)
+            return written
+
+        monkeypatch.setattr(bus_module, "os", SimpleNamespace(write=write_then_wait))
+        bus.write_goals({1: emulator.servos[1].present()})
+        assert bus.ping(1) == 777
+    finally:
+        monkeypatch.undo()
+        bus.close()
+    master, slave = os.openpty()  # nobody reads it: its buffer fills
+    tty.setraw(slave)
+    bus = FeetechBus(os.ttyname(slave), reply_timeout=0.05)
+    try:
+        with pytest.raises(BusFaultError, match=r"not taken within 50 ms") as caught:
+            for _ in range(100_000):
+                bus.write_goals(dict.fromkeys(range(1, 7), 2048))
+        assert caught.value.kind == FaultKind.UNPLUGGED
+    finally:
+        bus.close()
+        os.close(master)
+        os.close(slave)
 
 def test_cancel_holds_the_servos_where_they_are(emulator: BusEmulator) -> None:
     with _backend(emulator, reply_timeout=0.3) as backend:

@@ -16,6 +16,8 @@ servo's maximum torque, V, °C.
 from __future__ import annotations
 
 import enum
+import os
+import select
 import termios
 import threading
 import time
@@ -158,9 +160,12 @@ class FeetechBus:
             except (pyserial.SerialException, OSError, ValueError) as exc:
                 raise BusFaultError(f"cannot open the servo bus on {port!r}: {exc}",
                                     FaultKind.UNPLUGGED) from None
+            # written to directly (see _write_all); pyserial keeps it non-blocking
+            self._fd: int | None = self._serial.fileno()
         else:
             self.port_name = str(getattr(port, "port", port))
             self._serial = port
+            self._fd = None
         self._rx = bytearray()
         self._lock = threading.Lock()
         self._closed = False
@@ -250,9 +255,33 @@ class FeetechBus:
             raise BusFaultError(f"the servo bus on {self.port_name!r} is closed",
                                 FaultKind.UNPLUGGED)
         try:
-            self._serial.write(packet)
+            if self._fd is None:
+                self._serial.write(packet)
+            else:
+                self._write_all(self._fd, packet)
         except (pyserial.SerialException, OSError, TypeError) as exc:
             raise self._fault(FaultKind.UNPLUGGED, None, f"write failed ({exc})") from None
+
+    def _write_all(self, fd: int, packet: bytes) -> None:
+        """Every byte of ``packet`` to the port, or a fault once the port has taken none
+        for the reply timeout. (pyserial's write with a timeout raises 'Write timeout' when
+        its thread was kept from running past the timeout, every byte already written: a
+        busy host read as an unplugged adapter.)"""
+        rest = memoryview(packet)
+        deadline = time.monotonic() + self._timeout
+        while True:
+            try:
+                rest = rest[os.write(fd, rest):]
+            except BlockingIOError:
+                pass  # the port's buffer is full: wait for room below
+            if not rest:
+                return
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                raise self._fault(FaultKind.UNPLUGGED, None,
+                                  f"write failed ({len(rest)} of {len(packet)} byte(s) not "
+                                  f"taken within {1000 * self._timeout:.0f} ms)")
+            select.select([], [fd], [], remaining)
 
     def _receive(self, servo_id: int, deadline: float, what: str,
                  later: Sequence[int] = ()) -> Packet:
