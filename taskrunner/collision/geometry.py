@@ -6,7 +6,8 @@ or an object's) in its own frame: the joint that carries it and its placement th
 contain it, and the core shape whose support function the kernels evaluate exactly
 (:class:`ShapeKind`, grown by ``swept``). The path verifier
 (:class:`taskrunner.scene.path_verifier.PathVerifier`) builds these records; the state screen
-(:mod:`taskrunner.scene.screen`) derives its own from them.
+(:mod:`taskrunner.scene.screen`) places and measures boxes from the same records (with the
+verifier's kernels) and keeps its spheres in rows of its own derived from them.
 """
 
 from __future__ import annotations

@@ -18,9 +18,8 @@ from taskrunner.collision.frames import AXIS, ORIGIN, inline, jit, joint_frames
 from taskrunner.scene.distance_bounds import (
     _FR_CENTRE,
     _FR_PLACED,
+    _geometry_frame,
     _lower_bound,
-    _place,
-    _sphere_gap,
     _support_bound,
 )
 
@@ -135,101 +134,6 @@ def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, 
 
 
 @inline
-def _position_for(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, k: int,
-                  start: float, c0: np.ndarray, walk: np.ndarray, step: float, to_end: float) -> float:
-    """A path position after ``start`` where pair ``k``'s motion bound from ``start`` (lever
-    arms: the left ones of ``walk``) is at most ``step`` (> 0), and close to the furthest
-    one: the last node where it is, then within that node's segment to ``_CLOSE`` of
-    ``step``, or as far as ``_BISECTIONS`` evaluations get. ``to_end``: the bound from
-    ``start`` to the path's end."""
-    last = cumulative.shape[0] - 1
-    if to_end <= step:
-        return float(last)
-    # The left lever arms' first column, _COLUMNS, read from the walk's width: passed as the
-    # constant, numba would type it Literal[int](8) and compile _bound and _levers_here once
-    # more for it than for the right ones' column (a second copy, ~0.3 s of first compilation).
-    left = walk.shape[1] - 2 * cumulative.shape[1]
-    lo_node = int(start) + 1      # first node after start
-    lo, f_lo = start, 0.0         # no motion yet
-    if lo_node == last:           # the bound there is ``to_end``
-        f_node = to_end
-    else:
-        f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
-    if f_node <= step:
-        hi_node, f_hi = last, to_end   # bound(lo_node) <= step < bound(hi_node)
-        while hi_node - lo_node > 1:
-            mid = (lo_node + hi_node) // 2
-            f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(mid))
-            if f_mid <= step:
-                lo_node, f_node = mid, f_mid
-            else:
-                hi_node, f_hi = mid, f_mid
-        lo, f_lo = float(lo_node), f_node
-        hi = float(hi_node)
-    else:
-        hi, f_hi = float(lo_node), f_node
-    # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi).
-    for _ in range(_BISECTIONS):
-        if f_lo >= (1.0 - _CLOSE) * step or f_hi <= f_lo:
-            break
-        width = hi - lo
-        mid = lo + width * (step - f_lo) / (f_hi - f_lo)
-        if mid < lo + _CLOSE * width:
-            mid = lo + _CLOSE * width
-        if mid > hi - _CLOSE * width:
-            mid = hi - _CLOSE * width
-        f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid)
-        if f_mid <= step:
-            lo, f_lo = mid, f_mid
-        else:
-            hi, f_hi = mid, f_mid
-    if lo <= start:
-        # Never stay put (the walk must advance): halve towards the start; the bound is
-        # continuous and 0 there, so this ends.
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid <= start:
-                break
-            if _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid) <= step:
-                return mid
-            hi = mid
-    return lo
-
-
-@inline
-def _pick(walk: np.ndarray, schedule: np.ndarray, selected: np.ndarray, states: np.ndarray,
-          q: np.ndarray) -> tuple[int, float]:
-    """The next position to evaluate (the earliest due pair's), the pairs measured there
-    (written to ``selected``: due there, or due soon and past their early position) and
-    the state there (written to ``q``). Count 0: done."""
-    n_pairs = walk.shape[0]
-    due, early_at = schedule[0], schedule[1]
-    s = np.inf
-    for k in range(n_pairs):
-        if due[k] < s:
-            s = due[k]
-    if s == np.inf:
-        return 0, 0.0
-    count = 0
-    for k in range(n_pairs):
-        # Measuring early (after the last measurement) is always sound.
-        if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
-            selected[count] = k
-            count += 1
-    n = states.shape[0]
-    seg = int(s)
-    if seg > n - 2:
-        seg = max(n - 2, 0)
-    frac = s - seg
-    for j in range(states.shape[1]):
-        if n == 1:
-            q[j] = states[0, j]
-        else:
-            q[j] = states[seg, j] + frac * (states[seg + 1, j] - states[seg, j])
-    return count, s
-
-
-@inline
 def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndarray,
              pair_levers: np.ndarray, geometries: np.ndarray, frames: np.ndarray, nj: int,
              walk: np.ndarray, schedule: np.ndarray, c0: np.ndarray, settings: np.ndarray) -> None:
@@ -241,7 +145,11 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     margin, gain, early = settings[0], settings[2], settings[3]
     per_state = settings[_S_PER_STATE] != 0.0
     nq = cumulative.shape[1]
-    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _position_for); then the right lever arms
+    # The left lever arms' first column, _COLUMNS, read from the walk's width: passed as the
+    # constant, numba would type it Literal[int](8) and compile _bound and _levers_here once
+    # more for it than for the right ones' column (a second copy, ~0.3 s of first
+    # compilation). Then the right lever arms.
+    left = walk.shape[1] - 2 * nq
     right = left + nq
     last = float(cumulative.shape[0] - 1)
     if walk[k, _HAS_L] == 0.0:
@@ -287,7 +195,61 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
             schedule[1, k] = np.inf
             return
         step = max(d_left * (1.0 + gain), margin)
-    due = _position_for(cumulative, pair_i, pair_levers, k, start, c0, walk, step, to_end)
+    # The next measurement: a path position after ``start`` where the pair's motion bound
+    # from ``start`` (the left lever arms) is at most ``step`` (> 0), and close to the
+    # furthest one: the last node where it is, then within that node's segment to
+    # ``_CLOSE`` of ``step``, or as far as ``_BISECTIONS`` evaluations get (written here,
+    # not called: one level of compiled calls less over _bound).
+    last_node = cumulative.shape[0] - 1
+    if to_end <= step:
+        due = float(last_node)
+    else:
+        lo_node = int(start) + 1      # first node after start
+        lo, f_lo = start, 0.0         # no motion yet
+        if lo_node == last_node:      # the bound there is ``to_end``
+            f_node = to_end
+        else:
+            f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
+        if f_node <= step:
+            hi_node, f_hi = last_node, to_end   # bound(lo_node) <= step < bound(hi_node)
+            while hi_node - lo_node > 1:
+                node = (lo_node + hi_node) // 2
+                f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(node))
+                if f_mid <= step:
+                    lo_node, f_node = node, f_mid
+                else:
+                    hi_node, f_hi = node, f_mid
+            lo, f_lo = float(lo_node), f_node
+            hi = float(hi_node)
+        else:
+            hi, f_hi = float(lo_node), f_node
+        # Regula falsi, keeping the bracket: bound(lo) <= step < bound(hi).
+        for _ in range(_BISECTIONS):
+            if f_lo >= (1.0 - _CLOSE) * step or f_hi <= f_lo:
+                break
+            width = hi - lo
+            mid = lo + width * (step - f_lo) / (f_hi - f_lo)
+            if mid < lo + _CLOSE * width:
+                mid = lo + _CLOSE * width
+            if mid > hi - _CLOSE * width:
+                mid = hi - _CLOSE * width
+            f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid)
+            if f_mid <= step:
+                lo, f_lo = mid, f_mid
+            else:
+                hi, f_hi = mid, f_mid
+        due = lo
+        if lo <= start:
+            # Never stay put (the walk must advance): halve towards the start; the bound
+            # is continuous and 0 there, so this ends.
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if mid <= start:
+                    break
+                if _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid) <= step:
+                    due = mid
+                    break
+                hi = mid
     schedule[0, k] = due
     schedule[1, k] = start + (1.0 - early) * (due - start)
 
@@ -358,11 +320,32 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             walk[u, _UPENDING] = -1.0  # measured once
             _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geometries, frames, nj,
                      walk, schedule, c0, settings)
-    # Then on along the path.
+    # Then on along the path: the next position to evaluate (the earliest due unit's), the
+    # units measured there (in ``picked``: due there, or due soon and past their early
+    # position) and the state there (in ``q``).
+    due, early_at = schedule[0], schedule[1]
     while True:
-        picks, s = _pick(walk, schedule, picked, states, q)
-        if picks == 0:
+        s = np.inf
+        for k in range(walk.shape[0]):
+            if due[k] < s:
+                s = due[k]
+        if s == np.inf:
             return 0
+        picks = 0
+        for k in range(walk.shape[0]):
+            # Measuring early (after the last measurement) is always sound.
+            if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
+                picked[picks] = k
+                picks += 1
+        seg = int(s)
+        if seg > n - 2:
+            seg = n - 2 if n >= 2 else 0
+        frac = s - seg
+        for j in range(nq):
+            if n == 1:
+                q[j] = states[0, j]
+            else:
+                q[j] = states[seg, j] + frac * (states[seg + 1, j] - states[seg, j])
         settings[_S_AT] = s
         if per_state:
             joint_frames(q, joints, frames)
@@ -391,10 +374,15 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                 k = members[m]
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 if frames[nj + a, _FR_PLACED] < stamp:
-                    _place(a, geometries, frames, nj, stamp)
+                    _geometry_frame(a, geometries, frames, nj)
+                    frames[nj + a, _FR_PLACED] = np.inf if geometries[a].joint == 0 else stamp
                 if frames[nj + b, _FR_PLACED] < stamp:
-                    _place(b, geometries, frames, nj, stamp)
-                distances[m] = _sphere_gap(a, b, geometries, frames, nj)
+                    _geometry_frame(b, geometries, frames, nj)
+                    frames[nj + b, _FR_PLACED] = np.inf if geometries[b].joint == 0 else stamp
+                gap = 0.0                          # their bounding spheres' distance
+                for c in range(3):
+                    gap += (frames[nj + a, _FR_CENTRE + c] - frames[nj + b, _FR_CENTRE + c]) ** 2
+                distances[m] = math.sqrt(gap) - geometries[a].radius - geometries[b].radius
                 if distances[m] < distances[nearest]:
                     nearest = m
             for t in range(first - 1, last):
@@ -437,7 +425,7 @@ def _segment_bounds(cumulative: np.ndarray, geometries: np.ndarray, pair_i: np.n
     nq = cumulative.shape[1]
     walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
     c0 = np.zeros(nq)
-    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _position_for)
+    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _measure)
     for k in range(pair_i.shape[0]):
         _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
         out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, 1.0)

@@ -65,13 +65,6 @@ def _geometry_frame(g: int, geometries: np.ndarray, frames: np.ndarray, nj: int)
         frames[row, _FR_BOX + a] = box
 
 
-@inline
-def _place(g: int, geometries: np.ndarray, frames: np.ndarray, nj: int, stamp: float) -> None:
-    """Place geometry ``g`` at the state of the joint frames (compiled state ``stamp``)."""
-    _geometry_frame(g, geometries, frames, nj)
-    frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
-
-
 @jit
 def _farthest_point_centre(points: np.ndarray, centre: np.ndarray, iterations: int) -> float:
     """Badoiu-Clarkson: move ``centre`` (in place) towards the farthest point, with
@@ -144,21 +137,11 @@ def _box_gap(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int
 
 
 @inline
-def _sphere_gap(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> float:
-    """The distance of geometries ``a``'s and ``b``'s bounding spheres (placed): the first
-    of :func:`_lower_bound`'s bounds, which is at least this."""
-    ra, rb = nj + a, nj + b
-    gap = 0.0
-    for i in range(3):
-        gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
-    return math.sqrt(gap) - geometries[a].radius - geometries[b].radius
-
-
-@inline
 def _lower_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj: int) -> float:
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive: the
     best of their bounding spheres' distance, each sphere's distance to the other's
-    bounding box and the boxes' separation along their face normals."""
+    bounding box and the boxes' separation along their face normals (the walk measures
+    the spheres' distance alone first, written out there)."""
     ra, rb = nj + a, nj + b
     gap = 0.0
     for i in range(3):

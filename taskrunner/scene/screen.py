@@ -45,6 +45,7 @@ from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
 from taskrunner.scene.coalpath import exact_line_scanner
+from taskrunner.scene.collision import CollisionChecker
 from taskrunner.scene.distance_bounds import (
     _FR_CENTRE,
     _FR_COLUMNS,
@@ -53,7 +54,6 @@ from taskrunner.scene.distance_bounds import (
     _geometry_frame,
     _sphere_to_box,
 )
-from taskrunner.scene.collision import CollisionChecker
 from taskrunner.scene.path_verifier import PathVerifier
 
 __all__ = ["CLEAR", "StateScreen", "warm_kernels"]
