@@ -310,9 +310,22 @@ def _primitive(shape: Shape) -> dict[str, Any]:
     raise TypeError(f"no primitive for {shape!r}")
 
 
+def _position(model: RobotModel, i: int, value: float) -> float:
+    """``value`` of joint ``i`` to 9 decimals, rounded inward where rounding to the nearest
+    would leave the joint's limits (a state at a limit stays within them when read back by
+    a strict reader: roboplan refuses a start 2e-10 rad past a limit)."""
+    out = round(float(value), 9)
+    if out < model.lower[i]:
+        out = math.ceil(float(value) * 1e9) / 1e9
+    elif out > model.upper[i]:
+        out = math.floor(float(value) * 1e9) / 1e9
+    return out
+
+
 def _joint_state(model: RobotModel, q: np.ndarray) -> dict[str, Any]:
     return {"header": _header(), "name": list(model.joint_names),
-            "position": [round(float(v), 9) for v in q], "velocity": [], "effort": []}
+            "position": [_position(model, i, v) for i, v in enumerate(q)], "velocity": [],
+            "effort": []}
 
 
 def scene_message(model: RobotModel, name: str, objects: list[Placed],
@@ -353,7 +366,7 @@ def request_message(model: RobotModel, start: np.ndarray, goal: np.ndarray,
              "orientation_constraints": [], "visibility_constraints": []}
     if pose is None:
         goal_constraints = {**empty, "joint_constraints": [
-            {"joint_name": j, "position": round(float(goal[i]), 9), "tolerance_above": 0.001,
+            {"joint_name": j, "position": _position(model, i, goal[i]), "tolerance_above": 0.001,
              "tolerance_below": 0.001, "weight": 1.0}
             for j, i in zip(group.joint_names, group.joint_indices)]}
     else:

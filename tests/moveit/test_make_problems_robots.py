@@ -86,3 +86,16 @@ def test_ur5_gripper_collides_with_its_meshes(make_problems) -> None:
 def test_unknown_robot_is_named_in_the_error(make_problems, tmp_path: Path) -> None:
     with pytest.raises(SystemExit, match="unknown robot 'fetch'; known: panda, ur5_robotiq, tiago"):
         make_problems.generate(tmp_path, count=1, robot_name="fetch")
+
+
+def test_a_state_at_a_joint_limit_stays_within_it_when_written(make_problems) -> None:
+    """TIAGo's arm_2_joint stops at -1.57079632679: to the nearest 9 decimals that is
+    -1.570796327, past the limit for a strict reader; it is written -1.570796326."""
+    model = load_robot(ROBOTS / "tiago")
+    i = model.joint_names.index("arm_2_joint")
+    q = model.default_state()
+    q[i] = model.lower[i]
+    written = make_problems._joint_state(model, q)["position"][i]
+    assert model.lower[i] <= written <= model.lower[i] + 1e-9
+    q[i] = 0.1234567894
+    assert make_problems._joint_state(model, q)["position"][i] == 0.123456789
