@@ -45,7 +45,7 @@ if not getattr(_numba_config, "CACHE_DIR", ""):  # numba was imported first, by 
     _numba_config.reload_config()  # it reads the environment again (NUMBA_CACHE_DIR above)
 
 __all__ = ["AXIS", "FRAME_COLUMNS", "ORIGIN", "ROTATION", "compose", "forward_kinematics",
-           "inline", "jit", "joint_frames"]
+           "inline", "jit", "jit_plain", "joint_frames"]
 
 ROTATION, ORIGIN, AXIS = 0, 9, 12
 """Columns of a frame row: rotation (9, row-major), origin (3, m), a joint's axis (3)."""
@@ -61,8 +61,9 @@ _R = TypeVar("_R")
 # LLVM paid an atomic increment and decrement per array argument (the state screen's
 # scan 6 % slower per state with them). (Options numba's typed signature of ``njit`` does
 # not list; it passes every keyword on to its compiler.)
+_PLAIN_OPTIONS: dict[str, Any] = {"_nrt": False}
 _HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True,
-                                   "_nrt": False}
+                                   **_PLAIN_OPTIONS}
 
 
 def jit(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
@@ -70,6 +71,13 @@ def jit(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
     other kernels), cached on disk. The dispatcher is typed as the function: mypy checks
     the calls' arguments and results against its annotations."""
     return numba.njit(function, cache=True, nogil=True, error_model="numpy")
+
+
+def jit_plain(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
+    """:func:`jit` for a kernel that allocates no array (it reads and writes those it is
+    given): compiled without numba's reference counting, as the helpers are (less code
+    to compile, no atomic counts on the arrays it slices)."""
+    return numba.njit(function, cache=True, nogil=True, error_model="numpy", **_PLAIN_OPTIONS)
 
 
 def inline(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:

@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from taskrunner.collision import frames as collision_frames
-from taskrunner.collision.frames import ORIGIN, jit, joint_frames
+from taskrunner.collision.frames import ORIGIN, jit_plain, joint_frames
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
@@ -376,7 +376,7 @@ def _compile_alone() -> None:
     _scan_both(scene.state_screen(), states)
 
 
-@jit
+@jit_plain
 def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                              first: int, begin: int, steps: int, resolution: float,
                              joints: np.ndarray, geometries: np.ndarray, gi: np.ndarray,
