@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from taskrunner.collision.frames import AXIS, ORIGIN, inline, jit, joint_frames
+from taskrunner.collision.frames import AXIS, ORIGIN, inline, jit, jit_plain, joint_frames
 from taskrunner.scene.distance_bounds import (
     _FR_CENTRE,
     _FR_PLACED,
@@ -254,12 +254,12 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     schedule[1, k] = start + (1.0 - early) * (due - start)
 
 
-@jit
+@jit_plain
 def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i: np.ndarray,
           unit_i: np.ndarray, unit_levers: np.ndarray, members: np.ndarray, unit_from: np.ndarray,
           unit_of: np.ndarray, states: np.ndarray, cumulative: np.ndarray, frames: np.ndarray,
           walk: np.ndarray, schedule: np.ndarray, picked: np.ndarray, selected: np.ndarray,
-          distances: np.ndarray, q: np.ndarray, settings: np.ndarray) -> int:
+          distances: np.ndarray, q: np.ndarray, c0: np.ndarray, settings: np.ndarray) -> int:
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -267,6 +267,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     contact (``settings[_S_BAD]``: its index into ``selected``), ``_NOT_FINITE`` for a
     state that is not finite (its row in ``settings[_S_BAD]``). The first call fills
     ``cumulative`` (per joint, the sum of ``|dq|`` up to each state) and resets ``walk``.
+    ``c0``: scratch of ``nq`` values (the kernel allocates nothing: it is compiled
+    without numba's reference counting).
 
     The walk schedules units (``unit_i``, ``unit_levers``: rows like ``pair_i``'s and the
     pair lever arms, one per unit; the pairs of unit ``u`` are ``members[unit_from[u]:
@@ -294,7 +296,6 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             schedule[1, k] = 0.0
         for g in range(geometries.shape[0]):
             frames[nj + g, _FR_PLACED] = -1.0      # not placed
-    c0 = np.empty(nq)
     per_state = settings[_S_PER_STATE] != 0.0
     cheap_from = settings[4]
     exact_from = settings[_S_EXACT_FROM]
