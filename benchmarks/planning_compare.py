@@ -15,7 +15,9 @@ under-table pick, bookshelf small / tall / thin, box, cage), regenerated into
 (``load_planning_scene(...).apply``, ``load_motion_plan_request(...).plan_request``) and
 plans it with :class:`MotionPlanner` (timing off: no trajectory); roboplan gets the same
 URDF (example-robot-data's Panda), our SRDF (groups, disabled pairs) and the scene file's
-objects and allowed pairs, as read by the validator below. Each problem is planned by
+objects and allowed pairs, as read by the validator below. ``--robot ur5_robotiq`` /
+``--robot tiago``: the same on ``make_problems.py``'s sets of that robot (its plain URDF and
+SRDF in ``benchmarks/robots``, regenerated into ``benchmarks/problems`` unless ``--problems``). Each problem is planned by
 both, one after the other, alternating which goes first; the wall time of the one plan
 call is measured (``MotionPlanner.plan``: start and goal checks, search, shortcut, exact
 verification; the scene's collision model, path verifier and state screen are built before the timer,
