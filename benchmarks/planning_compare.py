@@ -17,7 +17,8 @@ plans it with :class:`MotionPlanner` (timing off: no trajectory); roboplan gets 
 URDF (example-robot-data's Panda), our SRDF (groups, disabled pairs) and the scene file's
 objects and allowed pairs, as read by the validator below. ``--robot ur5_robotiq`` /
 ``--robot tiago``: the same on ``make_problems.py``'s sets of that robot (its plain URDF and
-SRDF in ``benchmarks/robots``, regenerated into ``benchmarks/problems`` unless ``--problems``). Each problem is planned by
+SRDF in ``benchmarks/robots``, regenerated into ``benchmarks/problems_ROBOT`` unless
+``--problems``). Each problem is planned by
 both, one after the other, alternating which goes first; the wall time of the one plan
 call is measured (``MotionPlanner.plan``: start and goal checks, search, shortcut, exact
 verification; the scene's collision model, path verifier and state screen are built before the timer,
@@ -567,7 +568,7 @@ def run(per_class: int, classes: Sequence[str] = CLASSES, seed: int = 0, problem
             raise SystemExit(f"error: unknown class {name!r}; known: {', '.join(CLASSES)}")
     folder = problems
     if folder is None:
-        folder = problem_dir or BENCH / "problems"
+        folder = problem_dir or BENCH / ("problems" if robot == "panda" else f"problems_{robot}")
         make_problems.generate(folder, per_class, problem_seed, classes, robot_name=robot)
     urdf, package_roots, srdf, spec = robot_files(robot)
     model = load_robot(spec.robot_dir)
