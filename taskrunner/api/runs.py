@@ -15,6 +15,8 @@ where the other arm will be during a motion.
 
 from __future__ import annotations
 
+import logging
+import sqlite3
 import threading
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -44,6 +46,10 @@ if TYPE_CHECKING:
 __all__ = ["ArmBusyError", "LiveRun", "RunManager", "RunNotFinishedError", "RunNotFoundError"]
 
 _STOPPED = "the server stopped while the run was in flight"
+_OUTLIVED = ("it did not stop within the server's shutdown timeout, so its row says "
+             "'interrupted', with the events it appended before the database was closed")
+
+log = logging.getLogger(__name__)
 
 
 class RunNotFoundError(NotFoundError):
@@ -243,11 +249,20 @@ class RunManager:
             live.session.give_planner(live.planner)
             # The row once more; events again only if an append failed on the way.
             failed = live.journal is not None and live.journal.failed > 0
-            self.store.save(live.record, tree=live.final_tree,
-                            events=None if failed else ())
-            with self._lock:
-                self._claims.pop(id(live), None)
-            live.done.set()
+            try:
+                self.store.save(live.record, tree=live.final_tree,
+                                events=None if failed else ())
+            except sqlite3.Error as exc:
+                # A run that outlived the server's wait at shutdown finds its database
+                # closed (its row was written 'interrupted' then); a full disk fails the
+                # same way. Either way the end is not recorded: say so, and let go.
+                log.error("run %s ended %s but its final record was not written to %s (%s)%s",
+                          live.run_id, live.record.status, self.store.path, exc,
+                          f": {_OUTLIVED}" if self._stopping else "")
+            finally:
+                with self._lock:
+                    self._claims.pop(id(live), None)
+                live.done.set()
             self._forget_finished()
 
     def _forget_finished(self) -> None:
@@ -355,6 +370,9 @@ class RunManager:
             if live.thread is not None:
                 live.thread.join(timeout)
             if not live.done.is_set():  # stuck: record it all the same
+                log.error("run %s did not stop within %.1f s of its cancel: recorded as "
+                          "interrupted now, with the events it appended so far", live.run_id,
+                          timeout)
                 live.record.status = "interrupted"
                 live.record.error = _STOPPED
                 live.record.exit_code = EXIT_CODES["terminated"]
