@@ -245,8 +245,13 @@ def _time_line(waypoints: np.ndarray, vmax: np.ndarray, amax: np.ndarray,
     unit = np.abs(delta) / length
     moving = unit > 0.0
     margin = 1.0 + options.limit_tolerance / 2
-    speed = float(np.min(vmax[moving] / margin / unit[moving]))
-    accel = float(np.min(amax[moving] / margin / unit[moving]))
+    # A joint with a tiny share of the line (a step of 1e-310 rad beside 1 rad: a joint
+    # "at 0" on one end and at a subnormal on the other) bounds s' and s'' by more than
+    # the largest float, that is not at all: its quotient overflows to inf and min() passes
+    # over it. The joint moving most (unit >= 1 / sqrt(n)) bounds both finitely.
+    with np.errstate(over="ignore"):
+        speed = float(np.min(vmax[moving] / margin / unit[moving]))
+        accel = float(np.min(amax[moving] / margin / unit[moving]))
     if speed * speed / accel <= length:  # reaches full speed
         ramp, cruise, peak = speed / accel, (length - speed * speed / accel) / speed, speed
     else:
