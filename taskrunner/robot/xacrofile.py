@@ -6,8 +6,11 @@ name (a FIFO blocks forever). A robot file must not be able to hang or exhaust t
 process that loads it, so :func:`expand_xacro` runs xacro in a child process: a fork of
 the current one (the xacro module and the package map are already there, so the child
 costs a few milliseconds, not an interpreter start), with an address-space limit
-(``RLIMIT_AS``) and a wall-clock limit enforced by the parent, which kills the child
-when time is up. In the child, every file xacro includes is first checked like any
+(``RLIMIT_AS``) and a limit on the child's CPU time enforced by the parent, which kills
+the child when it is used up. CPU time, not wall-clock time: a busy machine (other
+processes taking the cores) slows an expansion down without making it any more hostile,
+and a robot must not be refused for it; a generous wall-clock limit still ends a child
+that waits without computing. In the child, every file xacro includes is first checked like any
 other user file (:func:`taskrunner.textfile.read_text_file`: a regular UTF-8 file under
 the size limit), so an include of a FIFO or ``/dev/zero`` is refused at once.
 
@@ -26,6 +29,7 @@ import os
 import re
 import resource
 import threading
+import time
 from collections.abc import Callable, Sequence
 from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import dataclass
@@ -47,13 +51,16 @@ class XacroOptions:
     """Bounds on one xacro expansion.
 
     Attributes:
-        time_limit_s: wall-clock time for the whole expansion (s).
+        time_limit_s: CPU time the whole expansion may use (s).
+        wall_limit_s: wall-clock time after which a child still at work is stopped
+            however little CPU it had (s): a bound on waiting, not on work.
         memory_limit_mb: address space the child may add to what it inherits (MiB).
         max_bytes: size limit of the xacro file and of each file it includes (bytes).
         in_process: expand in this process, unbounded (for debugging xacro itself).
     """
 
     time_limit_s: float = 3.0
+    wall_limit_s: float = 120.0
     memory_limit_mb: int = 256
     max_bytes: int = DEFAULT_MAX_BYTES
     in_process: bool = False
@@ -61,9 +68,14 @@ class XacroOptions:
     def __post_init__(self) -> None:
         if not self.time_limit_s > 0:
             raise ArgumentError(f"'time_limit_s' must be > 0 (got {self.time_limit_s!r})")
+        if not self.wall_limit_s > 0:
+            raise ArgumentError(f"'wall_limit_s' must be > 0 (got {self.wall_limit_s!r})")
         if self.memory_limit_mb < 16:
             raise ArgumentError(f"'memory_limit_mb' must be ≥ 16 (got {self.memory_limit_mb!r})")
 
+
+_POLL_S = 0.02  # s between two reads of the child's CPU time (an answer wakes at once)
+_CLOCK_TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
 
 # xacro keeps its state in module globals: one in-process expansion at a time.
 _XACRO_LOCK = threading.Lock()
@@ -110,10 +122,7 @@ def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] 
     child.start()
     sender.close()
     try:
-        if not receiver.poll(options.time_limit_s):
-            raise RobotDescriptionError(
-                f"xacro expansion took longer than {options.time_limit_s:g} s "
-                "(a runaway expression or macro?)", path)
+        _await_child(receiver, child.pid, options, path)
         try:
             kind, value = receiver.recv()
         except (EOFError, OSError):
@@ -136,6 +145,36 @@ def _expand_in_child(path: Path, packages: PackageMap, mappings: dict[str, str] 
         if warning not in packages.warnings:
             packages.warnings.append(warning)
     return str(text)
+
+
+def _await_child(receiver: Connection, pid: int | None, options: XacroOptions,
+                 path: Path) -> None:
+    """Return once the child has sent its answer (or ended); raise when it has used its
+    CPU time or the wall-clock limit."""
+    started = time.monotonic()
+    while not receiver.poll(_POLL_S):
+        cpu = _cpu_seconds(pid)
+        waited = time.monotonic() - started
+        if (cpu if cpu is not None else waited) > options.time_limit_s:
+            raise RobotDescriptionError(
+                f"xacro expansion took more than {options.time_limit_s:g} s of CPU time "
+                "(a runaway expression or macro?)", path)
+        if waited > options.wall_limit_s:
+            raise RobotDescriptionError(
+                f"xacro expansion did not end in {options.wall_limit_s:g} s (waiting on "
+                "something it reads?)", path)
+
+
+def _cpu_seconds(pid: int | None) -> float | None:
+    """CPU time (user + system, s) process ``pid`` has used, or None where /proc does
+    not tell (not Linux; then the parent counts wall-clock time instead)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as stat:
+            fields = stat.read().rsplit(b")", 1)[1].split()
+    except OSError:
+        return None
+    # After the command's closing parenthesis: state is field 3, utime 14, stime 15.
+    return (int(fields[11]) + int(fields[12])) / _CLOCK_TICKS
 
 
 def _child_main(sender: Connection, path: Path, packages: PackageMap,

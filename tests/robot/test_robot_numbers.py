@@ -130,11 +130,10 @@ def write_xacro(folder: Path, body: str, name: str = "r.urdf.xacro") -> Path:
 def test_a_runaway_xacro_expression_is_stopped_at_the_time_limit(tmp_path):
     path = write_xacro(tmp_path, '<xacro:property name="b" value="${10**10**8}"/>'
                                  '<link name="${b}"/>')
-    start = time.perf_counter()
     with pytest.raises(RobotDescriptionError) as info:
         expand_xacro(path, PackageMap(), options=XacroOptions(time_limit_s=0.5))
-    assert time.perf_counter() - start < 2
-    assert str(info.value) == (f"{path}: xacro expansion took longer than 0.5 s "
+    # Stopped by its CPU limit (the message says which limit), however busy the machine.
+    assert str(info.value) == (f"{path}: xacro expansion took more than 0.5 s of CPU time "
                                "(a runaway expression or macro?)")
 
 
@@ -143,10 +142,12 @@ def test_a_xacro_macro_fan_out_is_stopped(tmp_path):
         f'<xacro:macro name="m{i}"><xacro:m{i - 1}/><xacro:m{i - 1}/></xacro:macro>'
         for i in range(1, 25))
     path = write_xacro(tmp_path, macros + "<xacro:m24/>")
-    start = time.perf_counter()
-    with pytest.raises(RobotDescriptionError, match="xacro expansion"):
+    # Stopped by its CPU or memory limit, whichever comes first (in wall-clock time, as
+    # late as the machine is busy: 4.1 s beside 4 spinning processes).
+    with pytest.raises(RobotDescriptionError,
+                       match="xacro expansion (took more than 1 s of CPU|needs more memory"
+                             "|failed: its process ended)"):
         expand_xacro(path, PackageMap(), options=XacroOptions(time_limit_s=1.0))
-    assert time.perf_counter() - start < 3
 
 
 def test_a_xacro_string_of_a_gigabyte_runs_out_of_memory_not_the_machine(tmp_path):
