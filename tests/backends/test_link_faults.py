@@ -16,7 +16,10 @@ switch or two on a loaded two-core machine; what was measured is printed (pytest
 from __future__ import annotations
 
 import json
+import os
 import re
+import select
+import signal
 import time
 import urllib.request
 from collections.abc import Iterator
@@ -31,7 +34,7 @@ from taskrunner.backends.calibration import ServoCalibration, load_calibration
 from taskrunner.backends.http import HttpBackend
 from taskrunner.backends.serial import SerialBackend
 from taskrunner.backends.servo_backend import ServoBackend, ServoOptions
-from taskrunner.backends.servo_protocol import strip_checksum
+from taskrunner.backends.servo_protocol import strip_checksum, with_checksum
 from taskrunner.errors import BackendError, ExecutionCancelledError
 from taskrunner.resources import DATA_ROOT
 from taskrunner.types import JointTrajectory
@@ -108,7 +111,7 @@ def _run_into(kind: str, fault: str, firmware: FirmwareHost, calibration: ServoC
         deadline = time.monotonic() + 3.0
         while handle.progress < 0.3 and time.monotonic() < deadline:
             time.sleep(0.005)
-        assert not handle.done(), "the motion ended before the fault"
+        assert not handle.done(), f"the motion ended before the fault: {handle.result}"
         relay.arm(fault, seconds)
         with pytest.raises(BackendError) as info:
             handle.wait(3.0)
@@ -168,19 +171,77 @@ def test_a_corrupted_or_garbled_line_fails_the_motion_at_once_naming_the_line(
         assert _firmware_status(firmware.url)["crc_errors"] == 1
 
 
+def _firmware_command(url: str, cmd: str) -> dict:
+    request = urllib.request.Request(url, data=json.dumps({"cmd": cmd}).encode(),
+                                     headers={"Content-Type": "application/json"})
+    with _NO_PROXY.open(request, timeout=2.0) as response:
+        return json.loads(json.loads(response.read())["reply"][3:])
+
+
+def _read_replies(fd: int, count: int, timeout: float = 10.0) -> list[str]:
+    """The next ``count`` reply lines on the pty (banner and ``#`` lines skipped)."""
+    data, replies, deadline = b"", [], time.monotonic() + timeout
+    while len(replies) < count:
+        ready, _, _ = select.select([fd], [], [], max(0.0, deadline - time.monotonic()))
+        assert ready, f"{len(replies)} of {count} replies within {timeout} s: {replies}"
+        data += os.read(fd, 4096)
+        *lines, data = data.split(b"\n")
+        replies += [line.decode() for line in lines if line and not line.startswith(b"#")]
+    return replies
+
+
 def test_firmware_watchdog_holds_the_servos_when_the_host_goes_silent(
-        firmware: FirmwareHost, calibration: ServoCalibration) -> None:
-    _run_into("serial", "stall", firmware, calibration)
-    time.sleep(0.5)  # > the 300 ms watchdog (wall clock) since the last line got through
-    held = _firmware_status(firmware.url)  # HTTP reaches the firmware around the relay
-    assert held["watchdog_stops"] == 1
-    assert held["mode"] == "idle" and held["moving"] is False and held["queued"] == 0
-    time.sleep(0.1)
-    assert _firmware_status(firmware.url)["pos"] == held["pos"]
-    start = calibration.to_servo_degrees(dict(zip(NAMES, CANDLE)))
-    end = calibration.to_servo_degrees(dict(zip(NAMES, CANDLE + OFFSET)))
-    pos = np.array(held["pos"])
-    assert np.any(np.abs(pos - start) > 1) and np.any(np.abs(pos - end) > 1)  # mid-way
+        host_binary: Path, tmp_path: Path) -> None:
+    # Judged in firmware time: the host build's clock follows the wall clock, and a test
+    # process (or a backend) kept off the CPU on a busy machine is itself a silent host
+    # or lets the queue run dry first. So the host's last words are 3 s of 80 ms points,
+    # all written while the firmware is stopped (SIGSTOP: queued before its next tick),
+    # then silence; the tick log shows what the firmware did, tick by tick.
+    log = tmp_path / "ticks.csv"
+    with running_host(host_binary, SPEEDUP, log) as host:
+        version = _firmware_command(host.url, "VERSION")
+        tick_ms, watchdog_ms = version["tick_ms"], version["watchdog_ms"]
+        start = np.array(_firmware_command(host.url, "STATUS")["pos"], dtype=float)
+        end = start + np.array([20.0, -15.0, 10.0, 12.0, -10.0, 8.0])[:len(start)]
+        points = 3000 // tick_ms
+        assert points * tick_ms > 2 * watchdog_ms  # the queue outlasts the watchdog
+        lines = [with_checksum(f"TRAJ:{tick_ms}:" + ",".join(
+            f"{a:.2f}" for a in start + (end - start) * k / points))
+            for k in range(1, points + 1)]
+        fd = os.open(host.pty, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+        try:
+            os.kill(host.proc.pid, signal.SIGSTOP)
+            try:
+                os.write(fd, "".join(line + "\n" for line in lines).encode("ascii"))
+            finally:
+                os.kill(host.proc.pid, signal.SIGCONT)
+            replies = [strip_checksum(r) for r in _read_replies(fd, points)]
+            assert replies == [f"ok {k} {k * tick_ms}" for k in range(1, points + 1)], replies
+            # Silence. Wait (a bound on a hang only) until the log has 10 ticks past the
+            # watchdog's: nothing reaches the firmware meanwhile, not even STATUS.
+            silent_ticks = -(-watchdog_ms // tick_ms)
+            deadline = time.monotonic() + 30.0
+            while True:
+                rows = np.loadtxt(log, delimiter=",", skiprows=1, ndmin=2)
+                moved = np.flatnonzero(np.any(rows[:, 1:] != start, axis=1))
+                if moved.size and len(rows) > moved[0] + silent_ticks + 10:
+                    break
+                assert time.monotonic() < deadline, f"{len(rows)} ticks logged in 30 s"
+                time.sleep(0.02)
+            held = _firmware_command(host.url, "STATUS")
+        finally:
+            os.close(fd)
+    assert held["watchdog_stops"] == 1, held
+    assert held["mode"] == "idle" and held["moving"] is False and held["queued"] == 0, held
+    # The lines were read before tick moved[0] (row moved[0]): the watchdog's tick is
+    # the silent_ticks-th after them, and it stops the servos before they step. So they
+    # stepped on each of the silent_ticks - 1 ticks before it and hold from then on,
+    # mid-way.
+    last = moved[0] + silent_ticks - 2  # row of the last step
+    assert np.all(np.any(np.diff(rows[moved[0] - 1:last + 1, 1:], axis=0) != 0, axis=1))
+    assert np.all(rows[last:, 1:] == rows[last, 1:])
+    assert np.array_equal(rows[last, 1:], held["pos"])
+    assert np.all(np.abs(rows[last, 1:] - start) > 1) and np.all(np.abs(rows[last, 1:] - end) > 1)
 
 
 def test_firmware_watchdog_stop_fails_the_motion_if_the_host_hears_of_it(
