@@ -145,15 +145,33 @@ def test_a_sweep_reports_success_per_value_and_writes_its_files(tmp_path: Path, 
     assert _read_png(tmp_path / "out" / "success.png")[:2] == (640, 360)
 
 
-def test_a_sweep_on_ray_gives_the_process_pools_results():
+def _without_wall_clock_expectation(task: Path, into: Path) -> Path:
+    """A copy of ``task`` without its ``duration`` expectation: task time counts waits for
+    plans at wall time, so on a busy machine (4 spinning processes) a case may meet it in
+    one runner and not in the other; every other expectation depends on the seed alone."""
+    text = task.read_text(encoding="utf-8")
+    lines = [line for line in text.splitlines(keepends=True)
+             if not line.strip().startswith("duration:")]
+    assert len(lines) == len(text.splitlines()) - 1, "the task has no duration expectation"
+    copy = into / task.name
+    copy.write_text("".join(lines).replace("cell: ../robots/cells/servo_arm_table.yaml",
+                                           f"cell: {CELL}"), encoding="utf-8")
+    return copy
+
+
+def test_a_sweep_on_ray_gives_the_process_pools_results(tmp_path: Path, monkeypatch):
     ray = pytest.importorskip("ray", reason="ray is not installed (pip install "
                                             "-e '.[ray]')")
-    path = resources.resolve_task("pick_place")
+    path = _without_wall_clock_expectation(Path(resources.resolve_task("pick_place")), tmp_path)
     # Out to the arm's reach: the far drop spots fail their place.
     axis = parse_axis("place_x=0.10:0.25:25", {"place_x": "float"})
     cases = sweep_cases(path, "pick_place", [axis], 2, ["mock"], None)
     assert len(cases) == 50
     pool = run_cases(cases, jobs=2)
+    # Ray runs its workers at nice 15 unless told otherwise: beside 4 spinning processes
+    # they had 1.5 % of a core each (the 50 cases took over 10 min). The pool's workers
+    # run at nice 0; so do Ray's here.
+    monkeypatch.setenv("RAY_worker_niceness", "0")
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     try:
         on_ray = run_cases(cases, ray="local")
