@@ -287,6 +287,13 @@ class RunManager:
             return [r for r in self._runs.values()
                     if r.session is session and not r.done.is_set()]
 
+    def moving_on(self, session: CellSession) -> list[LiveRun]:
+        """The runs on ``session`` that have not ended: a run whose record is final moves
+        nothing more, though its thread may still be saving it (a client told the run
+        succeeded may teach at once)."""
+        with self._lock:
+            return [r for r in self._runs.values() if r.session is session and not _ended(r)]
+
     def record(self, run_id: str) -> RunRecord:
         """The record of ``run_id``: live if this server runs it, else from the database.
 

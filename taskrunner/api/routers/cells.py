@@ -109,7 +109,7 @@ def teach_pose(cell_id: str, name: str, body: TeachRequest,
     if name in existing and (group.name, name) not in session.taught:
         raise PoseConflictError(f"named pose {name!r} of group {group.name!r} comes from the robot "
                            "or cell files; pick another name")
-    busy = [r.run_id for r in manager.running_on(session)]
+    busy = [r.run_id for r in manager.moving_on(session)]
     if busy:
         raise PoseConflictError(f"runs {busy} are moving cell {cell_id!r}: teach when it is still")
     reported = session.backend(body.backend).joint_state()
