@@ -67,6 +67,16 @@ class SerialTransport:
         while b"\n" not in self._pending:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
+                # This thread may run again only after the deadline (a busy host) while
+                # the reply came in time: what the port holds is taken before giving up.
+                try:
+                    self._serial.timeout = 0
+                    self._pending += self._serial.read(self._serial.in_waiting)
+                except (pyserial.SerialException, OSError, TypeError) as exc:
+                    raise BackendError(f"serial port {self._port_name!r} failed: {exc}") \
+                        from None
+                if b"\n" in self._pending:
+                    break
                 wait = self._timeout if wait is None else wait
                 raise BackendError(f"no reply from the servo firmware on {self._port_name!r} "
                                    f"within {1000 * wait:.0f} ms")
