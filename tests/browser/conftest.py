@@ -83,7 +83,12 @@ def server(tmp_path_factory: pytest.TempPathFactory, chromium: Any) -> Iterator[
     """``run-task serve`` on a free port, with a token and its own data folder."""
     port = _free_port()
     data = tmp_path_factory.mktemp("state")
-    env = {**os.environ, "TASKRUNNER_TOKEN": TOKEN, "TASKRUNNER_DATA_DIR": str(data)}
+    # Planning workers at nice 0, as the test process and whatever else runs beside: at
+    # the server's default nice 10, beside 4 spinning processes on 2 cores, a worker has a
+    # few % of a core and did not load its cell in the 60 s it is given (the page's run
+    # then failed); the tests are about the page, not that priority.
+    env = {**os.environ, "TASKRUNNER_TOKEN": TOKEN, "TASKRUNNER_DATA_DIR": str(data),
+           "TASKRUNNER_PLANNER_NICE": "0"}
     process = subprocess.Popen(
         [sys.executable, "-c", "import sys; from taskrunner.cli import main; sys.exit(main())",
          "serve", "--port", str(port), "--log-level", "warning"],
@@ -105,6 +110,26 @@ def server(tmp_path_factory: pytest.TempPathFactory, chromium: Any) -> Iterator[
         process.wait(20)
     except subprocess.TimeoutExpired:
         process.kill()
+
+
+# How long a run started from the page may take before the test calls it hung. Only a
+# bound on a hang: a run's planning scales with the CPU share it gets, and beside 4
+# spinning processes on 2 cores (load 9-16) a hand-over on sim took 70-95 s, and the
+# server's first plans (kernels compiled) more.
+HANG_MS = 600_000
+# Every status a run ends in (taskrunner.kinds.RunStatus but "running").
+RUN_ENDED = ("succeeded", "failed", "cancelled", "interrupted")
+
+
+def wait_for_run_end(page: Any, run_id: str, hang_ms: float) -> dict[str, Any]:
+    """Wait until the page shows the run ended, in whatever status, and return the run's
+    record from the API. A run that fails is reported at once with its error; ``hang_ms``
+    only bounds a hang (a busy machine makes a run slower, not different)."""
+    ended = "[" + ", ".join(f"'{s}'" for s in RUN_ENDED) + "]"
+    page.wait_for_function(f"{ended}.includes(window.__viewer.runStatus)", timeout=hang_ms)
+    detail = page.server.api(f"/runs/{run_id}")
+    assert detail["status"] == page.evaluate("window.__viewer.runStatus"), detail["status"]
+    return dict(detail)
 
 
 @pytest.fixture

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .conftest import HANG_MS, wait_for_run_end
 from .test_viewer_browser import _start, shot
 
 
@@ -19,7 +20,8 @@ def _nodes(tree: dict[str, Any]) -> list[dict[str, Any]]:
 def test_the_handoff_tree_graph_and_both_arms_timelines(page, screenshots):
     run_id = _start(page, "handoff", "mock", 1)
     page.click("#tree-graph")
-    page.wait_for_function("window.__viewer.runStatus === 'succeeded'", timeout=60_000)
+    detail = wait_for_run_end(page, run_id, hang_ms=HANG_MS)
+    assert detail["status"] == "succeeded", detail.get("error")
     page.wait_for_timeout(200)
     shot(page, screenshots, "run_handoff_graph")
     compiled = page.server.api(f"/viewer/runs/{run_id}/tree")["tree"]
