@@ -139,10 +139,14 @@ def make_mini(tmp_path: Path, mini_texts: dict[str, str]) -> Callable[..., MiniR
     """``make_mini({"mini.srdf": ("old", "new")})`` → a :class:`MiniRobot` in tmp_path.
 
     The folder sits one level below tmp_path, so the default package search (the
-    manifest's folder and the one above) never walks into other tests' folders.
+    manifest's folder and the one above) never walks into other tests' folders; tmp_path
+    carries a workspace marker, so the last-resort search of the folders above a robot
+    (tier 7) stops there too, and never finds a same-named package in another test's (or
+    another test run's) folder under the shared pytest temporary root.
     """
 
     def make(edits: Mapping[str, Edit] | None = None) -> MiniRobot:
+        (tmp_path / ".catkin_workspace").touch()
         folder = (tmp_path / "mini").resolve()
         folder.mkdir(exist_ok=True)
         for name, text in mini_texts.items():
