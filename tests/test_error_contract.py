@@ -38,8 +38,6 @@ _ALLOWED: dict[tuple[str, str, str], str] = {
         "argument-type check: a goal of a type the planner does not know",
     ("runtime/records.py", "_jsonable", "TypeError"):
         "json.dumps' 'default' hook: TypeError is its contract for a value it cannot encode",
-    ("runtime/replay.py", "_shape", "TypeError"):
-        "argument-type check: a shape class the record does not know",
     ("yamlfile.py", "_convert", "ValueError"):
         "a signal caught by its only caller, which reports the scalar with its file:line",
 }

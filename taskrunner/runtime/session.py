@@ -381,7 +381,7 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
         spec = reused[0] if reused is not None else load_task(path, parameters or {})
         # toppra takes 0.3-0.5 s to import: do it while the rest loads.
         threading.Thread(target=_import_toppra, daemon=True).start()
-        planner_service: PlanningWorker | InProcessPlanner  # set below, one or the other
+        planner_service: PlanningWorker | InProcessPlanner | None = None  # one or the other
         if worker:
             from taskrunner.planning.worker import PlanningWorker
 
@@ -403,8 +403,11 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
                                    start=start, calibration_file=calibration,
                                    hardware=hardware)
         except BaseException:
-            planner_service.close()
+            # A cell that fails to load before the in-process planner exists leaves none.
+            if planner_service is not None:
+                planner_service.close()
             raise
+        assert planner_service is not None  # set in the try above, or it raised
         try:
             # The run's clocks (its events', its task time) start once the planner's
             # kernels are ready: compiling them (the first run on a machine) is said,

@@ -38,7 +38,8 @@ def test_the_run_from_the_checks_task_and_cell_is_the_run_from_a_fresh_load(
     loads: list[str] = []
     real_task, real_cell = session.load_task, session.load_cell
     monkeypatch.setattr(session, "load_task", lambda *a: loads.append("task") or real_task(*a))
-    monkeypatch.setattr(session, "load_cell", lambda *a: loads.append("cell") or real_cell(*a))
+    monkeypatch.setattr(session, "load_cell",
+                        lambda *a, **k: loads.append("cell") or real_cell(*a, **k))
     handed = _run(path, tmp_path / "handed", seed)
     assert loads == []  # the check's task and cell were used
     monkeypatch.setattr(session, "_from_check", lambda report, path: None)
@@ -57,7 +58,8 @@ def test_a_relative_task_path_is_loaded_again(tmp_path, monkeypatch):
     loads: list[object] = []
     real_task, real_cell = session.load_task, session.load_cell
     monkeypatch.setattr(session, "load_task", lambda p, *a: loads.append(p) or real_task(p, *a))
-    monkeypatch.setattr(session, "load_cell", lambda *a: loads.append("cell") or real_cell(*a))
+    monkeypatch.setattr(session, "load_cell",
+                        lambda *a, **k: loads.append("cell") or real_cell(*a, **k))
     code, _ = _run(type(path)(path.name), tmp_path / "runs", 0)
     assert code == 0
     assert [str(p) for p in loads] == [path.name]  # its cell: the one the check loaded
