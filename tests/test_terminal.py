@@ -211,7 +211,9 @@ def test_live_tree_on_80x20_never_writes_a_line_wider_than_the_screen(sim_run):
 def test_live_tree_on_80x20_leaves_the_last_frame_and_summary_not_a_scrollback_flood(sim_run):
     text, screen = sim_run
     frames = text.count("\x1b[J")
-    assert frames > 10  # it was redrawn all along ...
+    # it was redrawn all along (at least once a few steps: pick_place at --speed 20 plays
+    # its 12.5 s of motion in about 0.6 s, so a frame count tied to wall time is small) ...
+    assert frames > 5
     # ... in place: less than one screen went by into the scrollback (the check's line,
     # the top of the last frame pushed up by the summary).
     assert len(screen.scrollback) < 20, screen.scrollback

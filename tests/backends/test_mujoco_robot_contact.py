@@ -87,10 +87,15 @@ def test_the_assembly_stacks_when_the_base_is_down_with_the_arms_apart(tmp_path)
                 max(e.data["sent"] + e.data["trajectory"]["duration"] for e in mine))
 
     base_down, stack = span(21), span(25)  # the left Panda's place, the right one's
-    assert stack[0] >= base_down[1] - 1e-4  # (a record rounds durations to 0.1 ms)
-    # On the schedule's clock (admitted starts), the stacking's floor is the base's end.
-    admitted_end = max(e.data["start"] + e.data["trajectory"]["duration"] for e in motions
-                       if e.location == f"{ASSEMBLY}:21")
+    # 'wait_for: {step: base down, until: released}': the stacking starts once the left
+    # gripper has opened on the plate (the place's motions: to pre-place, descend, open,
+    # retreat), while the left hand's retreat may still be under way.
+    placing = sorted((e for e in motions if e.location == f"{ASSEMBLY}:21"),
+                     key=lambda e: e.data["sent"])
+    opened = placing[-2]
+    assert stack[0] >= opened.data["sent"] + opened.data["trajectory"]["duration"] - 1e-4
+    # On the schedule's clock (admitted starts), the stacking's floor is the opening's end.
+    admitted_end = opened.data["start"] + opened.data["trajectory"]["duration"]
     waits = [e for e in events if e.kind == "wait" and e.data.get("step") == "base down"]
     # The hold lasted until the base was down at least (later when, on a busy machine, a
     # late motion was re-timed after the wait was recorded).
