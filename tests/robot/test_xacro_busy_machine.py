@@ -38,7 +38,10 @@ def _hold_the_child_off_the_cpu(seconds: float, held: list[int]) -> threading.Th
                 os.kill(new[0], signal.SIGSTOP)
                 held.append(new[0])
                 time.sleep(seconds)
-                os.kill(new[0], signal.SIGCONT)
+                try:
+                    os.kill(new[0], signal.SIGCONT)
+                except ProcessLookupError:
+                    pass  # stopped by the expansion's own limit meanwhile
                 return
             time.sleep(0.001)
 
