@@ -16,13 +16,15 @@ Layout of ``taskrunner/data/``::
 from __future__ import annotations
 
 import importlib.resources
+import json
 import os
-from collections.abc import Sequence
+import tempfile
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from taskrunner.errors import InputError, did_you_mean
 
-__all__ = [
+__all__ = ["merge_json_cache",
     "DATA_ROOT",
     "cell_files",
     "cells_dir",
@@ -77,6 +79,35 @@ def user_cache_dir() -> Path:
     ``taskrunner``."""
     base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
     return Path(base) / "taskrunner"
+
+
+
+def merge_json_cache(path: Path, entries: Mapping[str, object], prefix: str) -> None:
+    """Merge ``entries`` into the JSON object cached at ``path``, replacing the file
+    atomically (a temporary file named ``prefix…`` beside it, then a rename), so readers
+    in other processes see the old file or the new one, never half of one. A missing or
+    unreadable file starts empty.
+
+    Raises:
+        OSError: the folder or the file could not be written (a cache's caller ignores it:
+            it only costs a measurement next time).
+    """
+    path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        if not isinstance(data, dict):
+            data = {}
+    except (OSError, ValueError):
+        data = {}
+    data.update(entries)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=prefix, suffix=".json")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as out:
+            json.dump(data, out)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 def kernel_cache_dir() -> Path:

@@ -37,8 +37,6 @@ import hashlib
 import json
 import logging
 import math
-import os
-import tempfile
 import threading
 from dataclasses import dataclass
 from pathlib import Path
@@ -48,7 +46,7 @@ import numpy as np
 
 from taskrunner.collision.sphere_primitives import GROW, fit_primitive
 from taskrunner.errors import ArgumentError, SceneError
-from taskrunner.resources import user_cache_dir
+from taskrunner.resources import merge_json_cache, user_cache_dir
 
 __all__ = ["CACHE_FILE", "GeometrySpheres", "SphereOptions", "fit_spheres", "geometry_key"]
 
@@ -408,18 +406,9 @@ def _write_disk(path: Path, key: str, fitted: GeometrySpheres) -> None:
     """Merge one entry into the cache file (atomically replaced; a failure only costs a
     fit next time)."""
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        try:
-            data = json.loads(path.read_text(encoding="utf-8"))
-            if not isinstance(data, dict):
-                data = {}
-        except (OSError, ValueError):
-            data = {}
-        data[key] = {"centres": fitted.centres.tolist(), "radii": fitted.radii.tolist(),
-                     "looseness": fitted.looseness, "kind": fitted.kind}
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".spheres.", suffix=".json")
-        with os.fdopen(fd, "w", encoding="utf-8") as out:
-            json.dump(data, out)
-        os.replace(tmp, path)
+        merge_json_cache(path, {key: {"centres": fitted.centres.tolist(),
+                                      "radii": fitted.radii.tolist(),
+                                      "looseness": fitted.looseness, "kind": fitted.kind}},
+                         ".spheres.")
     except OSError as exc:
         log.debug("sphere cache not written (%s): %s", path, exc)

@@ -21,8 +21,6 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
-import os
-import tempfile
 import threading
 from pathlib import Path
 
@@ -30,7 +28,7 @@ import coal
 import numpy as np
 
 from taskrunner.errors import SceneError
-from taskrunner.resources import user_cache_dir
+from taskrunner.resources import merge_json_cache, user_cache_dir
 
 __all__ = ["CACHE_FILE", "convex_hull", "hull_excess", "measure_hull_excess", "shared_convex_hull"]
 
@@ -162,18 +160,8 @@ def _write_disk(path: Path, new: dict[str, float]) -> None:
     """Merge ``new`` into the cache file (atomically replaced; a failure only costs a
     measurement next time)."""
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        try:
-            data = json.loads(path.read_text(encoding="utf-8"))
-            if not isinstance(data, dict):
-                data = {}
-        except (OSError, ValueError):
-            data = {}
-        data.update({k: (v if np.isfinite(v) else 1e9) for k, v in new.items()})
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".hull_excess.", suffix=".json")
-        with os.fdopen(fd, "w", encoding="utf-8") as out:
-            json.dump(data, out)
-        os.replace(tmp, path)
+        merge_json_cache(path, {k: (v if np.isfinite(v) else 1e9) for k, v in new.items()},
+                         ".hull_excess.")
     except OSError as exc:
         log.debug("hull excess cache not written (%s): %s", path, exc)
 
