@@ -32,15 +32,51 @@ TASKS = DATA_ROOT / "tasks"
 SPEED = 50.0  # sim: trajectory seconds per wall second
 
 
-def sim_runner(path: Path, runs_dir: Path, plan=None, start=None):
+class FaultySim(SimBackend):
+    """The sim, each motion held at its start until the run has emitted its "motion"
+    event: a fault injected on that event (:meth:`fault_on`) always finds the motion
+    running, however loaded the machine (at SPEED a short motion could otherwise end
+    before its event is emitted, and the fault would stop nothing)."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        self._holding = False
+        super().__init__(*args, **kwargs)
+
+    def execute(self, trajectory):
+        self._holding = True
+        try:
+            return super().execute(trajectory)
+        except BaseException:
+            self._holding = False
+            raise
+
+    def _tick(self, now: float) -> None:
+        if not self._holding:
+            super()._tick(now)
+
+    def fault_on(self, when):
+        """An event callback: stops every motion at the first event for which
+        ``when(event)`` is true (and each later one), then lets the held motion go."""
+        def callback(event) -> None:
+            if when(event):
+                self.stop()
+            if event.kind == "motion":
+                self._holding = False
+        return callback
+
+
+def sim_runner(path: Path, runs_dir: Path, plan=None, start=None, fault=None):
+    """A runner of ``path`` on a :class:`FaultySim`; ``fault(event)`` true: the backend
+    stops every motion then."""
     spec = load_task(path, plan.record.parameters if plan is not None else None)
     cell = load_cell(spec.cell)
     names = cell.model.joint_names
     q = start if start is not None else (plan.start_state(cell) if plan is not None
                                          else task_start(spec, cell).q)
-    backend = SimBackend(names, dict(zip(names, q)), SimOptions(speed=SPEED))
+    backend = FaultySim(names, dict(zip(names, q)), SimOptions(speed=SPEED))
     runner = Runner(spec, cell, backend, InProcessPlanner(),
                     RunOptions(seed=1, runs_dir=runs_dir, backend_name="sim"), resume=plan)
+    runner.events.subscribe(backend.fault_on(fault or (lambda event: False)))
     return runner, backend
 
 
@@ -48,13 +84,8 @@ def run_with_fault(path: Path, runs_dir: Path, node: str) -> Path:
     """Run ``path`` on sim; once the motion of ``node`` is sent, the backend stops every
     motion (a servo fault, deterministic: before the step can see its motion end): the
     run fails in the middle of that step. The record's path."""
-    runner, backend = sim_runner(path, runs_dir)
-
-    def fault(event):
-        if event.kind == "motion" and event.node == node:
-            backend.stop()
-
-    runner.events.subscribe(fault)
+    runner, backend = sim_runner(
+        path, runs_dir, fault=lambda event: event.kind == "motion" and event.node == node)
     try:
         record = runner.run()
     finally:
@@ -112,16 +143,15 @@ steps:
 def test_a_fallbacks_branch_and_a_repeats_round_are_where_the_run_left_them(tmp_path):
     path = tmp_path / "loops.yaml"
     path.write_text(LOOPS.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
-    runner, backend = sim_runner(path, tmp_path)
     candles = []
 
     def fault(event):  # in the second round, on the way to Candle
         if event.kind == "motion" and event.location.endswith(":10"):
             candles.append(event)
-            if len(candles) == 2:
-                backend.stop()
+            return len(candles) == 2
+        return False
 
-    runner.events.subscribe(fault)
+    runner, backend = sim_runner(path, tmp_path, fault=fault)
     try:
         first = runner.run()
     finally:
@@ -160,9 +190,8 @@ def test_a_timeout_that_fired_in_a_fallback_stays_fired_and_duration_counts_the_
         tmp_path):
     path = tmp_path / "timed.yaml"
     path.write_text(TIMED.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
-    runner, backend = sim_runner(path, tmp_path)
-    runner.events.subscribe(lambda e: e.kind == "motion" and e.node == "last"
-                            and backend.stop())
+    runner, backend = sim_runner(path, tmp_path,
+                                 fault=lambda e: e.kind == "motion" and e.node == "last")
     try:
         first = runner.run()
     finally:
@@ -187,20 +216,17 @@ def test_taskrun_resume_continues_on_the_same_backend_from_where_the_arm_stopped
     spec = load_task(TASKS / "pick_place.yaml")
     cell = load_cell(spec.cell)
     names = cell.model.joint_names
-    backend = SimBackend(names, dict(zip(names, task_start(spec, cell).q)),
-                         SimOptions(speed=SPEED))
-
-    def fault(event):  # during a place, letting go of the cube
-        if event.kind == "motion" and event.node == "place cube: open":
-            backend.stop()
-
+    backend = FaultySim(names, dict(zip(names, task_start(spec, cell).q)),
+                        SimOptions(speed=SPEED))
+    # during a place, letting go of the cube
+    fault = backend.fault_on(lambda e: e.kind == "motion" and e.node == "place cube: open")
     try:
         run = start_run(spec, cell, backend, backend_name="sim", runs_dir=tmp_path,
                         on_event=fault)
         first = run.wait(60)
         assert first.status == "failed"
         stopped_at = backend.joint_state().positions.copy()
-        resumed = run.resume().wait(60)
+        resumed = run.resume(on_event=backend.fault_on(lambda e: False)).wait(60)
     finally:
         backend.close()
     assert resumed.ok, resumed.error
@@ -255,13 +281,9 @@ def held_record(tmp_path_factory) -> Path:
 def test_a_resumed_run_stopped_again_resumes_from_its_own_record(held_record, tmp_path):
     record = load_record(held_record)
     plan = plan_resume(record, load_task(record.task_file, record.parameters))
-    runner, backend = sim_runner(Path(record.task_file), tmp_path, plan)
-
-    def fault(event):  # the second stop: setting the cube down
-        if event.kind == "motion" and event.node == "place cube: descend":
-            backend.stop()
-
-    runner.events.subscribe(fault)
+    runner, backend = sim_runner(  # the second stop: setting the cube down
+        Path(record.task_file), tmp_path, plan,
+        fault=lambda e: e.kind == "motion" and e.node == "place cube: descend")
     try:
         second = runner.run()
     finally:
@@ -378,13 +400,8 @@ def test_from_a_step_not_reached_skips_to_it_when_the_rest_checks_from_the_real_
         tmp_path):
     path = tmp_path / "three.yaml"
     path.write_text(STEPS.format(cell=DATA_ROOT / "robots" / "cells" / "servo_arm_table.yaml"))
-    runner, backend = sim_runner(path, tmp_path)
-
-    def fault(event):  # in the first step
-        if event.kind == "motion" and event.node == "first":
-            backend.stop()
-
-    runner.events.subscribe(fault)
+    runner, backend = sim_runner(  # in the first step
+        path, tmp_path, fault=lambda e: e.kind == "motion" and e.node == "first")
     try:
         first = runner.run()
     finally:
@@ -403,9 +420,8 @@ def test_from_a_step_not_reached_skips_to_it_when_the_rest_checks_from_the_real_
                     "[0.14, -0.12, 0.7635]}, orientation: yaw}\n")
     changed = tmp_path / "four.yaml"
     changed.write_text(path.read_text().replace("task: three", "task: four"))
-    runner, backend = sim_runner(changed, tmp_path)
-    runner.events.subscribe(lambda e: e.kind == "motion" and e.node == "first"
-                            and backend.stop())
+    runner, backend = sim_runner(
+        changed, tmp_path, fault=lambda e: e.kind == "motion" and e.node == "first")
     try:
         first = runner.run()
     finally:
