@@ -50,20 +50,22 @@ def test_a_mujoco_runs_joint_states_are_the_physics_samples(tmp_path: Path) -> N
         columns = [names.index(j) for j in report.data["joints"]]
         t, q = np.array(report.data["t"]), np.array(report.data["q"])
         found = []  # (index of the sample, its message)
-        for i, sample in enumerate(q):  # each in a message of its own, in order
+        for i, sample in enumerate(q):
+            # Each in a message of its own, in order, spaced on task time as the samples
+            # on the physics clock. The settling that the next motion's start cuts off is
+            # left out: an arm at rest can equal the next motion's first samples to the
+            # last bit, so a later message with its positions is not this sample's.
             match = next((k for k in range(at, len(states)) if np.allclose(
                 np.array(states[k][1].position)[columns], sample, rtol=0, atol=1e-12)), None)
-            if match is None:
+            if match is None or (found and abs((states[match][0] - found[-1][1][0]) / 1e9
+                                               - (t[i] - t[i - 1])) > 2e-9):
                 break
             found.append((i, states[match]))
             at = match + 1
-        # Every sample, in order, but the settling that the next motion's start cuts off.
-        assert [i for i, _ in found] == list(range(len(found)))
+        # Every sample, but the settling that the next motion's start cuts off.
         assert len(found) == len(t) if n == len(motions) - 1 else len(found) >= 0.8 * len(t)
-        # On task time: spaced as the physics samples, the first one period at most after
-        # the motion was sent.
+        # On task time: the first one period at most after the motion was sent.
         stamps = np.array([stamp for _, (stamp, _) in found])
-        assert np.allclose(np.diff(stamps) / 1e9, np.diff(t[:len(found)]), atol=2e-9)
         first = (stamps[0] - base) / 1e9 - motion.data["sent"]
         assert 0 < first <= report.data["period"] + 1e-6
         for i, (stamp, state) in found:
