@@ -26,6 +26,11 @@ def test_a_dragged_goal_is_planned_and_executed_and_the_arm_moves(page, screensh
     page.wait_for_function(f"window.__viewer.firstFrame !== null && {_ANSWERS} > 0",
                            timeout=30_000)
     page.select_option("#plan-backend", "mock")
+    # The solid robot drawn where the mock backend says it is (the sim's state, drawn
+    # before, can differ: the page reads the mock's once the choice is made).
+    mock = page.server.api("/cells/servo_arm_table/state?backend=mock")["joints"]
+    page.wait_for_function("([want]) => Object.entries(want).every(([j, v]) => "
+                           "Math.abs(window.__viewer.stage.jointValue(j) - v) < 1e-9)", arg=[mock])
     page.wait_for_function("window.__viewer.plan.answer && window.__viewer.plan.answer.ok")
     joints = list(page.evaluate("Object.keys(window.__viewer.plan.answer.joints)"))
     robot_before = {j: page.evaluate(f"window.__viewer.stage.jointValue({j!r})") for j in joints}
