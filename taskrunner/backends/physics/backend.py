@@ -115,6 +115,7 @@ class MujocoBackend(BaseBackend):
         self._scene: Any = None
         self._scene_names: tuple[str, ...] = ()
         self._wake = threading.Condition(self._lock)
+        self._stepping = False  # a chunk is being stepped (outside the lock)
         self._history: deque[PhysicsSample] = deque(maxlen=100_000)
         self._unreported: deque[PhysicsSample] = deque(maxlen=20_000)
         self._grasp_log: list[dict[str, Any]] = []
@@ -492,10 +493,13 @@ class MujocoBackend(BaseBackend):
                     if self._closed:
                         return
                     plan = self._plan_chunk()
+                    self._stepping = True
                 wall = time.perf_counter()
                 self._step_chunk(plan)
                 self.step_seconds += time.perf_counter() - wall
                 with self._lock:
+                    self._stepping = False
+                    self._wake.notify_all()  # a stop waiting for the chunk's end
                     self._after_chunk(plan)
                 speed = self._options.speed
                 if speed is not None:
@@ -506,6 +510,8 @@ class MujocoBackend(BaseBackend):
                     time.sleep(0)  # let the tree and the display look in
         except Exception as exc:  # no handle may wait forever
             with self._lock:
+                self._stepping = False
+                self._wake.notify_all()
                 self._closed = True
                 self._closed_reason = f"stopped: its physics thread died ({exc!r})"
                 for execution in list(self._executions):
@@ -715,6 +721,13 @@ class MujocoBackend(BaseBackend):
         super()._finish(execution, status, message, error, data)
 
     def _cancel(self, execution: TrajectoryExecution, message: str) -> None:
+        # A chunk being stepped moves the arm on for up to its 20 ms of physics: the motion
+        # stops where the chunk leaves it, so that the handle's end, the joints reported
+        # then and where the arm is held agree (cancelled mid-chunk, the arm went on past
+        # the state the run recorded as where it stopped).
+        if threading.current_thread() is not self._thread:
+            while self._stepping and not execution.finished and not self._closed:
+                self._wake.wait()
         super()._cancel(execution, message)
         self._targets[execution.columns] = self._positions[execution.columns]
 
