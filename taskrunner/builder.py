@@ -388,6 +388,8 @@ class Expect(ExpectStep):
         duration: task time since the run started (s): at most this many seconds, or
             ``{"min": s, "max": s}``.
         step_duration: task time of the step just before (s), as ``duration``.
+        motion_time: the task time since the run started during which a motion ran
+            (s), as ``duration``: planning and waits left out.
         collision_free: re-check every motion executed so far for collisions.
         status: the task's end only: ``"succeeded"`` (default) or ``"failed"``.
         error: the task's end only, with ``status="failed"``: text the error contains.
@@ -407,12 +409,14 @@ class Expect(ExpectStep):
                  groups: Mapping[str, Mapping[str, Any]] | None = None,
                  duration: float | Mapping[str, float] | None = None,
                  step_duration: float | Mapping[str, float] | None = None,
+                 motion_time: float | Mapping[str, float] | None = None,
                  collision_free: bool | None = None,
                  status: Literal["succeeded", "failed"] | None = None,
                  error: str | None = None, name: str | None = None) -> None:
         _init(self, {"objects": {k: _expected_object(v) for k, v in (objects or {}).items()},
                      "groups": {k: dict(v) for k, v in (groups or {}).items()},
                      "duration": _bounds(duration), "step_duration": _bounds(step_duration),
+                     "motion_time": _bounds(motion_time),
                      "collision_free": collision_free or None, "name": name})
         self._outcome = {k: v for k, v in (("status", status), ("error", error))
                          if v is not None}

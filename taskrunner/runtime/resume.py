@@ -219,14 +219,18 @@ class ResumePlan:
     def story_context(self, ctx: TaskContext) -> TaskContext:
         """``ctx`` for the task's ``expect:`` at the end: its clock reads the task time of
         the runs this one resumes plus its own (``duration`` sees the whole story)."""
-        before = self.story.task_time if self.story is not None else 0.0
-        return dataclasses.replace(ctx, clock=StoryClock(ctx.clock, before))
+        story = self.story
+        if story is None:
+            return dataclasses.replace(ctx, clock=StoryClock(ctx.clock, 0.0))
+        return dataclasses.replace(ctx, clock=StoryClock(ctx.clock, story.task_time,
+                                                         story.motion_time))
 
     def covers(self, ctx: TaskContext, expect: TaskExpectation | None) -> str:
         """What the task's ``duration`` and ``collision_free`` covered, said after its
         expectations' verdict (empty when it has neither)."""
         story = self.story
         if expect is None or story is None or (expect.duration is None
+                                               and expect.motion_time is None
                                                and not expect.collision_free):
             return ""
         runs = len(story.runs) + 1
@@ -234,6 +238,10 @@ class ResumePlan:
         if expect.duration is not None:
             said.append(f"duration: {story.task_time + ctx.clock.now():.1f} s of task time "
                         f"over the {runs} runs of the story ({story.task_time:.1f} s before "
+                        "this one)")
+        if expect.motion_time is not None:
+            said.append(f"motion_time: {story.motion_time + ctx.clock.motion_time():.1f} s "
+                        f"over the {runs} runs of the story ({story.motion_time:.1f} s before "
                         "this one)")
         if expect.collision_free:
             said.append(f"collision_free: this run's {len(ctx.executed)} motions (the "

@@ -368,7 +368,8 @@ class Runner:
         # (polls of GET /runs/{id}, TaskRun) finds its run_finished event there too.
         self.events.emit("run_finished", error or status, status=status, exit_code=code,
                          scene=scene_data(self.scene.snapshot()),
-                         task_time=round(self.ctx.clock.now(), 6))
+                         task_time=round(self.ctx.clock.now(), 6),
+                         motion_time=round(self.ctx.clock.motion_time(), 6))
         self.record.exit_code = code
         self.record.error = error
         self.record.finished = datetime.now(UTC).isoformat()

@@ -137,6 +137,9 @@ class Expectation(Node):
     """By group name: at a named pose or joint values."""
     duration: DurationBounds | None = None
     """Task time since the run started (s)."""
+    motion_time: DurationBounds | None = None
+    """The part of the task time since the run started during which a motion ran (s):
+    planning, waits and scene edits left out, so the same on any machine."""
     step_duration: DurationBounds | None = None
     """Task time of the step just before this 'expect' in the same list (s)."""
     collision_free: Literal[True] | None = None
@@ -146,10 +149,10 @@ class Expectation(Node):
 
     @model_validator(mode="after")
     def _something(self) -> Expectation:
-        if not (self.objects or self.groups or self.duration or self.step_duration
-                or self.collision_free or getattr(self, "status", None)):
+        if not (self.objects or self.groups or self.duration or self.motion_time
+                or self.step_duration or self.collision_free or getattr(self, "status", None)):
             raise ValueError("needs at least one of 'objects', 'groups', 'duration', "
-                             "'step_duration' or 'collision_free'")
+                             "'motion_time', 'step_duration' or 'collision_free'")
         return self
 
 

@@ -248,7 +248,7 @@ class _Executes(TaskLeaf):
         except BackendError as exc:  # refused, or stopped on a fault since the last motion
             return self.fail(f"execution failed: {exc}", kind="execution")
         self.handle = handle
-        started = self.ctx.clock.track(handle, since=before)
+        started = self.ctx.clock.track(handle, since=before if timed else None)
         snapshot = self.ctx.scene.snapshot()
         start = self.admission.start if self.admission is not None else 0.0
         sent = started if timed else start

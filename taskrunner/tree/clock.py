@@ -10,6 +10,10 @@ the planned time. A time limit in a task file means the task's own time, so
   several motions run at once, the one furthest along sets the pace;
 - everything else (planning, scene edits, ``wait`` steps) at wall-clock time.
 
+Its :meth:`TaskClock.motion_time` is the part of it during which a motion ran: the
+cell's own time, the same on any machine however long planning took (what a task's
+``motion_time`` expectation bounds).
+
 The same task so gets the same verdict on mock, on the simulator at any speed and on the
 robot, as long as its planning time (the only wall-clock part that differs between
 machines) is small against the margin. Units: seconds.
@@ -37,6 +41,7 @@ class TaskClock:
         self._wall = wall
         self._last_wall = wall()
         self._now = 0.0
+        self._moving = 0.0  # of _now: while a motion ran
         self._motions: dict[int, tuple[ExecutionHandle, float]] = {}  # id -> (handle, progress)
         self._lock = threading.Lock()
 
@@ -47,14 +52,16 @@ class TaskClock:
         A backend with a thread of its own may have played the motion on before
         ``execute`` returned (a loaded machine, a fast simulator): that progress is counted
         once, as time since ``since`` (the clock's reading just before ``execute``;
-        default its last reading), not again after, so every motion's start and end keep
-        their place against the others' on this clock.
+        default: now, as for a backend that ends a motion at once), not again after, so
+        every motion's start and end keep their place against the others' on this clock.
         """
         with self._lock:
-            before = self._now if since is None else since
             self._advance()
+            before = self._now if since is None else since
             progress = float(handle.progress)
-            self._now = max(self._now, before + progress)
+            now = max(self._now, before + progress)
+            self._moving += now - self._now  # progress made before execute returned
+            self._now = now
             self._motions[id(handle)] = (handle, progress)
             return self._now - progress
 
@@ -63,6 +70,13 @@ class TaskClock:
         with self._lock:
             self._advance()
             return self._now
+
+    def motion_time(self) -> float:
+        """Task time (s) during which at least one motion ran, since the clock was made
+        (several at once counted once, by the one furthest along)."""
+        with self._lock:
+            self._advance()
+            return self._moving
 
     def update(self) -> None:
         """Account for the motions up to now (a leaf calls it when it sees its motion end,
@@ -88,3 +102,4 @@ class TaskClock:
         # When the last motion ended within this step, the rest of the step was wall time:
         # counting the longer of the two is short by at most the motion's own wall time.
         self._now += motion_step if self._motions else max(motion_step, wall_step)
+        self._moving += motion_step

@@ -145,11 +145,12 @@ def _group(ctx: TaskContext, name: str, want: GroupExpectation) -> list[str]:
             f"{errors[worst]:.4f} at most: {off}"]
 
 
-def _duration(what: str, seconds: float, bounds: DurationBounds) -> list[str]:
+def _duration(what: str, seconds: float, bounds: DurationBounds,
+              clock: str = "task time") -> list[str]:
     low = bounds.min is not None and seconds < bounds.min
     high = bounds.max is not None and seconds > bounds.max
     if low or high:
-        return [f"{what} expected {bounds}; observed {seconds:.3f} s (task time)"]
+        return [f"{what} expected {bounds}; observed {seconds:.3f} s ({clock})"]
     return []
 
 
@@ -288,6 +289,9 @@ def check_expectation(ctx: TaskContext, want: Expectation, step_seconds: float |
         misses.append(str(exc))
     if want.duration is not None:
         misses += _duration("the run's duration", ctx.clock.now(), want.duration)
+    if want.motion_time is not None:
+        misses += _duration("the run's motion time", ctx.clock.motion_time(),
+                            want.motion_time, "task time while a motion ran")
     if want.step_duration is not None:
         if step_seconds is None:
             misses.append("the step before has no duration (it did not run to its end)")

@@ -15,8 +15,9 @@ from taskrunner.runtime.records import load_record
 from taskrunner.runtime.session import run_task_file
 
 # Wall-clock figures, different in every run; the run's task time too (on the mock
-# backend its clock runs on while a motion is planned).
-_TIMING = {"planning_time", "seconds", "task_time"}
+# backend its clock runs on while a motion is planned), and its motion time (within the
+# clock's sampling of a motion's end).
+_TIMING = {"planning_time", "seconds", "task_time", "motion_time"}
 
 
 def _run(path, runs_dir, seed: int) -> tuple[int, list[tuple]]:

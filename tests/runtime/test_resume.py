@@ -121,8 +121,16 @@ def test_a_run_stopped_by_a_fault_resumes_where_it_stopped_and_meets_its_expecta
     assert record.resumes == first.run_id
     started = [e.node for e in record.events if e.kind == "node_started"]
     assert started[0] == node  # the leaf that did not finish runs again, nothing before it
-    # The new record can be resumed in turn: it has its checkpoints.
+    # The new record can be resumed in turn: it has its checkpoints, and the story so far
+    # (the stopped run's task time and motion time, for duration and motion_time).
     assert checkpoints_of(record) and record.task_sha256 == first.task_sha256
+    story = next(e.data["story"] for e in record.events
+                 if e.kind == "message" and "story" in e.data)
+    ended = next(e.data for e in first.events if e.kind == "run_finished")
+    assert list(story["runs"]) == [first.run_id]
+    assert story["task_time"] == pytest.approx(ended["task_time"])
+    assert story["motion_time"] == pytest.approx(ended["motion_time"])
+    assert 0 < story["motion_time"] < story["task_time"]
 
 
 LOOPS = """\

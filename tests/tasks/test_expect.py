@@ -231,3 +231,21 @@ def test_malformed_expectations_are_refused_at_their_line(tmp_path: Path, body: 
         load_task(path)
     assert f"{path.name}:5" in str(info.value) or f"{path}:5" in str(info.value)
     assert message in str(info.value)
+
+
+def test_motion_time_counts_only_the_time_a_motion_ran(tmp_path: Path):
+    text = demo(tmp_path).read_text().replace("  duration: {max: 30}\n",
+                                              "  motion_time: {max: 0.5}\n")
+    path = write(tmp_path, text, "short.yaml")
+    result = taskrunner.run_task(path, backend="mock")
+    assert result.status == "failed" and result.exit_code == 4
+    finished = next(e for e in result.events if e.kind == "run_finished")
+    moving, total = finished.data["motion_time"], finished.data["task_time"]
+    planned = sum(e.data["trajectory"]["times"][-1] for e in result.events
+                  if e.kind == "motion")
+    assert moving == pytest.approx(planned, abs=1e-3)  # one arm: its motions, end to end
+    assert 0 < moving < total  # the planning is task time, not motion time
+    assert (f"the run's motion time expected at most 0.5 s; observed {moving:.3f} s (task "
+            "time while a motion ran)") in (result.error or "")
+    met = write(tmp_path, text.replace("{max: 0.5}", f"{{min: {moving - 0.1:.3f}}}"), "ok.yaml")
+    assert taskrunner.run_task(met, backend="mock").status == "succeeded"

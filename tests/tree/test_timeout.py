@@ -91,3 +91,6 @@ def test_the_task_clock_counts_motion_at_trajectory_time_and_the_rest_at_wall_ti
     c.progress, c.finished = 0.2, True  # ended long before anyone looked: the wall time counts
     wall[0] += 3.0
     assert clock.now() == pytest.approx(18.5)
+    # The motion time: 12 s while a ran (b beside it counted once), b's last 0.5 s alone, c's
+    # 0.2 s; not the 1 s of planning, the wait, or the wall time after c.
+    assert clock.motion_time() == pytest.approx(12.7)
