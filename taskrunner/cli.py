@@ -40,9 +40,9 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
-from pathlib import Path
 
 from taskrunner.commands.examples import cmd_examples
+from taskrunner.commands.options import add_robot_options, load_options
 from taskrunner.commands.resume import add_resume_parser, cmd_resume
 from taskrunner.commands.robots import cmd_collision_matrix, cmd_demo, cmd_info, cmd_plan
 from taskrunner.commands.server import cmd_serve, cmd_view
@@ -56,7 +56,6 @@ from taskrunner.errors import (
     UnknownNameError,
 )
 from taskrunner.kinds import BackendKind, CollisionChoice, ExitCode
-from taskrunner.robot.options import LoadOptions
 
 __all__ = ["main"]
 
@@ -67,41 +66,6 @@ EXIT_OK, EXIT_INVALID, EXIT_PLANNING, EXIT_EXECUTION, EXIT_CANCELLED = (
 COMMANDS = ("run", "check", "examples", "demo", "info", "collision-matrix", "serve",
             "firmware-sim", "bus-sim", "hw", "view", "test", "sweep", "plan", "warm-up", "export",
             "resume")
-
-
-def _add_robot_options(parser: argparse.ArgumentParser) -> None:
-    """``--package-path`` and ``--strict``, for every command that loads robots."""
-    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
-                        help="also look for ROS packages under DIR (repeatable; before "
-                             "TASKRUNNER_PACKAGE_PATH, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)")
-    parser.add_argument("--strict", action="store_true",
-                        help="robot file warnings (what MoveIt would skip) are errors")
-    parser.add_argument("--allow-missing-meshes", action="store_true",
-                        help="load robots whose mesh files cannot be found (or that have "
-                             "no collision geometry) without that geometry, with a warning")
-    parser.add_argument("--collision", choices=tuple(CollisionChoice), default=None,
-                        help="link geometry of every robot: exact meshes, convex hulls, or "
-                             "auto (hulls where tight; default: each robot's own choice)")
-
-
-def _load_options(args: argparse.Namespace) -> LoadOptions:
-    """How this command loads robots: ``--package-path``, ``--strict``,
-    ``--allow-missing-meshes`` and ``--collision`` over what the documented variables say
-    (``TASKRUNNER_PACKAGE_PATH`` … :meth:`LoadOptions.from_env`, read here only). The
-    command hands the result to the loaders and to the worker processes it starts; the
-    environment is not changed."""
-    from_env = LoadOptions.from_env()
-    folders = [Path(p).expanduser().resolve() for p in getattr(args, "package_path", None) or []]
-    missing = [str(f) for f in folders if not f.is_dir()]
-    if missing:
-        raise InputError(f"'--package-path' must be a folder (got {', '.join(missing)})")
-    return LoadOptions(
-        strict=bool(getattr(args, "strict", False)) or from_env.strict,
-        package_path=(*folders, *from_env.package_path),
-        allow_missing_meshes=(bool(getattr(args, "allow_missing_meshes", False))
-                              or from_env.allow_missing_meshes),
-        collision=getattr(args, "collision", None) or from_env.collision,
-    )
 
 
 def cmd_export(args: argparse.Namespace) -> int:
@@ -281,7 +245,7 @@ def _parser() -> argparse.ArgumentParser:
     plan.add_argument("--seed", type=int, default=0, help="planner and IK seed (0)")
     plan.add_argument("--json", action="store_true", help="print the report as JSON")
     for loads_robots in (run, check, demo, hw, info, plan):
-        _add_robot_options(loads_robots)
+        add_robot_options(loads_robots)
     serve = sub.add_parser("serve", help="serve the REST API with uvicorn")
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (127.0.0.1)")
     serve.add_argument("--port", type=int, default=8000, help="port (8000)")
@@ -380,7 +344,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "warm-up": cmd_warm_up, "export": cmd_export, "resume": cmd_resume}
     try:
         if hasattr(args, "allow_missing_meshes"):  # a command that loads robots
-            args.load_options = _load_options(args)
+            args.load_options = load_options(args)
         return commands[args.command](args)
     except (InputError, UnknownNameError) as exc:
         print(f"error: {exc}", file=sys.stderr)

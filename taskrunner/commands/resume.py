@@ -8,11 +8,12 @@ from __future__ import annotations
 import argparse
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
-from taskrunner.errors import InputError
+from taskrunner.errors import InputError, TaskrunnerError
 
 if TYPE_CHECKING:
+    from taskrunner.robot.options import LoadOptions
     from taskrunner.types import Pose  # pinocchio: imported when a pose is parsed
 
 __all__ = ["add_resume_parser", "cmd_resume", "parse_object_pose"]
@@ -46,6 +47,10 @@ def add_resume_parser(sub: argparse._SubParsersAction) -> None:  # type: ignore[
     resume.add_argument("--plain", action="store_true", help="log lines even in a terminal")
     resume.add_argument("--in-process", action="store_true",
                         help="plan in this process instead of a worker process")
+    # How the robots are loaded: as the run recorded it, unless one of these is given.
+    from taskrunner.commands.options import add_robot_options
+
+    add_robot_options(resume, " (default: as the run loaded them, from its record)")
 
 
 def parse_object_pose(text: str) -> tuple[str, Pose]:
@@ -92,10 +97,27 @@ def cmd_resume(args: argparse.Namespace) -> int:
                             from_step=args.from_step)
     spec = load_task(record.task_file, record.parameters)
     plan = plan_resume(record, spec, options)
+    load = _load_options(args, record, path)
     runs_dir = Path(args.runs_dir) if args.runs_dir else path.parent
     live = not args.plain and sys.stdout.isatty()
     return run_task_file(Path(record.task_file), backend=record.backend,
                          parameters=record.parameters, speed=args.speed, seed=args.seed,
                          runs_dir=runs_dir, live=live, worker=not args.in_process,
                          port=args.port, url=args.url,
-                         firmware_speedup=args.firmware_speedup, check=False, resume=plan)
+                         firmware_speedup=args.firmware_speedup, check=False, resume=plan,
+                         options=load)
+
+
+def _load_options(args: argparse.Namespace, record: Any, path: Path) -> LoadOptions:
+    """How to load the cell's robots: as the command line says when it says anything
+    (flags or TASKRUNNER_* variables), else as the record says the run loaded them (the
+    geometry the run was checked against, its packages)."""
+    from taskrunner.robot.options import LoadOptions
+
+    given = getattr(args, "load_options", None) or LoadOptions()
+    if given != LoadOptions() or not record.load_options:
+        return given
+    try:
+        return LoadOptions.from_data(record.load_options)
+    except TaskrunnerError as exc:
+        raise InputError(f"run {record.run_id}: its load_options: {exc}", path) from None

@@ -80,6 +80,38 @@ class LoadOptions:
         """These options with ``changes`` (checked)."""
         return replace(self, **changes)  # type: ignore[arg-type]
 
+    def as_data(self) -> dict[str, object]:
+        """These options as JSON data (what a run's record keeps; :meth:`from_data`)."""
+        return {"strict": self.strict, "package_path": [str(p) for p in self.package_path],
+                "allow_missing_meshes": self.allow_missing_meshes,
+                "collision": None if self.collision is None else str(self.collision)}
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, object]) -> LoadOptions:
+        """Options from :meth:`as_data`'s form (a run's record).
+
+        Raises:
+            ArgumentError: a field that is not one, or a value of the wrong kind.
+        """
+        unknown = sorted(set(data) - {"strict", "package_path", "allow_missing_meshes",
+                                      "collision"})
+        if unknown:
+            raise ArgumentError(f"load options: unknown field {unknown[0]!r}")
+        path = data.get("package_path", ())
+        if isinstance(path, str) or not isinstance(path, list | tuple):
+            raise ArgumentError(f"'package_path' must be a list of folders (got {path!r})")
+        strict, allow = data.get("strict", False), data.get("allow_missing_meshes", False)
+        if not isinstance(strict, bool) or not isinstance(allow, bool):
+            raise ArgumentError(f"'strict' and 'allow_missing_meshes' must be bools (got "
+                                f"{strict!r}, {allow!r})")
+        collision = data.get("collision")
+        if collision is not None and collision not in tuple(CollisionChoice):
+            raise ArgumentError(f"'collision' must be one of exact, convex, auto "
+                                f"(got {collision!r})")
+        return cls(strict=strict, package_path=tuple(Path(str(p)) for p in path),
+                   allow_missing_meshes=allow,
+                   collision=None if collision is None else CollisionChoice(str(collision)))
+
     @classmethod
     def from_env(cls, environ: Mapping[str, str] | None = None) -> LoadOptions:
         """The options the documented variables give (``environ``, default ``os.environ``):

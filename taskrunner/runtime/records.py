@@ -76,6 +76,10 @@ class RunRecord:
         task_sha256: hash of ``task_text``; ``tree_sha256``: of the compiled tree's
             shape (:mod:`taskrunner.runtime.checkpoint`); what a resume checks.
         resumes: the id of the run this one resumes (``run-task resume``), if any.
+        load_options: how the cell's robots were loaded
+            (:meth:`taskrunner.robot.options.LoadOptions.as_data`): what ``run-task
+            resume`` loads them with again. None: not said (the defaults; a record made
+            before records kept them).
     """
 
     run_id: str
@@ -94,6 +98,7 @@ class RunRecord:
     task_sha256: str = ""
     tree_sha256: str = ""
     resumes: str | None = None
+    load_options: dict[str, Any] | None = None
     events: list[RunEvent] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:

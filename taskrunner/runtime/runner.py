@@ -26,7 +26,7 @@ import uuid
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import py_trees
 from py_trees.common import Status
@@ -129,6 +129,9 @@ class RunOptions:
         timing: default time parameterization (velocity / acceleration scaling).
         planner_times: the planner times planned motions too (see
             :class:`~taskrunner.tree.context.TaskContext`).
+        load_options: how the cell's robots were loaded
+            (:meth:`~taskrunner.robot.options.LoadOptions.as_data`), kept in the record for
+            a resume. None: not said.
     """
 
     tick_hz: float = 100.0
@@ -137,6 +140,7 @@ class RunOptions:
     backend_name: str = "mock"
     timing: TimingOptions = field(default_factory=TimingOptions)
     planner_times: bool = False
+    load_options: dict[str, Any] | None = None
 
     def __post_init__(self) -> None:
         if not self.tick_hz > 0:
@@ -192,7 +196,8 @@ class Runner:
             run_id=new_run_id(), task=spec.name, task_file=str(spec.path or ""),
             cell=cell.name, backend=self.options.backend_name,
             parameters={k: p.value for k, p in spec.parameters.items()},
-            task_text=spec.path.read_text(encoding="utf-8") if spec.path else "")
+            task_text=spec.path.read_text(encoding="utf-8") if spec.path else "",
+            load_options=self.options.load_options)
         self.events.subscribe(self.record.events.append)
         self.record.tree_sha256 = tree_sha256(self.tree)
         # After the record's subscriber: a checkpoint is kept after its node_finished.

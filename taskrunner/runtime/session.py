@@ -415,7 +415,9 @@ def run_task_file(path: Path, backend: str = "mock", parameters: dict[str, str] 
             warm_up_s = _prepare_kernels(planner_service, out, stop, live)
             events = EventLog()
             runner = Runner(spec, cell, machine, planner_service,
-                            RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend),
+                            RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend,
+                                       load_options=None if options is None
+                                       else options.as_data()),
                             events=events, resume=resume)
             runner.record.warm_up_s = warm_up_s
             if not live:

@@ -114,3 +114,18 @@ def test_the_cli_flags_reach_the_loader_without_touching_the_environment(mini_fo
     assert main(["info", str(mini_folder), "--allow-missing-meshes"]) == 0
     assert "loaded WITHOUT 3 mesh file(s)" in capsys.readouterr().out
     assert dict(os.environ) == before
+
+
+def test_options_kept_as_data_come_back_the_same_and_bad_data_is_refused(tmp_path):
+    options = LoadOptions(strict=True, package_path=(tmp_path,), allow_missing_meshes=True,
+                          collision="exact")
+    data = options.as_data()
+    assert data == {"strict": True, "package_path": [str(tmp_path.resolve())],
+                    "allow_missing_meshes": True, "collision": "exact"}
+    assert LoadOptions.from_data(data) == options
+    assert LoadOptions.from_data(LoadOptions().as_data()) == LoadOptions()
+    for bad, said in (({"strict": "yes"}, "must be bools"), ({"collision": "mesh"},
+                      "one of exact, convex, auto"), ({"package_path": "/opt"}, "a list"),
+                      ({"colision": "exact"}, "unknown field 'colision'")):
+        with pytest.raises(ArgumentError, match=said):
+            LoadOptions.from_data(bad)

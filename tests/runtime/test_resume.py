@@ -512,3 +512,26 @@ def test_on_a_physics_backend_that_went_on_the_simulated_world_says_what_is_held
     with pytest.raises(InputError, match="the mujoco backend cannot tell whether it still is"):
         sim_runner(Path(record.task_file), held_record.parent,
                    plan_resume(record, spec))  # a new process: a new simulated world
+
+
+def test_a_run_records_how_its_robots_were_loaded_and_resume_loads_them_so(tmp_path):
+    import argparse
+
+    from taskrunner.commands.resume import _load_options
+    from taskrunner.robot.options import LoadOptions
+
+    assert main(["run", "go_home", "--backend", "mock", "--in-process", "--plain",
+                 "--no-check", "--runs-dir", str(tmp_path), "--collision", "exact"]) == 0
+    record_path = next(tmp_path.glob("*.json"))
+    record = load_record(record_path)
+    assert record.load_options == LoadOptions(collision="exact").as_data()
+    # Resumed without robot flags: as the run loaded them (the geometry it was checked
+    # against); with a flag: as the command line says.
+    plain = argparse.Namespace(load_options=LoadOptions())
+    assert _load_options(plain, record, record_path) == LoadOptions(collision="exact")
+    given = argparse.Namespace(load_options=LoadOptions(collision="convex"))
+    assert _load_options(given, record, record_path) == LoadOptions(collision="convex")
+    record.load_options = {"collision": "mesh"}
+    with pytest.raises(InputError, match=f"run {record.run_id}: its load_options: "
+                                         "'collision' must be one of"):
+        _load_options(plain, record, record_path)
