@@ -38,7 +38,6 @@ from taskrunner.scene.hullfit import hull_excess, shared_convex_hull
 
 __all__ = [
     "COLLISION_CHOICES",
-    "COLLISION_ENV",
     "DEFAULT_HULL_TOLERANCE",
     "HULL",
     "MESH",
@@ -54,7 +53,6 @@ __all__ = [
 ]
 
 COLLISION_CHOICES = tuple(c.value for c in CollisionChoice)
-COLLISION_ENV = "TASKRUNNER_COLLISION"
 DEFAULT_HULL_TOLERANCE = 0.005
 HULL, MESH, PRIMITIVE = "convex hull", "exact mesh", "primitive"
 _PLURAL = {HULL: "convex hulls", MESH: "exact meshes", PRIMITIVE: "primitive shapes"}
