@@ -262,6 +262,9 @@ def _parser() -> argparse.ArgumentParser:
     serve.add_argument("--collision", choices=tuple(CollisionChoice), default=None,
                        help="link geometry of every robot the server loads (default: each "
                             "robot's own choice: its cell's or robot.yaml's collision:, else auto)")
+    serve.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                       help="also look for ROS packages (and load robots) under DIR "
+                            "(repeatable; default: TASKRUNNER_PACKAGE_PATH)")
     serve.add_argument("--planner", choices=("worker", "inprocess"), default=None,
                        help="plan in a worker process per run (default) or in-process")
     serve.add_argument("--foxglove", nargs="?", type=int, const=8765, default=None,

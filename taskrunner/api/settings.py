@@ -47,6 +47,9 @@ class Settings(BaseSettings):
             load only from here.
         robots_dirs: the only folders robots (URDF, xacro: code) load from; default:
             the shipped robots. The cells folder is allowed too.
+        package_path: folders searched for the ROS packages robots name
+            (``package://``), as ``run-task run --package-path``; robots may load from
+            them too (folders separated by ``os.pathsep`` in ``TASKRUNNER_PACKAGE_PATH``).
         data_dir: where the server keeps its data (the run database ``runs.sqlite``).
         max_body_bytes: larger request bodies are refused with 413.
         planner: ``worker`` plans in a process per run; ``inprocess`` in the run's
@@ -96,7 +99,7 @@ class Settings(BaseSettings):
         strict: every robot load warning is an error (``TASKRUNNER_STRICT=1``).
         allow_missing_meshes: load robots whose mesh files cannot be found without
             that geometry, with a warning (``TASKRUNNER_ALLOW_MISSING_MESHES=1``).
-        The last three reach the loaders and the planning workers as one
+        These three and ``package_path`` reach the loaders and the planning workers as one
         :class:`~taskrunner.robot.options.LoadOptions` (:meth:`load_options`).
     """
 
@@ -109,6 +112,7 @@ class Settings(BaseSettings):
     tasks_dir: Path = resources.tasks_dir()
     cells_dir: Path = resources.cells_dir()
     robots_dirs: Annotated[tuple[Path, ...], NoDecode] = (resources.robots_dir(),)
+    package_path: Annotated[tuple[Path, ...], NoDecode] = ()
     data_dir: Path = Path("state")
     max_body_bytes: int = 1_000_000
     planner: str = "worker"
@@ -185,12 +189,16 @@ class Settings(BaseSettings):
     def _folder(cls, value: Path) -> Path:
         return Path(value).resolve()
 
-    @field_validator("robots_dirs", mode="before")
+    @field_validator("robots_dirs", "package_path", mode="before")
     @classmethod
-    def _folders(cls, value: Any) -> Any:
+    def _folders(cls, value: Any, info: Any) -> Any:
         if isinstance(value, str | Path):
             value = [p for p in str(value).split(os.pathsep) if p]
-        return tuple(Path(p).resolve() for p in value)
+        folders = tuple(Path(p).expanduser().resolve() for p in value)
+        missing = [str(f) for f in folders if not f.is_dir()]
+        if info.field_name == "package_path" and missing:
+            raise ValueError(f"must be folders (not found: {', '.join(missing)})")
+        return folders
 
     @field_validator("max_body_bytes", "check_memory_mb", "check_workers", "max_planners",
                      "work_queue", "stream_max_lag", "max_requests", mode="before")
@@ -270,13 +278,14 @@ class Settings(BaseSettings):
 
     @property
     def allowed_robots(self) -> tuple[Path, ...]:
-        """The folders robots may load from: ``robots_dirs`` and the cells folder."""
-        return (*self.robots_dirs, self.cells_dir)
+        """The folders robots may load from: ``robots_dirs``, the cells folder and the
+        ``package_path`` folders."""
+        return (*self.robots_dirs, self.cells_dir, *self.package_path)
 
     def load_options(self) -> LoadOptions:
         """How the server loads robots (its cells' and their planning workers')."""
         return LoadOptions(strict=self.strict, allow_missing_meshes=self.allow_missing_meshes,
-                           collision=self.collision)
+                           collision=self.collision, package_path=self.package_path)
 
     def folder_policy(self) -> FolderPolicy:
         """What requests may make the server load: tasks from the tasks folder, cells

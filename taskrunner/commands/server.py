@@ -27,7 +27,8 @@ def cmd_serve(args: argparse.Namespace) -> int:
 
     try:
         settings = Settings.from_env(token=args.token, planner=args.planner,
-                                     data_dir=args.data_dir, collision=args.collision)
+                                     data_dir=args.data_dir, collision=args.collision,
+                                     package_path=tuple(args.package_path) or None)
         if args.foxglove is not None:
             settings = settings.replaced(foxglove_port=args.foxglove)
         if args.no_auth:

@@ -129,3 +129,29 @@ def test_options_kept_as_data_come_back_the_same_and_bad_data_is_refused(tmp_pat
                       ({"colision": "exact"}, "unknown field 'colision'")):
         with pytest.raises(ArgumentError, match=said):
             LoadOptions.from_data(bad)
+
+
+def test_the_server_finds_packages_on_its_package_path_setting(mini_folder, tmp_path):
+    from fastapi.testclient import TestClient
+
+    from taskrunner.api import Settings, create_app
+
+    cells = tmp_path / "cells"
+    cells.mkdir()
+    (cells / "mini_cell.yaml").write_text(
+        f"name: mini_cell\nrobots:\n  - {{name: arm, robot: {mini_folder}}}\n")
+    with pytest.raises(ArgumentError, match="TASKRUNNER_PACKAGE_PATH: .*must be folders "
+                                            "\\(not found: /no/such/folder\\)"):
+        Settings.from_env({"TASKRUNNER_PACKAGE_PATH": f"{WS_SRC}{os.pathsep}/no/such/folder"})
+    for package_path, status in (((), 422), ((WS_SRC,), 200)):
+        settings = Settings.from_env(
+            {}, token="t" * 32, data_dir=tmp_path / f"state{len(package_path)}",
+            cells_dir=cells, robots_dirs=(mini_folder.parent,), planner="inprocess",
+            package_path=package_path or None)
+        assert settings.load_options().package_path == tuple(p.resolve() for p in package_path)
+        with TestClient(create_app(settings), headers={"Authorization": "Bearer " + "t" * 32}
+                        ) as client:
+            answer = client.get("/cells/mini_cell")
+        assert answer.status_code == status, answer.text
+        if status == 422:
+            assert "package 'mini_description' not found" in answer.text
