@@ -91,14 +91,23 @@ def write_mcap(messages: list[TimedMessage], path: str | Path,
 
 def cell_of_record(record: RunRecord, cell: str | Path | None = None) -> Cell:
     """The cell a run used: ``cell`` (a name or path) if given, else the ``cell:`` of the
-    task text the record keeps, found from the task file's folder.
+    task text the record keeps, found from the task file's folder; its robots loaded as
+    the record says the run loaded them (``load_options``: its package path, its
+    collision choice).
 
     Raises:
         InputError: the cell cannot be found (give ``cell``), or is not the one named in
-            the record.
+            the record, or the record's load options are not valid.
     """
+    from taskrunner.errors import TaskrunnerError
     from taskrunner.resources import resolve_cell
     from taskrunner.robot.cell import load_cell_or_robot
+    from taskrunner.robot.options import LoadOptions
+
+    try:
+        options = LoadOptions.from_data(record.load_options or {})
+    except TaskrunnerError as exc:
+        raise InputError(f"run {record.run_id}: its load_options: {exc}") from None
 
     if cell is None:
         import yaml
@@ -118,7 +127,7 @@ def cell_of_record(record: RunRecord, cell: str | Path | None = None) -> Cell:
             path = resolve_cell(named)
     else:
         path = resolve_cell(cell)
-    loaded = load_cell_or_robot(path)
+    loaded = load_cell_or_robot(path, options=options)
     if loaded.name != record.cell:
         raise InputError(f"run {record.run_id} ran on cell {record.cell!r}, but {path} is "
                          f"cell {loaded.name!r}; give the run's cell (--cell NAME_OR_PATH)")

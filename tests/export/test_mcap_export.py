@@ -230,3 +230,19 @@ def test_each_motion_is_a_display_trajectory_of_its_robot(exported: Exported) ->
             robot = model.instances[0] if len(model.instances) == 1 else next(
                 i for i in model.instances if trajectory["joints"][0].startswith(i.prefix))
             assert message.model_id == robot.name
+
+
+def test_the_cell_of_a_record_is_loaded_as_its_run_loaded_it(tmp_path: Path) -> None:
+    from taskrunner.errors import InputError
+
+    runs = tmp_path / "runs"
+    assert main(["run", str(TASKS / "go_home.yaml"), "--backend", "mock", "--in-process",
+                 "--plain", "--no-check", "--runs-dir", str(runs), "--collision",
+                 "convex"]) == 0
+    record = load_record(next(runs.glob("*.json")))
+    assert record.load_options is not None and record.load_options["collision"] == "convex"
+    assert cell_of_record(record).name == record.cell
+    record.load_options = {"collision": "mesh"}  # read, so checked
+    with pytest.raises(InputError, match=f"run {record.run_id}: its load_options: "
+                                         "'collision' must be one of"):
+        cell_of_record(record)
