@@ -83,7 +83,8 @@ def cmd_warm_up(args: argparse.Namespace) -> int:
 def cmd_test(args: argparse.Namespace) -> int:
     from taskrunner.runtime.testing import test_command
 
-    return test_command(args.paths, args.jobs, args.junit, args.ray)
+    return test_command(args.paths, args.jobs, args.junit, args.ray,
+                        load_options=args.load_options.as_data())
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
@@ -119,6 +120,8 @@ def _add_test_sweep_parsers(sub) -> None:  # type: ignore[no-untyped-def]
                             "(default: sweeps/<task>-<time>)")
     sweep.add_argument("--ray", nargs="?", const="local", default=None, metavar="ADDRESS",
                        help=ray_help)
+    for loads_robots in (test, sweep):
+        add_robot_options(loads_robots)
 
 
 def _parser() -> argparse.ArgumentParser:

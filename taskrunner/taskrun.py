@@ -8,10 +8,10 @@ or an iterator, ``cancel()``, ``wait()``) and ends with a :class:`RunResult`.
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from taskrunner.backends.base import Backend
 from taskrunner.planning.service import InProcessPlanner
@@ -226,7 +226,8 @@ def start_run(spec: TaskSpec, cell: Cell, backend: Backend, *, seed: int = 0,
               backend_name: str = "mock", runs_dir: Path | None = None,
               on_event: Callable[[RunEvent], None] | None = None,
               on_end: Callable[[], object] | None = None,
-              task_text: str | None = None) -> TaskRun:
+              task_text: str | None = None,
+              load_options: Mapping[str, Any] | None = None) -> TaskRun:
     """Compile ``spec`` for ``cell`` and ``backend`` and start ticking it in a thread.
 
     Plans are computed in the run's thread (:class:`InProcessPlanner`).
@@ -238,6 +239,8 @@ def start_run(spec: TaskSpec, cell: Cell, backend: Backend, *, seed: int = 0,
         on_event: called with every event (subscribed before the run starts).
         on_end: called when the run ends, before :meth:`TaskRun.wait` returns.
         task_text: the task's source for the record, when it has no file.
+        load_options: how ``cell``'s robots were loaded
+            (:meth:`~taskrunner.robot.options.LoadOptions.as_data`), for the record.
 
     Raises:
         TaskSpecError: a step names something the cell does not have.
@@ -246,7 +249,9 @@ def start_run(spec: TaskSpec, cell: Cell, backend: Backend, *, seed: int = 0,
     if on_event is not None:
         events.subscribe(on_event)
     runner = Runner(spec, cell, backend, InProcessPlanner(),
-                    RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend_name),
+                    RunOptions(seed=seed, runs_dir=runs_dir, backend_name=backend_name,
+                               load_options=None if load_options is None
+                               else dict(load_options)),
                     events=events)
     if task_text is not None and not runner.record.task_text:
         runner.record.task_text = task_text

@@ -666,7 +666,8 @@ class Workcell:
         text = task.to_text(self._cell) if isinstance(task, Task) else None
         return start_run(spec, self._cell, machine, seed=seed, backend_name=self._backend_kind,
                          runs_dir=Path(runs_dir) if runs_dir is not None else None,
-                         on_event=on_event, on_end=self.sync, task_text=text)
+                         on_event=on_event, on_end=self.sync, task_text=text,
+                         load_options=self._options.as_data())
 
     def run_task(self, task: TaskLike, *, parameters: Mapping[str, object] | None = None,
                  backend: BackendKind | str | None = None, speed: float | None = None,

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
 import html
 import itertools
 import math
@@ -395,6 +396,9 @@ def sweep_command(args: argparse.Namespace, out_stream: Any = None) -> int:
     if args.seeds < 1:
         raise InputError(f"'--seeds' must be >= 1 (got {args.seeds})")
     cases = sweep_cases(path, spec.name, axes, args.seeds, backends, args.speed)
+    options = getattr(args, "load_options", None)
+    if options is not None:  # how every run loads its robots (--package-path …)
+        cases = [dataclasses.replace(c, load_options=options.as_data()) for c in cases]
     where = f"Ray ({args.ray})" if args.ray else f"{args.jobs or os.cpu_count()} worker(s)"
     print(f"sweeping {spec.name}: {len(cases)} runs on {where}", file=stream, flush=True)
     started = time.monotonic()

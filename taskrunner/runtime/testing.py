@@ -43,6 +43,8 @@ class Case:
         seed: seeds every planner call.
         backend: ``mock``, ``sim`` or ``mujoco``.
         speed: replay speed of sim or mujoco (None: the backend's default).
+        load_options: how the cell's robots are loaded
+            (:meth:`~taskrunner.robot.options.LoadOptions.as_data`; None: the defaults).
     """
 
     path: Path
@@ -53,6 +55,7 @@ class Case:
     backend: str = "mock"
     speed: float | None = None
     error: str | None = None  # the case could not be made (the file does not load)
+    load_options: Mapping[str, Any] | None = None
 
 
 @dataclass(frozen=True)
@@ -139,14 +142,17 @@ def run_case(case: Case) -> CaseResult:
     """Run one case in this process (what each worker does); never raises for a task's
     own failure."""
     import taskrunner
+    from taskrunner.robot.options import LoadOptions
 
     if case.error is not None:
         return CaseResult(case, "error", None, 0.0, case.error)
     started = time.monotonic()
     try:
+        options = (LoadOptions.from_data(case.load_options) if case.load_options is not None
+                   else None)
         result = taskrunner.run_task(case.path, parameters=dict(case.parameters),
                                      backend=case.backend,  # type: ignore[arg-type]
-                                     speed=case.speed, seed=case.seed)
+                                     speed=case.speed, seed=case.seed, options=options)
     except (TaskrunnerError, ValueError) as exc:
         return CaseResult(case, "error", None, time.monotonic() - started, str(exc))
     seconds = time.monotonic() - started
@@ -286,14 +292,18 @@ def shipped_tasks_dir() -> Path:
 
 
 def test_command(paths: Sequence[str], jobs: int | None, junit: str | None,
-                 ray: str | None, out: Any = None) -> int:
-    """``run-task test``: run, print the table, write JUnit; 0 only when all pass."""
+                 ray: str | None, out: Any = None,
+                 load_options: Mapping[str, Any] | None = None) -> int:
+    """``run-task test``: run, print the table, write JUnit; 0 only when all pass.
+    ``load_options``: how every case loads its cell's robots (its ``--package-path`` …,
+    as :meth:`~taskrunner.robot.options.LoadOptions.as_data`)."""
     import sys
 
     out = out or sys.stdout
     started = time.monotonic()
     try:
-        cases = find_cases(paths or [shipped_tasks_dir()])
+        cases = [replace(c, load_options=load_options)
+                 for c in find_cases(paths or [shipped_tasks_dir()])]
     except FileNotFoundError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -118,3 +118,18 @@ def test_a_worker_that_dies_is_retried_once_and_reported(tmp_path: Path,
 def test_find_cases_refuses_a_missing_path(tmp_path: Path):
     with pytest.raises(FileNotFoundError, match="no such task file or folder"):
         find_cases([tmp_path / "nope"])
+
+
+def test_every_case_loads_its_robots_as_the_command_says(tmp_path: Path, capsys):
+    from taskrunner.runtime.testing import run_case, test_command
+
+    task = resources.tasks_dir() / "go_home.yaml"
+    # Read in the worker: a case whose options say nothing valid is reported, not run
+    # with the defaults.
+    bad = run_case(Case(task, "go_home", load_options={"collision": "mesh"}))
+    assert bad.verdict == "error" and "'collision' must be one of" in (bad.failure or "")
+    assert run_case(Case(task, "go_home", load_options={"collision": "convex"})).passed
+    assert test_command([str(task)], 1, None, None,
+                        load_options={"collision": "mesh"}) == 1  # every case gets them
+    assert "'collision' must be one of" in capsys.readouterr().out
+    assert main(["test", str(task), "--jobs", "1", "--collision", "convex"]) == 0
