@@ -283,6 +283,13 @@ def _parser() -> argparse.ArgumentParser:
     view.add_argument("--port", type=int, default=0, help="port (default: a free one)")
     view.add_argument("--token", default=None,
                       help="bearer token (default: TASKRUNNER_TOKEN, else a new one, printed)")
+    view.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                      help="also look for ROS packages (and load robots) under DIR "
+                           "(repeatable; default: as the record's run did, else "
+                           "TASKRUNNER_PACKAGE_PATH)")
+    view.add_argument("--collision", choices=tuple(CollisionChoice), default=None,
+                      help="link geometry of every robot (default: as the record's run "
+                           "did, else each robot's own choice)")
     view.add_argument("--log-level", default="warning", help="uvicorn's log level (warning)",
                       choices=("critical", "error", "warning", "info", "debug"))
     sub.add_parser("warm-up", help="compile the planner's kernels into the user cache "

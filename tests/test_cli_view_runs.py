@@ -45,3 +45,33 @@ def test_run_task_view_alone_lists_the_runs_of_the_runs_folder(tmp_path):
         process.terminate()
         _, err = process.communicate(timeout=20)
     assert "broken.json: not shown:" in err
+
+
+def test_run_task_view_loads_a_records_robots_as_its_run_did(tmp_path):
+    import argparse
+
+    import pytest
+
+    from taskrunner.api import Settings
+    from taskrunner.cli import main
+    from taskrunner.commands.server import view_load_settings
+    from taskrunner.errors import InputError
+    from taskrunner.runtime.records import load_record
+
+    runs = tmp_path / "runs"
+    assert main(["run", "go_home", "--backend", "mock", "--in-process", "--plain",
+                 "--no-check", "--runs-dir", str(runs), "--collision", "exact",
+                 "--package-path", str(tmp_path)]) == 0
+    record = load_record(next(runs.glob("*.json")))
+    plain = argparse.Namespace(package_path=[], collision=None)
+    loads = view_load_settings(plain, record)
+    settings = Settings.from_env({}, **loads)
+    assert settings.collision == "exact" and settings.package_path == (tmp_path.resolve(),)
+    assert settings.load_options() == settings.load_options().from_data(record.load_options)
+    # Its own flags win; without a record, the defaults.
+    given = argparse.Namespace(package_path=[], collision="convex")
+    assert view_load_settings(given, record) == {"package_path": None, "collision": "convex"}
+    assert view_load_settings(plain, None) == {"package_path": None, "collision": None}
+    record.load_options = {"strict": "yes"}
+    with pytest.raises(InputError, match="its load_options: 'strict' and"):
+        view_load_settings(plain, record)

@@ -9,14 +9,14 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import InputError, TaskrunnerError
 from taskrunner.kinds import ExitCode
 
 if TYPE_CHECKING:
 
     from taskrunner.runtime.records import RunRecord
 
-__all__ = ["cmd_serve", "cmd_view"]
+__all__ = ["cmd_serve", "cmd_view", "view_load_settings"]
 
 
 def cmd_serve(args: argparse.Namespace) -> int:
@@ -55,6 +55,29 @@ def cmd_serve(args: argparse.Namespace) -> int:
               "only, on a listener of its own)", flush=True)
     serve(app, settings, args.host, args.port, args.log_level, control_port=args.control_port)
     return ExitCode.OK
+
+
+def view_load_settings(args: argparse.Namespace, record: RunRecord | None
+                       ) -> dict[str, object]:
+    """How ``run-task view`` loads robots, as :class:`~taskrunner.api.Settings` fields:
+    its ``--package-path`` and ``--collision`` when it has either, else the way the run of
+    ``record`` loaded them (its record's ``load_options``), else nothing (the defaults).
+
+    Raises:
+        InputError: the record's load options are not valid.
+    """
+    from taskrunner.robot.options import LoadOptions
+
+    folders = tuple(getattr(args, "package_path", None) or ())
+    collision = getattr(args, "collision", None)
+    if folders or collision is not None or record is None or not record.load_options:
+        return {"package_path": folders or None, "collision": collision}
+    try:
+        recorded = LoadOptions.from_data(record.load_options)
+    except TaskrunnerError as exc:
+        raise InputError(f"run {record.run_id}: its load_options: {exc}") from None
+    return {"package_path": recorded.package_path or None, "collision": recorded.collision,
+            "strict": recorded.strict, "allow_missing_meshes": recorded.allow_missing_meshes}
 
 
 def _print_foxglove_ports(cells_dir: Path, port: int) -> None:
@@ -117,8 +140,10 @@ def cmd_view(args: argparse.Namespace) -> int:
             spec = load_task(task_file)
             tasks_dir, cells_dir = task_file.parent, Path(spec.cell).parent
             fragment = f"#/task/{task_file.stem}"
-        settings = Settings.from_env(data_dir=data_dir, token=token, tasks_dir=tasks_dir,
-                                     cells_dir=cells_dir)
+        loads = view_load_settings(args, record if args.target and
+                                   args.target.endswith(".json") else None)
+        settings = Settings.from_env(None, data_dir=data_dir, token=token,
+                                     tasks_dir=tasks_dir, cells_dir=cells_dir, **loads)
         if args.target and args.target.endswith(".json"):
             records = [record]
         elif args.target:
