@@ -110,7 +110,7 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                                  f"{reached(item.name, item.moment)}, at {at:.2f} s")
                 schedule.not_before(lane, at, item.where, item.name)
             elif item.kind == "pause":
-                since, until = schedule.pause(lane, item.seconds)
+                since, until = schedule.pause(lane, item.seconds, item.where)
                 schedule.pausing.pop(lane, None)  # nothing here holds in real time
                 notes.append(f"{item.where or 'a step'} waits {item.seconds:g} s, from "
                              f"{since:.2f} s to {until:.2f} s (its branch only)")

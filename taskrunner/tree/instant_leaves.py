@@ -82,7 +82,8 @@ class Wait(TaskLeaf):
     branches go on. On a backend that plays time the leaf holds until that end on the
     run's clock (plus the schedule's slip), so what follows it in the branch happens
     then; on one that plays no time (the mock without ``speed``) it holds ``seconds``
-    of wall time. A "wait" event gives the planned ``since`` and ``until``.
+    of wall time. A "wait" event gives the planned ``since`` and ``until``, and the
+    ``lane`` (branch) it holds back, as a motion event does.
     """
 
     def __init__(self, name: str, location: str | None, ctx: TaskContext, seconds: float) -> None:
@@ -93,10 +94,11 @@ class Wait(TaskLeaf):
 
     def start(self) -> None:
         schedule, lane = self.ctx.schedule, lane_of(self)
-        since, until = schedule.pause(lane, self.seconds)
+        since, until = schedule.pause(lane, self.seconds, self.location)
         self.ctx.events.emit("wait", f"{self.location or 'this step'} waits "
                              f"{self.seconds:g} s", node=self.name, location=self.location,
-                             since=round(since, 6), until=round(until, 6))
+                             since=round(since, 6), until=round(until, 6),
+                             lane=[list(k) for k in lane])
         self.timed = plays_time(self.ctx.backend)
         self.until = until if self.timed else time.monotonic() + self.seconds
 

@@ -227,6 +227,8 @@ class MotionSchedule:
     pausing: dict[LaneKey, float] = field(default_factory=dict)
     """Lanes in a ``wait`` step (:meth:`pause`), and when it ends (s, planned): passed
     over in the turns while their leaf holds."""
+    pauses: list[tuple[str | None, LaneKey, float, float]] = field(default_factory=list)
+    """Every ``wait`` step (:meth:`pause`): (its file:line, its lane, s since, s until)."""
     retractions: int = 0
     """How many committed motions were taken back (:meth:`withdraw`) or cut short
     (:meth:`stop`, :meth:`confirm`): promises other motions may have relied on."""
@@ -449,15 +451,18 @@ class MotionSchedule:
                  if _within(key, lane) or _within(lane, key)]
         return max(ends, default=self.earliest(lane))
 
-    def pause(self, lane: LaneKey, seconds: float) -> tuple[float, float]:
-        """A ``wait`` of ``seconds`` in ``lane``: from where the lane stands (:meth:`lane_end`,
-        at least :meth:`earliest`), its next motions start ``seconds`` later; the other
-        lanes keep their schedule. Returns (since, until), s planned; the lane is
-        :attr:`pausing` until the caller clears it."""
+    def pause(self, lane: LaneKey, seconds: float,
+              location: str | None = None) -> tuple[float, float]:
+        """A ``wait`` of ``seconds`` in ``lane`` (the step at ``location``): from where the
+        lane stands (:meth:`lane_end`, at least :meth:`earliest`), its next motions start
+        ``seconds`` later; the other lanes keep their schedule. Returns (since, until), s
+        planned; the lane is :attr:`pausing` until the caller clears it; kept in
+        :attr:`pauses`."""
         since = max(self.lane_end(lane), self.earliest(lane))
         until = since + seconds
         self.floors[lane] = max(self.floors.get(lane, 0.0), until)
         self.pausing[lane] = until
+        self.pauses.append((location, lane, since, until))
         return since, until
 
     def finish_step(self, lane: LaneKey, name: str, moment: str = "finished") -> float:

@@ -22,7 +22,7 @@ from typing import Any
 
 from taskrunner.collision.spacetime import LeastClearance, least_clearance
 from taskrunner.scene import Scene
-from taskrunner.tree.schedule import Committed, MotionSchedule, concurrent, lanes_of
+from taskrunner.tree.schedule import Committed, LaneKey, MotionSchedule, concurrent, lanes_of
 
 __all__ = ["Overlap", "PlannedMotion", "ScheduleProof", "ScheduleWait", "prove_schedule"]
 
@@ -52,12 +52,15 @@ class ScheduleWait:
         step: the waiting step's file:line.
         since: s, when the motion could have started; ``until`` when it starts.
         reason: why (the conflict it would have met, or the step waited for).
+        joints: a ``wait`` step's: the joints of its branch's motions (what it holds
+            back; the others are drawn with their step's next motion).
     """
 
     step: str | None
     since: float
     until: float
     reason: str
+    joints: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -136,7 +139,8 @@ class ScheduleProof:
                           "end": number(o.end), "seconds": number(o.seconds)}
                          for o in self.overlaps],
             "waits": [{"step": w.step, "since": number(w.since), "until": number(w.until),
-                       "reason": w.reason} for w in self.waits],
+                       "reason": w.reason, **({"joints": list(w.joints)} if w.joints else {})}
+                      for w in self.waits],
             "motions": self.motions,
             "makespan": number(self.makespan),
             "timeline": [{"step": m.step, "joints": list(m.joints), "start": number(m.start),
@@ -162,12 +166,24 @@ def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
                               f"until {w.other or 'the other arm'} has moved: "
                               f"{w.conflict.describe()}")
                  for where, w in schedule.waits]
+    inserted += [ScheduleWait(where, since, until, f"a wait step of {until - since:g} s",
+                              _lane_joints(committed, lane))
+                 for where, lane, since, until in schedule.pauses if until > since]
     timeline = tuple(sorted((PlannedMotion(c.location, tuple(c.motion.trajectory.names),
                                            c.motion.start, c.motion.end) for c in committed),
                             key=lambda m: (m.start, m.step or "")))
     return ScheduleProof(least, _overlaps(committed), tuple(inserted),
                          len(committed), max((c.motion.end for c in committed), default=0.0),
                          timeline)
+
+
+def _lane_joints(committed: Sequence[Committed], lane: LaneKey) -> tuple[str, ...]:
+    """The joints the motions of ``lane`` (and of the lanes inside it) move, in order."""
+    joints: dict[str, None] = {}
+    for c in committed:
+        if c.lane[:len(lane)] == lane:
+            joints.update(dict.fromkeys(c.motion.trajectory.names))
+    return tuple(joints)
 
 
 def _overlaps(committed: Sequence[Committed]) -> tuple[Overlap, ...]:

@@ -140,3 +140,78 @@ def test_a_checked_task_shows_each_arms_timeline_as_the_check_planned_it(page, s
     page.click("text=plan only (preview)")
     page.wait_for_function("window.__viewer.preview !== undefined", timeout=60_000)
     assert_drawn_as_planned()
+
+
+_PAIR_WAIT = """\
+task: branch_wait
+cell: {cell}
+steps:
+  - parallel:
+      - sequence:
+          - go: {{group: left_arm, to: PickUp}}
+          - wait: {{seconds: 1.0}}
+          - go: {{group: left_arm, to: Candle}}
+      - sequence:
+          - go: {{group: right_arm, to: PickUp}}
+          - go: {{group: right_arm, to: home}}
+  - wait: {{seconds: 0.5}}
+  - go: {{group: left_arm, to: home}}
+"""
+
+
+def _cell_rows(cell_dict: dict[str, Any], events: list[dict[str, Any]],
+               schedule: dict[str, Any] | None = None) -> dict[str, list[dict[str, Any]]]:
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("no node on this machine (it builds the web view)")
+    script = ("import { createRequire } from 'node:module'; const require = createRequire(import.meta.url);"
+              + _SCRIPT.replace("for (const e of input.events) g.apply(e);",
+                                "if (input.schedule) g.applySchedule(input.schedule); "
+                                "for (const e of input.events) g.apply(e);"))
+    done = subprocess.run([node, "--input-type=module", "-e", script, _GANTT.as_uri()],
+                          input=json.dumps({"cell": cell_dict, "events": events,
+                                            "schedule": schedule}),
+                          capture_output=True, text=True, timeout=30, check=False)
+    assert done.returncode == 0, done.stderr
+    return dict(json.loads(done.stdout))
+
+
+def test_a_wait_step_is_drawn_on_its_branchs_arm_in_the_run_and_in_the_check(tmp_path):
+    from taskrunner.resources import DATA_ROOT
+    from taskrunner.robot.cell import load_cell
+    from taskrunner.tree.check import check_task
+
+    cell_file = DATA_ROOT / "robots" / "cells" / "servo_arm_pair.yaml"
+    path = tmp_path / "branch_wait.yaml"
+    path.write_text(_PAIR_WAIT.format(cell=cell_file))
+    model = load_cell(cell_file).model
+    cell = {"joints": [{"name": j.name, "robot": j.robot} for j in model.joints],
+            "robots": [{"name": i.name} for i in model.instances]}
+    result = taskrunner.run_task(path, backend="mock")
+    assert result.status == "succeeded", result.error
+    events = [e.as_dict() for e in result.events]
+    # The wait steps (the others: where the schedule held an arm for the other one).
+    waits = [e for e in events if e["kind"] == "wait" and "lane" in e["data"]]
+    assert [e["data"]["lane"] != [] for e in waits] == [True, False]  # a branch's, the task's
+    rows = _cell_rows(cell, events)
+    left, right = (rows[n] for n in ("left", "right"))
+    branch, whole = (e["data"] for e in waits)
+    # The branch's wait on the left arm's row only; the task's on both.
+    assert ("wait", branch["since"], branch["until"]) in [(b["kind"], b["start"], b["end"])
+                                                         for b in left]
+    for row in (left, right):
+        assert ("wait", whole["since"], whole["until"]) in [(b["kind"], b["start"], b["end"])
+                                                            for b in row]
+    def spans(row: list[dict[str, Any]]) -> list[tuple[float, float]]:
+        return [(b["start"], b["end"]) for b in row if b["kind"] == "wait"]
+
+    assert (branch["since"], branch["until"]) not in spans(right)
+    # The check's schedule of the parallel: its wait step on the left arm's row too.
+    report = check_task(path)
+    assert report.ok, report.problems
+    (proof,) = [s.to_dict() for s in report.schedules]
+    (planned,) = [w for w in proof["waits"] if w["reason"] == "a wait step of 1 s"]
+    assert planned["joints"] and all(j.startswith("left_") for j in planned["joints"])
+    checked = _cell_rows(cell, [], proof)
+    assert (planned["since"], planned["until"]) in spans(checked["left"])
+    assert (planned["since"], planned["until"]) not in spans(checked["right"])

@@ -9,7 +9,10 @@
 // - a `wait` event with `since` and `until` is drawn over that span; one with `hold`
 //   (held until another branch moved on) spans from where the arm's previous motion
 //   ended to where its held motion starts. A wait lands on the row of the next motion
-//   of its step (same file:line), since a wait says which step waited, not which arm.
+//   of its step (same file:line), since a wait says which step waited, not which arm;
+//   a `wait` step's (it gives its branch, `lane`) on the rows of its branch's motions
+//   (the next one, else the last; a wait of the whole task, on every arm's row), and in
+//   a check's schedule on the rows of the `joints` it gives.
 //
 // Before anything runs, the check's schedule of a parallel (`timeline` and `waits` of a
 // `schedules` item of /tasks/check) is drawn the same way: `applySchedule` turns each
@@ -19,6 +22,11 @@ const SVG = 'http://www.w3.org/2000/svg';
 const ROW = 24;
 const AXIS = 20;
 const LEFT = 96;
+
+// Whether the branch `inner` (a motion's `lane`: [[parallel, branch], …]) is `outer` or
+// inside it.
+const within = (inner, outer) => outer.length <= inner.length
+  && outer.every((k, i) => k[0] === inner[i][0] && k[1] === inner[i][1]);
 
 const svg = (tag, attrs, text) => {
   const e = document.createElementNS(SVG, tag);
@@ -57,9 +65,10 @@ export class Gantt {
       const arms = [...new Set(traj.joints.map((j) => this.robotOf.get(j)).filter(Boolean))];
       const duration = traj.times.length ? traj.times[traj.times.length - 1] : 0;
       const start = Number(d.sent !== undefined ? d.sent : (d.start || 0));
-      const motion = { seq: e.seq, node: e.node, location: e.location, arms, start, duration, ran: duration, done: false };
+      const lane = d.lane || [];
+      const motion = { seq: e.seq, node: e.node, location: e.location, arms, start, duration, ran: duration, done: false, lane };
       this.motions.push(motion);
-      for (const wait of this.pending.filter((w) => w.location === e.location)) {
+      for (const wait of this.pending.filter((w) => (w.lane ? within(lane, w.lane) : w.location === e.location))) {
         wait.arms = arms;
         if (wait.kind === 'hold') {
           wait.until = start;
@@ -74,8 +83,20 @@ export class Gantt {
       const timed = d.since !== undefined && d.until !== undefined;
       const wait = { kind: timed ? 'wait' : 'hold', node: e.node, location: e.location, seq: e.seq,
         since: timed ? Number(d.since) : null, until: timed ? Number(d.until) : null,
-        message: e.message, arms: null };
+        message: e.message, arms: null, lane: timed && Array.isArray(d.lane) ? d.lane : null };
       if (!timed && !d.hold) return;
+      if (Array.isArray(d.joints) && d.joints.length) {  // a check's wait step: its branch's joints
+        wait.arms = [...new Set(d.joints.map((j) => this.robotOf.get(j)).filter(Boolean))];
+        this.waits.push(wait);
+        this.draw();
+        return;
+      }
+      if (wait.lane && !wait.lane.length) {  // a wait of the whole task: every arm waits
+        wait.arms = [...this.arms];
+        this.waits.push(wait);
+        this.draw();
+        return;
+      }
       if (timed) {  // the span of a hold of this step, now known: it replaces the hold
         const held = (w) => w.kind === 'hold' && !w.arms && w.node === e.node && w.location === e.location;
         this.waits = this.waits.filter((w) => !held(w));
@@ -83,7 +104,14 @@ export class Gantt {
       }
       this.waits.push(wait);
       this.pending.push(wait);
-    } else if (e.kind !== 'run_finished') {
+    } else if (e.kind === 'run_finished') {
+      // A branch's wait step after its last motion: on the rows of that branch's motions.
+      for (const wait of this.pending.filter((w) => w.lane)) {
+        const last = [...this.motions].reverse().find((m) => within(m.lane, wait.lane));
+        if (last) wait.arms = last.arms;
+      }
+      this.pending = this.pending.filter((w) => !w.arms);
+    } else {
       return;
     }
     this.draw();
@@ -102,7 +130,7 @@ export class Gantt {
     for (const w of schedule.waits || []) {  // before the motion its step starts after it
       if (w.since == null || w.until == null) continue;
       items.push([w.until, 0, { seq: 0, kind: 'wait', node: 'wait', location: w.step, message: w.reason,
-        data: { since: w.since, until: w.until } }]);
+        data: { since: w.since, until: w.until, ...(w.joints ? { joints: w.joints } : {}) } }]);
     }
     items.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
     for (const [, , e] of items) this.apply(e);
