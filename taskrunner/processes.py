@@ -6,11 +6,28 @@ imports, through this module.
 
 from __future__ import annotations
 
+import os
 import signal
 import threading
 from typing import Any
 
-__all__ = ["start_ignoring_sigint"]
+__all__ = ["cpu_seconds", "start_ignoring_sigint"]
+
+_CLOCK_TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+
+def cpu_seconds(pid: int | None) -> float | None:
+    """CPU time (user + system, s) process ``pid`` has used, or None where /proc does
+    not tell (not Linux, or the process is gone): then a caller counts wall-clock time."""
+    if pid is None:
+        return None
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as stat:
+            fields = stat.read().rsplit(b")", 1)[1].split()
+    except OSError:
+        return None
+    # After the command's closing parenthesis: state is field 3, utime 14, stime 15.
+    return (int(fields[11]) + int(fields[12])) / _CLOCK_TICKS
 
 
 def start_ignoring_sigint(process: Any) -> None:

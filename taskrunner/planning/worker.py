@@ -34,7 +34,7 @@ import numpy as np
 
 from taskrunner.errors import ArgumentError, PlanningError, TaskrunnerError
 from taskrunner.planning.request import JointGoal, PlanRequest, PlanResult
-from taskrunner.processes import start_ignoring_sigint
+from taskrunner.processes import cpu_seconds, start_ignoring_sigint
 from taskrunner.scene import Scene
 
 if TYPE_CHECKING:
@@ -76,6 +76,8 @@ def stays(scene: Scene, request: PlanRequest) -> bool:
 
 
 _COMPILE_TIMEOUT = 900.0  # s a loaded worker may take to warm (compile) its verifier
+_STARVED = 10.0  # a worker that keeps working may take this many times its limit of wall time
+_LOOK_S = 0.25  # s between two looks at a starting worker's CPU time
 
 
 def _serve(source: str, conn: Connection, cancel: Any, nice: int = 0,
@@ -213,7 +215,10 @@ class PlanningWorker:
 
     Args:
         source: the cell file (or robot manifest / folder / URDF) the worker loads.
-        start_timeout: seconds to wait for the worker to load the model.
+        start_timeout: seconds the worker may take to load the model: of its CPU time
+            (a worker starved of CPU on a busy machine, at ``nice``, goes on as long as
+            it makes progress, up to ten times that of wall time); a worker that uses no
+            CPU for that long is stopped as stuck.
         wait_ready: wait for the model to load now (True), or let the caller go on and
             wait at the first request (False: the load overlaps the caller's own work).
         nice: how much lower than the caller's the worker's CPU priority is (0 to 19,
@@ -297,11 +302,12 @@ class PlanningWorker:
         waited = timeout
         compiling_since: float | None = None
         while kind in ("loaded", "compiling"):
-            if not self._conn.poll(waited):
+            late = self._wait_for_message(waited)
+            if late is not None:
                 self._process.kill()
                 doing = "load" if waited == timeout else "warm up (compile) its path verifier"
                 raise WorkerDiedError(
-                    f"planning worker did not {doing} for {self.source} in {waited:g} s")
+                    f"planning worker did not {doing} for {self.source}: {late}")
             try:
                 kind, payload, seconds = self._conn.recv()
             except (EOFError, OSError):
@@ -328,6 +334,35 @@ class PlanningWorker:
         self.load_time = seconds
         self._sent_scene = None
         self._ready = True
+
+    def _wait_for_message(self, limit: float) -> str | None:
+        """Wait for the starting worker's next message: None once it is there, else why
+        the worker is given up: it used ``limit`` s of CPU time (a runaway load), or no
+        CPU time for ``limit`` s (stuck), or ``_STARVED`` times ``limit`` of wall time
+        passed. A worker starved of CPU (at ``nice`` beside busy processes it gets a few %
+        of a core) so goes on while it makes progress. Where the CPU time cannot be read,
+        ``limit`` s of wall time."""
+        pid = self._process.pid
+        start = time.monotonic()
+        first = last = cpu_seconds(pid)
+        progressed = start
+        while not self._conn.poll(min(_LOOK_S, limit)):
+            now = time.monotonic()
+            cpu = cpu_seconds(pid)
+            if cpu is None or first is None or last is None:
+                if now - start >= limit:
+                    return f"no answer in {limit:g} s"
+                continue
+            if cpu > last:
+                last, progressed = cpu, now
+            if cpu - first >= limit:
+                return f"it used {limit:g} s of CPU time"
+            if now - progressed >= limit:
+                return f"it used no CPU time for {limit:g} s (stuck?)"
+            if now - start >= _STARVED * limit:
+                return (f"{now - start:.0f} s passed ({cpu - first:.1f} s of CPU time: a "
+                        "machine too busy?)")
+        return None
 
     # ------------------------------------------------------------------ public
     def wait_ready(self, on_compile: Callable[[], None] | None = None) -> float:

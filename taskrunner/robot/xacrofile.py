@@ -39,6 +39,7 @@ from typing import Any
 from xml.parsers import expat
 
 from taskrunner.errors import ArgumentError, RobotDescriptionError
+from taskrunner.processes import cpu_seconds
 from taskrunner.robot import xacro_cache
 from taskrunner.robot.packages import PackageMap
 from taskrunner.textfile import DEFAULT_MAX_BYTES, file_problem, read_text_file
@@ -75,7 +76,6 @@ class XacroOptions:
 
 
 _POLL_S = 0.02  # s between two reads of the child's CPU time (an answer wakes at once)
-_CLOCK_TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
 
 # xacro keeps its state in module globals: one in-process expansion at a time.
 _XACRO_LOCK = threading.Lock()
@@ -153,7 +153,7 @@ def _await_child(receiver: Connection, pid: int | None, options: XacroOptions,
     CPU time or the wall-clock limit."""
     started = time.monotonic()
     while not receiver.poll(_POLL_S):
-        cpu = _cpu_seconds(pid)
+        cpu = cpu_seconds(pid)
         waited = time.monotonic() - started
         if (cpu if cpu is not None else waited) > options.time_limit_s:
             raise RobotDescriptionError(
@@ -163,18 +163,6 @@ def _await_child(receiver: Connection, pid: int | None, options: XacroOptions,
             raise RobotDescriptionError(
                 f"xacro expansion did not end in {options.wall_limit_s:g} s (waiting on "
                 "something it reads?)", path)
-
-
-def _cpu_seconds(pid: int | None) -> float | None:
-    """CPU time (user + system, s) process ``pid`` has used, or None where /proc does
-    not tell (not Linux; then the parent counts wall-clock time instead)."""
-    try:
-        with open(f"/proc/{pid}/stat", "rb") as stat:
-            fields = stat.read().rsplit(b")", 1)[1].split()
-    except OSError:
-        return None
-    # After the command's closing parenthesis: state is field 3, utime 14, stime 15.
-    return (int(fields[11]) + int(fields[12])) / _CLOCK_TICKS
 
 
 def _child_main(sender: Connection, path: Path, packages: PackageMap,

@@ -174,6 +174,7 @@ class _Process:
     """Stands in for a worker process that another thread speaks for."""
 
     exitcode = None
+    pid = None  # no /proc entry to read: wall-clock time counts
 
     def is_alive(self) -> bool:
         return True
@@ -216,9 +217,64 @@ def test_a_worker_that_never_loads_is_reported():
     ours, _theirs = mp.Pipe()
     worker = worker_module.PlanningWorker.__new__(worker_module.PlanningWorker)
     worker.source, worker._process, worker._conn, worker._ready = "panda", _Process(), ours, False
-    with pytest.raises(WorkerDiedError, match=r"did not load for panda in 0.2 s"):
+    with pytest.raises(WorkerDiedError, match=r"did not load for panda: no answer in 0.2 s"):
         worker._await_ready(0.2)
     assert worker._process.killed
+
+
+_SPIN = "import time\nwhile True:\n    t = time.process_time() + {busy}\n" \
+        "    while time.process_time() < t: pass\n    time.sleep({idle})\n"
+
+
+@pytest.mark.parametrize(("busy", "idle", "said"), [
+    (0.0, 60.0, r"it used no CPU time for 0.3 s \(stuck\?\)"),  # asleep: stuck
+    (60.0, 0.0, r"it used 0.3 s of CPU time"),                    # a runaway load
+])
+def test_a_starting_worker_is_judged_by_its_cpu_time(busy: float, idle: float, said: str):
+    import multiprocessing as mp
+    import subprocess
+    import sys
+
+    from taskrunner.planning import worker as worker_module
+
+    ours, _theirs = mp.Pipe()
+    process = subprocess.Popen([sys.executable, "-c", _SPIN.format(busy=busy, idle=idle)])
+    worker = worker_module.PlanningWorker.__new__(worker_module.PlanningWorker)
+    worker.source, worker._process, worker._conn, worker._ready = "panda", process, ours, False
+    try:
+        with pytest.raises(WorkerDiedError, match="did not load for panda: " + said):
+            worker._await_ready(0.3)
+    finally:
+        process.kill()
+        process.wait()
+
+
+def test_a_starved_worker_that_keeps_working_is_waited_for():
+    # It uses a tenth of a core at most (as at nice 10 beside busy processes) and answers
+    # after 3 times its limit of wall time, having used less than its limit of CPU time.
+    import multiprocessing as mp
+    import subprocess
+    import sys
+    import threading
+
+    from taskrunner.planning import worker as worker_module
+
+    ours, theirs = mp.Pipe()
+    process = subprocess.Popen([sys.executable, "-c", _SPIN.format(busy=0.01, idle=0.09)])
+
+    def speak() -> None:
+        time.sleep(3.0)
+        theirs.send(("ready", "panda", 3.0))
+
+    threading.Thread(target=speak, daemon=True).start()
+    worker = worker_module.PlanningWorker.__new__(worker_module.PlanningWorker)
+    worker.source, worker._process, worker._conn, worker._ready = "panda", process, ours, False
+    try:
+        worker._await_ready(1.0)
+    finally:
+        process.kill()
+        process.wait()
+    assert worker._ready and worker.model_name == "panda"
 
 
 def _open_fds() -> dict[int, str]:
