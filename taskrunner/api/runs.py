@@ -32,6 +32,7 @@ from taskrunner.errors import (
     UnavailableError,
 )
 from taskrunner.kinds import RunStatus
+from taskrunner.robot.options import LoadOptions
 from taskrunner.runtime.events import EventLog, RunEvent
 from taskrunner.runtime.records import RunRecord
 from taskrunner.runtime.runner import EXIT_CODES, Runner, RunOptions
@@ -180,7 +181,8 @@ class RunManager:
             planner = session.take_planner()
             runner = Runner(spec, session.cell, machine, planner,
                             RunOptions(tick_hz=self.tick_hz, seed=seed, backend_name=backend,
-                                       planner_times=True),
+                                       planner_times=True,
+                                       load_options=(session.options or LoadOptions()).as_data()),
                             events=EventLog(), resume=resume)
         except BaseException:
             with self._lock:

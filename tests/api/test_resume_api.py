@@ -55,3 +55,22 @@ def test_a_cancelled_run_resumes_from_where_it_stopped_and_a_finished_one_is_ref
     assert client.post("/runs/nope/resume", json={}).status_code == 404
     bad = client.post(f"/runs/{run_id}/resume", json={"objects": {"cube": [1, 2]}})
     assert bad.status_code == 422 and "'objects.cube' must be [x, y, z]" in bad.json()["detail"]
+
+
+def test_a_server_run_records_how_the_server_loads_robots(tmp_path):
+    from apitest import AUTH, make_settings
+    from fastapi.testclient import TestClient
+
+    from taskrunner.api import create_app
+    from taskrunner.robot.options import LoadOptions
+
+    app = create_app(make_settings(tmp_path / "state", collision="convex"))
+    with TestClient(app, headers=AUTH) as client:
+        started = client.post("/runs", json={"yaml": TWO_GOES, "backend": "mock",
+                                             "check": False})
+        assert started.status_code == 202, started.text
+        run_id = started.json()["run_id"]
+        assert wait_until_done(client, run_id)["status"] == "succeeded"
+        record = app.state.manager.record(run_id)
+    # What run-task resume and export load its cell with, from the record alone.
+    assert record.load_options == LoadOptions(collision="convex").as_data()
