@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from enum import IntEnum, StrEnum
 
+from taskrunner.errors import ArgumentError
+
 __all__ = ["BackendKind", "CollisionChoice", "EventKind", "ExitCode", "FailureKind", "NodeStatus",
            "RunStatus", "StopReason"]
 
@@ -31,6 +33,19 @@ class BackendKind(StrEnum):
     FEETECH = "feetech"
     """Feetech bus servos (the SO-101's STS3215) on one USB adapter or several, from the
     cell's hardware file and LeRobot's calibration."""
+
+    @classmethod
+    def parse(cls, value: str, what: str = "kind") -> BackendKind:
+        """``value`` as a kind.
+
+        Raises:
+            ArgumentError: it is none (the message names ``what`` and every kind).
+        """
+        try:
+            return cls(value)
+        except ValueError:
+            known = ", ".join(k.value for k in cls)
+            raise ArgumentError(f"'{what}' must be one of {known} (got {value!r})") from None
 
 
 class RunStatus(StrEnum):

@@ -239,7 +239,7 @@ class Workcell:
                 or http without a URL.
             BackendError: the port or URL does not answer as the firmware does.
         """
-        backend_kind = _backend_kind(kind)
+        backend_kind = BackendKind.parse(kind)
         backend = make_backend(backend_kind.value, self._cell, speed, port, url,
                                firmware_speedup, home, calibration_file=calibration,
                                hardware=hardware)
@@ -733,14 +733,6 @@ class Workcell:
 
     def _full(self, q: np.ndarray) -> JointState:
         return JointState(self.joint_names, q)
-
-
-def _backend_kind(kind: BackendKind | str) -> BackendKind:
-    try:
-        return BackendKind(kind)
-    except ValueError:
-        known = ", ".join(k.value for k in BackendKind)
-        raise ArgumentError(f"'kind' must be one of {known} (got {kind!r})") from None
 
 
 def run_task(task: TaskLike, *, parameters: Mapping[str, object] | None = None,
