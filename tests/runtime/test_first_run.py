@@ -98,6 +98,7 @@ def test_after_warm_up_a_run_compiles_nothing_and_waits_for_nothing(tmp_path):
 
 class _Process:
     exitcode = None
+    pid = None  # no /proc entry to read: the worker's wait counts wall-clock time
 
     def is_alive(self) -> bool:
         return True
