@@ -10,7 +10,7 @@ import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import InputError
 
 if TYPE_CHECKING:
     from taskrunner.robot.options import LoadOptions
@@ -115,9 +115,9 @@ def _load_options(args: argparse.Namespace, record: Any, path: Path) -> LoadOpti
     from taskrunner.robot.options import LoadOptions
 
     given = getattr(args, "load_options", None) or LoadOptions()
-    if given != LoadOptions() or not record.load_options:
+    if given != LoadOptions():
         return given
     try:
-        return LoadOptions.from_data(record.load_options)
-    except TaskrunnerError as exc:
-        raise InputError(f"run {record.run_id}: its load_options: {exc}", path) from None
+        return record.loaded_with() or given
+    except InputError as exc:
+        raise InputError(str(exc), path) from None

@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from taskrunner.errors import InputError, TaskrunnerError
+from taskrunner.errors import TaskrunnerError
 from taskrunner.kinds import ExitCode
 
 if TYPE_CHECKING:
@@ -66,16 +66,13 @@ def view_load_settings(args: argparse.Namespace, record: RunRecord | None
     Raises:
         InputError: the record's load options are not valid.
     """
-    from taskrunner.robot.options import LoadOptions
 
     folders = tuple(getattr(args, "package_path", None) or ())
     collision = getattr(args, "collision", None)
-    if folders or collision is not None or record is None or not record.load_options:
+    recorded = None if folders or collision is not None or record is None \
+        else record.loaded_with()
+    if recorded is None:
         return {"package_path": folders or None, "collision": collision}
-    try:
-        recorded = LoadOptions.from_data(record.load_options)
-    except TaskrunnerError as exc:
-        raise InputError(f"run {record.run_id}: its load_options: {exc}") from None
     return {"package_path": recorded.package_path or None, "collision": recorded.collision,
             "strict": recorded.strict, "allow_missing_meshes": recorded.allow_missing_meshes}
 

@@ -99,16 +99,9 @@ def cell_of_record(record: RunRecord, cell: str | Path | None = None) -> Cell:
         InputError: the cell cannot be found (give ``cell``), or is not the one named in
             the record, or the record's load options are not valid.
     """
-    from taskrunner.errors import TaskrunnerError
     from taskrunner.resources import resolve_cell
     from taskrunner.robot.cell import load_cell_or_robot
-    from taskrunner.robot.options import LoadOptions
-
-    try:
-        options = LoadOptions.from_data(record.load_options or {})
-    except TaskrunnerError as exc:
-        raise InputError(f"run {record.run_id}: its load_options: {exc}") from None
-
+    options = record.loaded_with()
     if cell is None:
         import yaml
 

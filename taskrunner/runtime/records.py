@@ -41,11 +41,14 @@ import uuid
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from taskrunner.errors import InputError
 from taskrunner.kinds import RunStatus
 from taskrunner.runtime.events import RunEvent
+
+if TYPE_CHECKING:
+    from taskrunner.robot.options import LoadOptions
 
 __all__ = ["SYNC_KINDS", "RecordFile", "RunRecord", "journal_path", "load_record", "needs_sync",
            "new_run_id", "save_record"]
@@ -100,6 +103,23 @@ class RunRecord:
     resumes: str | None = None
     load_options: dict[str, Any] | None = None
     events: list[RunEvent] = field(default_factory=list)
+
+    def loaded_with(self) -> LoadOptions | None:
+        """How the run loaded its robots (``load_options``), None when the record does not
+        say.
+
+        Raises:
+            InputError: the record's ``load_options`` are not valid, naming the run.
+        """
+        from taskrunner.errors import TaskrunnerError
+        from taskrunner.robot.options import LoadOptions
+
+        if not self.load_options:
+            return None
+        try:
+            return LoadOptions.from_data(self.load_options)
+        except TaskrunnerError as exc:
+            raise InputError(f"run {self.run_id}: its load_options: {exc}") from None
 
     def as_dict(self) -> dict[str, Any]:
         data = {k: v for k, v in vars(self).items() if k != "events"}
