@@ -10,25 +10,23 @@ least distance measured.
 
 Every backend here plays a trajectory linearly between its samples
 (:func:`~taskrunner.backends.base.sample_positions`), so between two consecutive sample
-times of *any* lane the whole state moves on a straight line in joint space. Over a time
-stretch, every point of a body moves, relative to a body of another lane, by at most
-``B = sum_j r_j |dq_j|``, where ``r_j`` is the full-reach lever arm of joint ``j`` for
-either body (:func:`~taskrunner.collision.tree.lever_arms`: an upper bound on the distance
-from the joint's axis to any point of the body, 1 m/m for a prismatic joint). This is the
-bound of the path verifier (:mod:`taskrunner.scene.path_verifier`) taken along time.
-
-The walk is conservative advancement (as in Schwarzer, Saha & Latombe, IEEE T-RO 2005),
-per pair of bodies of two lanes: a measurement ``d`` (coal's exact signed distance, m,
-through the scene's :class:`~taskrunner.scene.collision.CollisionChecker`) at time ``s``
-proves the pair at least ``clearance`` apart until the time ``t`` where ``B(s, t)``
-reaches ``d - clearance``; the pair is measured again there. The pair is therefore never
-closer than ``clearance`` between measurements, and a measurement below it is a
-:class:`Conflict`, the first one moved back by bisection to within
-:data:`TIME_TOLERANCE` of where the distance first drops below the clearance. Pairs
-due at about the same time are measured together (one forward kinematics). Where a
-pair's distance creeps toward the clearance so slowly that more than
-:attr:`SpacetimeOptions.max_steps` measurements would be needed, the clearance is not
-proven and that is reported as a conflict too: never a silent pass.
+times of *any* lane the whole state moves on a straight line in joint space: over the
+lanes' common clock, the full state is a polyline through the states at every sample
+time of every lane. That polyline is verified by the path verifier
+(:mod:`taskrunner.scene.path_verifier`: conservative advancement as in Schwarzer, Saha &
+Latombe, IEEE T-RO 2005, compiled), on the pairs of bodies of two different lanes only,
+each body grown by the clearance: a measurement ``d`` of a pair proves it at least
+``clearance`` apart over the stretch where its motion bound (the lever arms of the joints
+that move one body and not the other, times how far they turn) stays below
+``d - clearance``; pairs far apart take cheap lower bounds (bounding volumes), close ones
+coal's exact signed distance through the scene's
+:class:`~taskrunner.scene.collision.CollisionChecker`. A pair measured closer than the
+clearance is a :class:`Conflict`, moved back by bisection on exact distances to within
+:data:`TIME_TOLERANCE` of where its distance first drops below the clearance. Between
+measurements the verifier lets bodies come at most half its margin (1 µm) closer than it
+proves: the clearance it is given is larger by that much, so that the lanes' bodies are
+never closer than ``clearance``. The walk always advances (its steps are at least the
+margin in motion bound), so it ends on every timeline.
 
 The verifier is independent of the planner and of the run: it reads trajectories and a
 scene only, so a run record can be verified after the fact
@@ -45,7 +43,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from taskrunner.collision.tree import lever_arms
 from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.types import JointTrajectory
 
@@ -60,7 +57,6 @@ TIME_TOLERANCE = 1e-3
 """s: a conflict's time is where the distance first drops below the clearance, within this."""
 LEAST_TOLERANCE = 2e-4
 """m: :func:`least_clearance` brackets the least distance between lanes this tightly."""
-_EARLY = 0.75  # a pair this far through its step is measured with the pairs due now
 _SLACK = 1e-6  # m: coal's distance tolerance, taken off every measured distance
 
 
@@ -96,18 +92,18 @@ class SpacetimeOptions:
 
     Attributes:
         clearance: m; bodies of two lanes closer than this are a conflict (0: touching).
-        max_steps: most measurements of one pair before it counts as not proven.
+        exact: every measurement is coal's exact distance, none a cheap lower bound, so
+            that :attr:`SpacetimeVerification.min_distance` is the least distance
+            measured over the whole timeline (slower where the arms are far apart).
     """
 
     clearance: float = 0.0
-    max_steps: int = 20000
+    exact: bool = False
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.clearance) and self.clearance >= 0):
             raise ArgumentError(f"'clearance' must be a number of metres >= 0 "
                              f"(got {self.clearance!r})")
-        if self.max_steps < 1:
-            raise ArgumentError(f"'max_steps' must be >= 1 (got {self.max_steps!r})")
 
 
 @dataclass(frozen=True)
@@ -121,8 +117,6 @@ class Conflict:
         lanes: the two lanes' names.
         motions: the label of each lane's motion running then (None: the lane rests).
         distance: m, measured there (negative: penetrating).
-        proven: False where the pair was not measured below the clearance but its
-            clearance could not be proven within :attr:`SpacetimeOptions.max_steps`.
     """
 
     time: float
@@ -130,7 +124,6 @@ class Conflict:
     lanes: tuple[str, str]
     motions: tuple[str | None, str | None]
     distance: float
-    proven: bool = True
 
     @property
     def depth(self) -> float:
@@ -142,8 +135,6 @@ class Conflict:
         what = [m or f"{lane} at rest" for m, lane in zip(self.motions, self.lanes)]
         how = (f"{1e3 * self.depth:.1f} mm deep" if self.distance < 0
                else f"{1e3 * self.distance:.1f} mm apart")
-        if not self.proven:
-            how = "clearance not proven"
         return (f"{self.bodies[0]} ({what[0]}) and {self.bodies[1]} ({what[1]}) at "
                 f"{self.time:.3f} s, {how}")
 
@@ -154,8 +145,10 @@ class SpacetimeVerification:
 
     Attributes:
         conflict: the first conflict in time, None when the lanes keep their clearance.
-        min_distance: m, the least distance measured between two lanes' bodies (inf:
-            no pair); the true least distance lies between the clearance and this.
+        min_distance: m, the least exact distance measured between two lanes' bodies
+            (inf: none measured: no pair, or every pair far enough apart for cheap
+            bounds, unless :attr:`SpacetimeOptions.exact`); the true least distance lies
+            between the clearance and this.
         closest: the bodies measured at ``min_distance``, and ``closest_time`` when (s).
         distance_queries: exact pair distances computed.
         seconds: wall time of the verification.
@@ -199,7 +192,7 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     if timeline.empty:
         return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
     walk = _Walk(scene, timeline, options)
-    conflict = walk.run()
+    conflict = walk.run(options.exact)
     return SpacetimeVerification(conflict, walk.least, walk.least_pair, walk.least_time,
                                  walk.queries, time.perf_counter() - started)
 
@@ -241,8 +234,10 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
     and measures exact distances on the way; the least one measured, ``m``, is an upper
     bound of the least distance. Verifying again with ``c = m - tolerance`` either proves
     the bracket ``[c, m]`` or measures a distance below ``c`` (a new, lower ``m``): each
-    round lowers ``m`` by more than ``tolerance``, so the rounds end. Where the lanes'
-    bodies touch, the first contact is reported (how deep they go is not measured).
+    round lowers the clearance tried by at least ``tolerance`` and never below what was
+    proven, so the rounds end. Where the lanes' bodies touch, the first contact is
+    reported (how deep they go is not measured). Every measurement is exact
+    (:attr:`SpacetimeOptions.exact`).
 
     Raises:
         ArgumentError: ``tolerance`` is not a positive number of metres.
@@ -255,28 +250,27 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
     timeline = _Timeline(scene, lanes, window)
     queries = 0
     best: _Walk | None = None  # the walk that measured the least distance so far
-    clearance, lower, ceiling = 0.0, -math.inf, math.inf
+    clearance, lower = 0.0, -math.inf
     while not timeline.empty:
-        walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance))
+        walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance, exact=True))
         if not walk.pairs:
             break
-        conflict = walk.run()
+        conflict = walk.run(exact=True)
         queries += walk.queries
         if best is None or walk.least < best.least:
             best = walk
         if conflict is None:
             lower = max(lower, clearance)
-            if best.least - lower <= tolerance or clearance + tolerance >= ceiling:
-                break
-            clearance = best.least - tolerance
+            following = best.least - tolerance
         elif clearance == 0.0:
-            # Touching or penetrating (or not even 0 proven): nothing is proven.
+            # Touching or penetrating: nothing is proven.
             lower = -math.inf
             break
         else:
-            if not conflict.proven:  # too close to the least distance to prove it
-                ceiling = clearance
-            clearance = max(0.0, min(best.least, clearance) - tolerance)
+            following = max(0.0, min(best.least, clearance) - tolerance)
+        if following <= lower:  # the bracket [lower, least] is within the tolerance
+            break
+        clearance = following
     if best is None or best.least_index is None:
         return LeastClearance(math.inf, math.inf, None, None, (None, None), None, queries,
                               time.perf_counter() - started)
@@ -346,9 +340,15 @@ class _Timeline:
         for row in range(len(states)):
             model.apply_mimic(states[row])
         self.states = states
-        # Per joint, how far it has moved since t0 (rad or m): the motion bound's integrand.
-        steps = np.abs(np.diff(states, axis=0))
-        self.travel = np.vstack([np.zeros(model.nq), np.cumsum(steps, axis=0)])
+
+    def time_at(self, position: float) -> float:
+        """The time (s) of a position along :attr:`states` (row index plus the fraction
+        of the way to the next row), as the path verifier reports them."""
+        n = len(self.times)
+        if n == 1:
+            return float(self.times[0])
+        k = min(max(int(position), 0), n - 2)
+        return float(self.times[k] + (position - k) * (self.times[k + 1] - self.times[k]))
 
     def state(self, t: float) -> np.ndarray:
         """The full state at ``t`` (linear between event times)."""
@@ -377,11 +377,12 @@ def _at(lane: Lane, t: float) -> tuple[TimedMotion | None, float]:
 
 
 class _Walk:
-    """Conservative advancement of every pair of two lanes' bodies along the timeline."""
+    """Every pair of two lanes' bodies along the timeline, on the path verifier's
+    compiled walk (module text)."""
 
     def __init__(self, scene: Scene, timeline: _Timeline, options: SpacetimeOptions) -> None:
         model = scene.robot
-        self.model, self.timeline, self.options = model, timeline, options
+        self.scene, self.model, self.timeline, self.options = scene, model, timeline, options
         self.checker = checker = scene.checker
         geometry = checker.geometry_model
         pin_model = model.model
@@ -416,11 +417,7 @@ class _Walk:
             if owner[a] >= 0 and owner[b] >= 0 and owner[a] != owner[b]:
                 pairs.append((k, a, b) if owner[a] < owner[b] else (k, b, a))
         self.pairs = pairs
-        levers = _levers(model, geometry)
-        # Per pair, the motion bound's weight of each joint: either body's lever arm.
-        weights = np.array([levers[a] + levers[b] for _, a, b in pairs]).reshape(len(pairs),
-                                                                                 model.nq)
-        self.bound = timeline.travel @ weights.T  # (n_times, n_pairs), non-decreasing
+        self.local = {k: p for p, (k, _, _) in enumerate(pairs)}  # checker pair -> pairs
         self.queries = 0
         self.least = math.inf
         self.least_pair: tuple[str, str] | None = None
@@ -428,132 +425,75 @@ class _Walk:
         self.least_index: int | None = None
         self._out = np.zeros(max(1, len(pairs)))
 
-    def bound_at(self, t: float) -> np.ndarray:
-        times = self.timeline.times
-        k = min(max(int(np.searchsorted(times, t, side="right")) - 1, 0), len(times) - 2)
-        span = times[k + 1] - times[k]
-        s = 0.0 if span <= 0 else min(1.0, max(0.0, (t - times[k]) / span))
-        return self.bound[k] + s * (self.bound[k + 1] - self.bound[k])
+    def run(self, exact: bool = False) -> Conflict | None:
+        """Walk the pairs over the timeline: the first conflict, or None. ``exact``: every
+        measurement is coal's distance (else far pairs take cheap lower bounds), so that
+        :attr:`least` is the least distance measured."""
+        if not self.pairs:
+            return None
+        verifier = self.scene.pair_verifier(np.array([k for k, _, _ in self.pairs],
+                                                     dtype=np.int64))
+        # Between measurements the verifier lets bodies grown by the clearance overlap by
+        # at most half its margin: grown by that much more, they keep the clearance.
+        # No optimistic steps (gain 0): every pair is proven clear up to where the walk
+        # has come, so the conflict found is the first in time.
+        found = verifier.verify(self.timeline.states,
+                                self.options.clearance + 0.5 * verifier.margin, exact,
+                                self._observe, gain=0.0)
+        self.queries += found.distance_queries
+        if found.valid:
+            return None
+        assert found.pair_index is not None and found.fraction is not None
+        pair = self.local[found.pair_index]
+        bad = self.timeline.time_at(found.fraction)
+        free = self.timeline.time_at(found.covered if found.covered is not None
+                                     else found.fraction)
+        return self.conflict(pair, free, bad, float(self.measure(bad, [pair])[0]))
 
-    def time_of(self, pair: int, level: float) -> float:
-        """The first time the pair's motion bound reaches ``level`` (inf: never)."""
-        column = self.bound[:, pair]
-        if level > column[-1]:
-            return math.inf
-        k = int(np.searchsorted(column, level, side="left"))
-        if k == 0:
-            return float(self.timeline.times[0])
-        lo, hi = column[k - 1], column[k]
-        s = 0.0 if hi <= lo else (level - lo) / (hi - lo)
-        t0, t1 = self.timeline.times[k - 1], self.timeline.times[k]
-        return float(t0 + s * (t1 - t0))
-
-    def times_of(self, pairs: np.ndarray, levels: np.ndarray) -> np.ndarray:
-        """:meth:`time_of` of each of ``pairs`` at its level in ``levels``, at once."""
-        column = self.bound[:, pairs]
-        times = self.timeline.times
-        k = np.count_nonzero(column < levels, axis=0)  # searchsorted, side="left"
-        upper = np.minimum(k, len(times) - 1)
-        lower = np.maximum(upper - 1, 0)
-        cols = np.arange(len(pairs))
-        lo, hi = column[lower, cols], column[upper, cols]
-        with np.errstate(invalid="ignore", divide="ignore"):
-            s = np.where(hi <= lo, 0.0, (levels - lo) / (hi - lo))
-        out = times[lower] + s * (times[upper] - times[lower])
-        out = np.where(k == 0, times[0], out)
-        return np.where(levels > column[-1], math.inf, out)
+    def _observe(self, position: float, pairs: np.ndarray, distances: np.ndarray) -> None:
+        """A round of the verifier's exact distances, at a timeline position."""
+        self._observe_at(self.timeline.time_at(position), pairs, distances)
 
     def measure(self, t: float, pairs: Sequence[int]) -> np.ndarray:
+        """The exact distances of ``pairs`` (indices into :attr:`pairs`) at ``t`` (m,
+        coal's tolerance taken off)."""
         q = self.timeline.state(t)
         out = self._out[:len(pairs)]
-        self.checker.pair_distances(self.model.to_pin(q), [self.pairs[p][0] for p in pairs], out)
+        ids = np.array([self.pairs[p][0] for p in pairs], dtype=np.int64)
+        self.checker.pair_distances(self.model.to_pin(q), ids.tolist(), out)
         self.queries += len(pairs)
-        distances = out - _SLACK
-        if len(distances):
-            i = int(np.argmin(distances))
-            if distances[i] < self.least:
-                p = int(pairs[i])
-                _, a, b = self.pairs[p]
-                self.least, self.least_pair, self.least_time = (
-                    float(distances[i] + _SLACK), (self.names[a], self.names[b]), float(t))
-                self.least_index = p
-        return distances.copy()
+        self._observe_at(t, ids, out)
+        return out - _SLACK
 
-    def run(self) -> Conflict | None:
-        clearance = self.options.clearance
-        n = len(self.pairs)
-        if n == 0:
-            return None
-        t_end = float(self.timeline.times[-1])
-        last = np.full(n, float(self.timeline.times[0]))
-        due = last.copy()  # every pair measured at the start
-        steps = np.zeros(n, dtype=np.int64)
-        while True:
-            now = float(due.min())
-            if not math.isfinite(now):
-                return None
-            reach = due - last
-            pick = np.flatnonzero((due <= now) | ((now - last) >= _EARLY * reach))
-            distances = self.measure(now, pick.tolist())
-            steps[pick] += 1
-            # The next time each pair must be measured: where its motion bound has grown
-            # by its distance less the clearance (all picked pairs at once).
-            levels = self.bound_at(now)[pick] + (distances - clearance)
-            nxt = self.times_of(pick, levels)
-            following = np.where(nxt > t_end, math.inf, np.maximum(nxt, now))
-            touching = distances < clearance + _SLACK  # at the clearance: no step is safe
-            endless = steps[pick] > self.options.max_steps
-            stuck = following == now  # no progress possible: d is at the clearance
-            failed = np.flatnonzero(touching | endless | stuck)
-            if len(failed):
-                i = int(failed[0])
-                p, d = int(pick[i]), float(distances[i])
-                if touching[i]:
-                    return self.conflict(p, float(last[p]), now, d)
-                if endless[i]:
-                    return self.conflict(p, float(last[p]), now, d, proven=False)
-                return self.conflict(p, now, now, d, proven=False)
-            last[pick] = now
-            due[pick] = following
-            if now >= t_end:
-                return None
+    def _observe_at(self, t: float, pairs: np.ndarray, distances: np.ndarray) -> None:
+        """Exact distances of ``pairs`` (checker pairs) at ``t``: the least of them kept
+        if the least so far."""
+        if not len(distances):
+            return
+        i = int(np.argmin(distances))
+        if distances[i] < self.least:
+            p = self.local[int(pairs[i])]
+            _, a, b = self.pairs[p]
+            self.least, self.least_pair = float(distances[i]), (self.names[a], self.names[b])
+            self.least_time, self.least_index = float(t), p
 
-    def conflict(self, pair: int, free: float, bad: float, distance: float,
-                 proven: bool = True) -> Conflict:
+    def conflict(self, pair: int, free: float, bad: float, distance: float) -> Conflict:
         """The conflict of ``pair``, moved back toward ``free`` (where it kept its
         clearance) by bisection on exact distances."""
         clearance = self.options.clearance
-        if proven:
-            while bad - free > TIME_TOLERANCE:
-                mid = 0.5 * (free + bad)
-                d = float(self.measure(mid, [pair])[0])
-                if d < clearance:
-                    bad, distance = mid, d
-                else:
-                    free = mid
+        while bad - free > TIME_TOLERANCE:
+            mid = 0.5 * (free + bad)
+            d = float(self.measure(mid, [pair])[0])
+            if d < clearance:
+                bad, distance = mid, d
+            else:
+                free = mid
         _, a, b = self.pairs[pair]
         la, lb = int(self.owner[a]), int(self.owner[b])
         lanes = self.timeline.lanes
         return Conflict(bad, (self.names[a], self.names[b]), (lanes[la].name, lanes[lb].name),
                         (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
-                        distance, proven)
-
-
-_LEVERS: dict[int, tuple[object, np.ndarray]] = {}  # id(geometry model) -> (it, levers)
-
-
-def _levers(model, geometry) -> np.ndarray:  # type: ignore[no-untyped-def]
-    """:func:`~taskrunner.collision.tree.lever_arms` of a checker's geometry model, kept for
-    the few latest models (a scene's checker lives until the scene is edited)."""
-    key = id(geometry)
-    found = _LEVERS.get(key)
-    if found is not None and found[0] is geometry:
-        return found[1]
-    if len(_LEVERS) >= 8:
-        _LEVERS.pop(next(iter(_LEVERS)))
-    levers = lever_arms(model, geometry)
-    _LEVERS[key] = (geometry, levers)
-    return levers
+                        distance)
 
 
 def _body_name(obj, pin_model) -> str:  # type: ignore[no-untyped-def]

@@ -42,7 +42,10 @@ _PI_FIRST, _PI_SECOND, _PI_COUNT, _PI_JOINTS = range(4)
 # selected pairs) or the first state that is not finite; the walk started.
 _S_STATES, _S_BOUNDS, _S_PENDING, _S_AT, _S_PER_STATE, _S_BAD, _S_STARTED = 5, 6, 7, 8, 9, 10, 11
 _S_EXACT_FROM, _S_SUPPORTS = 12, 13  # below CHEAP_FROM, coal's distance below this; bounds so
-_S_COUNT = 14
+# m: a clearance kept off every distance (0: the bodies themselves; > 0: each pair is
+# verified as bodies grown by it, a space-time check's clearance between arms)
+_S_CLEARANCE = 14
+_S_COUNT = 15
 _NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
 
 
@@ -274,7 +277,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     pair lever arms, one per unit; the pairs of unit ``u`` are ``members[unit_from[u]:
     unit_from[u + 1]]``, ``unit_of`` the reverse): a unit's measurement is the least of
     its pairs' lower bounds. Pairs whose cheap lower bound is at least ``settings[4]``
-    take it as their measurement."""
+    take it as their measurement. Every distance and bound is taken less the clearance
+    ``settings[_S_CLEARANCE]`` (a contact: a pair closer than it)."""
     nj = joints.shape[0]
     n, nq = states.shape
     if settings[_S_STARTED] == 0.0:
@@ -300,6 +304,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     cheap_from = settings[4]
     exact_from = settings[_S_EXACT_FROM]
     slack = settings[1]
+    clearance = settings[_S_CLEARANCE]
     s = settings[_S_AT]
     # First the exact distances the caller measured (if any): each unit whose pairs are all
     # in takes the least distance as its measurement.
@@ -307,7 +312,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     settings[_S_PENDING] = 0.0
     for i in range(count):
         k = selected[i]
-        d = distances[i] - slack
+        d = distances[i] - slack - clearance
         if not d > 0.0:  # also NaN
             settings[_S_BAD] = i
             return -1
@@ -383,7 +388,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                 gap = 0.0                          # their bounding spheres' distance
                 for c in range(3):
                     gap += (frames[nj + a, _FR_CENTRE + c] - frames[nj + b, _FR_CENTRE + c]) ** 2
-                distances[m] = math.sqrt(gap) - geometries[a].radius - geometries[b].radius
+                distances[m] = (math.sqrt(gap) - geometries[a].radius - geometries[b].radius
+                                - clearance)
                 if distances[m] < distances[nearest]:
                     nearest = m
             for t in range(first - 1, last):
@@ -392,9 +398,9 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                     continue
                 k = members[m]
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
-                d = _lower_bound(a, b, geometries, frames, nj)
+                d = _lower_bound(a, b, geometries, frames, nj) - clearance
                 if d < cheap_from or not d > 0.0:
-                    bound = _support_bound(a, b, geometries, frames, points, nj)
+                    bound = _support_bound(a, b, geometries, frames, points, nj) - clearance
                     if bound > d:
                         d = bound
                     if not (bound > -np.inf and d >= exact_from):

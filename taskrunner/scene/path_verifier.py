@@ -74,6 +74,7 @@ from __future__ import annotations
 import math
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -85,9 +86,11 @@ from taskrunner.scene.advancement import (
     _COLUMNS,
     _NOT_FINITE,
     _PI_JOINTS,
+    _PL,
     _S_AT,
     _S_BAD,
     _S_BOUNDS,
+    _S_CLEARANCE,
     _S_COUNT,
     _S_EXACT_FROM,
     _S_PER_STATE,
@@ -129,6 +132,11 @@ class PathVerification:
         state: the full state vector there; None for a valid path.
         bounds: lower bounds taken instead of coal's exact distance (far pairs: bounding
             volumes; closer pairs of boxes and convex hulls: their support functions).
+        pair_index: the contact's pair, as an index into the checker's collision pairs;
+            None for a valid path.
+        covered: where the contact's pair was last measured free with the stretch before
+            it covered (a path position like ``fraction``): the pair first comes closer
+            than the clearance between there and ``fraction``. None for a valid path.
     """
 
     valid: bool
@@ -139,6 +147,14 @@ class PathVerification:
     pair: tuple[str, str] | None = None
     state: np.ndarray | None = None
     bounds: int = 0
+    pair_index: int | None = None
+    covered: float | None = None
+
+
+Observer = Callable[[float, np.ndarray, np.ndarray], None]
+"""Called by :meth:`PathVerifier.verify` after each round of coal's exact distances: the
+path position, the pairs measured (indices into the checker's collision pairs) and their
+distances (m, as coal gives them). Both arrays are the verifier's own: copy to keep."""
 
 
 class PathVerifier:
@@ -150,6 +166,9 @@ class PathVerifier:
         margin: m; where two measurements of a pair do not cover the motion between them
             by distance, they must be less than this apart in motion bound (both free);
             twice the deepest penetration the verification can miss there.
+        pairs: the pairs to verify, as indices into the checker's collision pairs
+            (default: all of them), e.g. only the pairs of bodies of two arms moving at
+            once (:mod:`taskrunner.collision.spacetime`).
 
     What depends on the robot alone (its joint tree, the lever arms and bounding volumes
     of its links' geometry) is kept per robot model and reused by the verifiers of later
@@ -160,7 +179,7 @@ class PathVerifier:
     """
 
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
-                 margin: float = VERIFY_MARGIN) -> None:
+                 margin: float = VERIFY_MARGIN, pairs: np.ndarray | None = None) -> None:
         if not (math.isfinite(margin) and margin > 0):
             raise ArgumentError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot
@@ -186,9 +205,18 @@ class PathVerifier:
                 start += len(r.points)
         self._geometries = geometries
         self._levers = levers
-        pairs = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
+        every = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
                          dtype=np.int64).reshape(-1, 2)
-        first, second = pairs[:, 0].copy(), pairs[:, 1].copy()
+        if pairs is None:
+            self._pair_ids = np.arange(len(every), dtype=np.int64)
+        else:
+            self._pair_ids = np.asarray(pairs, dtype=np.int64).reshape(-1)
+            if len(self._pair_ids) and not (0 <= self._pair_ids.min()
+                                            and self._pair_ids.max() < len(every)):
+                raise ArgumentError(f"'pairs' must index the checker's {len(every)} "
+                                    f"collision pairs")
+        first = every[self._pair_ids, 0].copy()
+        second = every[self._pair_ids, 1].copy()
         self._first, self._second = first, second
         self._pair_levers = np.zeros((len(first), nq))
         self._pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
@@ -271,12 +299,31 @@ class PathVerifier:
                         kin.joints.shape[0], out)
         return out
 
-    def verify(self, states: np.ndarray) -> PathVerification:
+    def verify(self, states: np.ndarray, clearance: float = 0.0, exact: bool = False,
+               observe: Observer | None = None, gain: float = GAIN) -> PathVerification:
         """Verify the polyline through full state vectors ``states`` (``(n, nq)``).
+
+        Args:
+            clearance: m; a pair measured closer than this is a contact, and between
+                measurements the pairs keep it (the bodies are verified as grown by it;
+                the module's guarantee holds for them).
+            exact: every measurement is coal's exact distance (no cheap lower bounds),
+                so that the least distance an ``observe`` sees is the least measured.
+            observe: called after each round of exact distances (:data:`Observer`).
+            gain: how far past a measurement the next one is tried (see the module's
+                text). 0: each measurement is where the last one's coverage ends, so
+                that every pair is proven free up to where the walk has come: the
+                contact found is then the first along the path, to within one step of
+                its pair (the pairs measured at that position: the first of them).
 
         Returns:
             A :class:`PathVerification`; ``valid`` False names a contact found.
         """
+        if not (math.isfinite(clearance) and clearance >= 0):
+            raise ArgumentError(f"'clearance' must be a number of metres >= 0 "
+                                f"(got {clearance!r})")
+        if not (math.isfinite(gain) and gain >= 0):
+            raise ArgumentError(f"'gain' must be a number >= 0 (got {gain!r})")
         t0 = time.perf_counter()
         states = full_states(states, self.robot.nq)
         n_pairs = len(self._first)
@@ -292,6 +339,10 @@ class PathVerifier:
             walk, schedule, picked, selected, distances, q, scratch, frames, settings = \
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
+            settings[_S_CLEARANCE] = clearance
+            settings[2] = gain
+            if exact:
+                settings[4] = settings[_S_EXACT_FROM] = np.inf
             kin = self._kinematics
             walked = (kin.joints, self._geometries, self._points,
                       self._pair_i, self._unit_i, self._unit_levers, self._members,
@@ -299,11 +350,15 @@ class PathVerifier:
                       schedule, picked, selected, distances, q, scratch, settings)
             queries = evaluated = 0
             pair_distances, to_pin = self._checker.pair_distances, self.robot.to_pin
+            ids = self._pair_ids
             while True:
                 count = _walk(*walked)
                 if count <= 0:
                     break
-                pair_distances(to_pin(q), selected[:count].tolist(), distances)
+                measured = ids[selected[:count]]
+                pair_distances(to_pin(q), measured.tolist(), distances)
+                if observe is not None:
+                    observe(float(settings[_S_AT]), measured, distances[:count])
                 evaluated += 1
                 queries += count
             if count == _NOT_FINITE:
@@ -312,9 +367,11 @@ class PathVerifier:
             states_count = max(evaluated, int(settings[_S_STATES]))
             if count < 0:
                 bad = int(selected[int(settings[_S_BAD])])
+                unit = int(self._unit_of[bad])
                 return PathVerification(False, queries, states_count, time.perf_counter() - t0,
                                         float(settings[_S_AT]), self._pair_name(bad), q.copy(),
-                                        int(settings[_S_BOUNDS]))
+                                        int(settings[_S_BOUNDS]), int(ids[bad]),
+                                        float(walk[unit, _PL]))
             return PathVerification(True, queries, states_count, time.perf_counter() - t0,
                                     bounds=int(settings[_S_BOUNDS]))
         finally:

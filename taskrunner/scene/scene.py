@@ -59,6 +59,7 @@ __all__ = ["Scene", "SceneOptions"]
 
 WORLD = "world"
 _CHECKERS_KEPT = 4  # recent checkers a scene keeps to come back to (see Scene._build)
+_PAIR_VERIFIERS = 4  # sets of pairs a scene keeps a verifier for (see Scene.pair_verifier)
 
 
 @dataclass(frozen=True)
@@ -133,6 +134,8 @@ class Scene:
         self._checker: CollisionChecker | None = None
         self._verifier: tuple[CollisionChecker, PathVerifier] | None = None
         self._screen: tuple[PathVerifier, StateScreen] | None = None
+        # Verifiers of some pairs only (two arms against each other), by the pairs' bytes.
+        self._pair_verifiers: tuple[CollisionChecker, dict[bytes, PathVerifier]] | None = None
         self._revision = 0
         # The last checkers built, with the entries and allowed pairs they were built for.
         self._built: tuple[tuple[tuple[_Entry, ...], frozenset[frozenset[str]],
@@ -150,6 +153,7 @@ class Scene:
         other._checker = None
         other._verifier = None
         other._screen = None
+        other._pair_verifiers = None
         other._built = ()  # a checker is not thread-safe: a copy builds its own
         return other
 
@@ -464,6 +468,27 @@ class Scene:
             cached = (checker, PathVerifier(self.robot, checker, margin))
             self._verifier = cached
         return cached[1]
+
+    def pair_verifier(self, pairs: np.ndarray) -> PathVerifier:
+        """A path verifier (:meth:`path_verifier`'s margin) of only ``pairs``, indices
+        into the checker's collision pairs: e.g. the pairs of bodies of two arms moving at
+        once (:mod:`taskrunner.collision.spacetime`). Kept, per set of pairs (the
+        :data:`_PAIR_VERIFIERS` latest), until the next edit of objects or allowances."""
+        from taskrunner.scene.path_verifier import PathVerifier
+
+        checker = self.checker
+        key = np.ascontiguousarray(pairs, dtype=np.int64).tobytes()
+        cached = self._pair_verifiers
+        if cached is None or cached[0] is not checker:
+            cached = self._pair_verifiers = (checker, {})
+        kept = cached[1]
+        found = kept.get(key)
+        if found is None:
+            if len(kept) >= _PAIR_VERIFIERS:
+                kept.pop(next(iter(kept)))
+            found = kept[key] = PathVerifier(self.robot, checker, pairs=np.frombuffer(
+                key, dtype=np.int64))
+        return found
 
     def state_screen(self, margin: float = VERIFY_MARGIN) -> StateScreen:
         """The planner's screened state check (:class:`taskrunner.scene.screen.StateScreen`:
