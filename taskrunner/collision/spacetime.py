@@ -37,8 +37,8 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -316,12 +316,9 @@ class _Timeline:
             return
         t0 = min(m.start for m in motions) if window is None else window[0]
         t1 = max(m.end for m in motions) if window is None else window[1]
-        times = {t0, t1}
-        for m in motions:
-            for t in m.start + np.asarray(m.trajectory.times, dtype=float):
-                if t0 < t < t1:
-                    times.add(float(t))
-        self.times = np.array(sorted(times))
+        stamps = np.concatenate([m.start + np.asarray(m.trajectory.times, dtype=float)
+                                 for m in motions])
+        self.times = np.unique(np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
         base = scene.state.copy()
         for lane in self.lanes:  # before its first motion, a joint is where that one starts
             for motion in sorted(lane.motions, key=lambda m: m.start, reverse=True):
@@ -337,9 +334,20 @@ class _Timeline:
                 states[np.ix_(rows, idx)] = np.column_stack(
                     [np.interp(local, trajectory.times, trajectory.positions[:, j])
                      for j in range(len(idx))])
-        for row in range(len(states)):
-            model.apply_mimic(states[row])
-        self.states = states
+        self.states = model.apply_mimic(states)
+
+    def prefix(self, position: float) -> tuple[np.ndarray, Callable[[float], float]]:
+        """The rows of :attr:`states` up to ``position`` (as :meth:`time_at`), the state
+        there last, and what a position along them is along the whole."""
+        n = len(self.states)
+        k = min(max(int(position), 0), max(n - 2, 0))
+        frac = position - k
+        if n == 1 or frac <= 0.0:
+            return self.states[:k + 1], lambda at: at
+        # As the path verifier interpolates a position: the same state to the last bit.
+        last = self.states[k] + frac * (self.states[k + 1] - self.states[k])
+        return (np.vstack([self.states[:k + 1], last[None, :]]),
+                lambda at: at if at <= k else k + (at - k) * frac)
 
     def time_at(self, position: float) -> float:
         """The time (s) of a position along :attr:`states` (row index plus the fraction
@@ -384,46 +392,49 @@ class _Walk:
         model = scene.robot
         self.scene, self.model, self.timeline, self.options = scene, model, timeline, options
         self.checker = checker = scene.checker
-        geometry = checker.geometry_model
         pin_model = model.model
-        owner = np.full(len(geometry.geometryObjects), -1, dtype=np.int64)
-        # A body is of the lane whose moved joint is nearest above it; a body no lane's
-        # joint moves, of the lane that carries it (a gripper lane: its arm's links).
-        moved: dict[int, int] = {}
-        carried: dict[int, int] = {}
+        # Per pinocchio joint, the lane of the nearest joint at or above it that a lane
+        # moves; else of the nearest one that carries a lane's moved joint (-1: none).
+        moved = np.full(pin_model.njoints, -1, dtype=np.int64)
+        carried = np.full(pin_model.njoints, -1, dtype=np.int64)
         for lane_index, columns in enumerate(timeline.columns):
             for index in columns:
                 jid = int(pin_model.getJointId(model.joint_names[int(index)]))
                 moved[jid] = lane_index
                 while jid > 0:
-                    carried.setdefault(jid, lane_index)
+                    if carried[jid] < 0:
+                        carried[jid] = lane_index
                     jid = int(pin_model.parents[jid])
-        for g, obj in enumerate(geometry.geometryObjects):
-            chain = []
-            jid = int(obj.parentJoint)
-            while jid > 0:
-                chain.append(jid)
-                jid = int(pin_model.parents[jid])
-            found = next((moved[j] for j in chain if j in moved), None)
-            if found is None:
-                found = next((carried[j] for j in chain if j in carried), None)
-            if found is not None:
-                owner[g] = found
+        for jid in range(1, pin_model.njoints):  # parents come first
+            parent = int(pin_model.parents[jid])
+            if moved[jid] < 0:
+                moved[jid] = moved[parent]
+            if carried[jid] < 0:
+                carried[jid] = carried[parent]
+        joints = checker.geometry_joints
+        # A body is of the lane whose moved joint is nearest above it; a body no lane's
+        # joint moves, of the lane that carries it (a gripper lane: its arm's links).
+        owner = np.where(moved[joints] >= 0, moved[joints], carried[joints])
         self.owner = owner
-        self.names = [_body_name(obj, pin_model) for obj in geometry.geometryObjects]
-        pairs = []
-        for k, pair in enumerate(geometry.collisionPairs):
-            a, b = int(pair.first), int(pair.second)
-            if owner[a] >= 0 and owner[b] >= 0 and owner[a] != owner[b]:
-                pairs.append((k, a, b) if owner[a] < owner[b] else (k, b, a))
-        self.pairs = pairs
-        self.local = {k: p for p, (k, _, _) in enumerate(pairs)}  # checker pair -> pairs
+        every = checker.pair_geometries
+        oa, ob = owner[every[:, 0]], owner[every[:, 1]]
+        ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob))
+        swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
+        firsts = np.where(swap, every[ids, 1], every[ids, 0])
+        seconds = np.where(swap, every[ids, 0], every[ids, 1])
+        self.pair_ids = ids
+        self.pairs = list(zip(ids.tolist(), firsts.tolist(), seconds.tolist()))
+        self.local = {k: p for p, k in enumerate(ids.tolist())}  # checker pair -> pairs
         self.queries = 0
         self.least = math.inf
         self.least_pair: tuple[str, str] | None = None
         self.least_time: float | None = None
         self.least_index: int | None = None
-        self._out = np.zeros(max(1, len(pairs)))
+        self._out = np.zeros(max(1, len(self.pairs)))
+
+    def name(self, g: int) -> str:
+        """The body of geometry ``g`` (its link's name, or the object's)."""
+        return _body_name(self.checker.geometry_model.geometryObjects[g], self.model.model)
 
     def run(self, exact: bool = False) -> Conflict | None:
         """Walk the pairs over the timeline: the first conflict, or None. ``exact``: every
@@ -431,16 +442,25 @@ class _Walk:
         :attr:`least` is the least distance measured."""
         if not self.pairs:
             return None
-        verifier = self.scene.pair_verifier(np.array([k for k, _, _ in self.pairs],
-                                                     dtype=np.int64))
+        verifier = self.scene.pair_verifier(self.pair_ids)
         # Between measurements the verifier lets bodies grown by the clearance overlap by
         # at most half its margin: grown by that much more, they keep the clearance.
-        # No optimistic steps (gain 0): every pair is proven clear up to where the walk
-        # has come, so the conflict found is the first in time.
-        found = verifier.verify(self.timeline.states,
-                                self.options.clearance + 0.5 * verifier.margin, exact,
-                                self._observe, gain=0.0)
-        self.queries += found.distance_queries
+        clearance = self.options.clearance + 0.5 * verifier.margin
+        found = verifier.verify(self.timeline.states, clearance, exact, self._observe)
+        queries = found.distance_queries
+        if not found.valid and found.fraction is not None:
+            # Its optimistic steps may have passed another pair's first contact: the way up
+            # to this one walked again without them (every pair proven clear up to where
+            # the walk has come), so that the conflict found is the first in time.
+            rows, along = self.timeline.prefix(found.fraction)
+            first = verifier.verify(rows, clearance, exact,
+                                    lambda at, pairs, d: self._observe(along(at), pairs, d),
+                                    gain=0.0)
+            queries += first.distance_queries
+            if not first.valid and first.fraction is not None:
+                found = replace(first, fraction=along(first.fraction), covered=along(
+                    first.covered if first.covered is not None else first.fraction))
+        self.queries += queries
         if found.valid:
             return None
         assert found.pair_index is not None and found.fraction is not None
@@ -474,7 +494,7 @@ class _Walk:
         if distances[i] < self.least:
             p = self.local[int(pairs[i])]
             _, a, b = self.pairs[p]
-            self.least, self.least_pair = float(distances[i]), (self.names[a], self.names[b])
+            self.least, self.least_pair = float(distances[i]), (self.name(a), self.name(b))
             self.least_time, self.least_index = float(t), p
 
     def conflict(self, pair: int, free: float, bad: float, distance: float) -> Conflict:
@@ -491,7 +511,7 @@ class _Walk:
         _, a, b = self.pairs[pair]
         la, lb = int(self.owner[a]), int(self.owner[b])
         lanes = self.timeline.lanes
-        return Conflict(bad, (self.names[a], self.names[b]), (lanes[la].name, lanes[lb].name),
+        return Conflict(bad, (self.name(a), self.name(b)), (lanes[la].name, lanes[lb].name),
                         (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
                         distance)
 

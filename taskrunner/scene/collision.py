@@ -214,6 +214,8 @@ class CollisionChecker:
         self._model = model
         self._body_of = body_of
         mask, self._pairs = robot._pairs(bodies, allowed, body_of, static)
+        self._pair_array: np.ndarray | None = None
+        self._joint_array: np.ndarray | None = None
         if len(body_of):
             self._geometry.setCollisionPairs(mask)
         # Fast path: its own Data, GeometryData, manager and callback (stop at the first
@@ -240,6 +242,28 @@ class CollisionChecker:
     def pair_count(self) -> int:
         """Number of geometry pairs checked (after allowances)."""
         return len(self._pairs)
+
+    @property
+    def pair_geometries(self) -> np.ndarray:
+        """``(pair_count, 2)``: the two geometry objects (indices into
+        :attr:`geometry_model`'s) of each checked pair, in the model's pair order
+        (read-only)."""
+        if self._pair_array is None:
+            array = np.array(self._pairs, dtype=np.int64).reshape(-1, 2)
+            array.setflags(write=False)
+            self._pair_array = array
+        return self._pair_array
+
+    @property
+    def geometry_joints(self) -> np.ndarray:
+        """Per geometry object, the pinocchio joint carrying it (0: the world;
+        read-only)."""
+        if self._joint_array is None:
+            array = np.array([obj.parentJoint for obj in self._geometry.geometryObjects],
+                             dtype=np.int64)
+            array.setflags(write=False)
+            self._joint_array = array
+        return self._joint_array
 
     @property
     def geometry_model(self) -> pin.GeometryModel:

@@ -71,6 +71,7 @@ around a position summed more than the motion between them, the pair cannot touc
 
 from __future__ import annotations
 
+import copy
 import math
 import threading
 import time
@@ -169,6 +170,9 @@ class PathVerifier:
         pairs: the pairs to verify, as indices into the checker's collision pairs
             (default: all of them), e.g. only the pairs of bodies of two arms moving at
             once (:mod:`taskrunner.collision.spacetime`).
+        grouped: pairs that move alike are walked as one unit (see the module's text);
+            False: each pair is its own unit (where few pairs would share one, as
+            between two arms, the grouping costs more than it saves).
 
     What depends on the robot alone (its joint tree, the lever arms and bounding volumes
     of its links' geometry) is kept per robot model and reused by the verifiers of later
@@ -179,7 +183,8 @@ class PathVerifier:
     """
 
     def __init__(self, robot: RobotModel, checker: CollisionChecker,
-                 margin: float = VERIFY_MARGIN, pairs: np.ndarray | None = None) -> None:
+                 margin: float = VERIFY_MARGIN, pairs: np.ndarray | None = None,
+                 grouped: bool = True) -> None:
         if not (math.isfinite(margin) and margin > 0):
             raise ArgumentError(f"'margin' must be a positive number of metres (got {margin!r})")
         self.robot = robot
@@ -205,43 +210,72 @@ class PathVerifier:
                 start += len(r.points)
         self._geometries = geometries
         self._levers = levers
-        every = np.array([(p.first, p.second) for p in self._geometry.collisionPairs],
-                         dtype=np.int64).reshape(-1, 2)
-        if pairs is None:
-            self._pair_ids = np.arange(len(every), dtype=np.int64)
-        else:
-            self._pair_ids = np.asarray(pairs, dtype=np.int64).reshape(-1)
-            if len(self._pair_ids) and not (0 <= self._pair_ids.min()
-                                            and self._pair_ids.max() < len(every)):
-                raise ArgumentError(f"'pairs' must index the checker's {len(every)} "
-                                    f"collision pairs")
-        first = every[self._pair_ids, 0].copy()
-        second = every[self._pair_ids, 1].copy()
+        self._every = checker.pair_geometries
+        self._kinematics = _Kinematics(tree, self._geometries)
+        self._use_pairs(np.arange(len(self._every), dtype=np.int64) if pairs is None
+                        else self._pair_indices(pairs), grouped)
+
+    def _pair_indices(self, pairs: np.ndarray) -> np.ndarray:
+        ids = np.asarray(pairs, dtype=np.int64).reshape(-1)
+        if len(ids) and not (0 <= ids.min() and ids.max() < len(self._every)):
+            raise ArgumentError(f"'pairs' must index the checker's {len(self._every)} "
+                                f"collision pairs")
+        return ids
+
+    def restricted(self, pairs: np.ndarray, grouped: bool = True) -> PathVerifier:
+        """A verifier of only ``pairs`` (indices into the checker's collision pairs) of
+        this one's checker: it shares this one's geometry rows and kinematics (and, like
+        it, the checker: one thread at a time), only the pairs' rows are built.
+        ``grouped``: pairs that move alike are walked as one unit (see the module's text;
+        False: each pair its own unit, where few would share one)."""
+        other = copy.copy(self)
+        other._use_pairs(self._pair_indices(pairs), grouped)
+        return other
+
+    def _use_pairs(self, ids: np.ndarray, grouped: bool = True) -> None:
+        """Build the rows of the pairs ``ids`` (indices into the checker's collision pairs),
+        their units, the settings and the work arrays."""
+        tree, nq = self._tree, self.robot.nq
+        self._pair_ids = ids
+        first = self._every[ids, 0].copy()
+        second = self._every[ids, 1].copy()
         self._first, self._second = first, second
         self._pair_levers = np.zeros((len(first), nq))
         self._pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
-        _pair_rows(first, second, levers, tree.order, tree.revolute, tree.state_joint,
+        _pair_rows(first, second, self._levers, tree.order, tree.revolute, tree.state_joint,
                    tree.supported, self._pair_levers, self._pair_i)
         # Pairs that move alike (a link and each world object: the same joints, lever arms)
         # are walked as one unit, measured together, their least distance its measurement.
-        unit_of = np.zeros(len(first), dtype=np.int64)
-        representative = np.zeros(len(first), dtype=np.int64)
-        units = _group_pairs(self._pair_i, self._pair_levers, unit_of, representative)
+        unit_of = np.arange(len(first), dtype=np.int64)
+        representative = unit_of.copy()
+        units = (_group_pairs(self._pair_i, self._pair_levers, unit_of, representative)
+                 if grouped else len(first))
         self._unit_of = unit_of
         self._members = np.argsort(unit_of, kind="stable").astype(np.int64)
         self._unit_from = np.zeros(units + 1, dtype=np.int64)
         np.cumsum(np.bincount(unit_of, minlength=units), out=self._unit_from[1:])
         self._unit_i = self._pair_i[representative[:units]].copy()
         self._unit_levers = self._pair_levers[representative[:units]].copy()
-        self._kinematics = _Kinematics(tree, self._geometries)
         self._settings = np.zeros(_S_COUNT)
-        self._settings[:5] = (margin, _DISTANCE_SLACK, GAIN, _EARLY,
+        self._settings[:5] = (self.margin, _DISTANCE_SLACK, GAIN, _EARLY,
                               CHEAP_FROM if tree.supported else np.inf)
         self._settings[_S_PER_STATE] = 1.0 if tree.supported else 0.0
         self._settings[_S_BAD] = -1.0
         self._settings[_S_EXACT_FROM] = EXACT_FROM
         self._busy = threading.Lock()
         self._buffers = self._new_buffers()
+
+    @property
+    def checker_pairs(self) -> np.ndarray:
+        """``(n, 2)``: the two geometries (indices into the checker's geometry objects) of
+        each of the checker's collision pairs, all of them (also those not verified)."""
+        return self._every
+
+    @property
+    def geometry_joints(self) -> np.ndarray:
+        """Per geometry of the checker, the pinocchio joint that carries it (0: the
+        world)."""
+        return self._geometries["joint"]
 
     @property
     def pair_levers(self) -> np.ndarray:

@@ -473,8 +473,9 @@ class Scene:
         """A path verifier (:meth:`path_verifier`'s margin) of only ``pairs``, indices
         into the checker's collision pairs: e.g. the pairs of bodies of two arms moving at
         once (:mod:`taskrunner.collision.spacetime`). Kept, per set of pairs (the
-        :data:`_PAIR_VERIFIERS` latest), until the next edit of objects or allowances."""
-        from taskrunner.scene.path_verifier import PathVerifier
+        :data:`_PAIR_VERIFIERS` latest), until the next edit of objects or allowances.
+        Each pair is walked on its own (no grouping into units)."""
+        from taskrunner.scene.path_verifier import PathVerifier  # numba: only where verified
 
         checker = self.checker
         key = np.ascontiguousarray(pairs, dtype=np.int64).tobytes()
@@ -486,8 +487,12 @@ class Scene:
         if found is None:
             if len(kept) >= _PAIR_VERIFIERS:
                 kept.pop(next(iter(kept)))
-            found = kept[key] = PathVerifier(self.robot, checker, pairs=np.frombuffer(
-                key, dtype=np.int64))
+            ids = np.frombuffer(key, dtype=np.int64)
+            full = self._verifier  # the scene's whole verifier, if built: its rows serve
+            found = kept[key] = (
+                full[1].restricted(ids, grouped=False)
+                if full is not None and full[0] is checker
+                else PathVerifier(self.robot, checker, pairs=ids, grouped=False))
         return found
 
     def state_screen(self, margin: float = VERIFY_MARGIN) -> StateScreen:
