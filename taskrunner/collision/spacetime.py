@@ -325,7 +325,17 @@ class _Timeline:
                 base[model.indices(motion.trajectory.names)] = motion.trajectory.positions[0]
         states = np.repeat(base[None, :], len(self.times), axis=0)
         for lane in self.lanes:
-            for motion in sorted(lane.motions, key=lambda m: m.start):
+            ordered = sorted(lane.motions, key=lambda m: m.start)
+            # A motion whose joints a later one sets from the timeline's first row on
+            # leaves nothing in it (the lane's motions before the window, mostly).
+            settled: set[str] = set()
+            kept = []
+            for motion in reversed(ordered):
+                if not settled.issuperset(motion.trajectory.names):
+                    kept.append(motion)
+                if motion.start <= self.times[0]:
+                    settled.update(motion.trajectory.names)
+            for motion in reversed(kept):
                 # From its start on (held at its end after), each where the last left it.
                 rows = self.times >= motion.start
                 local = self.times[rows] - motion.start
