@@ -125,19 +125,23 @@ class RobotGeometry:
         self._static = tuple(body.static for body in self.bodies for _ in body.geometries)
         # Pair masks by (the other bodies' names, kinds and sizes; the allowances): moving
         # an object, or coming back to an earlier attachment, finds its pairs here.
-        self._masks: dict[tuple[object, ...], tuple[np.ndarray, tuple[tuple[int, int], ...]]] = {}
+        self._masks: dict[tuple[object, ...],
+                          tuple[np.ndarray, tuple[tuple[int, int], ...], np.ndarray]] = {}
 
     def _pairs(self, bodies: Sequence[Body], allowed: Collection[frozenset[str]],
                body_of: Sequence[str], static: Sequence[bool]
-               ) -> tuple[np.ndarray, tuple[tuple[int, int], ...]]:
-        """The pair mask and pairs of the robot with ``bodies`` (cached, read-only)."""
+               ) -> tuple[np.ndarray, tuple[tuple[int, int], ...], np.ndarray]:
+        """The pair mask and pairs of the robot with ``bodies``, as tuples and as an
+        ``(n, 2)`` array (cached, read-only)."""
         key = (tuple((b.name, b.static, len(b.geometries)) for b in bodies), frozenset(allowed))
         found = self._masks.get(key)
         if found is None:
             mask = _pair_mask(body_of, static, allowed)
             first, second = np.nonzero(mask)  # row-major: the order of the model's pairs
             mask.setflags(write=False)
-            found = (mask, tuple(zip(first.tolist(), second.tolist())))
+            array = np.column_stack([first, second]).astype(np.int64).reshape(-1, 2)
+            array.setflags(write=False)
+            found = (mask, tuple(zip(first.tolist(), second.tolist())), array)
             if len(self._masks) >= _MASK_CACHE_SIZE:
                 self._masks.clear()  # one call: safe with copies of the scene in other threads
             self._masks[key] = found
@@ -213,8 +217,7 @@ class CollisionChecker:
         static += [body.static for body in bodies for _ in body.geometries]
         self._model = model
         self._body_of = body_of
-        mask, self._pairs = robot._pairs(bodies, allowed, body_of, static)
-        self._pair_array: np.ndarray | None = None
+        mask, self._pairs, self._pair_array = robot._pairs(bodies, allowed, body_of, static)
         self._joint_array: np.ndarray | None = None
         if len(body_of):
             self._geometry.setCollisionPairs(mask)
@@ -248,10 +251,6 @@ class CollisionChecker:
         """``(pair_count, 2)``: the two geometry objects (indices into
         :attr:`geometry_model`'s) of each checked pair, in the model's pair order
         (read-only)."""
-        if self._pair_array is None:
-            array = np.array(self._pairs, dtype=np.int64).reshape(-1, 2)
-            array.setflags(write=False)
-            self._pair_array = array
         return self._pair_array
 
     @property

@@ -222,14 +222,21 @@ class PathVerifier:
                                 f"collision pairs")
         return ids
 
-    def restricted(self, pairs: np.ndarray, grouped: bool = True) -> PathVerifier:
-        """A verifier of only ``pairs`` (indices into the checker's collision pairs) of
-        this one's checker: it shares this one's geometry rows and kinematics (and, like
-        it, the checker: one thread at a time), only the pairs' rows are built.
-        ``grouped``: pairs that move alike are walked as one unit (see the module's text;
-        False: each pair its own unit, where few would share one)."""
+    def restricted(self, pairs: np.ndarray | None = None, grouped: bool = True,
+                   margin: float | None = None) -> PathVerifier:
+        """A verifier of ``pairs`` (indices into the checker's collision pairs; default:
+        all of them) of this one's checker, with ``margin`` (default: this one's): it
+        shares this one's geometry rows and kinematics (and, like it, the checker: one
+        thread at a time); only the pairs' rows are built. ``grouped``: pairs that move
+        alike are walked as one unit (see the module's text; False: each pair its own
+        unit, where few would share one)."""
+        if margin is not None and not (math.isfinite(margin) and margin > 0):
+            raise ArgumentError(f"'margin' must be a positive number of metres (got {margin!r})")
         other = copy.copy(self)
-        other._use_pairs(self._pair_indices(pairs), grouped)
+        if margin is not None:
+            other.margin = margin
+        other._use_pairs(np.arange(len(self._every), dtype=np.int64) if pairs is None
+                         else self._pair_indices(pairs), grouped)
         return other
 
     def _use_pairs(self, ids: np.ndarray, grouped: bool = True) -> None:

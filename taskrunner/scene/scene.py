@@ -133,6 +133,8 @@ class Scene:
         self._fk_done = False
         self._checker: CollisionChecker | None = None
         self._verifier: tuple[CollisionChecker, PathVerifier] | None = None
+        # The checker's geometry rows (a verifier of no pairs): every verifier of it shares them.
+        self._rows: tuple[CollisionChecker, PathVerifier] | None = None
         self._screen: tuple[PathVerifier, StateScreen] | None = None
         # Verifiers of some pairs only (two arms against each other), by the pairs' bytes.
         self._pair_verifiers: tuple[CollisionChecker, dict[bytes, PathVerifier]] | None = None
@@ -152,6 +154,7 @@ class Scene:
         other._fk_done = False
         other._checker = None
         other._verifier = None
+        other._rows = None
         other._screen = None
         other._pair_verifiers = None
         other._built = ()  # a checker is not thread-safe: a copy builds its own
@@ -460,13 +463,24 @@ class Scene:
         """The exact path verifier (conservative advancement, see
         :mod:`taskrunner.scene.path_verifier`) for the scene as it is now; ``margin`` in m.
         Kept until the next edit of objects or allowances."""
-        from taskrunner.scene.path_verifier import PathVerifier  # numba: only where paths are verified
-
         checker = self.checker
         cached = self._verifier
         if cached is None or cached[0] is not checker or cached[1].margin != margin:
-            cached = (checker, PathVerifier(self.robot, checker, margin))
+            cached = (checker, self._verifier_rows().restricted(margin=margin))
             self._verifier = cached
+        return cached[1]
+
+    def _verifier_rows(self) -> PathVerifier:
+        """A verifier of no pairs of the current checker: its geometry rows (lever arms,
+        bounding volumes, hull points) and kinematics, which the verifiers of this
+        checker (:meth:`path_verifier`, :meth:`pair_verifier`) share."""
+        from taskrunner.scene.path_verifier import PathVerifier  # numba: only where verified
+
+        checker = self.checker
+        cached = self._rows
+        if cached is None or cached[0] is not checker:
+            cached = self._rows = (checker, PathVerifier(self.robot, checker,
+                                                         pairs=np.zeros(0, dtype=np.int64)))
         return cached[1]
 
     def pair_verifier(self, pairs: np.ndarray) -> PathVerifier:
@@ -475,8 +489,6 @@ class Scene:
         once (:mod:`taskrunner.collision.spacetime`). Kept, per set of pairs (the
         :data:`_PAIR_VERIFIERS` latest), until the next edit of objects or allowances.
         Each pair is walked on its own (no grouping into units)."""
-        from taskrunner.scene.path_verifier import PathVerifier  # numba: only where verified
-
         checker = self.checker
         key = np.ascontiguousarray(pairs, dtype=np.int64).tobytes()
         cached = self._pair_verifiers
@@ -487,12 +499,8 @@ class Scene:
         if found is None:
             if len(kept) >= _PAIR_VERIFIERS:
                 kept.pop(next(iter(kept)))
-            ids = np.frombuffer(key, dtype=np.int64)
-            full = self._verifier  # the scene's whole verifier, if built: its rows serve
-            found = kept[key] = (
-                full[1].restricted(ids, grouped=False)
-                if full is not None and full[0] is checker
-                else PathVerifier(self.robot, checker, pairs=ids, grouped=False))
+            found = kept[key] = self._verifier_rows().restricted(
+                np.frombuffer(key, dtype=np.int64), grouped=False)
         return found
 
     def state_screen(self, margin: float = VERIFY_MARGIN) -> StateScreen:
