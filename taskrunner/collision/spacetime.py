@@ -47,6 +47,8 @@ from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.types import JointTrajectory
 
 if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, not imported
+    import pinocchio as pin
+
     from taskrunner.scene import Scene
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
@@ -526,7 +528,7 @@ class _Walk:
                         distance)
 
 
-def _body_name(obj, pin_model) -> str:  # type: ignore[no-untyped-def]
+def _body_name(obj: pin.GeometryObject, pin_model: pin.Model) -> str:
     """A geometry's body: its link's name for a robot link, else the object's name."""
     frame = int(obj.parentFrame)
     if 0 <= frame < len(pin_model.frames):
