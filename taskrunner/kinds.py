@@ -13,7 +13,7 @@ from enum import IntEnum, StrEnum
 from taskrunner.errors import ArgumentError
 
 __all__ = ["BackendKind", "CollisionChoice", "EventKind", "ExitCode", "FailureKind", "NodeStatus",
-           "RunStatus", "StopReason"]
+           "RunStatus", "StopReason", "WaitKind"]
 
 
 class BackendKind(StrEnum):
@@ -106,6 +106,16 @@ class StopReason(StrEnum):
     """A joint would jump between two points."""
 
 
+class WaitKind(StrEnum):
+    """How a motion that would meet another branch's arm was put off
+    (:class:`taskrunner.tree.schedule.Wait`), in the schedule's order of preference."""
+
+    DELAY = "delay"
+    """Started a little later, while the other arm's motion still runs: it passes behind."""
+    UNTIL_END = "until_end"
+    """Started when the other arm's motion has ended (that arm's way is then known)."""
+
+
 class EventKind(StrEnum):
     """The kinds of event a run emits (:class:`taskrunner.runtime.events.RunEvent`)."""
 
@@ -125,7 +135,7 @@ class EventKind(StrEnum):
     objects (poses over time), grasps (welds)."""
     WAIT = "wait"
     """A motion held back for another branch's arm; data: since, until (s, the run's
-    schedule), other (its step), bodies, at, distance."""
+    schedule), other (its step), bodies, at, distance, resolution (a :class:`WaitKind`)."""
     MESSAGE = "message"
     """Anything else worth showing (a warning, a retry)."""
     CHECKPOINT = "checkpoint"

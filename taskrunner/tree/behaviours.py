@@ -230,7 +230,7 @@ class _Executes(TaskLeaf):
                 "wait", wait.describe(self.location), node=self.name, location=self.location,
                 since=round(wait.since, 6), until=round(wait.until, 6), other=wait.other,
                 bodies=list(conflict.bodies), at=round(conflict.time, 6),
-                distance=round(conflict.distance, 6))
+                distance=round(conflict.distance, 6), resolution=wait.kind.value)
         if timed:
             self.pending = trajectory  # sent at its start (the schedule slips if late)
             return self.poll_execution()

@@ -7,9 +7,13 @@ first *admitted* (:meth:`MotionSchedule.admit`): it gets a start time on the sch
 clock and is verified, with :func:`~taskrunner.collision.spacetime.verify_lanes`, against
 every committed motion of the branches running at the same time (already executing or
 admitted to execute later), each other arm resting between its motions, with
-:data:`CLEARANCE` to spare. On a conflict the simplest safe resolution is taken: the new
-motion starts later, when the motion it meets has ended (a :class:`Wait`), and is
-verified again from there. When the other arm *rests* in its way after the last motion
+:data:`CLEARANCE` to spare. On a conflict with another arm's running (or coming) motion
+the new motion starts later (a :class:`Wait`): first a little later, while that motion
+still runs, so that it passes behind the other arm (a *delay*: :data:`DELAYS` - 1 starts
+evenly spread before that motion's end are tried in order, the first that keeps the
+clearance from every other lane then brought earlier by halving, :data:`DELAY_REFINE`
+times); else when that motion has ended, verified again from there (and put off again
+if it then meets another). Either way the start committed is one that was verified. When the other arm *rests* in its way after the last motion
 its branch has committed, the motion is :class:`Blocked`: its leaf holds it, uncommitted,
 until that branch commits its next motion (the arm may move away) and admits it again;
 when that branch has ended (its arm stays there) or holds for this one in turn (a
@@ -81,10 +85,12 @@ from taskrunner.collision.spacetime import (
     Conflict,
     Lane,
     SpacetimeOptions,
+    SpacetimeVerification,
     TimedMotion,
     verify_lanes,
 )
 from taskrunner.errors import InvalidStateError, ScheduleConflictError
+from taskrunner.kinds import WaitKind
 from taskrunner.scene import Scene
 from taskrunner.types import JointTrajectory
 
@@ -96,6 +102,15 @@ CLEARANCE = 0.005
 (another branch of a ``parallel``), at every instant of the schedule. It also absorbs the
 difference between a planned trajectory and the one a record keeps (thinned to 25 Hz:
 well under a millimetre on these arms)."""
+
+DELAYS = 4
+"""A motion that would meet another arm's running motion tries this many starts less one,
+evenly spread before that motion's end, before it waits for the end (module text)."""
+
+DELAY_REFINE = 2
+"""Halvings of the stretch between the last start tried that met the other arm and the
+first that passes behind it: the delay is found to within 1 / (``DELAYS`` × 2 **
+``DELAY_REFINE``) of that stretch."""
 
 LATE = 0.005
 """s of task time: a motion sent later than this after its admitted start is admitted
@@ -150,14 +165,21 @@ class Committed:
 @dataclass(frozen=True)
 class Wait:
     """A motion held back: it would have met ``conflict`` (another branch's motion, of
-    the step at ``other``), so it starts at ``until`` instead (s)."""
+    the step at ``other``), so it starts at ``until`` instead (s): a little later, while
+    that motion still runs (``kind`` :attr:`~taskrunner.kinds.WaitKind.DELAY`), or when it
+    has ended (:attr:`~taskrunner.kinds.WaitKind.UNTIL_END`)."""
 
     since: float
     until: float
     conflict: Conflict
     other: str | None
+    kind: WaitKind = WaitKind.UNTIL_END
 
     def describe(self, here: str | None) -> str:
+        if self.kind == WaitKind.DELAY:
+            return (f"{here or 'this motion'} starts {self.until - self.since:.2f} s later, "
+                    f"to pass behind {self.other or 'the other arm'}: "
+                    f"{self.conflict.describe()}")
         return (f"{here or 'this motion'} waits {self.until - self.since:.2f} s, until "
                 f"{self.other or 'the other arm'} has moved: {self.conflict.describe()}")
 
@@ -209,6 +231,8 @@ class MotionSchedule:
     """
 
     clearance: float = CLEARANCE
+    delays: int = DELAYS
+    """Starts tried before a met motion's end (:data:`DELAYS`; 1: wait for its end)."""
     committed: list[Committed] = field(default_factory=list)
     holding: dict[LaneKey, LaneKey] = field(default_factory=dict)
     finished: dict[tuple[int, str, str], float] = field(default_factory=dict)
@@ -508,24 +532,32 @@ class MotionSchedule:
         start = max(self.earliest(lane), now)
         others = [c for c in self.committed if concurrent(c.lane, lane)]
         waits: list[Wait] = []
-        queries, seconds, least = 0, 0.0, math.inf
+        queries, seconds = [0], [0.0]  # of every verification
         options = SpacetimeOptions(clearance=self.clearance)
-        for _ in range(len(others) + 1):
-            if not others:
-                break
-            mine = TimedMotion(trajectory, start, location)
-            # The lane's earlier motions too: where they left the joints this one holds.
-            before = tuple(c.motion for c in self.committed if c.lane == lane)
+        # The lane's earlier motions too: where they left the joints this one holds.
+        before = tuple(c.motion for c in self.committed if c.lane == lane)
+
+        def verify(at: float) -> SpacetimeVerification:
+            """The motion started at ``at`` against the others, from then on (from
+            ``since`` if earlier)."""
+            mine = TimedMotion(trajectory, at, location)
             lanes = [Lane("this motion", (*before, mine))] + lanes_of(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
-            begin = start if since is None else min(since, start)
+            begin = at if since is None else min(since, at)
             try:
                 found = verify_lanes(scene, lanes, (begin, horizon), options)
             except InvalidStateError as exc:
                 raise ScheduleConflictError(f"cannot run beside the other branches: "
                                             f"{exc}") from None
-            queries += found.distance_queries
-            seconds += found.seconds
+            queries[0] += found.distance_queries
+            seconds[0] += found.seconds
+            return found
+
+        least = math.inf
+        for _ in range(len(others) + 1):
+            if not others:
+                break
+            found = verify(start)
             conflict = found.conflict
             if conflict is None:
                 least = found.min_distance
@@ -543,6 +575,12 @@ class MotionSchedule:
             if blocking is None:
                 last = _last(others, conflict)
                 return Blocked(conflict, last.lane, last.location)
+            delayed = self._delay(verify, start, blocking.motion.end)
+            if delayed is not None:
+                at, clear = delayed
+                waits.append(Wait(start, at, conflict, blocking.location, WaitKind.DELAY))
+                start, least = at, clear.min_distance
+                break
             waits.append(Wait(start, blocking.motion.end, conflict, blocking.location))
             start = blocking.motion.end
         else:
@@ -553,7 +591,38 @@ class MotionSchedule:
         self.committed.append(entry)
         self.waits += [(location, wait) for wait in waits]
         self._changes += 1
-        return Admission(start, tuple(waits), queries, seconds, least, entry)
+        return Admission(start, tuple(waits), queries[0], seconds[0], least, entry)
+
+    def _delay(self, verify: Callable[[float], SpacetimeVerification], start: float,
+               end: float) -> tuple[float, SpacetimeVerification] | None:
+        """The earliest start tried after ``start`` and before ``end`` (when the motion
+        met ends) at which the motion keeps its clearance from every concurrent lane, and
+        its verification; None when none does (it then waits for ``end``). The starts
+        tried are :attr:`delays` - 1 evenly spread ones, then :data:`DELAY_REFINE`
+        halvings before the first that passes: a start that passes is verified, whatever
+        the ones around it did."""
+        step = (end - start) / max(self.delays, 1)
+        if step <= LATE:
+            return None
+        failed = start
+        for k in range(1, self.delays):
+            at = start + k * step
+            found = verify(at)
+            if found.conflict is not None:
+                failed = at
+                continue
+            best = (at, found)
+            for _ in range(DELAY_REFINE):
+                middle = 0.5 * (failed + best[0])
+                if best[0] - middle <= LATE:
+                    break
+                tried = verify(middle)
+                if tried.conflict is None:
+                    best = (middle, tried)
+                else:
+                    failed = middle
+            return best
+        return None
 
     def confirm(self, scene: Scene, admission: Admission, at: float,
                 progress: Callable[[], float] | None = None

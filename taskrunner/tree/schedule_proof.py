@@ -21,8 +21,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from taskrunner.collision.spacetime import LeastClearance, least_clearance
+from taskrunner.kinds import WaitKind
 from taskrunner.scene import Scene
-from taskrunner.tree.schedule import Committed, LaneKey, MotionSchedule, concurrent, lanes_of
+from taskrunner.tree.schedule import Committed, LaneKey, MotionSchedule, Wait, concurrent, lanes_of
 
 __all__ = ["Overlap", "PlannedMotion", "ScheduleProof", "ScheduleWait", "prove_schedule"]
 
@@ -162,10 +163,7 @@ def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
     least = least_clearance(robots, lanes_of(committed))
     inserted = [ScheduleWait(where, since, until, f"until step {step!r} has finished")
                 for where, since, until, step in schedule.step_waits]
-    inserted += [ScheduleWait(where, w.since, w.until,
-                              f"until {w.other or 'the other arm'} has moved: "
-                              f"{w.conflict.describe()}")
-                 for where, w in schedule.waits]
+    inserted += [ScheduleWait(where, w.since, w.until, _reason(w)) for where, w in schedule.waits]
     inserted += [ScheduleWait(where, since, until, f"a wait step of {until - since:g} s",
                               _lane_joints(committed, lane))
                  for where, lane, since, until in schedule.pauses if until > since]
@@ -175,6 +173,14 @@ def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
     return ScheduleProof(least, _overlaps(committed), tuple(inserted),
                          len(committed), max((c.motion.end for c in committed), default=0.0),
                          timeline)
+
+
+def _reason(wait: Wait) -> str:
+    """Why the schedule put a motion off (its ``reason``)."""
+    other = wait.other or "the other arm"
+    if wait.kind == WaitKind.DELAY:
+        return f"to pass behind {other}: {wait.conflict.describe()}"
+    return f"until {other} has moved: {wait.conflict.describe()}"
 
 
 def _lane_joints(committed: Sequence[Committed], lane: LaneKey) -> tuple[str, ...]:

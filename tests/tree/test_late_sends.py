@@ -144,8 +144,10 @@ def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> Jo
 
 def in_and_out(scene) -> tuple[MotionSchedule, Admission, Admission, Admission]:
     """The right arm reaches to the middle (0-2 s) and backs out (2-4 s); the left arm's
-    reach there waits until it has left (4 s)."""
-    schedule = MotionSchedule()
+    reach there waits until it has left (4 s): no delays tried (``delays=1``), so that
+    these tests' motions meet where they say (a delay would send it behind the backing
+    arm, see test_delays.py)."""
+    schedule = MotionSchedule(delays=1)
     schedule.new_instance()
     reach = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:1")
     back = schedule.admit(scene, RIGHT, line("right", P, CANDLE), "t.yaml:2")
