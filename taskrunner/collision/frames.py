@@ -61,16 +61,16 @@ _R = TypeVar("_R")
 # LLVM paid an atomic increment and decrement per array argument (the state screen's
 # scan 6 % slower per state with them). (Options numba's typed signature of ``njit`` does
 # not list; it passes every keyword on to its compiler.)
-_PLAIN_OPTIONS: dict[str, Any] = {"_nrt": False}
-_HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True,
-                                   **_PLAIN_OPTIONS}
+_KERNEL_OPTIONS: dict[str, Any] = {"no_cfunc_wrapper": True}
+_PLAIN_OPTIONS: dict[str, Any] = {"_nrt": False, **_KERNEL_OPTIONS}
+_HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, **_PLAIN_OPTIONS}
 
 
 def jit(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
     """Compile ``function`` as a kernel called from Python (or called, not inlined, by
     other kernels), cached on disk. The dispatcher is typed as the function: mypy checks
     the calls' arguments and results against its annotations."""
-    return numba.njit(function, cache=True, nogil=True, error_model="numpy")
+    return numba.njit(function, cache=True, nogil=True, error_model="numpy", **_KERNEL_OPTIONS)
 
 
 def jit_plain(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:

@@ -84,7 +84,7 @@ def _cumulative_at(cumulative: np.ndarray, position: float, out: np.ndarray) -> 
         for j in range(cumulative.shape[1]):
             out[j] = 0.0
         return
-    seg = int(position)
+    seg = math.floor(position)  # >= 0: int()'s value, without compiling numba's int()
     if seg > n - 2:
         seg = n - 2
     frac = position - seg
@@ -104,7 +104,7 @@ def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, 
     contribution: the joints are taken deepest first."""
     nq = pair_levers.shape[1]
     n = cumulative.shape[0]
-    seg = int(position)
+    seg = math.floor(position)  # >= 0: int()'s value, without compiling numba's int()
     if seg > n - 2:
         seg = n - 2
     frac = position - seg
@@ -160,7 +160,8 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     else:
         _cumulative_at(cumulative, walk[k, _PL], c0)
         moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, s)
-        extends = moved <= max(walk[k, _DL] + d, margin)
+        reach = walk[k, _DL] + d
+        extends = moved <= (margin if margin > reach else reach)  # max(), as numba's
     if extends:                      # covered from the left: extends the stretch
         walk[k, _HAS_L] = 1.0
         walk[k, _PL] = s
@@ -178,7 +179,8 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
         _cumulative_at(cumulative, start, c0)
     if extends and walk[k, _HAS_R] != 0.0:
         moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, walk[k, _PR])
-        if moved <= max(walk[k, _DL] + walk[k, _DR], margin):
+        reach = walk[k, _DL] + walk[k, _DR]
+        if moved <= (margin if margin > reach else reach):
             walk[k, _HAS_R] = 0.0
             walk[k, _PL] = walk[k, _PR]
             walk[k, _DL] = walk[k, _DR]
@@ -191,13 +193,15 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     to_end = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, last)
     if walk[k, _HAS_R] != 0.0:
         # Fill the gap from the left: this step is covered whatever the distance there.
-        step = max(d_left, margin)
+        step = margin if margin > d_left else d_left
     else:
         if to_end <= d_left:
             schedule[0, k] = np.inf  # done: its distance cannot reach 0 before the end
             schedule[1, k] = np.inf
             return
-        step = max(d_left * (1.0 + gain), margin)
+        step = d_left * (1.0 + gain)
+        if margin > step:
+            step = margin
     # The next measurement: a path position after ``start`` where the pair's motion bound
     # from ``start`` (the left lever arms) is at most ``step`` (> 0), and close to the
     # furthest one: the last node where it is, then within that node's segment to
@@ -207,7 +211,7 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     if to_end <= step:
         due = float(last_node)
     else:
-        lo_node = int(start) + 1      # first node after start
+        lo_node = math.floor(start) + 1      # first node after start
         lo, f_lo = start, 0.0         # no motion yet
         if lo_node == last_node:      # the bound there is ``to_end``
             f_node = to_end
@@ -308,7 +312,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     s = settings[_S_AT]
     # First the exact distances the caller measured (if any): each unit whose pairs are all
     # in takes the least distance as its measurement.
-    count = int(settings[_S_PENDING])
+    count = math.floor(settings[_S_PENDING])
     settings[_S_PENDING] = 0.0
     for i in range(count):
         k = selected[i]
@@ -343,7 +347,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
                 picked[picks] = k
                 picks += 1
-        seg = int(s)
+        seg = math.floor(s)
         if seg > n - 2:
             seg = n - 2 if n >= 2 else 0
         frac = s - seg
@@ -387,7 +391,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                     frames[nj + b, _FR_PLACED] = np.inf if geometries[b].joint == 0 else stamp
                 gap = 0.0                          # their bounding spheres' distance
                 for c in range(3):
-                    gap += (frames[nj + a, _FR_CENTRE + c] - frames[nj + b, _FR_CENTRE + c]) ** 2
+                    offset = frames[nj + a, _FR_CENTRE + c] - frames[nj + b, _FR_CENTRE + c]
+                    gap += offset * offset
                 distances[m] = (math.sqrt(gap) - geometries[a].radius - geometries[b].radius
                                 - clearance)
                 if distances[m] < distances[nearest]:

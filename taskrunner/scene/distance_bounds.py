@@ -74,7 +74,8 @@ def _farthest_point_centre(points: np.ndarray, centre: np.ndarray, iterations: i
         for p in range(points.shape[0]):
             d = 0.0
             for a in range(3):
-                d += (points[p, a] - centre[a]) ** 2
+                offset = points[p, a] - centre[a]
+                d += offset * offset
             if d > best:
                 best, farthest = d, p
         if i == iterations:
@@ -145,7 +146,8 @@ def _lower_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, nj:
     ra, rb = nj + a, nj + b
     gap = 0.0
     for i in range(3):
-        gap += (frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]) ** 2
+        offset = frames[ra, _FR_CENTRE + i] - frames[rb, _FR_CENTRE + i]
+        gap += offset * offset
     best = math.sqrt(gap) - geometries[a].radius - geometries[b].radius
     if geometries[b].has_box != 0:
         value = _sphere_to_box(frames, ra, geometries[a].radius, b, geometries, nj)

@@ -412,7 +412,9 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
             gap = abs(b[i] - a[i])
             if gap > longest:
                 longest = gap
-        steps = max(1, math.ceil(longest / resolution))
+        steps = math.ceil(longest / resolution)
+        if steps < 1:  # max(1, steps), without compiling numba's max()
+            steps = 1
         if steps >= table.shape[0] or steps > rows.shape[0] or table[steps, 0] != 1.0:
             return -2, 0, steps
         fractions = table[steps]
@@ -480,7 +482,8 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
                     reach = ra + rb - PROVEN
                     gap = 0.0
                     for i in range(3):
-                        gap += (work[inner_a, _FR_CENTRE + i] - work[inner_b, _FR_CENTRE + i]) ** 2
+                        offset = work[inner_a, _FR_CENTRE + i] - work[inner_b, _FR_CENTRE + i]
+                        gap += offset * offset
                     proven = reach > 0.0 and gap < reach * reach
                 if (not proven and ra > 0.0 and gi[gb, _I_EXACT] != 0 and gi[gb, _I_BOX] != 0
                         and _sphere_to_box(work, inner_a, ra, gb, geometries, nj) < -PROVEN):
