@@ -177,9 +177,8 @@ class Wait:
 
     def describe(self, here: str | None) -> str:
         if self.kind == WaitKind.DELAY:
-            return (f"{here or 'this motion'} starts {self.until - self.since:.2f} s later, "
-                    f"to pass behind {self.other or 'the other arm'}: "
-                    f"{self.conflict.describe()}")
+            return (f"{here or 'this motion'} waits {self.until - self.since:.2f} s, to pass "
+                    f"behind {self.other or 'the other arm'}: {self.conflict.describe()}")
         return (f"{here or 'this motion'} waits {self.until - self.since:.2f} s, until "
                 f"{self.other or 'the other arm'} has moved: {self.conflict.describe()}")
 
