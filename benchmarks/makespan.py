@@ -18,7 +18,18 @@ benchmarks/makespan_tasks) are run on the mock backend, planning in-process, ``-
 The table gives the speed-up (sequential makespan / parallel makespan, target >= 1.6 on
 the two examples) and the planning overhead of a motion in the parallel task against a
 motion in the sequential one, whose motions are single-arm plans with nothing to verify
-against (target <= 2x). Prints a table, and with --json one JSON object as the last line.
+against (target <= 2x).
+
+With ``--generated N`` it also runs the first N generated two-arm tasks of the scenario
+suite (tests/scenarios/test_parallel_generated.py: each arm picks a cube near the table's
+middle and places it on its own side, in one ``parallel``) twice each, alternating: with
+the schedule's delays (a motion that would meet the other arm's running motion starts a
+little later, to pass behind it) and without (it waits for that motion's end,
+``MotionSchedule(delays=1)``). Per mode: runs succeeded, the sum and median of the
+makespans, the waits by resolution, and the arm-against-arm contacts the independent
+verifier finds on the records (target 0).
+
+Prints a table, and with --json one JSON object as the last line.
 """
 
 from __future__ import annotations
@@ -95,11 +106,72 @@ def bench_task(path: Path, runs: int, seed: int) -> dict:
     }
 
 
+def run_generated(seed: int, delays: int, runs_dir: Path) -> dict:
+    """One mock run of generated two-arm task ``seed`` with the schedule's ``delays``."""
+    sys.path.insert(0, str(ROOT / "tests" / "scenarios"))
+    from test_parallel_generated import generated_task
+
+    from taskrunner.backends.mock import MockBackend
+    from taskrunner.planning.service import InProcessPlanner
+    from taskrunner.robot.cell import load_cell
+    from taskrunner.runtime.runner import Runner, RunOptions
+    from taskrunner.tasks import load_task
+    from taskrunner.tree.expect import arm_conflicts
+
+    path = runs_dir / f"generated_{seed}.yaml"
+    path.write_text(generated_task(seed), encoding="utf-8")
+    spec = load_task(path, {})
+    cell = load_cell(spec.cell)
+    names = cell.model.joint_names
+    runner = Runner(spec, cell, MockBackend(names, dict(zip(names, cell.start_state()))),
+                    InProcessPlanner(), RunOptions(seed=seed, runs_dir=runs_dir))
+    runner.ctx.schedule.delays = delays
+    record = runner.run()
+    spans = [(float(e.data["start"]), float(e.data["start"])
+              + float(e.data["trajectory"]["duration"]))
+             for e in record.events if e.kind == "motion"]
+    waits: dict[str, int] = {}
+    for e in record.events:
+        if e.kind == "wait" and "resolution" in e.data:
+            waits[e.data["resolution"]] = waits.get(e.data["resolution"], 0) + 1
+    contacts = (len(arm_conflicts(runner.scene.robot, record.events))
+                if record.status == "succeeded" else 0)
+    return {"status": record.status, "waits": waits, "contacts": contacts,
+            "makespan_s": max(e for _, e in spans) - min(s for s, _ in spans) if spans else 0.0}
+
+
+def bench_generated(count: int) -> dict:
+    """The generated tasks with and without delays (module text)."""
+    from taskrunner.tree.schedule import DELAYS
+
+    found: dict[str, list[dict]] = {"delays": [], "until_end": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        run_generated(0, DELAYS, Path(tmp))  # warm-up
+        for seed in range(count):
+            found["delays"].append(run_generated(seed, DELAYS, Path(tmp)))
+            found["until_end"].append(run_generated(seed, 1, Path(tmp)))
+    out = {}
+    for mode, runs in found.items():
+        ok = [r["makespan_s"] for r in runs if r["status"] == "succeeded"]
+        waits: dict[str, int] = {}
+        for r in runs:
+            for kind, n in r["waits"].items():
+                waits[kind] = waits.get(kind, 0) + n
+        out[mode] = {"runs": len(runs), "succeeded": len(ok),
+                     "makespan_s_sum": round(sum(ok), 3),
+                     "makespan_s_median": round(statistics.median(ok), 3) if ok else None,
+                     "waits": waits, "contacts": sum(r["contacts"] for r in runs)}
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=3, help="runs of each task (3)")
     parser.add_argument("--seed", type=int, default=0, help="first planner seed (0)")
     parser.add_argument("--json", action="store_true", help="print one JSON line at the end")
+    parser.add_argument("--generated", type=int, default=0, metavar="N",
+                        help="also the first N generated two-arm tasks, with and without "
+                             "delays (0)")
     args = parser.parse_args(argv)
     rows = []
     for name, parallel, sequential in PAIRS:
@@ -127,8 +199,18 @@ def main(argv: list[str] | None = None) -> int:
               f"{row['planning_overhead'] or 0:>7.2f}x")
     print(f"targets: speed-up >= {SPEEDUP_TARGET}x on tray_pair and assembly_panda; planning "
           f"per motion <= {OVERHEAD_TARGET}x a single-arm plan")
+    generated = bench_generated(args.generated) if args.generated > 0 else None
+    if generated is not None:
+        print(f"\ngenerated two-arm tasks (seeds 0-{args.generated - 1}):")
+        print(f"{'schedule':<10} {'ok':>7} {'makespan sum s':>14} {'median s':>8} "
+              f"{'waits':<24} {'contacts':>8}")
+        for mode, g in generated.items():
+            waits = ", ".join(f"{k} {v}" for k, v in sorted(g["waits"].items())) or "-"
+            print(f"{mode:<10} {g['succeeded']:>3}/{g['runs']:<3} {g['makespan_s_sum']:>14.2f} "
+                  f"{g['makespan_s_median'] or 0:>8.2f} {waits:<24} {g['contacts']:>8}")
     if args.json:
-        print(json.dumps({"seed": args.seed, "runs": args.runs, "pairs": rows}))
+        print(json.dumps({"seed": args.seed, "runs": args.runs, "pairs": rows,
+                          "generated": generated}))
     return 0
 
 
