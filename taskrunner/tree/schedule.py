@@ -13,8 +13,9 @@ still runs, so that it passes behind the other arm (a *delay*: :data:`DELAYS` - 
 evenly spread before that motion's end are tried in order, the first that keeps the
 clearance from every other lane then brought earlier by halving, :data:`DELAY_REFINE`
 times); else when that motion has ended, verified again from there (and put off again
-if it then meets another). Either way the start committed is one that was verified. When the other arm *rests* in its way after the last motion
-its branch has committed, the motion is :class:`Blocked`: its leaf holds it, uncommitted,
+if it then meets another). Either way the start committed is one that was verified. When
+the other arm *rests* in its way after the last motion its branch has committed, the
+motion is :class:`Blocked`: its leaf holds it, uncommitted,
 until that branch commits its next motion (the arm may move away) and admits it again;
 when that branch has ended (its arm stays there) or holds for this one in turn (a
 deadlock), waiting cannot help and the step fails (:meth:`MotionSchedule.refusal`, a
