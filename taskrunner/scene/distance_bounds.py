@@ -170,38 +170,48 @@ def _support(g: int, dx: float, dy: float, dz: float, geometries: np.ndarray, fr
     """The point of geometry ``g``'s core (see ``_SHAPE_*``; without the radius it is
     grown by) furthest along the world direction ``(dx, dy, dz)``."""
     row = nj + g
+    # Its rotation read once (each array read is code numba compiles: the first
+    # compilation pays per read written, not per read run).
+    r0, r1, r2 = frames[row, 0], frames[row, 1], frames[row, 2]
+    r3, r4, r5 = frames[row, 3], frames[row, 4], frames[row, 5]
+    r6, r7, r8 = frames[row, 6], frames[row, 7], frames[row, 8]
     # The direction in the geometry's frame (its rotation's columns are its axes).
-    lx = frames[row, 0] * dx + frames[row, 3] * dy + frames[row, 6] * dz
-    ly = frames[row, 1] * dx + frames[row, 4] * dy + frames[row, 7] * dz
-    lz = frames[row, 2] * dx + frames[row, 5] * dy + frames[row, 8] * dz
+    lx = r0 * dx + r3 * dy + r6 * dz
+    ly = r1 * dx + r4 * dy + r7 * dz
+    lz = r2 * dx + r5 * dy + r8 * dz
     shape = geometries[g].shape
+    px = py = pz = 0.0
     if shape != _SHAPE_HULL:
-        px = py = pz = 0.0
+        half = geometries[g].half
         if shape == _SHAPE_BOX:
-            px = geometries[g].half[0] if lx >= 0.0 else -geometries[g].half[0]
-            py = geometries[g].half[1] if ly >= 0.0 else -geometries[g].half[1]
-            pz = geometries[g].half[2] if lz >= 0.0 else -geometries[g].half[2]
+            px, py, pz = half[0], half[1], half[2]
+            if not lx >= 0.0:
+                px = -px
+            if not ly >= 0.0:
+                py = -py
+            if not lz >= 0.0:
+                pz = -pz
         elif shape == _SHAPE_CYLINDER:
             radial = math.sqrt(lx * lx + ly * ly)
             if radial > 0.0:
-                px = geometries[g].half[0] * lx / radial
-                py = geometries[g].half[0] * ly / radial
-            pz = geometries[g].half[2] if lz >= 0.0 else -geometries[g].half[2]
+                px = half[0] * lx / radial
+                py = half[0] * ly / radial
+            pz = half[2]
+            if not lz >= 0.0:
+                pz = -pz
         ox, oy, oz = frames[row, _FR_BOX], frames[row, _FR_BOX + 1], frames[row, _FR_BOX + 2]
     else:
         first = geometries[g].first_point
         best = -np.inf
-        px = py = pz = 0.0
         for v in range(first, first + geometries[g].point_count):
             value = points[v, 0] * lx + points[v, 1] * ly + points[v, 2] * lz
             if value > best:
                 best = value
                 px, py, pz = points[v, 0], points[v, 1], points[v, 2]
-        ox, oy, oz = (frames[row, ORIGIN], frames[row, ORIGIN + 1],
-                      frames[row, ORIGIN + 2])
-    return (ox + frames[row, 0] * px + frames[row, 1] * py + frames[row, 2] * pz,
-            oy + frames[row, 3] * px + frames[row, 4] * py + frames[row, 5] * pz,
-            oz + frames[row, 6] * px + frames[row, 7] * py + frames[row, 8] * pz)
+        ox, oy, oz = frames[row, ORIGIN], frames[row, ORIGIN + 1], frames[row, ORIGIN + 2]
+    return (ox + r0 * px + r1 * py + r2 * pz,
+            oy + r3 * px + r4 * py + r5 * pz,
+            oz + r6 * px + r7 * py + r8 * pz)
 
 
 @inline
