@@ -64,7 +64,8 @@ _R = TypeVar("_R")
 # which its caller holds; counted, each call of a helper that does not get inlined by
 # LLVM paid an atomic increment and decrement per array argument (the state screen's
 # scan 6 % slower per state with them). (Options numba's typed signature of ``njit`` does
-# not list; it passes every keyword on to its compiler.)
+# not list; it passes every keyword on to its compiler.) No kernel has numba's C wrapper
+# either (``cfunc``: for passing a kernel as a function value, which no code does).
 _KERNEL_OPTIONS: dict[str, Any] = {"no_cfunc_wrapper": True}
 _PLAIN_OPTIONS: dict[str, Any] = {"_nrt": False, **_KERNEL_OPTIONS}
 _HELPER_OPTIONS: dict[str, Any] = {"no_cpython_wrapper": True, **_PLAIN_OPTIONS}
