@@ -14,8 +14,10 @@ Panda's ready pose to a random goal) and on the problems of ``benchmarks/plannin
 toppra trajectory sampled from each path (what ``timing`` verifies), plus straight lines
 through the plates (which must be rejected). Then it times
 :meth:`taskrunner.scene.path_verifier.PathVerifier.verify` on every one, interleaved with the
-verifier of git revision ``--baseline`` (loaded from ``git show REV:taskrunner/scene/sweep.py``;
-``--baseline none`` skips it), alternating which runs first, ``--repeats`` times each
+verifier of git revision ``--baseline`` if one is given (loaded from ``git show
+REV:taskrunner/scene/sweep.py``, so a revision from before the verifier was split into
+``scene/path_verifier.py`` and its kernels' modules; one without that file is refused, never
+skipped; the default ``none`` compares with nothing), alternating which runs first, ``--repeats`` times each
 (the fastest run counts). Margin 0.5 mm, as the planner's default.
 
 Every path the current verifier accepts is re-checked independently: the scene's boolean
@@ -100,12 +102,21 @@ DEFAULT_PROBLEMS = ("panda_table_pick", "panda_shelf", "panda_box", "panda_cage"
 
 
 def load_baseline(rev: str) -> Any:
-    """The ``sweep`` module of git revision ``rev`` (None if it cannot be read)."""
+    """The ``sweep`` module of git revision ``rev`` (the path verifier was that one module
+    until it was split into ``scene/path_verifier.py`` and its kernels' modules).
+
+    Raises:
+        SystemExit: ``rev`` has no ``taskrunner/scene/sweep.py`` (or git cannot read it):
+            a comparison asked for is never skipped silently.
+    """
     try:
         text = subprocess.run(["git", "-C", str(ROOT), "show", f"{rev}:taskrunner/scene/sweep.py"],
                               check=True, capture_output=True, text=True).stdout
-    except (OSError, subprocess.CalledProcessError):
-        return None
+    except (OSError, subprocess.CalledProcessError) as exc:
+        detail = getattr(exc, "stderr", "") or str(exc)
+        raise SystemExit(f"--baseline {rev}: cannot read taskrunner/scene/sweep.py there "
+                         f"({detail.strip()}); the baseline must be a revision whose path "
+                         f"verifier was that one module, or 'none'") from None
     folder = Path(tempfile.mkdtemp(prefix="verify_bench_"))
     path = folder / "sweep_baseline.py"
     path.write_text(text, encoding="utf-8")
@@ -285,9 +296,10 @@ def print_table(report: dict) -> None:
 def run_planning(args: argparse.Namespace) -> dict:
     """Whole ``plan`` calls, current verifier against the baseline's, interleaved."""
     problems = args.problems.split(",") if args.problems else list(DEFAULT_PROBLEMS)
+    if args.baseline == "none":
+        raise SystemExit("--planning needs --baseline REV (a revision whose path "
+                         "verifier was taskrunner/scene/sweep.py)")
     baseline = load_baseline(args.baseline)
-    if baseline is None:
-        raise SystemExit(f"cannot read taskrunner/scene/sweep.py at {args.baseline!r}")
     current = PathVerifier
     table = []
     for problem in planning_scenes.build_problems(5 if args.quick else 20, args.seed, problems):
@@ -430,9 +442,10 @@ def run_planner_paths(args: argparse.Namespace) -> dict:
     from taskrunner.robot import load_robot
     from taskrunner.scene import path_verifier as sweep
 
+    if args.baseline == "none":
+        raise SystemExit("--planning needs --baseline REV (a revision whose path "
+                         "verifier was taskrunner/scene/sweep.py)")
     baseline = load_baseline(args.baseline)
-    if baseline is None:
-        raise SystemExit(f"cannot read taskrunner/scene/sweep.py at {args.baseline!r}")
     modules = {"new": sweep, "old": baseline}
     folder = Path(args.planner_paths)
     robot = load_robot(DATA_ROOT / "robots" / "panda")
@@ -565,8 +578,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="fewer paths")
     parser.add_argument("--json", action="store_true", help="end with one JSON line")
     parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--baseline", default="6f9d59d",
-                        help="git revision of the verifier to compare with ('none': skip)")
+    parser.add_argument("--baseline", default="none",
+                        help="git revision of the verifier to compare with, one whose "
+                             "verifier was taskrunner/scene/sweep.py ('none', the default: "
+                             "no comparison)")
     parser.add_argument("--problems", help="comma-separated problems of planning_scenes")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--planning", action="store_true",
