@@ -128,6 +128,12 @@ class RobotGeometry:
         self._masks: dict[tuple[object, ...],
                           tuple[np.ndarray, tuple[tuple[int, int], ...], np.ndarray]] = {}
 
+    @property
+    def geometry_count(self) -> int:
+        """How many geometry objects the robot's links have (the first of every checker
+        built from this)."""
+        return len(self._body_of)
+
     def _pairs(self, bodies: Sequence[Body], allowed: Collection[frozenset[str]],
                body_of: Sequence[str], static: Sequence[bool]
                ) -> tuple[np.ndarray, tuple[tuple[int, int], ...], np.ndarray]:
@@ -217,6 +223,7 @@ class CollisionChecker:
         static += [body.static for body in bodies for _ in body.geometries]
         self._model = model
         self._body_of = body_of
+        self._robot = robot
         mask, self._pairs, self._pair_array = robot._pairs(bodies, allowed, body_of, static)
         self._joint_array: np.ndarray | None = None
         if len(body_of):
@@ -245,6 +252,12 @@ class CollisionChecker:
     def pair_count(self) -> int:
         """Number of geometry pairs checked (after allowances)."""
         return len(self._pairs)
+
+    @property
+    def robot_geometry(self) -> RobotGeometry:
+        """The robot's share of this checker: its geometry objects come first, the same
+        in every checker built from it."""
+        return self._robot
 
     @property
     def pair_geometries(self) -> np.ndarray:

@@ -75,8 +75,10 @@ import copy
 import math
 import threading
 import time
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -103,8 +105,11 @@ from taskrunner.scene.advancement import (
     _support_bounds,
     _walk,
 )
-from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker
-from taskrunner.scene.geometry_records import _Kinematics, _tree
+from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker, RobotGeometry
+from taskrunner.scene.geometry_records import _Kinematics, _Tree, _tree
+
+if TYPE_CHECKING:
+    import pinocchio as pin
 
 __all__ = ["CHEAP_FROM", "EXACT_FROM", "GAIN", "PathVerification", "PathVerifier", "full_states"]
 
@@ -193,23 +198,23 @@ class PathVerifier:
         self._geometry = checker.geometry_model
         tree = _tree(robot)
         self._tree = tree
-        records = [tree.record(obj) for obj in self._geometry.geometryObjects]
-        nq = robot.nq
-        count = len(records)
-        self._geometry_names = [r.name for r in records]
-        levers = np.array([r.levers for r in records]).reshape(count, nq)
-        geometries = np.zeros(count, dtype=GEOMETRY)
-        hulls = [r.points for r in records if r.points is not None]
-        self._points = np.ascontiguousarray(np.vstack(hulls)) if hulls else np.zeros((0, 3))
-        start = 0
-        for g, r in enumerate(records):
-            geometries[g] = r.geometry
-            if r.points is not None:
-                geometries["first_point"][g] = start
-                geometries["point_count"][g] = len(r.points)
-                start += len(r.points)
+        # The robot's links' rows are the same in every checker built from its geometry:
+        # kept with it; only the scene's objects' rows are built here.
+        part = checker.robot_geometry
+        links = _LINK_ROWS.get(part)
+        objects = self._geometry.geometryObjects
+        if links is None or links.tree is not tree:
+            links = _LINK_ROWS[part] = _rows(tree, [objects[g]
+                                                    for g in range(part.geometry_count)])
+        rest = _rows(tree, [objects[g] for g in range(part.geometry_count, len(objects))])
+        self._geometry_names = links.names + rest.names
+        self._levers = np.vstack([links.levers, rest.levers])
+        geometries = np.concatenate([links.geometries, rest.geometries])
+        hulled = geometries["point_count"] > 0
+        geometries["first_point"][len(links.names):] += len(links.points)
+        geometries["first_point"][~hulled] = 0
+        self._points = np.ascontiguousarray(np.vstack([links.points, rest.points]))
         self._geometries = geometries
-        self._levers = levers
         self._every = checker.pair_geometries
         self._kinematics = _Kinematics(tree, self._geometries)
         self._use_pairs(np.arange(len(self._every), dtype=np.int64) if pairs is None
@@ -428,6 +433,40 @@ class PathVerifier:
                 np.zeros(n_units, dtype=np.int64), np.zeros(n_pairs, dtype=np.int64),
                 np.zeros(n_pairs), np.zeros(nq), np.zeros(nq), self._kinematics.buffer(),
                 np.zeros(_S_COUNT))
+
+
+@dataclass(frozen=True)
+class _Rows:
+    """Geometry rows of some geometry objects: names, lever arms ``(n, nq)``, records
+    (:data:`GEOMETRY`, ``first_point`` into ``points``) and hull points ``(m, 3)``."""
+
+    tree: object
+    names: list[str]
+    levers: np.ndarray
+    geometries: np.ndarray
+    points: np.ndarray
+
+
+# Per robot geometry (immutable once built; kept while it lives): its links' rows.
+_LINK_ROWS: weakref.WeakKeyDictionary[RobotGeometry, _Rows] = weakref.WeakKeyDictionary()
+
+
+def _rows(tree: _Tree, objects: list[pin.GeometryObject]) -> _Rows:
+    """The rows of ``objects`` (:meth:`_Tree.record` of each)."""
+    records = [tree.record(obj) for obj in objects]
+    geometries = np.zeros(len(records), dtype=GEOMETRY)
+    hulls = []
+    start = 0
+    for g, r in enumerate(records):
+        geometries[g] = r.geometry
+        if r.points is not None:
+            geometries["first_point"][g] = start
+            geometries["point_count"][g] = len(r.points)
+            start += len(r.points)
+            hulls.append(r.points)
+    levers = np.array([r.levers for r in records]).reshape(len(records), tree.nq)
+    return _Rows(tree, [r.name for r in records], levers, geometries,
+                 np.vstack(hulls) if hulls else np.zeros((0, 3)))
 
 
 def full_states(states: np.ndarray, nq: int) -> np.ndarray:
