@@ -22,6 +22,7 @@ from taskrunner.kinds import (
     NodeStatus,
     RunStatus,
     StopReason,
+    WaitKind,
 )
 from taskrunner.robot import description
 from taskrunner.robot.cell import RobotSpec
@@ -61,6 +62,7 @@ def test_the_values_are_those_records_and_scripts_already_hold():
         "INVALID": "INVALID", "CANCELLED": "CANCELLED"}.items()
     assert _members(CollisionChoice).items() >= {
         "EXACT": "exact", "CONVEX": "convex", "AUTO": "auto"}.items()
+    assert _members(WaitKind).items() >= {"DELAY": "delay", "UNTIL_END": "until_end"}.items()
 
 
 def test_every_user_takes_its_kinds_from_the_enums():
