@@ -48,12 +48,18 @@ from taskrunner.collision.collector_pause import pause_collector_while_compiling
 
 pause_collector_while_compiling()  # a first compilation 15-18 % less CPU (see the module)
 
-__all__ = ["AXIS", "FRAME_COLUMNS", "ORIGIN", "ROTATION", "compose", "forward_kinematics",
-           "inline", "jit", "jit_plain", "joint_frames"]
+__all__ = ["AXIS", "FRAME_COLUMNS", "ORIGIN", "ROTATION", "ZERO", "compose",
+           "forward_kinematics", "inline", "jit", "jit_plain", "joint_frames"]
 
 ROTATION, ORIGIN, AXIS = 0, 9, 12
 """Columns of a frame row: rotation (9, row-major), origin (3, m), a joint's axis (3)."""
 FRAME_COLUMNS = 15
+ZERO = np.int64(0)
+"""The kernels' start of a count that a loop raises: typed ``int64`` from the start. A
+literal ``0`` is typed ``Literal[int](0)`` and only widened to ``int64`` once the loop's
+back edge is typed, which costs numba's type inference one more pass over the whole kernel
+per loop level (every pass resolves every operation of the kernel again: about 50 ms of
+first compilation per pass over the path verifier's walk)."""
 
 _P = ParamSpec("_P")
 _R = TypeVar("_R")

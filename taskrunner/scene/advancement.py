@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from taskrunner.collision.frames import AXIS, ORIGIN, inline, jit, jit_plain, joint_frames
+from taskrunner.collision.frames import AXIS, ORIGIN, ZERO, inline, jit, jit_plain, joint_frames
 from taskrunner.scene.distance_bounds import (
     _FR_CENTRE,
     _FR_PLACED,
@@ -341,7 +341,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                 s = due[k]
         if s == np.inf:
             return 0
-        picks = 0
+        picks = ZERO
         for k in range(walk.shape[0]):
             # Measuring early (after the last measurement) is always sound.
             if due[k] <= s or (early_at[k] <= s and walk[k, _PL] < s and walk[k, _HAS_L] != 0.0):
@@ -361,11 +361,11 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             joint_frames(q, joints, frames)
             settings[_S_STATES] += 1.0
         stamp = settings[_S_STATES]
-        exact = 0
+        exact = ZERO
         for i in range(picks):
             u = picked[i]
             least = np.inf
-            pending = 0
+            pending = ZERO
             first, last = unit_from[u], unit_from[u + 1]
             if not per_state:
                 for m in range(first, last):

@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from taskrunner.collision import frames as collision_frames
-from taskrunner.collision.frames import ORIGIN, jit_plain, joint_frames
+from taskrunner.collision.frames import ORIGIN, ZERO, jit_plain, joint_frames
 from taskrunner.errors import ArgumentError
 from taskrunner.resources import user_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
@@ -441,7 +441,7 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
                                                 + work[jid, 3 * i] * geo[g, _G_CENTRE]
                                                 + work[jid, 3 * i + 1] * geo[g, _G_CENTRE + 1]
                                                 + work[jid, 3 * i + 2] * geo[g, _G_CENTRE + 2])
-        count = 0
+        count = ZERO
         for k in range(pairs.shape[0]):
             ga, gb = pairs[k, 0], pairs[k, 1]
             row_a, row_b = nj + ga, nj + gb
