@@ -124,6 +124,14 @@ class _Tree(KinematicTree):
             if vertices.ndim == 2 and vertices.shape[1] == 3 and len(vertices) \
                     and np.isfinite(vertices).all():
                 shape, points = _SHAPE_HULL, np.ascontiguousarray(vertices)
+        elif isinstance(geometry, coal.BVHModelBase) and swept == 0.0 \
+                and 0 < geometry.num_vertices <= _MESH_VERTICES:
+            # A mesh (checked as its triangles) lies in the convex hull of its vertices,
+            # and a point set's support function is its hull's: the hull's separation from
+            # another shape is a lower bound on the mesh's distance to it.
+            hull = _hull_vertices(np.asarray(geometry.vertices(), dtype=float))
+            if hull is not None and len(hull) <= _MESH_HULL_POINTS:
+                shape, points = _SHAPE_HULL, hull
         row["swept"] = swept if math.isfinite(swept) and swept >= 0.0 else 0.0
         if not (math.isfinite(swept) and swept >= 0.0):
             shape = _SHAPE_NONE
@@ -149,6 +157,29 @@ def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:
     if kind is coal.Cylinder or kind is coal.Capsule or kind is coal.Cone:
         return (float(geometry.radius), float(geometry.halfLength))
     return None
+
+
+# A mesh whose vertices' hull has more vertices than this is left to coal: the kernels'
+# support function visits every vertex (a scanned part of 100k triangles: coal's BVH).
+_MESH_HULL_POINTS = 1024
+# Nor is the hull of a mesh of more vertices than this computed (a scene object's rows are
+# built at each scene revision; a link's once per robot).
+_MESH_VERTICES = 50_000
+
+
+def _hull_vertices(vertices: np.ndarray) -> np.ndarray | None:
+    """The vertices of the convex hull of ``vertices`` (``(n, 3)``; all of them where the
+    hull is flat or degenerate: the same support function), or None for no finite point."""
+    if vertices.ndim != 2 or vertices.shape[1] != 3 or not len(vertices) \
+            or not np.isfinite(vertices).all():
+        return None
+    from scipy.spatial import ConvexHull, QhullError  # only where a mesh is verified
+
+    try:
+        kept = vertices[ConvexHull(vertices).vertices]
+    except (QhullError, ValueError):  # flat, or fewer than 4 points: all of them serve
+        kept = vertices
+    return np.ascontiguousarray(kept)
 
 
 # Per robot model (by identity; the model is not hashable): a weak reference and its tree.

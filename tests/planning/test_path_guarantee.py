@@ -399,3 +399,50 @@ def test_verifier_names_a_bad_state(panda_model):
     with pytest.raises(ValueError, match=r"\(n, 9\)"):
         verifier.verify(states[:, :4])
     assert verifier.verify(scene.state[None, :]).valid   # a single state: checked there
+
+
+def test_a_mesh_link_s_hull_bounds_never_exceed_coal_s_mesh_distance():
+    # UR5 with the Robotiq 2F-85's collision meshes, checked as meshes (`exact`): each
+    # mesh's support bound is its vertices' hull's, a lower bound on the mesh's distance
+    # (the mesh lies in that hull); coal measures the meshes themselves.
+    from pathlib import Path
+
+    import coal
+
+    from taskrunner.robot import load_robot
+    from taskrunner.scene import SceneOptions
+    from taskrunner.shapes import Cylinder, Sphere
+
+    fixtures = Path(__file__).resolve().parents[1] / "fixtures"
+    model = load_robot(fixtures / "motionbenchmaker" / "ur5_robotiq")
+    rng = np.random.default_rng(5)
+    scene = Scene(model, SceneOptions(collision="exact"))
+    for i in range(9):
+        size = rng.uniform(0.02, 0.3, 3)
+        shape = (Box(tuple(size)), Cylinder(size[0] / 2, size[2]), Sphere(size[1] / 2))[i % 3]
+        centre = np.array([rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), rng.uniform(-0.2, 0.9)])
+        scene.add_object(f"object{i}", shape, Pose.from_se3(pin.SE3(
+            pin.rpy.rpyToMatrix(*rng.uniform(-np.pi, np.pi, 3)), centre)))
+    robot = scene.robot
+    verifier = PathVerifier(robot, scene.checker)
+    geometry = scene.checker.geometry_model
+    meshes = {g for g, obj in enumerate(geometry.geometryObjects)
+              if isinstance(obj.geometry, coal.BVHModelBase)}
+    assert len(meshes) >= 5  # the arm's links and the gripper's
+    pairs = np.array([(p.first, p.second) for p in geometry.collisionPairs])
+    with_mesh = np.isin(pairs[:, 0], list(meshes)) | np.isin(pairs[:, 1], list(meshes))
+    data, geometry_data = robot.model.createData(), geometry.createData()
+    supported = near = useful = 0
+    for _ in range(40):
+        q = robot.random_state(rng)
+        bounds = verifier.support_bounds(q)
+        pin.computeDistances(robot.model, data, geometry, geometry_data, robot.to_pin(q))
+        exact = np.array([r.min_distance for r in geometry_data.distanceResults])
+        finite = np.isfinite(bounds) & with_mesh
+        supported += int(finite.sum())
+        assert np.all(bounds[finite] <= exact[finite] + 1e-9)
+        close = finite & (exact > 0.0) & (exact < 0.05)
+        near += int(close.sum())
+        useful += int(np.sum(bounds[close] >= 0.5 * exact[close]))
+    assert supported > 1000 and near > 20
+    assert useful > 0.3 * near  # the hull stands close to the mesh where it matters
