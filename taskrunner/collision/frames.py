@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable
-from typing import Any, ParamSpec, TypeVar
+from typing import Any, ParamSpec, TypeVar, cast
 
 import numpy as np
 
@@ -54,7 +54,7 @@ __all__ = ["AXIS", "FRAME_COLUMNS", "ORIGIN", "ROTATION", "ZERO", "compose",
 ROTATION, ORIGIN, AXIS = 0, 9, 12
 """Columns of a frame row: rotation (9, row-major), origin (3, m), a joint's axis (3)."""
 FRAME_COLUMNS = 15
-ZERO = np.int64(0)
+ZERO = cast(int, np.int64(0))  # an int to the kernels' annotations
 """The kernels' start of a count that a loop raises: typed ``int64`` from the start. A
 literal ``0`` is typed ``Literal[int](0)`` and only widened to ``int64`` once the loop's
 back edge is typed, which costs numba's type inference one more pass over the whole kernel
