@@ -235,62 +235,61 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
     swept = geometries[a].swept + geometries[b].swept
     best = -np.inf
     vx = vy = vz = 0.0
-    length = 0.0
     # The offset of the bounding spheres' centres, from A to B.
     nx = frames[rb, _FR_CENTRE] - frames[ra, _FR_CENTRE]
     ny = frames[rb, _FR_CENTRE + 1] - frames[ra, _FR_CENTRE + 1]
     nz = frames[rb, _FR_CENTRE + 2] - frames[ra, _FR_CENTRE + 2]
-    # One loop over every direction, each written once (the first compilation pays per
-    # line written): first 3 x 4 candidates, by side (A's, B's, the offset) and axis: face
-    # normals of the boxes, a cylinder's axis and the direction away from it towards the
-    # other's centre (all pointing from A to B), and the offset itself; then Gilbert's steps.
-    for step in range(12 + _SUPPORT_STEPS):
-        side, axis = step // 4, step % 4
-        if step >= 12:
-            # Gilbert: v, a point of B - A (its norm: at least the distance), moves towards
-            # the origin's nearest; the directions v/|v|.
-            length = math.sqrt(vx * vx + vy * vy + vz * vz)
-            if not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length:
-                break
-            ux, uy, uz = vx / length, vy / length, vz / length
-        elif side < 2:
-            if axis == 3:
-                continue
-            owner = ra if side == 0 else rb
-            shape = geometries[owner - nj].shape
-            if shape == _SHAPE_CYLINDER and axis < 2:
-                ux, uy, uz = frames[owner, 2], frames[owner, 5], frames[owner, 8]
-                if axis == 1:     # the offset less its part along the axis
-                    along = ux * nx + uy * ny + uz * nz
-                    ux, uy, uz = nx - along * ux, ny - along * uy, nz - along * uz
-                    length = math.sqrt(ux * ux + uy * uy + uz * uz)
-                    if not length > 0.0:
-                        continue
-                    ux, uy, uz = ux / length, uy / length, uz / length
-            elif shape == _SHAPE_BOX:
-                ux, uy, uz = frames[owner, axis], frames[owner, 3 + axis], frames[owner, 6 + axis]
+    # Face normals of the boxes, a cylinder's axis and the direction away from it towards
+    # the other's centre (all pointing from A to B), and the offset itself.
+    for side in range(3):
+        for axis in range(4):
+            if side < 2:
+                if axis == 3:
+                    continue
+                owner = ra if side == 0 else rb
+                shape = geometries[owner - nj].shape
+                if shape == _SHAPE_CYLINDER and axis < 2:
+                    ux, uy, uz = frames[owner, 2], frames[owner, 5], frames[owner, 8]
+                    if axis == 1:     # the offset less its part along the axis
+                        along = ux * nx + uy * ny + uz * nz
+                        ux, uy, uz = nx - along * ux, ny - along * uy, nz - along * uz
+                        length = math.sqrt(ux * ux + uy * uy + uz * uz)
+                        if not length > 0.0:
+                            continue
+                        ux, uy, uz = ux / length, uy / length, uz / length
+                elif shape == _SHAPE_BOX:
+                    ux, uy, uz = frames[owner, axis], frames[owner, 3 + axis], frames[owner, 6 + axis]
+                else:
+                    continue
+                if ux * nx + uy * ny + uz * nz < 0.0:
+                    ux, uy, uz = -ux, -uy, -uz
             else:
-                continue
-            if ux * nx + uy * ny + uz * nz < 0.0:
-                ux, uy, uz = -ux, -uy, -uz
-        else:
-            if axis > 0:
-                continue
-            length = math.sqrt(nx * nx + ny * ny + nz * nz)
-            if not length > 0.0:
-                continue
-            ux, uy, uz = nx / length, ny / length, nz / length
-        # Separation along u: min over B of u.b - max over A of u.a.
+                if axis > 0:
+                    break
+                length = math.sqrt(nx * nx + ny * ny + nz * nz)
+                if not length > 0.0:
+                    continue
+                ux, uy, uz = nx / length, ny / length, nz / length
+            # Separation along u: min over B of u.b - max over A of u.a.
+            ax, ay, az = _support(a, ux, uy, uz, geometries, frames, points, nj)
+            bx, by, bz = _support(b, -ux, -uy, -uz, geometries, frames, points, nj)
+            gap = (bx - ax) * ux + (by - ay) * uy + (bz - az) * uz
+            if gap > best:
+                best = gap
+                vx, vy, vz = bx - ax, by - ay, bz - az      # a point of B - A
+    # Gilbert: v, a point of B - A (its norm: at least the distance), moves towards the
+    # origin's nearest; the directions v/|v|.
+    for _ in range(_SUPPORT_STEPS):
+        length = math.sqrt(vx * vx + vy * vy + vz * vz)
+        if not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length:
+            break
+        ux, uy, uz = vx / length, vy / length, vz / length
         ax, ay, az = _support(a, ux, uy, uz, geometries, frames, points, nj)
         bx, by, bz = _support(b, -ux, -uy, -uz, geometries, frames, points, nj)
-        wx, wy, wz = bx - ax, by - ay, bz - az      # a point of B - A
+        wx, wy, wz = bx - ax, by - ay, bz - az
         gap = wx * ux + wy * uy + wz * uz
         if gap > best:
             best = gap
-            if step < 12:
-                vx, vy, vz = wx, wy, wz
-        if step < 12:
-            continue
         if length - gap <= _SUPPORT_TOLERANCE * length:
             break
         # The point of the segment [v, w] nearest the origin.
