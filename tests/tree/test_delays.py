@@ -6,38 +6,25 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
+from schedule_helpers import CANDLE, LEFT, RIGHT, P, line, pair_scene
 
 from taskrunner.backends.mock import MockBackend
 from taskrunner.collision.spacetime import Lane, SpacetimeOptions, TimedMotion, verify_lanes
 from taskrunner.kinds import WaitKind
 from taskrunner.planning.service import InProcessPlanner
-from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.runtime.runner import Runner, RunOptions
-from taskrunner.scene import scene_from_cell
 from taskrunner.tasks import load_task
 from taskrunner.tree.expect import arm_conflicts
 from taskrunner.tree.schedule import CLEARANCE, Admission, MotionSchedule, lanes_of
-from taskrunner.types import JointTrajectory
 
-P = [1.5708, -0.7, -0.9, -0.6, -1.5708]  # reaching to the middle: the two arms overlap there
-CANDLE = [1.5708, -1.5708, -1.5708, -1.5708, -1.5708]
-LEFT, RIGHT = ((1, 0),), ((1, 1),)
 HANDOFF_OVERLAP = Path(__file__).parent / "fixtures" / "handoff_overlap.yaml"
 
 
 @pytest.fixture(scope="module")
 def scene():
-    return scene_from_cell(load_cell(DATA_ROOT / "robots/cells/servo_arm_pair.yaml"))
-
-
-def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> JointTrajectory:
-    times = np.linspace(0.0, duration, 21)
-    rows = np.array([np.add(a, s * np.subtract(b, a)) for s in np.linspace(0.0, 1.0, 21)])
-    return JointTrajectory(tuple(f"{side}_Revolute {i}" for i in range(1, 6)), times, rows,
-                           np.zeros_like(rows), np.zeros_like(rows))
+    return pair_scene()
 
 
 def left_reach(scene, delays: int) -> tuple[MotionSchedule, Admission]:

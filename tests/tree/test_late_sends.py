@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
+from schedule_helpers import CANDLE, LEFT, RIGHT, P, line, pair_scene
 
 from taskrunner.backends.mock import MockBackend, MockOptions
 from taskrunner.collision.spacetime import Lane, TimedMotion, verify_lanes
@@ -27,7 +27,6 @@ from taskrunner.tasks import load_task
 from taskrunner.tree.clock import TaskClock
 from taskrunner.tree.expect import arm_conflicts
 from taskrunner.tree.schedule import LATE, Admission, MotionSchedule
-from taskrunner.types import JointTrajectory
 
 TRAY_PAIR = DATA_ROOT / "tasks" / "tray_pair.yaml"
 SPEED = 20.0  # trajectory seconds per (fake) wall second: one 10 ms tick is 0.2 s of task time
@@ -125,21 +124,9 @@ def test_a_motion_started_late_is_verified_at_its_real_start_never_sent_unverifi
 
 
 # ------------------------------------------------------------------ the rule on its own
-P = [1.5708, -0.7, -0.9, -0.6, -1.5708]  # reaching to the middle: the two arms overlap there
-CANDLE = [1.5708, -1.5708, -1.5708, -1.5708, -1.5708]
-LEFT, RIGHT = ((1, 0),), ((1, 1),)
-
-
 @pytest.fixture(scope="module")
 def scene():
-    return scene_from_cell(load_cell(DATA_ROOT / "robots/cells/servo_arm_pair.yaml"))
-
-
-def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> JointTrajectory:
-    times = np.linspace(0.0, duration, 21)
-    rows = np.array([np.add(a, s * np.subtract(b, a)) for s in np.linspace(0.0, 1.0, 21)])
-    return JointTrajectory(tuple(f"{side}_Revolute {i}" for i in range(1, 6)), times, rows,
-                           np.zeros_like(rows), np.zeros_like(rows))
+    return pair_scene()
 
 
 def in_and_out(scene) -> tuple[MotionSchedule, Admission, Admission, Admission]:

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
+from schedule_helpers import CANDLE, LEFT, RIGHT, P, line, pair_scene
 
 from taskrunner.backends.mock import MockBackend
 from taskrunner.planning.service import InProcessPlanner
@@ -17,7 +17,6 @@ from taskrunner.tasks import load_task
 from taskrunner.tree.check import check_task
 from taskrunner.tree.expect import arm_conflicts
 from taskrunner.tree.schedule import Admission, Blocked, MotionSchedule, concurrent
-from taskrunner.types import JointTrajectory
 
 FIXTURES = Path(__file__).parent / "fixtures"
 PROBE = Path(__file__).parents[1] / "scenarios" / "fixtures" / "meet_in_the_middle.yaml"
@@ -77,24 +76,9 @@ def test_a_run_of_the_blocked_task_never_succeeds_with_the_arms_in_each_other(tm
 
 
 # ------------------------------------------------------------------ the rule on its own
-P = [1.5708, -0.7, -0.9, -0.6, -1.5708]  # reaching to the middle: the two arms overlap there
-CANDLE = [1.5708, -1.5708, -1.5708, -1.5708, -1.5708]
-LEFT, RIGHT = ((1, 0),), ((1, 1),)
-
-
 @pytest.fixture(scope="module")
 def scene():
-    from taskrunner.resources import DATA_ROOT
-    from taskrunner.scene import scene_from_cell
-
-    return scene_from_cell(load_cell(DATA_ROOT / "robots/cells/servo_arm_pair.yaml"))
-
-
-def line(side: str, a: list[float], b: list[float], duration: float = 2.0) -> JointTrajectory:
-    times = np.linspace(0.0, duration, 21)
-    rows = np.array([np.add(a, s * np.subtract(b, a)) for s in np.linspace(0.0, 1.0, 21)])
-    return JointTrajectory(tuple(f"{side}_Revolute {i}" for i in range(1, 6)), times, rows,
-                           np.zeros_like(rows), np.zeros_like(rows))
+    return pair_scene()
 
 
 def test_a_motion_that_would_meet_a_running_one_waits_for_its_end(scene):
