@@ -22,7 +22,10 @@ that move one body and not the other, times how far they turn) stays below
 coal's exact signed distance through the scene's
 :class:`~taskrunner.scene.collision.CollisionChecker`. A pair measured closer than the
 clearance is a :class:`Conflict`, moved back by bisection on exact distances to within
-:data:`TIME_TOLERANCE` of where its distance first drops below the clearance. Between
+:data:`TIME_TOLERANCE` of where its distance first drops below the clearance (a contact
+found with the walk's optimistic steps is first walked again up to there without them,
+which proves every pair clear up to where it has come: the conflict is the first in
+time). Between
 measurements the verifier lets bodies come at most half its margin (1 µm) closer than it
 proves: the clearance it is given is larger by that much, so that the lanes' bodies are
 never closer than ``clearance``. The walk always advances (its steps are at least the
