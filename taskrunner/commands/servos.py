@@ -21,8 +21,9 @@ __all__ = ["cmd_bus_sim", "cmd_firmware_sim", "cmd_hw"]
 def cmd_firmware_sim(args: argparse.Namespace) -> int:
     """Build the host firmware, start it, pass its two address lines through.
 
-    SIGTERM is passed on to the firmware process (Ctrl-C reaches it from the terminal);
-    this command ends when it has: no firmware is left behind. Exit code: the firmware's,
+    SIGTERM and SIGINT are passed on to the firmware process (Ctrl-C also reaches it from
+    the terminal); this command ends when it has (killing it after 5 s more of a SIGINT):
+    no firmware is left behind. Exit code: the firmware's,
     128 + N when a signal N ended it.
     """
     import signal
@@ -56,7 +57,11 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
             try:
                 code = process.wait()
                 break
-            except KeyboardInterrupt:  # the firmware had its own SIGINT: give it a moment
+            except KeyboardInterrupt:
+                # From a terminal the firmware had its own SIGINT; sent to this process
+                # alone (`kill -INT`), it had not: passed on, then a moment to end.
+                if process.poll() is None:
+                    process.send_signal(signal.SIGINT)
                 try:
                     code = process.wait(5)
                 except subprocess.TimeoutExpired:

@@ -96,12 +96,18 @@ def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
     proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
                              "--speedup", "10"], stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, cwd=ROOT)
+    firmware = None
     try:
         pty, url = read_address_lines(proc, timeout=20.0)
         assert pty.startswith("/dev/pts/") and url.startswith("http://127.0.0.1:")
         assert status(url)["status"] == "ok"
+        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
+        assert len(children) == 1
+        firmware = int(children[0])
     finally:
-        stop_process(proc, signal.SIGINT)
+        stop_process(proc, signal.SIGINT)  # to the command alone, as `kill -INT PID` does
+    # It passed the SIGINT on: no firmware is left behind.
+    assert firmware is not None and not Path(f"/proc/{firmware}").exists()
 
 
 PAIR_BOARD = [0, 1, 2, 3, 4, 5, 8, 9, 10, 11, 12, 13]  # cells/servo_arm_pair.hardware.yaml
