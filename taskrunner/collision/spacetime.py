@@ -197,7 +197,7 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     if timeline.empty:
         return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
     walk = _Walk(scene, timeline, options)
-    conflict = walk.run(options.exact)
+    conflict = walk.run()
     return SpacetimeVerification(conflict, walk.least, walk.least_pair, walk.least_time,
                                  walk.queries, time.perf_counter() - started)
 
@@ -260,7 +260,7 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
         walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance, exact=True))
         if not walk.pairs:
             break
-        conflict = walk.run(exact=True)
+        conflict = walk.run()
         queries += walk.queries
         if best is None or walk.least < best.least:
             best = walk
@@ -451,16 +451,17 @@ class _Walk:
         """The body of geometry ``g`` (its link's name, or the object's)."""
         return _body_name(self.checker.geometry_model.geometryObjects[g], self.model.model)
 
-    def run(self, exact: bool = False) -> Conflict | None:
-        """Walk the pairs over the timeline: the first conflict, or None. ``exact``: every
-        measurement is coal's distance (else far pairs take cheap lower bounds), so that
-        :attr:`least` is the least distance measured."""
+    def run(self) -> Conflict | None:
+        """Walk the pairs over the timeline: the first conflict, or None. With the
+        options' ``exact``, every measurement is coal's distance (else far pairs take
+        cheap lower bounds), so that :attr:`least` is the least distance measured."""
         if not self.pairs:
             return None
         verifier = self.scene.pair_verifier(self.pair_ids)
         # Between measurements the verifier lets bodies grown by the clearance overlap by
         # at most half its margin: grown by that much more, they keep the clearance.
         clearance = self.options.clearance + 0.5 * verifier.margin
+        exact = self.options.exact
         found = verifier.verify(self.timeline.states, clearance, exact, self._observe)
         queries = found.distance_queries
         if not found.valid and found.fraction is not None:

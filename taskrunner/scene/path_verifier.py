@@ -278,18 +278,6 @@ class PathVerifier:
         self._buffers = self._new_buffers()
 
     @property
-    def checker_pairs(self) -> np.ndarray:
-        """``(n, 2)``: the two geometries (indices into the checker's geometry objects) of
-        each of the checker's collision pairs, all of them (also those not verified)."""
-        return self._every
-
-    @property
-    def geometry_joints(self) -> np.ndarray:
-        """Per geometry of the checker, the pinocchio joint that carries it (0: the
-        world)."""
-        return self._geometries["joint"]
-
-    @property
     def pair_levers(self) -> np.ndarray:
         """``(n_pairs, nq)``: how far each joint can move one body of a pair relative to
         the other (m/rad, m/m), per unit of joint motion, anywhere (at full reach)."""
