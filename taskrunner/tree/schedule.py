@@ -532,7 +532,7 @@ class MotionSchedule:
         start = max(self.earliest(lane), now)
         others = [c for c in self.committed if concurrent(c.lane, lane)]
         waits: list[Wait] = []
-        queries, seconds = [0], [0.0]  # of every verification
+        queries, seconds = 0, 0.0  # of every verification
         options = SpacetimeOptions(clearance=self.clearance)
         # The lane's earlier motions too: where they left the joints this one holds.
         before = tuple(c.motion for c in self.committed if c.lane == lane)
@@ -540,6 +540,7 @@ class MotionSchedule:
         def verify(at: float) -> SpacetimeVerification:
             """The motion started at ``at`` against the others, from then on (from
             ``since`` if earlier)."""
+            nonlocal queries, seconds
             mine = TimedMotion(trajectory, at, location)
             lanes = [Lane("this motion", (*before, mine))] + lanes_of(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
@@ -549,8 +550,8 @@ class MotionSchedule:
             except InvalidStateError as exc:
                 raise ScheduleConflictError(f"cannot run beside the other branches: "
                                             f"{exc}") from None
-            queries[0] += found.distance_queries
-            seconds[0] += found.seconds
+            queries += found.distance_queries
+            seconds += found.seconds
             return found
 
         least = math.inf
@@ -591,7 +592,7 @@ class MotionSchedule:
         self.committed.append(entry)
         self.waits += [(location, wait) for wait in waits]
         self._changes += 1
-        return Admission(start, tuple(waits), queries[0], seconds[0], least, entry)
+        return Admission(start, tuple(waits), queries, seconds, least, entry)
 
     def _delay(self, verify: Callable[[float], SpacetimeVerification], start: float,
                end: float) -> tuple[float, SpacetimeVerification] | None:
