@@ -258,7 +258,7 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
     clearance, lower = 0.0, -math.inf
     while not timeline.empty:
         walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance, exact=True))
-        if not walk.pairs:
+        if not walk.pair_count:
             break
         conflict = walk.run()
         queries += walk.queries
@@ -279,7 +279,7 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
     if best is None or best.least_index is None:
         return LeastClearance(math.inf, math.inf, None, None, (None, None), None, queries,
                               time.perf_counter() - started)
-    _, a, b = best.pairs[best.least_index]
+    a, b = best.bodies(best.least_index)
     owners = (int(best.owner[a]), int(best.owner[b]))
     at = float(best.least_time or 0.0)
     return LeastClearance(best.least, lower, best.least_pair, at,
@@ -298,6 +298,8 @@ class _Timeline:
         self.lanes = list(lanes)
         self.columns: list[np.ndarray] = []
         seen: dict[str, str] = {}
+        # Per lane, its motions in time order, each with its joints' state columns.
+        placed: list[list[tuple[TimedMotion, np.ndarray]]] = []
         for lane in self.lanes:
             names = sorted({n for m in lane.motions for n in m.trajectory.names})
             for name in names:
@@ -314,6 +316,7 @@ class _Timeline:
                                             f"({a.end:.3f} s)")
             self.columns.append(model.indices(tuple(names)) if names else
                                 np.zeros(0, dtype=np.int64))
+            placed.append([(m, model.indices(m.trajectory.names)) for m in ordered])
         motions = [m for lane in self.lanes for m in lane.motions]
         moving = sum(1 for lane in self.lanes if lane.motions)
         self.empty = moving == 0 or len(self.lanes) < 2
@@ -323,32 +326,32 @@ class _Timeline:
         t1 = max(m.end for m in motions) if window is None else window[1]
         stamps = np.concatenate([m.start + np.asarray(m.trajectory.times, dtype=float)
                                  for m in motions])
-        self.times = np.unique(np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
+        self.times = times = np.unique(
+            np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
         base = scene.state.copy()
-        for lane in self.lanes:  # before its first motion, a joint is where that one starts
-            for motion in sorted(lane.motions, key=lambda m: m.start, reverse=True):
-                base[model.indices(motion.trajectory.names)] = motion.trajectory.positions[0]
-        states = np.repeat(base[None, :], len(self.times), axis=0)
-        for lane in self.lanes:
-            ordered = sorted(lane.motions, key=lambda m: m.start)
+        for ordered_lane in placed:  # before its first motion, a joint is where that one starts
+            for motion, idx in reversed(ordered_lane):
+                base[idx] = motion.trajectory.positions[0]
+        states = np.repeat(base[None, :], len(times), axis=0)
+        for ordered_lane in placed:
             # A motion whose joints a later one sets from the timeline's first row on
             # leaves nothing in it (the lane's motions before the window, mostly).
             settled: set[str] = set()
             kept = []
-            for motion in reversed(ordered):
+            for motion, idx in reversed(ordered_lane):
                 if not settled.issuperset(motion.trajectory.names):
-                    kept.append(motion)
-                if motion.start <= self.times[0]:
+                    kept.append((motion, idx))
+                if motion.start <= times[0]:
                     settled.update(motion.trajectory.names)
-            for motion in reversed(kept):
-                # From its start on (held at its end after), each where the last left it.
-                rows = self.times >= motion.start
-                local = self.times[rows] - motion.start
+            for motion, idx in reversed(kept):
+                # From its start on (held at its end after), each where the last left it:
+                # the times are sorted, so the rows from its start on are a tail.
+                first = int(np.searchsorted(times, motion.start, side="left"))
+                local = times[first:] - motion.start
                 trajectory = motion.trajectory
-                idx = model.indices(trajectory.names)
-                states[np.ix_(rows, idx)] = np.column_stack(
-                    [np.interp(local, trajectory.times, trajectory.positions[:, j])
-                     for j in range(len(idx))])
+                for j, column in enumerate(idx):
+                    states[first:, column] = np.interp(local, trajectory.times,
+                                                       trajectory.positions[:, j])
         self.states = model.apply_mimic(states)
 
     def prefix(self, position: float) -> tuple[np.ndarray, Callable[[float], float]]:
@@ -409,43 +412,64 @@ class _Walk:
         self.checker = checker = scene.checker
         pin_model = model.model
         # Per pinocchio joint, the lane of the nearest joint at or above it that a lane
-        # moves; else of the nearest one that carries a lane's moved joint (-1: none).
-        moved = np.full(pin_model.njoints, -1, dtype=np.int64)
-        carried = np.full(pin_model.njoints, -1, dtype=np.int64)
+        # moves; else the first lane (in order) moving a joint at or below it (that it
+        # carries), else that of its parent (-1: none). Parents come before children.
+        parents = list(pin_model.parents)
+        none = len(timeline.columns)
+        moved = [-1] * len(parents)
+        carried = [none] * len(parents)
         for lane_index, columns in enumerate(timeline.columns):
-            for index in columns:
-                jid = int(pin_model.getJointId(model.joint_names[int(index)]))
+            for index in columns.tolist():
+                jid = int(pin_model.getJointId(model.joint_names[index]))
                 moved[jid] = lane_index
-                while jid > 0:
-                    if carried[jid] < 0:
-                        carried[jid] = lane_index
-                    jid = int(pin_model.parents[jid])
-        for jid in range(1, pin_model.njoints):  # parents come first
-            parent = int(pin_model.parents[jid])
+                carried[jid] = min(carried[jid], lane_index)
+        for jid in range(len(parents) - 1, 0, -1):  # children first: up the tree
+            parent = parents[jid]
+            if carried[jid] < carried[parent]:
+                carried[parent] = carried[jid]
+        carried[0] = none  # the world is of no lane
+        for jid in range(1, len(parents)):  # parents first: down the tree
+            parent = parents[jid]
             if moved[jid] < 0:
                 moved[jid] = moved[parent]
-            if carried[jid] < 0:
+            if carried[jid] == none:
                 carried[jid] = carried[parent]
+        moved_at = np.array(moved, dtype=np.int64)
+        carried_at = np.array(carried, dtype=np.int64)
+        carried_at[carried_at == none] = -1
         joints = checker.geometry_joints
         # A body is of the lane whose moved joint is nearest above it; a body no lane's
         # joint moves, of the lane that carries it (a gripper lane: its arm's links).
-        owner = np.where(moved[joints] >= 0, moved[joints], carried[joints])
+        owner = np.where(moved_at[joints] >= 0, moved_at[joints], carried_at[joints])
         self.owner = owner
         every = checker.pair_geometries
         oa, ob = owner[every[:, 0]], owner[every[:, 1]]
         ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob))
         swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
-        firsts = np.where(swap, every[ids, 1], every[ids, 0])
-        seconds = np.where(swap, every[ids, 0], every[ids, 1])
+        # The checker's pairs walked (ascending), and each one's bodies, the first of
+        # the lower lane.
         self.pair_ids = ids
-        self.pairs = list(zip(ids.tolist(), firsts.tolist(), seconds.tolist()))
-        self.local = {k: p for p, k in enumerate(ids.tolist())}  # checker pair -> pairs
+        self.firsts = np.where(swap, every[ids, 1], every[ids, 0])
+        self.seconds = np.where(swap, every[ids, 0], every[ids, 1])
         self.queries = 0
         self.least = math.inf
         self.least_pair: tuple[str, str] | None = None
         self.least_time: float | None = None
         self.least_index: int | None = None
-        self._out = np.zeros(max(1, len(self.pairs)))
+        self._out = np.zeros(max(1, len(ids)))
+
+    @property
+    def pair_count(self) -> int:
+        """How many pairs of two lanes' bodies are walked."""
+        return len(self.pair_ids)
+
+    def local(self, pair: int) -> int:
+        """The index into :attr:`pair_ids` of the checker's pair ``pair``."""
+        return int(np.searchsorted(self.pair_ids, pair))
+
+    def bodies(self, p: int) -> tuple[int, int]:
+        """The geometries of walked pair ``p``, the first of the lower lane."""
+        return int(self.firsts[p]), int(self.seconds[p])
 
     def name(self, g: int) -> str:
         """The body of geometry ``g`` (its link's name, or the object's)."""
@@ -455,7 +479,7 @@ class _Walk:
         """Walk the pairs over the timeline: the first conflict, or None. With the
         options' ``exact``, every measurement is coal's distance (else far pairs take
         cheap lower bounds), so that :attr:`least` is the least distance measured."""
-        if not self.pairs:
+        if not self.pair_count:
             return None
         verifier = self.scene.pair_verifier(self.pair_ids)
         # Between measurements the verifier lets bodies grown by the clearance overlap by
@@ -480,7 +504,7 @@ class _Walk:
         if found.valid:
             return None
         assert found.pair_index is not None and found.fraction is not None
-        pair = self.local[found.pair_index]
+        pair = self.local(found.pair_index)
         bad = self.timeline.time_at(found.fraction)
         free = self.timeline.time_at(found.covered if found.covered is not None
                                      else found.fraction)
@@ -495,7 +519,7 @@ class _Walk:
         coal's tolerance taken off)."""
         q = self.timeline.state(t)
         out = self._out[:len(pairs)]
-        ids = np.array([self.pairs[p][0] for p in pairs], dtype=np.int64)
+        ids = self.pair_ids[np.asarray(pairs, dtype=np.int64)]
         self.checker.pair_distances(self.model.to_pin(q), ids.tolist(), out)
         self.queries += len(pairs)
         self._observe_at(t, ids, out)
@@ -508,8 +532,8 @@ class _Walk:
             return
         i = int(np.argmin(distances))
         if distances[i] < self.least:
-            p = self.local[int(pairs[i])]
-            _, a, b = self.pairs[p]
+            p = self.local(int(pairs[i]))
+            a, b = self.bodies(p)
             self.least, self.least_pair = float(distances[i]), (self.name(a), self.name(b))
             self.least_time, self.least_index = float(t), p
 
@@ -524,7 +548,7 @@ class _Walk:
                 bad, distance = mid, d
             else:
                 free = mid
-        _, a, b = self.pairs[pair]
+        a, b = self.bodies(pair)
         la, lb = int(self.owner[a]), int(self.owner[b])
         lanes = self.timeline.lanes
         return Conflict(bad, (self.name(a), self.name(b)), (lanes[la].name, lanes[lb].name),

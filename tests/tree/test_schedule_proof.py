@@ -47,8 +47,8 @@ def body_distance(scene, lanes, bodies, t: float) -> float:
     """The least exact distance between two bodies (link or object names) of two lanes at
     ``t`` s on the lanes' clock (m)."""
     walk = _Walk(scene, _Timeline(scene, lanes, None), SpacetimeOptions())
-    pairs = [p for p, (_, a, b) in enumerate(walk.pairs)
-             if {walk.name(a), walk.name(b)} == set(bodies)]
+    pairs = [p for p in range(walk.pair_count)
+             if {walk.name(g) for g in walk.bodies(p)} == set(bodies)]
     assert pairs, bodies
     return float(min(walk.measure(t, pairs)))
 
