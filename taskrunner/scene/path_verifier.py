@@ -247,27 +247,15 @@ class PathVerifier:
     def _use_pairs(self, ids: np.ndarray, grouped: bool = True) -> None:
         """Build the rows of the pairs ``ids`` (indices into the checker's collision pairs),
         their units, the settings and the work arrays."""
-        tree, nq = self._tree, self.robot.nq
         self._pair_ids = ids
         first = self._every[ids, 0].copy()
         second = self._every[ids, 1].copy()
         self._first, self._second = first, second
-        self._pair_levers = np.zeros((len(first), nq))
-        self._pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
-        _pair_rows(first, second, self._levers, tree.order, tree.revolute, tree.state_joint,
-                   tree.supported, self._pair_levers, self._pair_i)
-        # Pairs that move alike (a link and each world object: the same joints, lever arms)
-        # are walked as one unit, measured together, their least distance its measurement.
-        unit_of = np.arange(len(first), dtype=np.int64)
-        representative = unit_of.copy()
-        units = (_group_pairs(self._pair_i, self._pair_levers, unit_of, representative)
-                 if grouped else len(first))
-        self._unit_of = unit_of
-        self._members = np.argsort(unit_of, kind="stable").astype(np.int64)
-        self._unit_from = np.zeros(units + 1, dtype=np.int64)
-        np.cumsum(np.bincount(unit_of, minlength=units), out=self._unit_from[1:])
-        self._unit_i = self._pair_i[representative[:units]].copy()
-        self._unit_levers = self._pair_levers[representative[:units]].copy()
+        rows = _pair_units(self._tree, self.robot.nq, first, second, self._levers, grouped)
+        self._pair_levers, self._pair_i = rows.pair_levers, rows.pair_i
+        self._unit_of, self._members, self._unit_from = rows.unit_of, rows.members, rows.unit_from
+        self._unit_i, self._unit_levers = rows.unit_i, rows.unit_levers
+        tree = self._tree
         self._settings = np.zeros(_S_COUNT)
         self._settings[:5] = (self.margin, _DISTANCE_SLACK, GAIN, _EARLY,
                               CHEAP_FROM if tree.supported else np.inf)
@@ -437,6 +425,65 @@ class _Rows:
 
 # Per robot geometry (immutable once built; kept while it lives): its links' rows.
 _LINK_ROWS: weakref.WeakKeyDictionary[RobotGeometry, _Rows] = weakref.WeakKeyDictionary()
+
+
+@dataclass(frozen=True)
+class _PairUnits:
+    """The rows of some pairs of geometry objects and their units (see
+    :meth:`PathVerifier._use_pairs`). Shared by the verifiers of every scene revision
+    with the same pairs: read, never written."""
+
+    pair_levers: np.ndarray
+    pair_i: np.ndarray
+    unit_of: np.ndarray
+    members: np.ndarray
+    unit_from: np.ndarray
+    unit_i: np.ndarray
+    unit_levers: np.ndarray
+
+
+# Per robot tree, the pairs' rows of its latest verifiers, by content: the pairs'
+# geometries, every geometry's lever arms and the grouping. Two arms' verifiers of
+# successive scene revisions mostly walk the same pairs: an object picked by one arm and
+# placed back adds and removes the same ones.
+_PAIR_UNITS: weakref.WeakKeyDictionary[_Tree, dict[bytes, _PairUnits]] = \
+    weakref.WeakKeyDictionary()
+_PAIR_UNITS_KEPT = 12
+
+
+def _pair_units(tree: _Tree, nq: int, first: np.ndarray, second: np.ndarray,
+                levers: np.ndarray, grouped: bool) -> _PairUnits:
+    """The rows of the pairs ``(first[k], second[k])`` (geometry indices) with the
+    geometries' lever arms ``levers``, and their units (:func:`_group_pairs`; each pair
+    its own unit unless ``grouped``): kept per tree, the :data:`_PAIR_UNITS_KEPT` latest."""
+    key = b"".join((b"g" if grouped else b"-", np.int64(len(first)).tobytes(),
+                    first.tobytes(), second.tobytes(), np.ascontiguousarray(levers).tobytes()))
+    kept = _PAIR_UNITS.get(tree)
+    if kept is None:
+        kept = _PAIR_UNITS[tree] = {}
+    found = kept.pop(key, None)
+    if found is None:
+        pair_levers = np.zeros((len(first), nq))
+        pair_i = np.zeros((len(first), _PI_JOINTS + 4 * nq), dtype=np.int64)
+        _pair_rows(first, second, levers, tree.order, tree.revolute, tree.state_joint,
+                   tree.supported, pair_levers, pair_i)
+        # Pairs that move alike (a link and each world object: the same joints, lever
+        # arms) are walked as one unit, measured together, their least distance its
+        # measurement.
+        unit_of = np.arange(len(first), dtype=np.int64)
+        representative = unit_of.copy()
+        units = (_group_pairs(pair_i, pair_levers, unit_of, representative)
+                 if grouped else len(first))
+        unit_from = np.zeros(units + 1, dtype=np.int64)
+        np.cumsum(np.bincount(unit_of, minlength=units), out=unit_from[1:])
+        found = _PairUnits(pair_levers, pair_i, unit_of,
+                           np.argsort(unit_of, kind="stable").astype(np.int64), unit_from,
+                           pair_i[representative[:units]].copy(),
+                           pair_levers[representative[:units]].copy())
+        if len(kept) >= _PAIR_UNITS_KEPT:
+            kept.pop(next(iter(kept)))
+    kept[key] = found  # the latest last
+    return found
 
 
 def _rows(tree: _Tree, objects: list[pin.GeometryObject]) -> _Rows:

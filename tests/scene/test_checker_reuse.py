@@ -79,3 +79,55 @@ def test_only_the_last_few_checkers_are_kept(cell: Scene) -> None:
     for k in range(6):
         cell.disallow_collision("shelf_board", f"panda_link{k + 1}")
     assert cell.checker is not first  # rebuilt: too many edits ago
+
+
+def _rows_anew(verifier) -> tuple[np.ndarray, np.ndarray]:
+    """The pair rows of ``verifier``'s pairs computed from scratch (no shared rows)."""
+    from taskrunner.scene.advancement import _PI_JOINTS, _pair_rows
+
+    tree, nq = verifier._tree, verifier.robot.nq
+    levers = np.zeros((len(verifier._first), nq))
+    rows = np.zeros((len(verifier._first), _PI_JOINTS + 4 * nq), dtype=np.int64)
+    _pair_rows(verifier._first, verifier._second, verifier._levers, tree.order, tree.revolute,
+               tree.state_joint, tree.supported, levers, rows)
+    return levers, rows
+
+
+def test_a_new_revision_with_the_same_pairs_shares_the_verifier_s_pair_rows(
+        cell: Scene, panda_model: RobotModel, arm) -> None:
+    cell.add_object("cube", Box((0.04, 0.04, 0.04)), Pose((0.5, 0.0, 0.02)))
+    first = cell.path_verifier()
+    # A world object moved: a new checker, the same pairs and lever arms.
+    cell.move_object("cube", Pose((0.45, 0.1, 0.02)))
+    moved = cell.path_verifier()
+    assert moved is not first and moved._checker is not first._checker
+    assert moved._pair_i is first._pair_i and moved._unit_i is first._unit_i
+    for verifier in (first, moved):
+        levers, rows = _rows_anew(verifier)
+        assert np.array_equal(levers, verifier.pair_levers)
+        assert np.array_equal(rows, verifier._pair_i)
+    # Held by the hand, the cube moves with the arm: other lever arms, other rows, built
+    # anew (and right).
+    cell.attach_object("cube", "panda_hand", touch_links=["panda_leftfinger",
+                                                           "panda_rightfinger"])
+    cell.allow_collision("cube", "table")  # lifted off it
+    held = cell.path_verifier()
+    assert held._pair_i is not first._pair_i
+    levers, rows = _rows_anew(held)
+    assert np.array_equal(levers, held.pair_levers) and np.array_equal(rows, held._pair_i)
+    assert not np.array_equal(held.pair_levers[:len(first.pair_levers)], first.pair_levers) \
+        or len(held.pair_levers) != len(first.pair_levers)
+    # The verdicts are those of a verifier that built its own pairs' rows.
+    from taskrunner.scene import path_verifier
+
+    rng = np.random.default_rng(3)
+    paths = [np.stack([arm(), panda_model.random_state(rng)]) for _ in range(12)]
+    shared = [held.verify(path) for path in paths]
+    path_verifier._PAIR_UNITS.clear()
+    alone = path_verifier.PathVerifier(panda_model, cell.checker)
+    assert alone._pair_i is not held._pair_i
+    for found, path in zip(shared, paths):
+        again = alone.verify(path)
+        assert (found.valid, found.fraction, found.pair) == \
+            (again.valid, again.fraction, again.pair)
+    assert {found.valid for found in shared} == {True, False}
