@@ -78,33 +78,25 @@ def _levers_here(k: int, pair_i: np.ndarray, pair_levers: np.ndarray, geometries
 
 
 @inline
-def _cumulative_at(cumulative: np.ndarray, position: float, out: np.ndarray) -> None:
-    n = cumulative.shape[0]
-    if n == 1:
-        for j in range(cumulative.shape[1]):
-            out[j] = 0.0
-        return
-    seg = math.floor(position)  # >= 0: int()'s value, without compiling numba's int()
-    if seg > n - 2:
-        seg = n - 2
-    frac = position - seg
-    for j in range(cumulative.shape[1]):
-        out[j] = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
-
-
-@inline
 def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, k: int,
-           c0: np.ndarray, walk: np.ndarray, column: int, position: float) -> float:
-    """Pair ``k``'s motion bound (m) from the path position whose cumulative joint motion
-    is ``c0`` to ``position``, with the lever arms ``walk[k, column + j]`` taken at the
-    former.
+           start: float, walk: np.ndarray, column: int, position: float) -> float:
+    """Pair ``k``'s motion bound (m) from path position ``start`` to ``position``, with
+    the lever arms ``walk[k, column + j]`` taken at the former.
 
     A revolute joint's lever arm grows by at most how far the joints below it (same
     body, deeper in the tree) move the body relative to its axis, which is their own
-    contribution: the joints are taken deepest first."""
+    contribution: the joints are taken deepest first. Each counted joint's cumulative
+    motion is interpolated here at both positions (a helper of its own for the start's
+    cost a compiled function more: ~0.1 s of first compilation)."""
     nq = pair_levers.shape[1]
     n = cumulative.shape[0]
-    seg = math.floor(position)  # >= 0: int()'s value, without compiling numba's int()
+    if n == 1:
+        return 0.0  # a single state: nothing moves
+    seg0 = math.floor(start)  # >= 0: int()'s value, without compiling numba's int()
+    if seg0 > n - 2:
+        seg0 = n - 2
+    frac0 = start - seg0
+    seg = math.floor(position)
     if seg > n - 2:
         seg = n - 2
     frac = position - seg
@@ -114,11 +106,9 @@ def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, 
     for i in range(pair_i[k, _PI_COUNT]):
         j = pair_i[k, _PI_JOINTS + i]
         code = pair_i[k, _PI_JOINTS + nq + i]
-        if n == 1:
-            c1 = 0.0
-        else:
-            c1 = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
-        moved = c1 - c0[j]
+        c0 = cumulative[seg0, j] + frac0 * (cumulative[seg0 + 1, j] - cumulative[seg0, j])
+        c1 = cumulative[seg, j] + frac * (cumulative[seg + 1, j] - cumulative[seg, j])
+        moved = c1 - c0
         if moved <= 0.0:
             continue
         first = code % 2 == 1
@@ -139,7 +129,7 @@ def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, 
 @inline
 def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndarray,
              pair_levers: np.ndarray, geometries: np.ndarray, frames: np.ndarray, nj: int,
-             walk: np.ndarray, schedule: np.ndarray, c0: np.ndarray, settings: np.ndarray) -> None:
+             walk: np.ndarray, schedule: np.ndarray, settings: np.ndarray) -> None:
     """Take a lower bound ``d`` > 0 on pair ``k``'s distance at position ``s`` (the state
     of ``frames``) and schedule the pair's next measurement. A called function, not
     inlined: the walk takes measurements in two places (a unit's exact distances, its
@@ -158,27 +148,21 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     if walk[k, _HAS_L] == 0.0:
         extends = True
     else:
-        _cumulative_at(cumulative, walk[k, _PL], c0)
-        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, s)
+        moved = _bound(cumulative, pair_i, pair_levers, k, walk[k, _PL], walk, left, s)
         reach = walk[k, _DL] + d
         extends = moved <= (margin if margin > reach else reach)  # max(), as numba's
-    if extends:                      # covered from the left: extends the stretch
-        walk[k, _HAS_L] = 1.0
-        walk[k, _PL] = s
-        walk[k, _DL] = d
-        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
-    else:                            # a gap: this one waits on the right
-        walk[k, _HAS_R] = 1.0
-        walk[k, _PR] = s
-        walk[k, _DR] = d
-        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, right)
+    # Covered from the left: extends the stretch; else a gap: this one waits on the right.
+    side = _HAS_L if extends else _HAS_R  # its columns: _HAS_*, then _P*, then _D*
+    walk[k, side] = 1.0
+    walk[k, side + 1] = s
+    walk[k, side + 2] = d
+    _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk,
+                 left if extends else right)
     start = walk[k, _PL]
     # After a gap, the test below is the one that just failed (same start, lever arms
     # and position): skipped.
-    if extends:
-        _cumulative_at(cumulative, start, c0)
     if extends and walk[k, _HAS_R] != 0.0:
-        moved = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, walk[k, _PR])
+        moved = _bound(cumulative, pair_i, pair_levers, k, start, walk, left, walk[k, _PR])
         reach = walk[k, _DL] + walk[k, _DR]
         if moved <= (margin if margin > reach else reach):
             walk[k, _HAS_R] = 0.0
@@ -188,9 +172,8 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
                 j = pair_i[k, _PI_JOINTS + i]
                 walk[k, left + j] = walk[k, right + j]
             start = walk[k, _PL]
-            _cumulative_at(cumulative, start, c0)
     d_left = walk[k, _DL]
-    to_end = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, last)
+    to_end = _bound(cumulative, pair_i, pair_levers, k, start, walk, left, last)
     if walk[k, _HAS_R] != 0.0:
         # Fill the gap from the left: this step is covered whatever the distance there.
         step = margin if margin > d_left else d_left
@@ -216,12 +199,12 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
         if lo_node == last_node:      # the bound there is ``to_end``
             f_node = to_end
         else:
-            f_node = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(lo_node))
+            f_node = _bound(cumulative, pair_i, pair_levers, k, start, walk, left, float(lo_node))
         if f_node <= step:
             hi_node, f_hi = last_node, to_end   # bound(lo_node) <= step < bound(hi_node)
             while hi_node - lo_node > 1:
                 node = (lo_node + hi_node) // 2
-                f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, float(node))
+                f_mid = _bound(cumulative, pair_i, pair_levers, k, start, walk, left, float(node))
                 if f_mid <= step:
                     lo_node, f_node = node, f_mid
                 else:
@@ -240,7 +223,7 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
                 mid = lo + _CLOSE * width
             if mid > hi - _CLOSE * width:
                 mid = hi - _CLOSE * width
-            f_mid = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid)
+            f_mid = _bound(cumulative, pair_i, pair_levers, k, start, walk, left, mid)
             if f_mid <= step:
                 lo, f_lo = mid, f_mid
             else:
@@ -253,7 +236,7 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
                 mid = 0.5 * (lo + hi)
                 if mid <= start:
                     break
-                if _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, mid) <= step:
+                if _bound(cumulative, pair_i, pair_levers, k, start, walk, left, mid) <= step:
                     due = mid
                     break
                 hi = mid
@@ -266,7 +249,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
           unit_i: np.ndarray, unit_levers: np.ndarray, members: np.ndarray, unit_from: np.ndarray,
           unit_of: np.ndarray, states: np.ndarray, cumulative: np.ndarray, frames: np.ndarray,
           walk: np.ndarray, schedule: np.ndarray, picked: np.ndarray, selected: np.ndarray,
-          distances: np.ndarray, q: np.ndarray, c0: np.ndarray, settings: np.ndarray) -> int:
+          distances: np.ndarray, q: np.ndarray, settings: np.ndarray) -> int:
     """Walk the path through ``states`` until some pairs need an exact distance: returns
     their count (in ``selected``; the position in ``settings[_S_AT]``, its state in ``q``,
     its frames in ``frames``). The caller writes their distances to ``distances`` and
@@ -274,8 +257,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     contact (``settings[_S_BAD]``: its index into ``selected``), ``_NOT_FINITE`` for a
     state that is not finite (its row in ``settings[_S_BAD]``). The first call fills
     ``cumulative`` (per joint, the sum of ``|dq|`` up to each state) and resets ``walk``.
-    ``c0``: scratch of ``nq`` values (the kernel allocates nothing: it is compiled
-    without numba's reference counting).
+    The kernel allocates nothing (it is compiled without numba's reference counting).
 
     The walk schedules units (``unit_i``, ``unit_levers``: rows like ``pair_i``'s and the
     pair lever arms, one per unit; the pairs of unit ``u`` are ``members[unit_from[u]:
@@ -329,7 +311,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
         if walk[u, _UPENDING] == 0.0:
             walk[u, _UPENDING] = -1.0  # measured once
             _measure(u, walk[u, _UMIN], s, cumulative, unit_i, unit_levers, geometries, frames, nj,
-                     walk, schedule, c0, settings)
+                     walk, schedule, settings)
     # Then on along the path: the next position to evaluate (the earliest due unit's), the
     # units measured there (in ``picked``: due there, or due soon and past their early
     # position) and the state there (in ``q``).
@@ -419,7 +401,7 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                     least = d
             if pending == 0:
                 _measure(u, least, s, cumulative, unit_i, unit_levers, geometries, frames, nj, walk,
-                         schedule, c0, settings)
+                         schedule, settings)
             else:
                 walk[u, _UMIN] = least
                 walk[u, _UPENDING] = pending
@@ -436,11 +418,10 @@ def _segment_bounds(cumulative: np.ndarray, geometries: np.ndarray, pair_i: np.n
     their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
     nq = cumulative.shape[1]
     walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
-    c0 = np.zeros(nq)
     left = walk.shape[1] - 2 * nq  # _COLUMNS (see _measure)
     for k in range(pair_i.shape[0]):
         _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
-        out[k] = _bound(cumulative, pair_i, pair_levers, k, c0, walk, left, 1.0)
+        out[k] = _bound(cumulative, pair_i, pair_levers, k, 0.0, walk, left, 1.0)
 
 
 @jit

@@ -369,7 +369,7 @@ class PathVerifier:
             walked = (kin.joints, self._geometries, self._points,
                       self._pair_i, self._unit_i, self._unit_levers, self._members,
                       self._unit_from, self._unit_of, states, cumulative, frames, walk,
-                      schedule, picked, selected, distances, q, scratch, settings)
+                      schedule, picked, selected, distances, q, settings)
             queries = evaluated = 0
             pair_distances, to_pin = self._checker.pair_distances, self.robot.to_pin
             ids = self._pair_ids
