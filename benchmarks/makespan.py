@@ -4,8 +4,9 @@
 
 For each pair below, the parallel task and its sequential version (the same steps, one
 arm after the other; the versions not shipped in taskrunner/data/tasks are in
-benchmarks/makespan_tasks) are run on the mock backend, planning in-process, ``--runs`` times each with seeds
-``S, S+1, …``. Per task:
+benchmarks/makespan_tasks) are run on the mock backend, planning in-process, ``--runs``
+times each with seeds ``S, S+1, …``, the two alternating (a change in the machine's load
+falls on both alike). Per task:
 
 - *makespan*: the task time the run's schedule gives, from the first motion's start to the
   last one's end (s; each ``motion`` event's ``start`` plus its trajectory's duration; on
@@ -88,14 +89,25 @@ def run_once(path: Path, seed: int, runs_dir: Path) -> dict:
             "waits": waits}
 
 
-def bench_task(path: Path, runs: int, seed: int) -> dict:
+def bench_pair(parallel: Path, sequential: Path, runs: int, seed: int) -> tuple[dict, dict]:
+    """Both tasks ``runs`` times, alternating (parallel, sequential, parallel, ...: a
+    change of the machine's load falls on both alike), after a warm-up run of each."""
+    found: dict[Path, list[dict]] = {parallel: [], sequential: []}
     with tempfile.TemporaryDirectory() as tmp:
-        run_once(path, seed, Path(tmp))  # warm-up: imports, IK seed tables, kernels
-        found = [run_once(path, seed + i, Path(tmp)) for i in range(runs)]
+        for path in found:
+            run_once(path, seed, Path(tmp))  # warm-up: imports, IK seed tables, kernels
+        for i in range(runs):
+            for path, done in found.items():
+                done.append(run_once(path, seed + i, Path(tmp)))
+    return summary(parallel, found[parallel]), summary(sequential, found[sequential])
+
+
+def summary(path: Path, found: list[dict]) -> dict:
+    """The medians of one task's runs."""
     ok = [r for r in found if r["status"] == "succeeded"]
     per_motion = [1e3 * (r["planning_s"] + r["verify_s"]) / max(r["planned"], 1) for r in ok]
     return {
-        "task": path.stem, "runs": runs, "succeeded": len(ok),
+        "task": path.stem, "runs": len(found), "succeeded": len(ok),
         "makespan_s_median": round(statistics.median(r["makespan_s"] for r in ok), 3)
         if ok else None,
         "motions": ok[0]["motions"] if ok else None,
@@ -175,8 +187,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     rows = []
     for name, parallel, sequential in PAIRS:
-        par, seq = bench_task(parallel, args.runs, args.seed), bench_task(
-            sequential, args.runs, args.seed)
+        par, seq = bench_pair(parallel, sequential, args.runs, args.seed)
         speedup = overhead = None
         if par["makespan_s_median"] and seq["makespan_s_median"]:
             speedup = round(seq["makespan_s_median"] / par["makespan_s_median"], 3)
