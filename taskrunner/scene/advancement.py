@@ -50,34 +50,6 @@ _NOT_FINITE = -2  # what :func:`_walk` returns for a state that is not finite
 
 
 @inline
-def _levers_here(k: int, pair_i: np.ndarray, pair_levers: np.ndarray, geometries: np.ndarray,
-                 frames: np.ndarray, nj: int, per_state: bool, walk: np.ndarray, column: int) -> None:
-    """Pair ``k``'s lever arms at the state of ``frames`` (into ``walk[k, column + j]``,
-    for the joints that count): for a revolute joint, the distance from its axis to the
-    moved body's bounding sphere centre plus the radius (never more than the full-reach
-    bound); otherwise the full-reach bound."""
-    nq = pair_levers.shape[1]
-    for i in range(pair_i[k, _PI_COUNT]):
-        j = pair_i[k, _PI_JOINTS + i]
-        full = pair_levers[k, j]
-        value = full
-        if per_state and pair_i[k, _PI_JOINTS + nq + i] >= 3 and full != 0.0:
-            g = pair_i[k, _PI_JOINTS + 2 * nq + i]
-            jid = pair_i[k, _PI_JOINTS + 3 * nq + i]
-            along = 0.0
-            length2 = 0.0
-            for a in range(3):
-                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, ORIGIN + a]
-                along += v * frames[jid, AXIS + a]
-                length2 += v * v
-            off_axis = length2 - along * along
-            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometries[g].radius
-            if lever < full:
-                value = lever
-        walk[k, column + j] = value
-
-
-@inline
 def _bound(cumulative: np.ndarray, pair_i: np.ndarray, pair_levers: np.ndarray, k: int,
            start: float, walk: np.ndarray, column: int, position: float) -> float:
     """Pair ``k``'s motion bound (m) from path position ``start`` to ``position``, with
@@ -156,8 +128,28 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
     walk[k, side] = 1.0
     walk[k, side + 1] = s
     walk[k, side + 2] = d
-    _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk,
-                 left if extends else right)
+    # The lever arms here (on that side), of the joints that count: for a revolute joint,
+    # the distance from its axis to the moved body's bounding sphere centre plus the
+    # radius (never more than the full-reach bound); otherwise the full-reach bound.
+    column = left if extends else right
+    for i in range(pair_i[k, _PI_COUNT]):
+        j = pair_i[k, _PI_JOINTS + i]
+        full = pair_levers[k, j]
+        value = full
+        if per_state and pair_i[k, _PI_JOINTS + nq + i] >= 3 and full != 0.0:
+            g = pair_i[k, _PI_JOINTS + 2 * nq + i]
+            jid = pair_i[k, _PI_JOINTS + 3 * nq + i]
+            along = 0.0
+            length2 = 0.0
+            for a in range(3):
+                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, ORIGIN + a]
+                along += v * frames[jid, AXIS + a]
+                length2 += v * v
+            off_axis = length2 - along * along
+            lever = math.sqrt(off_axis if off_axis > 0.0 else 0.0) + geometries[g].radius
+            if lever < full:
+                value = lever
+        walk[k, column + j] = value
     start = walk[k, _PL]
     # After a gap, the test below is the one that just failed (same start, lever arms
     # and position): skipped.
@@ -410,18 +402,50 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             return exact
 
 
-@jit
 def _segment_bounds(cumulative: np.ndarray, geometries: np.ndarray, pair_i: np.ndarray,
                     pair_levers: np.ndarray, frames: np.ndarray, nj: int, per_state: bool,
                     out: np.ndarray) -> None:
-    """Per pair, the motion bound from the first state to the second (``cumulative``:
-    their cumulative joint motion), lever arms taken at the first (its ``frames``)."""
-    nq = cumulative.shape[1]
-    walk = np.zeros((pair_i.shape[0], _COLUMNS + 2 * nq))
-    left = walk.shape[1] - 2 * nq  # _COLUMNS (see _measure)
-    for k in range(pair_i.shape[0]):
-        _levers_here(k, pair_i, pair_levers, geometries, frames, nj, per_state, walk, left)
-        out[k] = _bound(cumulative, pair_i, pair_levers, k, 0.0, walk, left, 1.0)
+    """Per pair, the motion bound from the first state to the second (``cumulative``, two
+    rows: their cumulative joint motion), lever arms taken at the first (its ``frames``): what
+    :func:`_measure` and :func:`_bound` take, for every pair at once in NumPy (not a
+    kernel: nothing more to compile for the walk's lever arms)."""
+    n_pairs, nq = pair_levers.shape
+    rows = np.arange(n_pairs)
+    count = pair_i[:, _PI_COUNT]
+    c0 = cumulative[0] + 0.0 * (cumulative[1] - cumulative[0])  # _bound's, at 0 and 1
+    c1 = cumulative[0] + 1.0 * (cumulative[1] - cumulative[0])
+    share_first = np.zeros(n_pairs)
+    share_second = np.zeros(n_pairs)
+    total = np.zeros(n_pairs)
+    radius = geometries["radius"]
+    for i in range(nq):
+        j = pair_i[:, _PI_JOINTS + i]
+        code = pair_i[:, _PI_JOINTS + nq + i]
+        full = pair_levers[rows, j]
+        here = full.copy()                     # the lever arm at the first state
+        revolute = (count > i) & (code >= 3) & (full != 0.0) if per_state else np.zeros(n_pairs, bool)
+        if revolute.any():
+            g = pair_i[revolute, _PI_JOINTS + 2 * nq + i]
+            jid = pair_i[revolute, _PI_JOINTS + 3 * nq + i]
+            along = np.zeros(len(g))
+            length2 = np.zeros(len(g))
+            for a in range(3):
+                v = frames[nj + g, _FR_CENTRE + a] - frames[jid, ORIGIN + a]
+                along += v * frames[jid, AXIS + a]
+                length2 += v * v
+            off_axis = length2 - along * along
+            lever = np.sqrt(np.where(off_axis > 0.0, off_axis, 0.0)) + radius[g]
+            here[revolute] = np.where(lever < full[revolute], lever, full[revolute])
+        moved = c1[j] - c0[j]
+        counts = (count > i) & (moved > 0.0)
+        first = code % 2 == 1
+        lever = here + np.where(code >= 3, np.where(first, share_first, share_second), 0.0)
+        lever = np.where((code >= 3) & (lever > full), full, lever)
+        contribution = np.where(counts, lever * moved, 0.0)
+        share_first += np.where(first, contribution, 0.0)
+        share_second += np.where(first, 0.0, contribution)
+        total += contribution
+    out[:] = total
 
 
 @jit
