@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import math
 import time
+import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
@@ -52,7 +53,9 @@ from taskrunner.types import JointTrajectory
 if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, not imported
     import pinocchio as pin
 
+    from taskrunner.robot import RobotModel
     from taskrunner.scene import Scene
+    from taskrunner.scene.collision import CollisionChecker
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
            "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "least_clearance",
@@ -410,53 +413,17 @@ class _Walk:
         model = scene.robot
         self.scene, self.model, self.timeline, self.options = scene, model, timeline, options
         self.checker = checker = scene.checker
-        pin_model = model.model
-        # Per pinocchio joint, the lane of the nearest joint at or above it that a lane
-        # moves; else the first lane (in order) moving a joint at or below it (that it
-        # carries), else that of its parent (-1: none). Parents come before children.
-        parents = list(pin_model.parents)
-        none = len(timeline.columns)
-        moved = [-1] * len(parents)
-        carried = [none] * len(parents)
-        for lane_index, columns in enumerate(timeline.columns):
-            for index in columns.tolist():
-                jid = int(pin_model.getJointId(model.joint_names[index]))
-                moved[jid] = lane_index
-                carried[jid] = min(carried[jid], lane_index)
-        for jid in range(len(parents) - 1, 0, -1):  # children first: up the tree
-            parent = parents[jid]
-            if carried[jid] < carried[parent]:
-                carried[parent] = carried[jid]
-        carried[0] = none  # the world is of no lane
-        for jid in range(1, len(parents)):  # parents first: down the tree
-            parent = parents[jid]
-            if moved[jid] < 0:
-                moved[jid] = moved[parent]
-            if carried[jid] == none:
-                carried[jid] = carried[parent]
-        moved_at = np.array(moved, dtype=np.int64)
-        carried_at = np.array(carried, dtype=np.int64)
-        carried_at[carried_at == none] = -1
-        joints = checker.geometry_joints
-        # A body is of the lane whose moved joint is nearest above it; a body no lane's
-        # joint moves, of the lane that carries it (a gripper lane: its arm's links).
-        owner = np.where(moved_at[joints] >= 0, moved_at[joints], carried_at[joints])
-        self.owner = owner
-        every = checker.pair_geometries
-        oa, ob = owner[every[:, 0]], owner[every[:, 1]]
-        ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob))
-        swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
+        owners = _lane_owners(model, checker, timeline.columns)
+        self.owner = owners.owner
         # The checker's pairs walked (ascending), and each one's bodies, the first of
         # the lower lane.
-        self.pair_ids = ids
-        self.firsts = np.where(swap, every[ids, 1], every[ids, 0])
-        self.seconds = np.where(swap, every[ids, 0], every[ids, 1])
+        self.pair_ids, self.firsts, self.seconds = owners.pair_ids, owners.firsts, owners.seconds
         self.queries = 0
         self.least = math.inf
         self.least_pair: tuple[str, str] | None = None
         self.least_time: float | None = None
         self.least_index: int | None = None
-        self._out = np.zeros(max(1, len(ids)))
+        self._out = np.zeros(max(1, len(self.pair_ids)))
 
     @property
     def pair_count(self) -> int:
@@ -555,6 +522,87 @@ class _Walk:
                         (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
                         distance)
 
+
+@dataclass(frozen=True)
+class _Owners:
+    """Which lane each body is of (:attr:`owner`, per geometry object; -1: none), and
+    the checker's pairs of bodies of two different lanes: their indices (ascending) and
+    each one's two geometries, the first of the lower lane. Read, never written."""
+
+    owner: np.ndarray
+    pair_ids: np.ndarray
+    firsts: np.ndarray
+    seconds: np.ndarray
+
+
+# Per robot geometry (one per robot model, shared by the checkers of every scene
+# revision; kept while it lives): the lanes of each joint (:func:`_joint_lanes`), by the
+# lanes' joint sets, the latest few.
+_JOINT_LANES: weakref.WeakKeyDictionary[object, dict[bytes, tuple[np.ndarray, np.ndarray]]] = \
+    weakref.WeakKeyDictionary()
+_JOINT_LANES_KEPT = 8
+
+
+def _joint_lanes(model: RobotModel, checker: CollisionChecker,
+                 columns: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Per pinocchio joint of ``model``, for lanes moving the state columns ``columns``
+    (one array a lane): the lane of the nearest joint at or above it that a lane moves,
+    and the first lane (in order) moving a joint at or below it (that it carries), else
+    that of its parent (-1: none). Kept per robot model (its checkers' shared geometry)."""
+    key = b"".join(np.int64(len(c)).tobytes() + np.asarray(c, dtype=np.int64).tobytes()
+                   for c in columns)
+    part = checker.robot_geometry
+    kept = _JOINT_LANES.get(part)
+    if kept is None:
+        kept = _JOINT_LANES[part] = {}
+    found = kept.get(key)
+    if found is not None:
+        return found
+    pin_model = model.model
+    parents = list(pin_model.parents)  # parents come before children
+    none = len(columns)
+    moved = [-1] * len(parents)
+    carried = [none] * len(parents)
+    for lane_index, lane_columns in enumerate(columns):
+        for index in lane_columns.tolist():
+            jid = int(pin_model.getJointId(model.joint_names[index]))
+            moved[jid] = lane_index
+            carried[jid] = min(carried[jid], lane_index)
+    for jid in range(len(parents) - 1, 0, -1):  # children first: up the tree
+        parent = parents[jid]
+        if carried[jid] < carried[parent]:
+            carried[parent] = carried[jid]
+    carried[0] = none  # the world is of no lane
+    for jid in range(1, len(parents)):  # parents first: down the tree
+        parent = parents[jid]
+        if moved[jid] < 0:
+            moved[jid] = moved[parent]
+        if carried[jid] == none:
+            carried[jid] = carried[parent]
+    moved_at = np.array(moved, dtype=np.int64)
+    carried_at = np.array(carried, dtype=np.int64)
+    carried_at[carried_at == none] = -1
+    if len(kept) >= _JOINT_LANES_KEPT:
+        kept.pop(next(iter(kept)))
+    found = kept[key] = (moved_at, carried_at)
+    return found
+
+
+def _lane_owners(model: RobotModel, checker: CollisionChecker,
+                 columns: Sequence[np.ndarray]) -> _Owners:
+    """The :class:`_Owners` of lanes moving the state columns ``columns`` (one array a
+    lane) for ``checker``'s bodies and pairs."""
+    moved_at, carried_at = _joint_lanes(model, checker, columns)
+    joints = checker.geometry_joints
+    # A body is of the lane whose moved joint is nearest above it; a body no lane's
+    # joint moves, of the lane that carries it (a gripper lane: its arm's links).
+    owner = np.where(moved_at[joints] >= 0, moved_at[joints], carried_at[joints])
+    every = checker.pair_geometries
+    oa, ob = owner[every[:, 0]], owner[every[:, 1]]
+    ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob))
+    swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
+    return _Owners(owner, ids, np.where(swap, every[ids, 1], every[ids, 0]),
+                   np.where(swap, every[ids, 0], every[ids, 1]))
 
 def _body_name(obj: pin.GeometryObject, pin_model: pin.Model) -> str:
     """A geometry's body: its link's name for a robot link, else the object's name."""

@@ -123,6 +123,7 @@ class RobotGeometry:
         self._template = pin.GeometryModel()
         self._body_of: tuple[str, ...] = tuple(_add_bodies(self._template, self.bodies))
         self._static = tuple(body.static for body in self.bodies for _ in body.geometries)
+        self._joints: np.ndarray | None = None
         # Pair masks by (the other bodies' names, kinds and sizes; the allowances): moving
         # an object, or coming back to an earlier attachment, finds its pairs here.
         self._masks: dict[tuple[object, ...],
@@ -133,6 +134,17 @@ class RobotGeometry:
         """How many geometry objects the robot's links have (the first of every checker
         built from this)."""
         return len(self._body_of)
+
+    @property
+    def geometry_joints(self) -> np.ndarray:
+        """Per geometry object of the robot's links, the pinocchio joint carrying it
+        (read-only)."""
+        if self._joints is None:
+            joints = np.array([obj.parentJoint for obj in self._template.geometryObjects],
+                              dtype=np.int64)
+            joints.setflags(write=False)
+            self._joints = joints
+        return self._joints
 
     def _pairs(self, bodies: Sequence[Body], allowed: Collection[frozenset[str]],
                body_of: Sequence[str], static: Sequence[bool]
@@ -271,8 +283,10 @@ class CollisionChecker:
         """Per geometry object, the pinocchio joint carrying it (0: the world;
         read-only)."""
         if self._joint_array is None:
-            array = np.array([obj.parentJoint for obj in self._geometry.geometryObjects],
-                             dtype=np.int64)
+            objects = self._geometry.geometryObjects
+            first = self._robot.geometry_count  # the robot's links': the same in every checker
+            array = np.concatenate([self._robot.geometry_joints, np.array(
+                [objects[g].parentJoint for g in range(first, len(objects))], dtype=np.int64)])
             array.setflags(write=False)
             self._joint_array = array
         return self._joint_array

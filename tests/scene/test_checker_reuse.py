@@ -131,3 +131,18 @@ def test_a_new_revision_with_the_same_pairs_shares_the_verifier_s_pair_rows(
         assert (found.valid, found.fraction, found.pair) == \
             (again.valid, again.fraction, again.pair)
     assert {found.valid for found in shared} == {True, False}
+
+
+def test_every_checker_knows_each_geometry_s_joint(cell: Scene) -> None:
+    # The robot's links' joints are kept with its geometry; the objects' are each
+    # checker's own (an object held by the hand moves with its joint).
+    cell.add_object("cube", Box((0.04, 0.04, 0.04)), Pose((0.5, 0.0, 0.02)))
+    for edit in (lambda: None, lambda: cell.attach_object("cube", "panda_hand"),
+                 lambda: cell.detach_object("cube")):
+        edit()
+        checker = cell.checker
+        objects = checker.geometry_model.geometryObjects
+        assert checker.geometry_joints.tolist() == [int(o.parentJoint) for o in objects]
+    hand = cell.robot.model.frames[cell.robot.frame_id("panda_hand")].parentJoint
+    cell.attach_object("cube", "panda_hand")
+    assert cell.checker.geometry_joints[-1] == hand > 0
