@@ -9,7 +9,8 @@ The path verifier (:mod:`taskrunner.scene.path_verifier`) and the search's state
 geometry with :func:`compose`.
 
 The functions are numba kernels compiled on first use and cached on disk
-(``cache=True``, in ``NUMBA_CACHE_DIR``, by default ``user_cache_dir()/numba``);
+(``cache=True``, in ``NUMBA_CACHE_DIR``, by default ``user_cache_dir()/numba``; the
+helpers inside the kernels that call them);
 :data:`inline` ones are helpers the other kernels call (compiled once each, not inlined
 at numba's IR level: inlining them cost 38 % more first compilation, 10.5 against 6.6 s
 of CPU, for no measurable speed: ``benchmarks/HISTORY.md``). Called from
@@ -94,8 +95,11 @@ def jit_plain(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
 def inline(function: Callable[_P, _R]) -> Dispatcher[Callable[_P, _R]]:
     """Compile ``function`` as a helper of the kernels that call it: compiled once and
     called (the name is from when helpers were inlined; see the module docstring); not
-    callable from Python."""
-    return numba.njit(function, cache=True, nogil=True, error_model="numpy", **_HELPER_OPTIONS)
+    callable from Python. Not cached on disk itself: a kernel's cached code holds the
+    helpers it calls (linked in), so a process that loads the kernels never reads a
+    helper's entry; one would only spare a new kernel's compilation the helper's, and
+    writing the entries cost ~0.1 s of the kernels' first compilation (CPU)."""
+    return numba.njit(function, cache=False, nogil=True, error_model="numpy", **_HELPER_OPTIONS)
 
 
 _REVOLUTE = int(JointKind.REVOLUTE)
