@@ -67,6 +67,17 @@ if TYPE_CHECKING:  # numba, with the verifier: loaded when a path is first verif
 __all__ = ["MotionPlanner", "first_invalid_state", "interpolate_path"]
 
 _REFINEMENTS = 3
+"""Searches of a request at least: its segment, then halved while a path found collides."""
+FINEST_SEGMENT = 0.0125
+"""rad: the finer searches halve the segment at least down to this."""
+
+
+def refined_segments(segment: float) -> list[float]:
+    """The planning segments of a request's searches, each half the one before: at
+    least :data:`_REFINEMENTS` of them, and as many as it takes to reach
+    :data:`FINEST_SEGMENT`."""
+    count = max(_REFINEMENTS, 1 + math.ceil(math.log2(segment / FINEST_SEGMENT) - 1e-9))
+    return [segment / 2**k for k in range(count)]
 
 
 def interpolate_path(waypoints: np.ndarray, resolution: float) -> np.ndarray:
@@ -235,12 +246,12 @@ class MotionPlanner:
         # is turned down) share one budget: planning_time per attempt.
         import_ompl()  # imported before the clock starts (the first import takes a while)
         deadline = time.perf_counter() + options.planning_time * options.attempts
-        for refinement in range(_REFINEMENTS):
+        segments = refined_segments(options.longest_valid_segment)
+        for refinement, segment in enumerate(segments):
             # A path checked every longest_valid_segment may clip a thin obstacle that the
             # exact verification then finds: search again with a finer segment.
             tried = options if refinement == 0 else replace(
-                options, longest_valid_segment=options.longest_valid_segment / 2**refinement,
-                seed=options.seed + 1000 * refinement)
+                options, longest_valid_segment=segment, seed=options.seed + 1000 * refinement)
             if refinement and time.perf_counter() >= deadline:
                 assert failure is not None
                 raise PlanningTimeoutError(
@@ -266,7 +277,7 @@ class MotionPlanner:
             raise PlanningError(
                 f"every path found for group {group.name!r} collided when verified exactly "
                 f"({_pair(failure)}), down to a planning segment of "
-                f"{options.longest_valid_segment / 2 ** (_REFINEMENTS - 1):g} rad")
+                f"{segments[-1]:g} rad")
         end = start.copy()
         end[idx] = waypoints[-1]
         model.apply_mimic(end)

@@ -389,3 +389,12 @@ def test_an_edge_ending_at_a_state_known_valid_does_not_check_it_again(shelf_sce
     scene.add_object("post", Sphere(0.03), Pose(tuple(hand)))
     blocked = MotionPlanner(scene)._edge_validity(group, scene.state, 0.05, count, known := set())
     assert not blocked(a, b) and not known
+
+
+def test_the_finer_searches_halve_the_segment_down_to_the_finest():
+    from taskrunner.planning.planner import FINEST_SEGMENT, refined_segments
+
+    assert refined_segments(0.1) == pytest.approx([0.1, 0.05, 0.025, 0.0125])
+    assert refined_segments(0.05) == pytest.approx([0.05, 0.025, 0.0125])
+    assert refined_segments(0.01) == pytest.approx([0.01, 0.005, 0.0025])  # three at least
+    assert refined_segments(0.4)[-1] == pytest.approx(FINEST_SEGMENT)
