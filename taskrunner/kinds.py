@@ -114,6 +114,9 @@ class WaitKind(StrEnum):
     """Started a little later, while the other arm's motion still runs: it passes behind."""
     UNTIL_END = "until_end"
     """Started when the other arm's motion has ended (that arm's way is then known)."""
+    REPLAN = "replan"
+    """Planned again with the other arm where they would have met: the new motion ends
+    sooner than the first would have, waiting for the other arm's motion to end."""
 
 
 class EventKind(StrEnum):

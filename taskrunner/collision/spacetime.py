@@ -58,8 +58,8 @@ if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, 
     from taskrunner.scene.collision import CollisionChecker
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
-           "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "least_clearance",
-           "verify_lanes"]
+           "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "lanes_state",
+           "least_clearance", "verify_lanes"]
 
 TIME_TOLERANCE = 1e-3
 """s: a conflict's time is where the distance first drops below the clearance, within this."""
@@ -203,6 +203,32 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     conflict = walk.run()
     return SpacetimeVerification(conflict, walk.least, walk.least_pair, walk.least_time,
                                  walk.queries, time.perf_counter() - started)
+
+
+
+def lanes_state(scene: Scene, lanes: Sequence[Lane], t: float) -> np.ndarray:
+    """The full state at ``t`` (s, the lanes' clock): each lane's joints where its
+    motions put them then (before a motion starts, where it starts; after it ends, where
+    it ended), every other joint at ``scene.state``."""
+    model = scene.robot
+    q = scene.state.copy()
+    for lane in lanes:
+        placed: set[str] = set()
+        for motion in sorted(lane.motions, key=lambda m: m.start):
+            trajectory = motion.trajectory
+            if motion.start > t:
+                # Not started yet: its joints rest where it starts, unless an earlier
+                # motion placed them.
+                names = [n for n in trajectory.names if n not in placed]
+                at = 0.0
+            else:
+                names = list(trajectory.names)
+                at = min(t - motion.start, trajectory.duration)
+            columns = [trajectory.names.index(n) for n in names]
+            q[model.indices(names)] = [np.interp(at, trajectory.times,
+                                                 trajectory.positions[:, j]) for j in columns]
+            placed.update(names)
+    return model.apply_mimic(q)
 
 
 @dataclass(frozen=True)

@@ -33,6 +33,7 @@ from taskrunner.runtime.replay import motion_data
 from taskrunner.tree.choice import arm_part, choice_key, chosen, goals_key
 from taskrunner.tree.context import ExecutedMotion, TaskContext
 from taskrunner.tree.reach import StagedGoals
+from taskrunner.tree.replan import Replanning, admit_or_replan, plan_again
 from taskrunner.tree.schedule import LAG, Admission, Blocked, LaneKey
 from taskrunner.types import JointPath, JointTrajectory, Pose
 
@@ -154,8 +155,16 @@ class _Executes(TaskLeaf):
         self.since: float | None = None  # s, planned: admitted again, verified from here
         self.lagged = False  # its motion was retimed: it ran behind its schedule
         self.holding = False  # held at its start: another arm runs earlier than planned
+        self.replanning: Replanning | None = None  # planned again around another arm
+
+    def may_replan(self) -> bool:  # planned again around another arm: tree/replan.py
+        return False
+
+    def replan(self, start: np.ndarray, trajectory: JointTrajectory) -> bool:
+        return False
 
     def start(self) -> None:
+        self.replanning = None
         self.handle = None
         self.trajectory = None
         self.admission = None
@@ -203,8 +212,12 @@ class _Executes(TaskLeaf):
         # from now at the earliest.
         since = self.since if timed else None
         now = schedule.planned(self.ctx.clock.now()) if since is not None else 0.0
-        found = schedule.admit(self.ctx.scene, lane, trajectory, self.location, now,
-                               since=since)
+        admitted = admit_or_replan(self, lane, trajectory, now, since)
+        if admitted is None:  # planned again around another arm: admitted when done
+            self.held = None
+            return Status.RUNNING
+        trajectory, found = admitted
+        self.trajectory = trajectory
         if isinstance(found, Blocked):
             refusal = schedule.refusal(lane, found, self.location)
             if refusal is not None:
@@ -225,12 +238,8 @@ class _Executes(TaskLeaf):
         admission = found
         self.admission = admission
         for wait in admission.waits:
-            conflict = wait.conflict
-            self.ctx.events.emit(
-                "wait", wait.describe(self.location), node=self.name, location=self.location,
-                since=round(wait.since, 6), until=round(wait.until, 6), other=wait.other,
-                bodies=list(conflict.bodies), at=round(conflict.time, 6),
-                distance=round(conflict.distance, 6), resolution=wait.kind.value)
+            self.ctx.events.emit("wait", wait.describe(self.location), node=self.name,
+                                 location=self.location, **wait.event_data())
         if timed:
             self.pending = trajectory  # sent at its start (the schedule slips if late)
             return self.poll_execution()
@@ -465,6 +474,15 @@ class MoveToGoal(_Executes):
         # Without a remembered choice: the situation before the seed was drawn, the key.
         self._unchecked: tuple[TaskContext, TaskContext, tuple[Hashable, ...],
                                PlannerOptions] | None = None
+        self._replan: PlannerOptions | None = None  # the options, until planned again
+
+    def may_replan(self) -> bool:
+        return self._replan is not None
+
+    def replan(self, start: np.ndarray, trajectory: JointTrajectory) -> bool:
+        options, self._replan = self._replan, None  # once
+        self.ticket = None if options is None else plan_again(self, start, trajectory, options)
+        return self.ticket is not None
 
     def goal(self, ctx: TaskContext) -> Goal | tuple[Goal, ...]:
         """The leaf's goal(s) built in ``ctx`` (a staged list in full)."""
@@ -513,6 +531,7 @@ class MoveToGoal(_Executes):
         try:
             before = replace(self.ctx)  # the situation before the leaf draws its seed
             found, options, key = self.request_goals(self.ctx)
+            self._replan = options
             picked = chosen(self.ctx.scene.robot, key) if key is not None else None
             # No check chose here (see tree/lookahead.py): the plan's goal state is
             # played on to the step's end before it moves.
@@ -550,6 +569,9 @@ class MoveToGoal(_Executes):
             result = self.ticket.result(0.0)
         except TaskrunnerError as exc:
             self.ticket = None
+            if self.replanning is not None:  # no plan around the other arm: the first one
+                first, self.replanning = self.replanning.trajectory, None
+                return self._admit(first)
             if self._rest is not None:
                 return self._ask_all()  # the first goal's line was blocked (or it failed)
             return self.fail(str(exc))

@@ -79,6 +79,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
@@ -168,15 +169,34 @@ class Wait:
     """A motion held back: it would have met ``conflict`` (another branch's motion, of
     the step at ``other``), so it starts at ``until`` instead (s): a little later, while
     that motion still runs (``kind`` :attr:`~taskrunner.kinds.WaitKind.DELAY`), or when it
-    has ended (:attr:`~taskrunner.kinds.WaitKind.UNTIL_END`)."""
+    has ended (:attr:`~taskrunner.kinds.WaitKind.UNTIL_END`); or it was planned again
+    around the other arm (:attr:`~taskrunner.kinds.WaitKind.REPLAN`)."""
 
     since: float
     until: float
     conflict: Conflict
     other: str | None
     kind: WaitKind = WaitKind.UNTIL_END
+    sooner: float = 0.0
+    """s, with :attr:`~taskrunner.kinds.WaitKind.REPLAN`: how much sooner the motion
+    planned again ends than the first one would have, waiting (it starts at ``until``)."""
+
+    def event_data(self) -> dict[str, Any]:
+        """The data of its ``wait`` event (times in s, distance in m)."""
+        data: dict[str, Any] = {
+            "since": round(self.since, 6), "until": round(self.until, 6), "other": self.other,
+            "bodies": list(self.conflict.bodies), "at": round(self.conflict.time, 6),
+            "distance": round(self.conflict.distance, 6), "resolution": self.kind.value}
+        if self.kind == WaitKind.REPLAN:
+            data["sooner"] = round(self.sooner, 6)
+        return data
 
     def describe(self, here: str | None) -> str:
+        if self.kind == WaitKind.REPLAN:
+            return (f"{here or 'this motion'} was planned again around "
+                    f"{self.other or 'the other arm'}, where they would meet, and ends "
+                    f"{self.sooner:.2f} s sooner than by waiting for it: "
+                    f"{self.conflict.describe()}")
         if self.kind == WaitKind.DELAY:
             return (f"{here or 'this motion'} waits {self.until - self.since:.2f} s, to pass "
                     f"behind {self.other or 'the other arm'}: {self.conflict.describe()}")
@@ -220,6 +240,8 @@ class Admission:
     seconds: float
     least: float = math.inf
     entry: Committed | None = None
+    stamp: int = -1
+    """The schedule's revision it was found at (see :meth:`MotionSchedule.commit`)."""
 
 
 @dataclass
@@ -233,6 +255,9 @@ class MotionSchedule:
     clearance: float = CLEARANCE
     delays: int = DELAYS
     """Starts tried before a met motion's end (:data:`DELAYS`; 1: wait for its end)."""
+    replans: bool = True
+    """A planned motion put off long, waiting for another arm's motion to end, is planned
+    again around that arm (:mod:`taskrunner.tree.replan`; False: it waits)."""
     committed: list[Committed] = field(default_factory=list)
     holding: dict[LaneKey, LaneKey] = field(default_factory=dict)
     finished: dict[tuple[int, str, str], float] = field(default_factory=dict)
@@ -510,9 +535,11 @@ class MotionSchedule:
 
     def admit(self, scene: Scene, lane: LaneKey, trajectory: JointTrajectory,
               location: str | None, now: float = 0.0,
-              since: float | None = None) -> Admission | Blocked:
+              since: float | None = None, commit: bool = True) -> Admission | Blocked:
         """Put a motion of ``lane`` on the schedule, at the earliest time it keeps the
-        clearance from every concurrent lane (module text), and commit it.
+        clearance from every concurrent lane (module text), and commit it (``commit``
+        False: only find where it would go; nothing is committed and no running motion
+        is asked to stop: :meth:`commit` commits it while the schedule is unchanged).
 
         Args:
             scene: the bodies as they are now (the motion's arm at its start).
@@ -567,7 +594,7 @@ class MotionSchedule:
                 # The arm resting, late, where another's running motion was promised the
                 # place: waiting longer cannot help; that motion has to stop (stop-and-go).
                 runner = _blocking(others, conflict)
-                if runner is not None and runner.sent:
+                if runner is not None and runner.sent and commit:
                     self.stops[id(runner)] = conflict
                     self._changes += 1
                 last = runner or _last(others, conflict)
@@ -589,10 +616,23 @@ class MotionSchedule:
                                         f"{len(waits)} waits")
         entry = Committed(lane, TimedMotion(trajectory, start, location), location,
                           seen=self.retractions)
+        admission = Admission(start, tuple(waits), queries, seconds, least, entry,
+                              self._changes)
+        if commit:
+            self.commit(admission)
+        return admission
+
+    def commit(self, admission: Admission) -> bool:
+        """Commit an admission found with ``commit=False`` (its waits recorded); False,
+        nothing committed, when the schedule has changed since it was found (admit the
+        motion again)."""
+        entry = admission.entry
+        if entry is None or admission.stamp != self._changes:
+            return False
         self.committed.append(entry)
-        self.waits += [(location, wait) for wait in waits]
+        self.waits += [(entry.location, wait) for wait in admission.waits]
         self._changes += 1
-        return Admission(start, tuple(waits), queries, seconds, least, entry)
+        return True
 
     def _delay(self, verify: Callable[[float], SpacetimeVerification], start: float,
                end: float) -> tuple[float, SpacetimeVerification] | None:

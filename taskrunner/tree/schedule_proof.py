@@ -180,6 +180,9 @@ def _reason(wait: Wait) -> str:
     other = wait.other or "the other arm"
     if wait.kind == WaitKind.DELAY:
         return f"to pass behind {other}: {wait.conflict.describe()}"
+    if wait.kind == WaitKind.REPLAN:
+        return (f"planned again around {other}, ending {wait.sooner:.2f} s sooner than by "
+                f"waiting: {wait.conflict.describe()}")
     return f"until {other} has moved: {wait.conflict.describe()}"
 
 

@@ -54,7 +54,8 @@ steps:
 """
 
 
-def run_generated(seed: int, tmp_path: Path) -> Runner:
+def run_generated(seed: int, tmp_path: Path, replans: bool = True) -> Runner:
+    """Generated task ``seed`` on the mock backend (``replans``: the schedule's)."""
     path = tmp_path / f"generated_{seed}.yaml"
     path.write_text(generated_task(seed), encoding="utf-8")
     spec = load_task(path, {})
@@ -62,6 +63,7 @@ def run_generated(seed: int, tmp_path: Path) -> Runner:
     names = cell.model.joint_names
     backend = MockBackend(names, dict(zip(names, cell.start_state())))
     runner = Runner(spec, cell, backend, InProcessPlanner(), RunOptions(seed=seed))
+    runner.ctx.schedule.replans = replans
     runner.run()
     return runner
 
