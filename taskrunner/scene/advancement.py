@@ -266,11 +266,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                 if not math.isfinite(states[i, j]):
                     settings[_S_BAD] = i
                     return _NOT_FINITE
-        for j in range(nq):
-            cumulative[0, j] = 0.0
-        for i in range(1, n):
-            for j in range(nq):
-                cumulative[i, j] = cumulative[i - 1, j] + abs(states[i, j] - states[i - 1, j])
+                cumulative[i, j] = (0.0 if i == 0 else
+                                    cumulative[i - 1, j] + abs(states[i, j] - states[i - 1, j]))
         for k in range(walk.shape[0]):
             for column in range(_COLUMNS):
                 walk[k, column] = 0.0
@@ -356,13 +353,12 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
             nearest = first
             for m in range(first, last):
                 k = members[m]
+                for side in range(2):              # its geometries placed, first then second
+                    g = pair_i[k, _PI_FIRST + side]
+                    if frames[nj + g, _FR_PLACED] < stamp:
+                        _geometry_frame(g, geometries, frames, nj)
+                        frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
-                if frames[nj + a, _FR_PLACED] < stamp:
-                    _geometry_frame(a, geometries, frames, nj)
-                    frames[nj + a, _FR_PLACED] = np.inf if geometries[a].joint == 0 else stamp
-                if frames[nj + b, _FR_PLACED] < stamp:
-                    _geometry_frame(b, geometries, frames, nj)
-                    frames[nj + b, _FR_PLACED] = np.inf if geometries[b].joint == 0 else stamp
                 gap = 0.0                          # their bounding spheres' distance
                 for c in range(3):
                     offset = frames[nj + a, _FR_CENTRE + c] - frames[nj + b, _FR_CENTRE + c]

@@ -450,20 +450,21 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
             dz = work[row_a, _FR_CENTRE + 2] - work[row_b, _FR_CENTRE + 2]
             if dx * dx + dy * dy + dz * dz > reach2[k]:
                 continue
-            if gi[gb, _I_BOX] != 0:
-                if work[row_b, _FR_PLACED] < stamp:  # placed once per scan if fixed
-                    _geometry_frame(gb, geometries, work, nj)
-                    work[row_b, _FR_PLACED] = np.inf if gi[gb, _I_JOINT] == 0 else stamp
-                if _sphere_to_box(work, row_a, geo[ga, _G_RADIUS], gb, geometries, nj) > CLEAR:
+            cleared = False
+            for side in range(2):  # a's sphere against b's box, then b's against a's
+                box, other = (gb, ga) if side == 0 else (ga, gb)
+                if gi[box, _I_BOX] == 0:
                     continue
-            if gi[ga, _I_BOX] != 0:
-                if work[row_a, _FR_PLACED] < stamp:  # placed once per scan if fixed
-                    _geometry_frame(ga, geometries, work, nj)
-                    work[row_a, _FR_PLACED] = np.inf if gi[ga, _I_JOINT] == 0 else stamp
-                if _sphere_to_box(work, row_b, geo[gb, _G_RADIUS], ga, geometries, nj) > CLEAR:
-                    continue
-                if gi[gb, _I_BOX] != 0 and _box_gap(ga, gb, geometries, work, nj) > CLEAR:
-                    continue
+                if work[nj + box, _FR_PLACED] < stamp:  # placed once per scan if fixed
+                    _geometry_frame(box, geometries, work, nj)
+                    work[nj + box, _FR_PLACED] = np.inf if gi[box, _I_JOINT] == 0 else stamp
+                if _sphere_to_box(work, nj + other, geo[other, _G_RADIUS], box, geometries,
+                                  nj) > CLEAR:
+                    cleared = True
+                    break
+            if cleared or (gi[ga, _I_BOX] != 0 and gi[gb, _I_BOX] != 0
+                           and _box_gap(ga, gb, geometries, work, nj) > CLEAR):
+                continue
             # Surely overlapping (by more than PROVEN): the inner spheres do, or one's
             # inner sphere overlaps the other's box where that box is the geometry.
             ra = geo[ga, _G_INNER_RADIUS]
@@ -485,12 +486,13 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
                         offset = work[inner_a, _FR_CENTRE + i] - work[inner_b, _FR_CENTRE + i]
                         gap += offset * offset
                     proven = reach > 0.0 and gap < reach * reach
-                if (not proven and ra > 0.0 and gi[gb, _I_EXACT] != 0 and gi[gb, _I_BOX] != 0
-                        and _sphere_to_box(work, inner_a, ra, gb, geometries, nj) < -PROVEN):
-                    proven = True
-                if (not proven and rb > 0.0 and gi[ga, _I_EXACT] != 0 and gi[ga, _I_BOX] != 0
-                        and _sphere_to_box(work, inner_b, rb, ga, geometries, nj) < -PROVEN):
-                    proven = True
+                for side in range(2):  # a's inner sphere in b's box, then b's in a's
+                    inner, box = (ra, gb) if side == 0 else (rb, ga)
+                    if (not proven and inner > 0.0 and gi[box, _I_EXACT] != 0
+                            and gi[box, _I_BOX] != 0
+                            and _sphere_to_box(work, inner_a + side, inner, box, geometries,
+                                               nj) < -PROVEN):
+                        proven = True
                 if proven:
                     return s, -1, steps
             found[count] = k
