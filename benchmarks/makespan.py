@@ -23,12 +23,14 @@ against (target <= 2x).
 
 With ``--generated N`` it also runs the first N generated two-arm tasks of the scenario
 suite (tests/scenarios/test_parallel_generated.py: each arm picks a cube near the table's
-middle and places it on its own side, in one ``parallel``) twice each, alternating: with
-the schedule's delays (a motion that would meet the other arm's running motion starts a
-little later, to pass behind it) and without (it waits for that motion's end,
-``MotionSchedule(delays=1)``). Per mode: runs succeeded, the sum and median of the
-makespans, the waits by resolution, and the arm-against-arm contacts the independent
-verifier finds on the records (target 0).
+middle and places it on its own side, in one ``parallel``) three times each, alternating:
+as a run schedules them (``replans``: a motion that would meet the other arm's running
+motion starts a little later, to pass behind it, and a planned motion that would still
+wait long for that motion's end is planned again around the other arm), with the delays
+only (``delays``: ``MotionSchedule(replans=False)``), and with neither (``until_end``: it
+waits for that motion's end, ``delays=1``). Per mode: runs succeeded, the sum and median
+of the makespans, the waits by resolution, and the arm-against-arm contacts the
+independent verifier finds on the records (target 0).
 
 Prints a table, and with --json one JSON object as the last line.
 """
@@ -118,8 +120,9 @@ def summary(path: Path, found: list[dict]) -> dict:
     }
 
 
-def run_generated(seed: int, delays: int, runs_dir: Path) -> dict:
-    """One mock run of generated two-arm task ``seed`` with the schedule's ``delays``."""
+def run_generated(seed: int, delays: int, runs_dir: Path, replans: bool = True) -> dict:
+    """One mock run of generated two-arm task ``seed`` with the schedule's ``delays`` and
+    ``replans``."""
     sys.path.insert(0, str(ROOT / "tests" / "scenarios"))
     from test_parallel_generated import generated_task
 
@@ -138,6 +141,7 @@ def run_generated(seed: int, delays: int, runs_dir: Path) -> dict:
     runner = Runner(spec, cell, MockBackend(names, dict(zip(names, cell.start_state()))),
                     InProcessPlanner(), RunOptions(seed=seed, runs_dir=runs_dir))
     runner.ctx.schedule.delays = delays
+    runner.ctx.schedule.replans = replans
     record = runner.run()
     spans = [(float(e.data["start"]), float(e.data["start"])
               + float(e.data["trajectory"]["duration"]))
@@ -156,12 +160,13 @@ def bench_generated(count: int) -> dict:
     """The generated tasks with and without delays (module text)."""
     from taskrunner.tree.schedule import DELAYS
 
-    found: dict[str, list[dict]] = {"delays": [], "until_end": []}
+    modes = {"replans": (DELAYS, True), "delays": (DELAYS, False), "until_end": (1, False)}
+    found: dict[str, list[dict]] = {mode: [] for mode in modes}
     with tempfile.TemporaryDirectory() as tmp:
         run_generated(0, DELAYS, Path(tmp))  # warm-up
         for seed in range(count):
-            found["delays"].append(run_generated(seed, DELAYS, Path(tmp)))
-            found["until_end"].append(run_generated(seed, 1, Path(tmp)))
+            for mode, (delays, replans) in modes.items():
+                found[mode].append(run_generated(seed, delays, Path(tmp), replans))
     out = {}
     for mode, runs in found.items():
         ok = [r["makespan_s"] for r in runs if r["status"] == "succeeded"]
