@@ -36,9 +36,11 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import coal
-import numba
 import numpy as np
 
+# numba itself only through frames (first): it sets numba's environment before numba's
+# import reads it (its error message highlighting, which cost ~0.1 s of CPU at the kernels'
+# first compilation, set up again for each typing attempt; a terminal reset at exit).
 from taskrunner.collision import frames as collision_frames
 from taskrunner.collision.frames import ORIGIN, ZERO, jit_plain, joint_frames
 from taskrunner.errors import ArgumentError
@@ -358,6 +360,8 @@ def _warm_mark() -> Path:
                    distance_bounds.__file__, geometry_records.__file__, collision_frames.__file__):
         digest.update(str(Path(module).resolve()).encode())
         digest.update(Path(module).read_bytes())
+    import numba  # loaded by then (through frames, above)
+
     digest.update(f"{numba.__version__} {sys.version}".encode())
     cache = os.environ.get("NUMBA_CACHE_DIR") or str(user_cache_dir() / "numba")
     return Path(cache) / f"warm-{digest.hexdigest()[:16]}"
