@@ -305,7 +305,7 @@ def _line_until_collision(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b:
 
 def warm_kernels(verifier: PathVerifier, q: np.ndarray) -> None:
     """Load the compiled kernels of ``verifier`` and of its screen (compiling them the
-    first time on a machine: about 3.3 and 0.75 s of CPU, then cached on disk) by checking a
+    first time on a machine: about 2.7 and 0.6 s of CPU, then cached on disk) by checking a
     short motion from state ``q`` (within the limits).
 
     The first time (no mark of a finished warm-up for these kernels' sources), the

@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -54,3 +58,18 @@ def test_a_prismatic_joint_moves_its_lever_by_one_metre_per_metre(panda_model: R
     index = int(tree.joints["state"][finger])
     assert tree.state_joint[index] == finger
     assert finger in tree.prismatic and tree.revolute[index] == 0
+
+
+def test_numba_environment_is_set_before_numba_reads_it() -> None:
+    """Importing the state screen first (it once imported numba before frames) still has
+    frames set numba's environment before numba's import reads it: no error message
+    highlighting (colorama was set up again at each typing attempt of a compilation) and
+    no LLVM loop vectorization."""
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "NUMBA_LOOP_VECTORIZE")}
+    code = ("import taskrunner.scene.screen\n"
+            "import numba.core.config as config, numba.core.errors as errors\n"
+            "print(type(errors.termcolor()).__name__, config.LOOP_VECTORIZE)")
+    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                          check=True, timeout=120)
+    assert done.stdout.split() == ["NOPColorScheme", "0"]
