@@ -61,6 +61,9 @@ POINTS: dict[str, tuple[tuple[str, tuple[str, str] | None], ...]] = {
 }
 
 
+STORY_SPEED = 4.0  # the stories' physics, times real time (a half motion: >= 60 ms)
+
+
 class Fault:
     """Stops every motion of ``backend`` half-way through the motion of the next point's
     step (by the physics' clock, which runs only while something moves): the run fails in
@@ -91,8 +94,10 @@ def story(request, tmp_path_factory) -> tuple[str, list[RunResult], Path]:
     spec = load_task(resolve_task(task), {})
     cell = load_cell(spec.cell)
     start = dict(zip(cell.model.joint_names, cell.start_state()))
+    # Paced at STORY_SPEED times real time: unpaced, the physics runs a short motion's
+    # second half in a few ms, and on a loaded machine the fault's thread woke after it.
     backend = MujocoBackend(cell.model.joint_names, physics_cell(cell), start,
-                            MujocoOptions(cache_dir=str(runs / "cache")))
+                            MujocoOptions(cache_dir=str(runs / "cache"), speed=STORY_SPEED))
     fault = Fault(backend, [node for node, _ in POINTS[task]])
     try:
         run = start_run(spec, cell, backend, seed=1, backend_name="mujoco", runs_dir=runs,
