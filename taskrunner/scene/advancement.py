@@ -485,8 +485,11 @@ def _group_pairs(pair_i: np.ndarray, pair_levers: np.ndarray, unit_of: np.ndarra
     codes[flip] = np.where(codes[flip] % 2 == 1, codes[flip] + 1, codes[flip] - 1)
     block[~np.broadcast_to(listed[:, None, :], block.shape)] = 0
     levers = (pair_levers + 0.0).view(np.int64)              # -0.0 as 0.0, then its bits
-    keys = np.hstack([count[:, None], block.reshape(n, -1), levers])
-    _, first_at, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    keys = np.ascontiguousarray(np.hstack([count[:, None], block.reshape(n, -1), levers]))
+    # Each row as one opaque value (its bytes): equal rows, equal values; sorted as bytes,
+    # ~10x faster than np.unique's rows (axis=0) and the same groups.
+    rows = keys.view(np.dtype((np.void, keys.shape[1] * keys.itemsize))).reshape(n)
+    _, first_at, inverse = np.unique(rows, return_index=True, return_inverse=True)
     rank = np.empty(len(first_at), dtype=np.int64)
     rank[np.argsort(first_at, kind="stable")] = np.arange(len(first_at))
     unit_of[:] = rank[inverse.reshape(-1)]

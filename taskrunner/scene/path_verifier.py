@@ -358,7 +358,7 @@ class PathVerifier:
         cumulative = np.empty_like(states)                    # per joint, sum of |dq|
         own = self._busy.acquire(blocking=False)              # else: a concurrent call
         try:
-            walk, schedule, picked, selected, distances, q, scratch, frames, settings = \
+            walk, schedule, picked, selected, distances, q, frames, settings = \
                 self._buffers if own else self._new_buffers()
             settings[:] = self._settings
             settings[_S_CLEARANCE] = clearance
@@ -402,12 +402,12 @@ class PathVerifier:
 
     def _new_buffers(self) -> tuple[np.ndarray, ...]:
         """Work arrays of :func:`_walk`: walk state and schedule (per unit), the units
-        picked, the pairs selected for coal's distances, those distances, the state, a
-        scratch row of joint values, its frames, the settings."""
+        picked, the pairs selected for coal's distances, those distances, the state, its
+        frames, the settings."""
         n_pairs, n_units, nq = len(self._first), len(self._unit_i), self.robot.nq
         return (np.zeros((n_units, _COLUMNS + 2 * nq)), np.zeros((2, n_units)),
                 np.zeros(n_units, dtype=np.int64), np.zeros(n_pairs, dtype=np.int64),
-                np.zeros(n_pairs), np.zeros(nq), np.zeros(nq), self._kinematics.buffer(),
+                np.zeros(n_pairs), np.zeros(nq), self._kinematics.buffer(),
                 np.zeros(_S_COUNT))
 
 
