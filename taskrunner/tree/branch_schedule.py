@@ -17,8 +17,10 @@ from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.timing import parameterize_path
 from taskrunner.scene import Scene
 from taskrunner.tasks.waits import FINISHED
+from taskrunner.tree.behaviours import MoveToGoal
 from taskrunner.tree.instant_leaves import Wait
 from taskrunner.tree.leafcheck import Motion
+from taskrunner.tree.replan import long_wait
 from taskrunner.tree.schedule import Blocked, LaneKey, MotionSchedule
 from taskrunner.tree.schedule_proof import ScheduleProof, prove_schedule
 from taskrunner.tree.waiting import reached
@@ -39,6 +41,7 @@ class _Queued:
     name: str = ""
     moment: str = FINISHED
     seconds: float = 0.0
+    planned: bool = False  # a motion the run plans with the search (a MoveToGoal's)
 
 
 def schedule_branches(scene: Scene, branches: list[list[Motion]],
@@ -91,7 +94,8 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                 trajectory = parameterize_path(model, path, timing)
             except TaskrunnerError:
                 continue  # reported by the step itself where a run would time it
-            queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory))
+            queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory,
+                                 planned=isinstance(leaf, MoveToGoal)))
     notes: list[str] = []
     while any(queues.values()):
         progressed = False
@@ -134,6 +138,11 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             queue.pop(0)
             progressed = True
             notes += [wait.describe(location) for wait in found.waits]
+            if item.planned and long_wait(found) is not None:
+                # A run plans it again around the other arm first (tree/replan.py): the
+                # check does not search, so it cannot tell whether that ends sooner.
+                notes.append(f"{location or 'a motion'}: a run first plans it again around "
+                             f"the other arm, and takes that motion where it ends sooner")
         if not progressed:
             return "the branches wait for each other's arms (a deadlock)", notes
     proof = prove_schedule(scene, schedule)

@@ -14,7 +14,7 @@ carries a ``wait`` of resolution ``replan`` with how much sooner it ends.
 
 Only the run re-plans: ``run-task check`` does not plan its motions with the search
 (:mod:`taskrunner.tree.leafcheck`), so its schedule shows the wait the first plan would
-take.
+take, and notes that a run plans that motion again first.
 """
 
 from __future__ import annotations
@@ -37,7 +37,8 @@ from taskrunner.types import JointTrajectory
 if TYPE_CHECKING:
     from taskrunner.tree.context import TaskContext
 
-__all__ = ["REPLAN_AFTER", "REPLAN_GAIN", "Replanning", "admit_or_replan", "plan_again"]
+__all__ = ["REPLAN_AFTER", "REPLAN_GAIN", "Replanning", "admit_or_replan", "long_wait",
+           "plan_again"]
 
 REPLAN_AFTER = 0.3
 """s: a motion put off longer than this, waiting for another arm's motion to end, is
@@ -90,7 +91,7 @@ def admit_or_replan(leaf: Replans, lane: LaneKey, trajectory: JointTrajectory, n
         return trajectory, schedule.admit(scene, lane, trajectory, location, now, since=since)
     found = schedule.admit(scene, lane, trajectory, location, now, since=since, commit=False)
     if isinstance(found, Admission):
-        wait = _long_wait(found)
+        wait = long_wait(found)
         if wait is not None:
             others = [c for c in schedule.committed if concurrent(c.lane, lane)]
             start = lanes_state(scene, lanes_of(others), wait.conflict.time)
@@ -103,7 +104,7 @@ def admit_or_replan(leaf: Replans, lane: LaneKey, trajectory: JointTrajectory, n
     return trajectory, schedule.admit(scene, lane, trajectory, location, now, since=since)
 
 
-def _long_wait(admission: Admission) -> Wait | None:
+def long_wait(admission: Admission) -> Wait | None:
     """The wait for another arm's motion to end that puts the admitted motion off by more
     than :data:`REPLAN_AFTER` (None: none)."""
     if not admission.waits or admission.start - admission.waits[0].since <= REPLAN_AFTER:

@@ -4,6 +4,7 @@ schedule finds an admission without committing it, then commits it while unchang
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
@@ -18,7 +19,7 @@ from taskrunner.tree.replan import REPLAN_GAIN
 from taskrunner.tree.schedule import Admission, Blocked, MotionSchedule
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "scenarios"))
-from test_parallel_generated import run_generated  # noqa: E402
+from test_parallel_generated import run_generated
 
 # Generated two-arm tasks whose right-arm reach (a planned motion) would wait for the left
 # arm's motion to end, and ends sooner planned again with that arm where they would meet.
@@ -102,3 +103,18 @@ def test_a_generated_task_ends_sooner_with_its_motion_planned_again(tmp_path):
                    for e in runner.record.events if e.kind == "motion")
 
     assert end(replanned) <= end(waited) - REPLAN_GAIN
+
+
+def test_the_check_notes_that_a_run_plans_a_long_waiting_motion_again(tmp_path, capsys):
+    # The check does not search: it shows the first plan's wait, and says what a run does.
+    from test_parallel_generated import generated_task
+
+    from taskrunner.cli import main
+
+    path = tmp_path / "generated_25.yaml"
+    path.write_text(generated_task(25), encoding="utf-8")
+    assert main(["check", "--json", str(path)]) == 0
+    notes = [n["message"] for n in json.loads(capsys.readouterr().out)["notes"]]
+    waits = [n for n in notes if "has moved" in n]
+    assert waits and any(n.endswith("a run first plans it again around the other arm, and "
+                                    "takes that motion where it ends sooner") for n in notes)
