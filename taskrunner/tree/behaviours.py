@@ -351,10 +351,11 @@ class _Executes(TaskLeaf):
             if now < schedule.due(self.admission):
                 return Status.RUNNING
             try:
-                if schedule.stale(self.admission):
-                    # Verified against a promise since broken: verified again from now
-                    # (its arm rested here since its start).
-                    self.since = min(self.admission.start, schedule.planned(now))
+                if schedule.stale(self.admission) or (
+                        self.holding and not schedule.running_beside(lane_of(self))):
+                    # Verified against a promise since broken, or held against arms now
+                    # at rest (their next motions wait for it): verified again from now.
+                    self.since, self.holding = min(self.admission.start, schedule.planned(now)), False
                     schedule.withdraw(self.admission)
                     trajectory, self.pending = self.pending, None
                     return self._admit(trajectory)

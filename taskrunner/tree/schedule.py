@@ -442,6 +442,13 @@ class MotionSchedule:
                 and c.motion.start + LATE < now]
         return min(late, key=lambda c: c.motion.start) if late else None
 
+    def running_beside(self, lane: LaneKey) -> bool:
+        """Whether a motion of a lane concurrent with ``lane`` was sent and has not played
+        to its end yet."""
+        return any(c.sent and c.progress is not None and concurrent(c.lane, lane)
+                   and float(c.progress()) < c.motion.trajectory.duration
+                   for c in self.committed)
+
     def lagging(self, lane: LaneKey, now: float, tolerance: float) -> tuple[Committed, float] | None:
         """A sent motion of a lane concurrent with ``lane`` whose arm runs more than
         ``tolerance`` s behind its schedule at ``now`` (s), and by how much."""
