@@ -46,10 +46,18 @@ def trajectory_data(trajectory: JointTrajectory, max_rate_hz: float = MAX_RATE_H
     (one row per sample, rad or m and per second), thinned to ``max_rate_hz``."""
     times = np.asarray(trajectory.times, dtype=float)
     keep = _thin(times, max_rate_hz)
+    stamps = [round(float(t), _TIME_DIGITS) for t in times[keep]]
+    # Rounded, two samples may fall on one stamp (a motion cut just after a sample, or
+    # stopped at its first): the earlier goes, so that the times stay strictly increasing.
+    distinct = [i for i in range(len(stamps)) if i == len(stamps) - 1 or stamps[i] < stamps[i + 1]]
+    if len(distinct) < 2 <= len(stamps):  # all within one stamp: its first and last apart
+        distinct = [0, len(stamps) - 1]
+        stamps[-1] = round(stamps[0] + 10.0 ** -_TIME_DIGITS, _TIME_DIGITS)
+    keep = keep[distinct]
     return {
         "joints": list(trajectory.names),
         "duration": round(trajectory.duration, _TIME_DIGITS),
-        "times": [round(float(t), _TIME_DIGITS) for t in times[keep]],
+        "times": [stamps[i] for i in distinct],
         "positions": np.round(trajectory.positions[keep], _POS_DIGITS).tolist(),
         "velocities": np.round(trajectory.velocities[keep], _POS_DIGITS).tolist(),
     }

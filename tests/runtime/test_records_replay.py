@@ -103,3 +103,23 @@ def test_a_cancelled_motion_records_how_far_it_got(tmp_path):
     final = [replay.final_scene["joints"][j] for j in motion.trajectory["joints"]]
     end = motion.trajectory["positions"][-1]
     assert not np.allclose(final, end, atol=1e-3)
+
+
+@pytest.mark.parametrize("times", [[0.0, 0.5, 1.0, 1.00004], [0.0, 0.00003], [0.0, 0.4, 0.40002]])
+def test_a_recorded_trajectory_s_times_stay_strictly_increasing_when_rounded(times):
+    # A motion cut just after a sample (or stopped at its first) has two samples within
+    # the record's 0.1 ms: the record keeps one, and the trajectory reads back.
+    from taskrunner.runtime.replay import trajectory_data
+    from taskrunner.types import JointTrajectory
+
+    t = np.array(times)
+    rows = np.column_stack([t, 2 * t])
+    data = trajectory_data(JointTrajectory(("a", "b"), t, rows, np.zeros_like(rows),
+                                           np.zeros_like(rows)))
+    assert np.all(np.diff(data["times"]) > 0) and len(data["times"]) >= 2
+    assert len(data["positions"]) == len(data["times"])
+    assert data["positions"][-1] == pytest.approx([times[-1], 2 * times[-1]], abs=1e-5)
+    back = JointTrajectory(tuple(data["joints"]), np.asarray(data["times"]),
+                           np.asarray(data["positions"]), np.asarray(data["velocities"]),
+                           np.zeros((len(data["times"]), 2)))
+    assert back.duration == pytest.approx(data["times"][-1])
