@@ -118,3 +118,19 @@ def test_the_check_notes_that_a_run_plans_a_long_waiting_motion_again(tmp_path, 
     waits = [n for n in notes if "has moved" in n]
     assert waits and any(n.endswith("a run first plans it again around the other arm, and "
                                     "takes that motion where it ends sooner") for n in notes)
+
+
+def test_running_beside_is_whether_another_arm_s_sent_motion_still_plays(scene):
+    # What a motion held at its start asks before it is admitted again from where it
+    # rests: an arm that still moves may clear its way; one at rest will not.
+    schedule = MotionSchedule()
+    schedule.new_instance()
+    right = schedule.admit(scene, RIGHT, line("right", CANDLE, P), "t.yaml:1")
+    left = schedule.admit(scene, LEFT, line("left", CANDLE, CANDLE), "t.yaml:2")
+    assert isinstance(right, Admission) and isinstance(left, Admission)
+    assert not schedule.running_beside(LEFT)  # admitted, not sent
+    played = [0.5]
+    schedule.confirm(scene, right, 0.0, progress=lambda: played[0])
+    assert schedule.running_beside(LEFT) and not schedule.running_beside(RIGHT)
+    played[0] = right.entry.motion.trajectory.duration  # played to its end: at rest
+    assert not schedule.running_beside(LEFT)
