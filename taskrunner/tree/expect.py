@@ -229,10 +229,21 @@ def _ignore_arms(scene: Scene, beside: set[str], own: set[str]) -> None:
 def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene, list[Lane]]]:
     """Each ``parallel`` of a run's ``motion`` events as the verifier's lanes, with the
     scene it started in: the robots alone (links against links), their joints where the
-    record says they were when its first motion was sent; a motion at its real start."""
+    record says they were when its first motion was sent; a motion at its real start, up
+    to where a stop-and-go stopped it (its ``wait`` event's ``stopped``)."""
     instances: dict[int, dict[tuple[tuple[int, int], ...], list[TimedMotion]]] = {}
     first_state: dict[int, dict[str, float]] = {}
+    sent: dict[tuple[str | None, str | None], tuple[list[TimedMotion], int]] = {}
     for event in events:
+        stopped = event.data.get("stopped") if event.kind == "wait" else None
+        if stopped is not None and (event.node, event.location) in sent:
+            # Stopped short (stop-and-go): it moved up to there, and its rest is a motion
+            # of its own, sent later.
+            motions, index = sent[(event.node, event.location)]
+            motion = motions[index]
+            motions[index] = TimedMotion(_cut_at(motion.trajectory, float(stopped)),
+                                         motion.start, motion.label)
+            continue
         lane = tuple(tuple(k) for k in event.data.get("lane") or ()) if event.kind == "motion" \
             else ()
         if not lane or "trajectory" not in event.data:
@@ -245,7 +256,9 @@ def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene,
         start = event.data.get("sent", event.data.get("start"))  # when it really started
         motion = TimedMotion(trajectory, float(start or 0.0), event.location or event.node)
         key = tuple((int(a), int(b)) for a, b in lane)
-        instances.setdefault(key[0][0], {}).setdefault(key, []).append(motion)
+        listed = instances.setdefault(key[0][0], {}).setdefault(key, [])
+        sent[(event.node, event.location)] = (listed, len(listed))
+        listed.append(motion)
         first_state.setdefault(key[0][0], (event.data.get("scene") or {}).get("joints", {}))
     out = []
     for instance, lanes in instances.items():
@@ -254,6 +267,21 @@ def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene,
         out.append((scene, [Lane(f"branch {'.'.join(str(b) for _, b in key)}",
                                  tuple(motions)) for key, motions in lanes.items()]))
     return out
+
+
+def _cut_at(trajectory: JointTrajectory, until: float) -> JointTrajectory:
+    """``trajectory`` up to ``until`` s (its last sample there: where the arm stopped)."""
+    times, positions = trajectory.times, trajectory.positions
+    if until >= times[-1]:
+        return trajectory
+    until = max(until, 0.0)
+    end = np.array([np.interp(until, times, positions[:, j]) for j in range(positions.shape[1])])
+    keep = times < until
+    new_times, rows = np.append(times[keep], until), np.vstack([positions[keep], end])
+    if len(new_times) < 2:  # stopped at its first sample
+        new_times, rows = np.array([0.0, 1e-6]), np.vstack([end, end])
+    zeros = np.zeros_like(rows)
+    return JointTrajectory(trajectory.names, new_times, rows, zeros, zeros)
 
 
 def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:

@@ -134,3 +134,29 @@ def test_running_beside_is_whether_another_arm_s_sent_motion_still_plays(scene):
     assert schedule.running_beside(LEFT) and not schedule.running_beside(RIGHT)
     played[0] = right.entry.motion.trajectory.duration  # played to its end: at rest
     assert not schedule.running_beside(LEFT)
+
+
+def test_the_record_s_lanes_cut_a_motion_where_a_stop_and_go_stopped_it(scene):
+    # A motion stopped 0.5 s in (its wait event's `stopped`) and its rest sent at 0.6 s:
+    # the arm moved the first only up to there; replayed in full, the two would overlap.
+    from taskrunner.runtime.events import RunEvent
+    from taskrunner.runtime.replay import trajectory_data
+    from taskrunner.tree.expect import record_lanes
+
+    reach = line("right", CANDLE, P)
+    rest = line("right", P, P, duration=1.0)
+    def motion(seq: int, sent: float, trajectory) -> RunEvent:
+        return RunEvent(seq, sent, "motion", "reach", "t.yaml:1", None, "", {
+            "lane": [[1, 1]], "sent": sent, "start": sent,
+            "trajectory": trajectory_data(trajectory)})
+
+    events = [motion(1, 0.1, reach),
+              RunEvent(2, 0.6, "wait", "reach", "t.yaml:1", None, "stops",
+                       {"hold": True, "stopped": 0.5}),
+              motion(3, 0.6, rest)]
+    (_, lanes), = record_lanes(scene.robot, events)
+    first, second = lanes[0].motions
+    assert first.trajectory.duration == pytest.approx(0.5) and first.end <= second.start
+    assert np.allclose(first.trajectory.positions[-1],
+                       np.add(CANDLE, 0.25 * np.subtract(P, CANDLE)), atol=1e-4)
+    assert second.trajectory.duration == pytest.approx(1.0)
