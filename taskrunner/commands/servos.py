@@ -22,7 +22,8 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     """Build the host firmware, start it, pass its two address lines through.
 
     SIGTERM and SIGINT are passed on to the firmware process (Ctrl-C also reaches it from
-    the terminal); this command ends when it has (killing it after 5 s more of a SIGINT):
+    the terminal); this command ends when it has (killing it after 5 s more of a SIGINT),
+    and the firmware is sent SIGTERM when this command ends in any other way (killed):
     no firmware is left behind. Exit code: the firmware's,
     128 + N when a signal N ended it.
     """
@@ -30,6 +31,7 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     import subprocess
 
     from taskrunner.backends.host_firmware import build_host_firmware
+    from taskrunner.processes import ending_with_parent
 
     command = [str(build_host_firmware()), "--speedup", str(args.speedup)]
     if args.log:
@@ -48,26 +50,28 @@ def cmd_firmware_sim(args: argparse.Namespace) -> int:
     # Installed before the firmware starts: it prints its address lines at once, and a
     # SIGTERM sent as soon as they appear must find the handler in place.
     previous = signal.signal(signal.SIGTERM, forward)
+    process: subprocess.Popen[bytes] | None = None
     try:
-        process = subprocess.Popen(command)
-        started.append(process)
-        for signum in pending:
-            process.send_signal(signum)
-        while True:
+        try:
+            # Ended with this command however it ends (a SIGKILL included): no firmware
+            # is left holding its pty and port.
+            process = subprocess.Popen(command, preexec_fn=ending_with_parent())
+            started.append(process)
+            for signum in pending:
+                process.send_signal(signum)
+            code = process.wait()
+        except KeyboardInterrupt:
+            # From a terminal the firmware had its own SIGINT; sent to this process
+            # alone (`kill -INT`), it had not: passed on, then a moment to end.
+            if process is None:
+                raise  # before it started: it ends with this command
+            if process.poll() is None:
+                process.send_signal(signal.SIGINT)
             try:
+                code = process.wait(5)
+            except subprocess.TimeoutExpired:
+                process.kill()
                 code = process.wait()
-                break
-            except KeyboardInterrupt:
-                # From a terminal the firmware had its own SIGINT; sent to this process
-                # alone (`kill -INT`), it had not: passed on, then a moment to end.
-                if process.poll() is None:
-                    process.send_signal(signal.SIGINT)
-                try:
-                    code = process.wait(5)
-                except subprocess.TimeoutExpired:
-                    process.kill()
-                    code = process.wait()
-                break
     finally:
         signal.signal(signal.SIGTERM, previous)
     return 128 - code if code < 0 else code

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import csv
 import json
+import os
 import signal
 import subprocess
+import time
 import urllib.request
 from pathlib import Path
 
@@ -107,7 +109,45 @@ def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
     finally:
         stop_process(proc, signal.SIGINT)  # to the command alone, as `kill -INT PID` does
     # It passed the SIGINT on: no firmware is left behind.
-    assert firmware is not None and not Path(f"/proc/{firmware}").exists()
+    assert firmware is not None and _ended(firmware)
+
+
+def _ended(pid: int, within: float = 20.0) -> bool:
+    """Whether process ``pid`` is gone (or a zombie) within ``within`` s."""
+    deadline = time.monotonic() + within
+    while time.monotonic() < deadline:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except (FileNotFoundError, ProcessLookupError):
+            return True
+        if state in ("Z", "X"):
+            return True
+        time.sleep(0.05)
+    return False
+
+
+def test_run_task_firmware_sim_killed_leaves_no_firmware_behind(host_binary):
+    """A SIGKILL cannot be passed on: the firmware is sent SIGTERM by the kernel when the
+    command ends (it would otherwise keep its pty and port open, orphaned)."""
+    import sys
+
+    proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
+                             "--speedup", "10"], stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, cwd=ROOT)
+    firmware = None
+    try:
+        pty, url = read_address_lines(proc, timeout=20.0)
+        assert status(url)["status"] == "ok"
+        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
+        assert len(children) == 1
+        firmware = int(children[0])
+        proc.kill()
+        proc.wait(10)
+        assert _ended(firmware), f"firmware {firmware} outlived its killed command"
+    finally:
+        stop_process(proc)
+        if firmware is not None and not _ended(firmware, 0.0):
+            os.kill(firmware, signal.SIGKILL)
 
 
 PAIR_BOARD = [0, 1, 2, 3, 4, 5, 8, 9, 10, 11, 12, 13]  # cells/servo_arm_pair.hardware.yaml
