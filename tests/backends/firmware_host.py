@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from taskrunner.backends.host_firmware import build_host_firmware
+from taskrunner.processes import ending_with_parent
 
 
 def build_host() -> Path:
@@ -71,7 +72,9 @@ def running_host(binary: Path, speedup: float, log: Path | None = None,
         command += ["--channels", ",".join(map(str, channels))]
     if log is not None:
         command += ["--log", str(log)]
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    # Ended with the test process even when it is killed (a busy CI's timeout).
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                            preexec_fn=ending_with_parent())
     try:
         pty, url = read_address_lines(proc)
         yield FirmwareHost(proc, pty, url, log)
