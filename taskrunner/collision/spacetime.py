@@ -34,6 +34,18 @@ margin in motion bound), so it ends on every timeline.
 The verifier is independent of the planner and of the run: it reads trajectories and a
 scene only, so a run record can be verified after the fact
 (:mod:`taskrunner.tree.expect`).
+
+*Held objects.* A motion may say what its arm holds while it runs
+(:attr:`TimedMotion.held`: the objects attached to a link of its lane, each posed in that
+link's frame); a pick attaches between two motions, a place releases. Where any motion
+says so, the common clock is cut where what a lane holds changes, and each stretch is
+verified (or measured) on its own, in a copy of the scene holding what each lane holds
+then: during a motion, what it says; at rest between two motions, what either says (the
+object is where the arm rests, in its hand or just set down or taken: one place); before
+a lane's first motion, that one's, after its last, that one's. The objects named are
+taken out of the scene otherwise (a world object of no lane is never checked in time);
+the scene's allowances naming them are kept. Motions that say nothing (``held`` None)
+leave the scene's objects as they are: the walk is then the one above, unchanged.
 """
 
 from __future__ import annotations
@@ -54,7 +66,7 @@ if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, 
     import pinocchio as pin
 
     from taskrunner.robot import RobotModel
-    from taskrunner.scene import Scene
+    from taskrunner.scene import Scene, SceneObject
     from taskrunner.scene.collision import CollisionChecker
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
@@ -74,11 +86,17 @@ class TimedMotion:
 
     Attributes:
         label: what the motion is, for reports (the task file:line and step).
+        held: the objects attached while it runs (each ``attached_to`` its link, its
+            pose in that link's frame); those attached to a link of this lane's are
+            its lane's bodies (module text). Objects of other lanes are ignored, so the
+            attached objects of the scene the motion started in may be given whole.
+            None: not known (the scene's objects as they are).
     """
 
     trajectory: JointTrajectory
     start: float
     label: str | None = None
+    held: tuple[SceneObject, ...] | None = None
 
     @property
     def end(self) -> float:
@@ -196,6 +214,27 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     """
     started = time.perf_counter()
     options = options or SpacetimeOptions()
+    spans = _held_spans(scene, lanes, window)
+    if spans is None:
+        return _verify(scene, lanes, window, options, started)
+    least: SpacetimeVerification | None = None
+    queries = 0
+    for held_scene, span in spans:  # in time order: the first conflict is the first
+        found = _verify(held_scene, lanes, span, options, started)
+        queries += found.distance_queries
+        if least is None or found.min_distance < least.min_distance:
+            least = found
+        if found.conflict is not None:
+            break
+    if least is None:
+        return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
+    return replace(least, conflict=found.conflict, distance_queries=queries,
+                   seconds=time.perf_counter() - started)
+
+
+def _verify(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None,
+            options: SpacetimeOptions, started: float) -> SpacetimeVerification:
+    """:func:`verify_lanes` on ``scene`` as it is (held objects not looked at)."""
     timeline = _Timeline(scene, lanes, window)
     if timeline.empty:
         return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
@@ -281,6 +320,23 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
         raise ArgumentError(f"'tolerance' must be a positive number of metres "
                             f"(got {tolerance!r})")
     started = time.perf_counter()
+    spans = _held_spans(scene, lanes, window)
+    if spans is None:
+        return _least_clearance(scene, lanes, window, tolerance, started)
+    found = [_least_clearance(s, lanes, span, tolerance, started) for s, span in spans]
+    touching = [f for f in found if f.lower == -math.inf]  # the first contact in time
+    best = touching[0] if touching else min(found, key=lambda f: f.distance, default=None)
+    if best is None:
+        return LeastClearance(math.inf, math.inf, None, None, (None, None), None, 0,
+                              time.perf_counter() - started)
+    return replace(best, lower=min(f.lower for f in found) if not touching else -math.inf,
+                   distance_queries=sum(f.distance_queries for f in found),
+                   seconds=time.perf_counter() - started)
+
+
+def _least_clearance(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None,
+                     tolerance: float, started: float) -> LeastClearance:
+    """:func:`least_clearance` on ``scene`` as it is (held objects not looked at)."""
     timeline = _Timeline(scene, lanes, window)
     queries = 0
     best: _Walk | None = None  # the walk that measured the least distance so far
@@ -316,6 +372,87 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
                            timeline.motion_label(owners[1], at)),
                           (timeline.lanes[owners[0]].name, timeline.lanes[owners[1]].name),
                           queries, time.perf_counter() - started)
+
+
+# Per scene (kept while it lives): its copies holding what lanes hold, by the scene's
+# revision and state and what is held, the latest few (a check verifies one schedule
+# many times).
+_HELD_SCENES: weakref.WeakKeyDictionary[Scene, dict[tuple[object, ...], Scene]] = \
+    weakref.WeakKeyDictionary()
+_HELD_SCENES_KEPT = 16
+
+
+def _held_spans(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None
+                ) -> list[tuple[Scene, tuple[float, float]]] | None:
+    """The stretches of the common clock over which what each lane holds stays the
+    same, in time order, each with a copy of ``scene`` holding it (module text); None
+    where no motion says what it holds (or nothing moves)."""
+    motions = [m for lane in lanes for m in lane.motions]
+    if not any(m.held is not None for m in motions) or len(lanes) < 2:
+        return None
+    model = scene.robot
+    pin_model = model.model
+    columns = [model.indices(sorted({n for m in lane.motions for n in m.trajectory.names}))
+               for lane in lanes]
+    moved_at, carried_at = _joint_lanes(model, scene.checker, columns)
+
+    def owner(link: str) -> int:
+        if not pin_model.existFrame(link):
+            return -1
+        jid = int(pin_model.frames[pin_model.getFrameId(link)].parentJoint)
+        return int(moved_at[jid]) if moved_at[jid] >= 0 else int(carried_at[jid])
+
+    def own(index: int, motion: TimedMotion) -> dict[str, SceneObject]:
+        return {o.name: o for o in motion.held or ()
+                if o.attached_to is not None and owner(o.attached_to) == index}
+
+    ordered = [sorted(lane.motions, key=lambda m: m.start) for lane in lanes]
+
+    def holding(index: int, t: float) -> dict[str, SceneObject]:
+        mine = ordered[index]
+        if not mine:
+            return {}
+        i = max((k for k, m in enumerate(mine) if m.start <= t), default=0)
+        if mine[i].start > t or t <= mine[i].end or i + 1 == len(mine):
+            return own(index, mine[i])
+        return {**own(index, mine[i + 1]), **own(index, mine[i])}  # at rest between two
+
+    t0 = min(m.start for m in motions) if window is None else window[0]
+    t1 = max(m.end for m in motions) if window is None else window[1]
+    points = sorted({t0, t1} | {t for m in motions for t in (m.start, m.end) if t0 < t < t1})
+    spans: list[tuple[tuple[object, ...], list[SceneObject], float, float]] = []
+    for a, b in zip(points, points[1:] + ([] if len(points) > 1 else [t1])):
+        held = [o for i in range(len(lanes)) for o in holding(i, 0.5 * (a + b)).values()]
+        key = tuple((o.name, o.attached_to, o.pose.xyz, o.pose.quat, repr(o.shape))
+                    for o in held)
+        if spans and spans[-1][0] == key:
+            spans[-1] = (key, held, spans[-1][2], b)
+        else:
+            spans.append((key, held, a, b))
+    named = {o.name for m in motions for o in m.held or ()}
+    return [(_held_scene(scene, named, key, held), (a, b)) for key, held, a, b in spans]
+
+
+def _held_scene(scene: Scene, named: set[str], key: tuple[object, ...],
+                held: list[SceneObject]) -> Scene:
+    """A copy of ``scene`` without the objects ``named``, holding ``held`` (kept)."""
+    kept = _HELD_SCENES.get(scene)
+    if kept is None:
+        kept = _HELD_SCENES[scene] = {}
+    full = (scene.revision, scene.state.tobytes(), tuple(sorted(named)), key)
+    found = kept.get(full)
+    if found is not None:
+        return found
+    snapshot = scene.snapshot()
+    objects = (*(o for o in snapshot.objects if o.name not in named), *held)
+    bodies = {o.name for o in objects} | set(scene.robot.link_names)
+    allowed = tuple(p for p in snapshot.allowed if p[0] in bodies and p[1] in bodies)
+    copy = scene.copy()
+    copy.restore(replace(snapshot, objects=objects, allowed=allowed))
+    if len(kept) >= _HELD_SCENES_KEPT:
+        kept.pop(next(iter(kept)))
+    kept[full] = copy
+    return copy
 
 
 class _Timeline:
@@ -632,9 +769,11 @@ def _lane_owners(model: RobotModel, checker: CollisionChecker,
 
 def _body_name(obj: pin.GeometryObject, pin_model: pin.Model) -> str:
     """A geometry's body: its link's name for a robot link, else the object's name."""
+    name = str(obj.name)
     frame = int(obj.parentFrame)
     if 0 <= frame < len(pin_model.frames):
-        name = str(obj.name)
         link = str(pin_model.frames[frame].name)
-        return link if name.startswith(link) else name
-    return str(obj.name)
+        if name.startswith(link):
+            return link
+    body, _, index = name.rpartition("/")  # an object's geometries: 'name/index'
+    return body if body and index.isdigit() else name
