@@ -321,35 +321,32 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
                             f"(got {tolerance!r})")
     started = time.perf_counter()
     spans = _held_spans(scene, lanes, window)
-    if spans is None:
-        return _least_clearance(scene, lanes, window, tolerance, started)
-    found = [_least_clearance(s, lanes, span, tolerance, started) for s, span in spans]
-    touching = [f for f in found if f.lower == -math.inf]  # the first contact in time
-    best = touching[0] if touching else min(found, key=lambda f: f.distance, default=None)
-    if best is None:
-        return LeastClearance(math.inf, math.inf, None, None, (None, None), None, 0,
-                              time.perf_counter() - started)
-    return replace(best, lower=min(f.lower for f in found) if not touching else -math.inf,
-                   distance_queries=sum(f.distance_queries for f in found),
-                   seconds=time.perf_counter() - started)
-
-
-def _least_clearance(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None,
-                     tolerance: float, started: float) -> LeastClearance:
-    """:func:`least_clearance` on ``scene`` as it is (held objects not looked at)."""
-    timeline = _Timeline(scene, lanes, window)
+    pieces = [(scene, _Timeline(scene, lanes, window))] if spans is None else \
+        [(held, _Timeline(held, lanes, span)) for held, span in spans]
+    pieces = [(s, t) for s, t in pieces if not t.empty]
     queries = 0
     best: _Walk | None = None  # the walk that measured the least distance so far
+    timeline: _Timeline | None = None  # its timeline
     clearance, lower = 0.0, -math.inf
-    while not timeline.empty:
-        walk = _Walk(scene, timeline, SpacetimeOptions(clearance=clearance, exact=True))
-        if not walk.pair_count:
+    while pieces:
+        # Each piece of the timeline (one, unless what the lanes hold changes), in time
+        # order: the first conflict stops the round.
+        walked = conflict = False
+        for piece_scene, piece in pieces:
+            walk = _Walk(piece_scene, piece, SpacetimeOptions(clearance=clearance, exact=True))
+            if not walk.pair_count:
+                continue
+            walked = True
+            found = walk.run()
+            queries += walk.queries
+            if best is None or walk.least < best.least:
+                best, timeline = walk, piece
+            if found is not None:
+                conflict = True
+                break
+        if not walked or best is None:
             break
-        conflict = walk.run()
-        queries += walk.queries
-        if best is None or walk.least < best.least:
-            best = walk
-        if conflict is None:
+        if not conflict:
             lower = max(lower, clearance)
             following = best.least - tolerance
         elif clearance == 0.0:
@@ -361,7 +358,7 @@ def _least_clearance(scene: Scene, lanes: Sequence[Lane], window: tuple[float, f
         if following <= lower:  # the bracket [lower, least] is within the tolerance
             break
         clearance = following
-    if best is None or best.least_index is None:
+    if best is None or best.least_index is None or timeline is None:
         return LeastClearance(math.inf, math.inf, None, None, (None, None), None, queries,
                               time.perf_counter() - started)
     a, b = best.bodies(best.least_index)
@@ -375,8 +372,8 @@ def _least_clearance(scene: Scene, lanes: Sequence[Lane], window: tuple[float, f
 
 
 # Per scene (kept while it lives): its copies holding what lanes hold, by the scene's
-# revision and state and what is held, the latest few (a check verifies one schedule
-# many times).
+# revision and what is held, the latest few (a schedule verifies many times with one
+# scene); a copy is given the scene's state when it is taken.
 _HELD_SCENES: weakref.WeakKeyDictionary[Scene, dict[tuple[object, ...], Scene]] = \
     weakref.WeakKeyDictionary()
 _HELD_SCENES_KEPT = 16
@@ -439,9 +436,11 @@ def _held_scene(scene: Scene, named: set[str], key: tuple[object, ...],
     kept = _HELD_SCENES.get(scene)
     if kept is None:
         kept = _HELD_SCENES[scene] = {}
-    full = (scene.revision, scene.state.tobytes(), tuple(sorted(named)), key)
+    full = (scene.revision, tuple(sorted(named)), key)
     found = kept.get(full)
     if found is not None:
+        if not np.array_equal(found.state, scene.state):
+            found.set_state(scene.state)
         return found
     snapshot = scene.snapshot()
     objects = (*(o for o in snapshot.objects if o.name not in named), *held)

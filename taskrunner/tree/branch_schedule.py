@@ -4,18 +4,21 @@
 (:mod:`taskrunner.tree.leafcheck`); :func:`schedule_branches` then puts their motions on
 one :class:`~taskrunner.tree.schedule.MotionSchedule` by the run's own rule, a motion of
 each branch in turn, following the task's ``wait_for`` as the run's leaves follow it.
+Each motion is admitted holding what its arm held as the check played it, as a run
+admits it with its scene as it starts (the objects attached then: carried through it,
+:attr:`~taskrunner.collision.spacetime.TimedMotion.held`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.timing import parameterize_path
-from taskrunner.scene import Scene
+from taskrunner.scene import Scene, SceneObject
 from taskrunner.tasks.waits import FINISHED
 from taskrunner.tree.behaviours import MoveToGoal
 from taskrunner.tree.instant_leaves import Wait
@@ -42,11 +45,13 @@ class _Queued:
     moment: str = FINISHED
     seconds: float = 0.0
     planned: bool = False  # a motion the run plans with the search (a MoveToGoal's)
+    held: tuple[SceneObject, ...] | None = None  # attached as it starts (None: not known)
 
 
 def schedule_branches(scene: Scene, branches: list[list[Motion]],
                       waits: Sequence[tuple[int, int, int, int, str, str | None, str]] = (),
-                      proofs: list[ScheduleProof] | None = None
+                      proofs: list[ScheduleProof] | None = None,
+                      held: Mapping[int, tuple[SceneObject, ...]] | None = None
                       ) -> tuple[str | None, list[str]]:
     """Put the motions of a parallel's branches on one :class:`MotionSchedule`, a motion
     of each branch in turn, as a run admits them (the scene: as the parallel starts).
@@ -59,6 +64,8 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             followed as the run's leaves follow it (:mod:`taskrunner.tree.waiting`).
         proofs: where the schedule holds, what it proves is appended here
             (:func:`~taskrunner.tree.schedule_proof.prove_schedule`; its lines are notes).
+        held: by id of a motion of ``branches``, the objects attached as the check
+            played it (a motion not in it: those of ``scene``).
 
     Returns:
         What cannot be resolved (None: the schedule holds), and a note per wait.
@@ -78,6 +85,7 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             if position == len(motions):
                 break
             leaf, start, end, path = motions[position]
+            carried = (held or {}).get(id(motions[position]))
             if isinstance(leaf, Wait):
                 queue.append(_Queued("pause", getattr(leaf, "location", None),
                                      seconds=leaf.seconds))
@@ -95,8 +103,9 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             except TaskrunnerError:
                 continue  # reported by the step itself where a run would time it
             queue.append(_Queued("motion", getattr(leaf, "location", None), trajectory,
-                                 planned=isinstance(leaf, MoveToGoal)))
+                                 planned=isinstance(leaf, MoveToGoal), held=carried))
     notes: list[str] = []
+    made: dict[tuple[SceneObject, ...], Scene] = {}  # the scenes holding what motions held
     while any(queues.values()):
         progressed = False
         for lane, queue in queues.items():
@@ -125,7 +134,8 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             location, motion = item.where, item.trajectory
             assert motion is not None
             try:
-                found = schedule.admit(scene, lane, motion, location)
+                found = schedule.admit(_holding(scene, item.held, made), lane, motion,
+                                       location)
             except TaskrunnerError as exc:
                 return f"{location}: {exc}", notes
             if isinstance(found, Blocked):
@@ -150,3 +160,22 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
     if proofs is not None:
         proofs.append(proof)
     return None, notes
+
+
+def _holding(scene: Scene, held: tuple[SceneObject, ...] | None,
+             made: dict[tuple[SceneObject, ...], Scene]) -> Scene:
+    """``scene`` with ``held`` the objects attached (None: ``scene`` itself); the scene's
+    allowances naming them kept. Kept in ``made``."""
+    if held is None or held == scene.attached_objects():
+        return scene
+    if held in made:
+        return made[held]
+    snapshot = scene.snapshot()
+    names = {o.name for o in held}
+    objects = (*(o for o in snapshot.objects if o.name not in names and not o.attached), *held)
+    bodies = {o.name for o in objects} | set(scene.robot.link_names)
+    allowed = tuple(p for p in snapshot.allowed if p[0] in bodies and p[1] in bodies)
+    copy = scene.copy()
+    copy.restore(replace(snapshot, objects=objects, allowed=allowed))
+    made[held] = copy
+    return copy

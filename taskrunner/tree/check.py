@@ -57,7 +57,7 @@ from taskrunner.errors import InputError, TaskrunnerError, TaskSpecError
 from taskrunner.folders import FolderPolicy
 from taskrunner.robot.cell import Cell, load_cell
 from taskrunner.robot.options import LoadOptions
-from taskrunner.scene import Scene, scene_from_cell
+from taskrunner.scene import Scene, SceneObject, scene_from_cell
 from taskrunner.tasks import (
     AddObjectStep,
     GoStep,
@@ -80,7 +80,7 @@ from taskrunner.tree.checkmode import CheckMode
 from taskrunner.tree.compiler import compile_task, object_shape
 from taskrunner.tree.context import TaskContext
 from taskrunner.tree.idioms import place_target
-from taskrunner.tree.leafcheck import MAX_GOAL_STATES, LeafPlayer, leaves_of
+from taskrunner.tree.leafcheck import MAX_GOAL_STATES, LeafFailure, LeafPlayer, Motion, leaves_of
 from taskrunner.tree.occupancy import OVERLAP_TOLERANCE
 from taskrunner.tree.outcome import Orientation, Outcome, describe_pose
 from taskrunner.tree.schedule_proof import ScheduleProof
@@ -281,6 +281,22 @@ def _achieved(outcome: Outcome, step: StepNode, ctx: TaskContext) -> str:
 
 
 # ----------------------------------------------------------------------------- the check
+class _HeldTrace(list[Motion]):
+    """The motions played, noting for each what the scene it starts in has attached
+    (:attr:`held`, by id of the entry): what its arm holds while it runs, as a run's
+    record has it (a parallel's schedule is verified with it)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.scenes: list[Scene] = []  # the scenes being played, innermost last
+        self.held: dict[int, tuple[SceneObject, ...]] = {}
+
+    def append(self, entry: Motion) -> None:
+        super().append(entry)
+        if self.scenes:
+            self.held[id(entry)] = self.scenes[-1].attached_objects()
+
+
 class _TaskCheck(LeafPlayer):
     """The check of one task (module docstring): its problems and notes, the situation the
     next step starts in, and the step-level checks its check-mode tree calls
@@ -304,6 +320,19 @@ class _TaskCheck(LeafPlayer):
         # the task's wait_for: a parallel's branches are scheduled with them.
         self.spans: dict[int, tuple[int, int]] = {}
         self.waits: list[WaitPair] = wait_pairs(spec.steps)
+        self.held_trace = _HeldTrace()
+        self.trace = self.held_trace
+        # What the scene had attached as each motion of the trace began (by id).
+        self.held: Mapping[int, tuple[SceneObject, ...]] = self.held_trace.held
+
+    def play(self, leaves: list[Behaviour], index: int, step: StepNode, ctx: TaskContext,
+             explore: bool = True) -> tuple[TaskContext, LeafFailure | None]:
+        """:meth:`LeafPlayer.play`, the trace noting what each motion's scene holds."""
+        self.held_trace.scenes.append(ctx.scene)
+        try:
+            return super().play(leaves, index, step, ctx, explore)
+        finally:
+            self.held_trace.scenes.pop()
 
     # ------------------------------------------------------------------ check mode
     def check(self, ctx: TaskContext) -> None:

@@ -25,6 +25,7 @@ A check's tree finishes in one tick: nothing in it waits.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import replace
 from typing import Protocol
 
@@ -32,7 +33,7 @@ import py_trees
 from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
-from taskrunner.scene import Scene
+from taskrunner.scene import Scene, SceneObject
 from taskrunner.tasks import FallbackStep, GoStep, ParallelStep, Problem, StepNode, walk_steps
 from taskrunner.tasks.waits import WaitPair
 from taskrunner.tree.behaviours import TaskLeaf
@@ -58,6 +59,8 @@ class Checker(Protocol):
     spans: dict[int, tuple[int, int]]
     waits: list[WaitPair]
     proofs: list[ScheduleProof]  # what each scheduled parallel proves
+    # What the scene had attached as each motion of the trace began (by id of the entry).
+    held: Mapping[int, tuple[SceneObject, ...]]
 
     def skips(self, step: StepNode) -> bool:
         """Whether ``step`` names something reported already (it is not checked)."""
@@ -218,7 +221,7 @@ class ScheduledParallel(py_trees.decorators.Decorator):
                 waits.append((i, waiter[0] - spans[i][0], j, end - spans[j][0],
                               pair.name, where, pair.moment))
         assert self.before is not None
-        text, notes = schedule_branches(self.before, branches, waits, c.proofs)
+        text, notes = schedule_branches(self.before, branches, waits, c.proofs, c.held)
         c.notes += [_at(step, note) for note in notes]
         if text is not None:
             c.problem(step, text)

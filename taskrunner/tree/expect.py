@@ -23,13 +23,20 @@ What is measured, and how:
   they were at each instant). Arm against arm in time: the run record's ``motion``
   events (trajectories with their ``start`` and ``lane`` on the run's schedule), each
   ``parallel`` on its own, through the independent space-time verifier
-  (:func:`taskrunner.collision.spacetime.verify_lanes`, robot links against robot
-  links, no clearance asked: any contact is a miss).
+  (:func:`taskrunner.collision.spacetime.verify_lanes`, no clearance asked: any contact
+  is a miss): robot links and the objects each arm held during each motion (the
+  attached objects of the scene the motion started in, as the record has them: each
+  moves with its link) against the other arm's. A record that does not say what was
+  held (its ``motion`` events' ``scene`` without ``objects``) is verified on the links
+  alone, and :func:`arm_conflicts` says so.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 import py_trees
@@ -37,10 +44,12 @@ from py_trees.behaviour import Behaviour
 from py_trees.common import Status
 
 from taskrunner.collision.spacetime import Lane, TimedMotion, verify_lanes
-from taskrunner.errors import TaskrunnerError
+from taskrunner.errors import MissingMeshError, TaskrunnerError
 from taskrunner.robot import RobotModel
 from taskrunner.runtime.events import RunEvent
-from taskrunner.scene import Scene
+from taskrunner.runtime.replay import object_of
+from taskrunner.scene import Scene, SceneObject
+from taskrunner.shapes import Mesh, Shape
 from taskrunner.tasks.expect import (
     DurationBounds,
     Expectation,
@@ -226,11 +235,23 @@ def _ignore_arms(scene: Scene, beside: set[str], own: set[str]) -> None:
             scene.allow_collision(a, b, reason="checked in time")
 
 
-def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene, list[Lane]]]:
+def record_lanes(model: RobotModel, events: list[RunEvent],
+                 shapes: Mapping[str, Shape] | None = None) -> list[tuple[Scene, list[Lane]]]:
     """Each ``parallel`` of a run's ``motion`` events as the verifier's lanes, with the
-    scene it started in: the robots alone (links against links), their joints where the
-    record says they were when its first motion was sent; a motion at its real start, up
-    to where a stop-and-go stopped it (its ``wait`` event's ``stopped``)."""
+    scene it started in: the robots alone, their joints where the record says they were
+    when its first motion was sent; a motion at its real start, up to where a
+    stop-and-go stopped it (its ``wait`` event's ``stopped``), holding what the scene it
+    started in had attached (:attr:`TimedMotion.held`; None where the record does not
+    say: links against links).
+
+    Args:
+        shapes: object shapes by name (the cell's, the run's scene's): a mesh the record
+            names by its file name only is taken from here.
+
+    Raises:
+        MissingMeshError: a held mesh object neither in ``shapes`` nor at its recorded
+            file.
+    """
     instances: dict[int, dict[tuple[tuple[int, int], ...], list[TimedMotion]]] = {}
     first_state: dict[int, dict[str, float]] = {}
     sent: dict[tuple[str | None, str | None], tuple[list[TimedMotion], int]] = {}
@@ -242,7 +263,7 @@ def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene,
             motions, index = sent[(event.node, event.location)]
             motion = motions[index]
             motions[index] = TimedMotion(_cut_at(motion.trajectory, float(stopped)),
-                                         motion.start, motion.label)
+                                         motion.start, motion.label, motion.held)
             continue
         lane = tuple(tuple(k) for k in event.data.get("lane") or ()) if event.kind == "motion" \
             else ()
@@ -254,7 +275,8 @@ def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene,
                                      positions, np.asarray(data["velocities"], float),
                                      np.zeros_like(positions))
         start = event.data.get("sent", event.data.get("start"))  # when it really started
-        motion = TimedMotion(trajectory, float(start or 0.0), event.location or event.node)
+        motion = TimedMotion(trajectory, float(start or 0.0), event.location or event.node,
+                             _held(event.data.get("scene") or {}, shapes or {}))
         key = tuple((int(a), int(b)) for a, b in lane)
         listed = instances.setdefault(key[0][0], {}).setdefault(key, [])
         sent[(event.node, event.location)] = (listed, len(listed))
@@ -262,11 +284,33 @@ def record_lanes(model: RobotModel, events: list[RunEvent]) -> list[tuple[Scene,
         first_state.setdefault(key[0][0], (event.data.get("scene") or {}).get("joints", {}))
     out = []
     for instance, lanes in instances.items():
-        scene = Scene(model)  # the robots alone: links against links
+        scene = Scene(model)  # the robots, and what each motion says its arm held
         scene.set_state(model.state_with(scene.state, first_state[instance]))
         out.append((scene, [Lane(f"branch {'.'.join(str(b) for _, b in key)}",
                                  tuple(motions)) for key, motions in lanes.items()]))
     return out
+
+
+def _held(scene: dict[str, Any], shapes: Mapping[str, Shape]) -> tuple[SceneObject, ...] | None:
+    """The attached objects of a recorded scene (None: the record has no ``objects``),
+    a mesh recorded by its file name resolved from ``shapes`` (by object name)."""
+    if "objects" not in scene:
+        return None
+    held = []
+    for data in scene["objects"]:
+        if not data.get("attached_to"):
+            continue
+        obj = object_of(data)
+        if isinstance(obj.shape, Mesh) and not obj.shape.path.is_file():
+            known = shapes.get(obj.name)
+            if not (isinstance(known, Mesh) and known.path.name == obj.shape.path.name):
+                raise MissingMeshError(f"held object {obj.name!r}: mesh "
+                                       f"{str(obj.shape.path)!r} of the record not found "
+                                       f"(and not a mesh of that name in the scene)")
+            obj = SceneObject(obj.name, Mesh(Path(known.path), obj.shape.scale), obj.pose,
+                              obj.attached_to, obj.touch_links)
+        held.append(obj)
+    return tuple(held)
 
 
 def _cut_at(trajectory: JointTrajectory, until: float) -> JointTrajectory:
@@ -284,11 +328,29 @@ def _cut_at(trajectory: JointTrajectory, until: float) -> JointTrajectory:
     return JointTrajectory(trajectory.names, new_times, rows, zeros, zeros)
 
 
-def arm_conflicts(model: RobotModel, events: list[RunEvent]) -> list[str]:
+def arm_conflicts(model: RobotModel, events: list[RunEvent],
+                  shapes: Mapping[str, Shape] | None = None,
+                  notes: list[str] | None = None) -> list[str]:
     """Arm against arm in time, from a run's ``motion`` events (module text): one message
-    per ``parallel`` whose branches' links touch, naming both steps and the bodies."""
+    per ``parallel`` whose branches' bodies (links, held objects) touch, naming both
+    steps and the bodies.
+
+    Args:
+        shapes: as :func:`record_lanes`.
+        notes: where a parallel's record does not say what its arms held, a line saying
+            so is appended here (it is verified on the links alone).
+    """
     misses = []
-    for scene, lanes in record_lanes(model, events):
+    try:
+        recorded = record_lanes(model, events, shapes)
+    except TaskrunnerError as exc:
+        return [f"arms not verified against each other in time: {exc}"]
+    for scene, lanes in recorded:
+        unknown = [m.label for lane in lanes for m in lane.motions if m.held is None]
+        if unknown and notes is not None:
+            notes.append(f"the record does not say what the arms held in the parallel of "
+                         f"{unknown[0] or 'a motion'}: its arms verified on their links "
+                         f"alone")
         try:
             found = verify_lanes(scene, lanes)
         except TaskrunnerError as exc:
@@ -327,7 +389,8 @@ def check_expectation(ctx: TaskContext, want: Expectation, step_seconds: float |
             misses += _duration("the step's duration", step_seconds, want.step_duration)
     if want.collision_free:
         misses += motion_collisions(ctx, collisions_from)
-        misses += arm_conflicts(ctx.scene.robot, ctx.events.events())
+        misses += arm_conflicts(ctx.scene.robot, ctx.events.events(),
+                                {o.name: o.shape for o in ctx.scene.objects})
     return misses
 
 

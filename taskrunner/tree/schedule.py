@@ -367,8 +367,7 @@ class MotionSchedule:
         for c in others:
             shift = (c.offset if c.sent else max(lanes.get(c.lane, self.slip), frame)) - frame
             if shift != 0.0:
-                c = replace(c, motion=TimedMotion(c.motion.trajectory, c.motion.start + shift,
-                                                  c.motion.label))
+                c = replace(c, motion=replace(c.motion, start=c.motion.start + shift))
             out.append(c)
         return out
 
@@ -549,7 +548,8 @@ class MotionSchedule:
         is asked to stop: :meth:`commit` commits it while the schedule is unchanged).
 
         Args:
-            scene: the bodies as they are now (the motion's arm at its start).
+            scene: the bodies as they are now (the motion's arm at its start); what is
+                attached is what it holds through it (each committed motion: its own).
             now: the earliest start the backend allows (s; 0 for one that plays no time).
             since: s, verify from here (default: the start): where a motion is admitted
                 again after it was late, its arm rests at its start from now until the
@@ -567,7 +567,8 @@ class MotionSchedule:
         others = [c for c in self.committed if concurrent(c.lane, lane)]
         waits: list[Wait] = []
         queries, seconds = 0, 0.0  # of every verification
-        options = SpacetimeOptions(clearance=self.clearance)
+        # What is attached now is what the motion holds (TimedMotion.held: the record's).
+        options, held = SpacetimeOptions(clearance=self.clearance), scene.attached_objects()
         # The lane's earlier motions too: where they left the joints this one holds.
         before = tuple(c.motion for c in self.committed if c.lane == lane)
 
@@ -575,7 +576,7 @@ class MotionSchedule:
             """The motion started at ``at`` against the others, from then on (from
             ``since`` if earlier)."""
             nonlocal queries, seconds
-            mine = TimedMotion(trajectory, at, location)
+            mine = TimedMotion(trajectory, at, location, held)
             lanes = [Lane("this motion", (*before, mine))] + lanes_of(others)
             horizon = max([mine.end] + [c.motion.end for c in others])
             begin = at if since is None else min(since, at)
@@ -621,7 +622,7 @@ class MotionSchedule:
         else:
             raise ScheduleConflictError(f"still meets another branch's arm after "
                                         f"{len(waits)} waits")
-        entry = Committed(lane, TimedMotion(trajectory, start, location), location,
+        entry = Committed(lane, TimedMotion(trajectory, start, location, held), location,
                           seen=self.retractions)
         admission = Admission(start, tuple(waits), queries, seconds, least, entry,
                               self._changes)
@@ -731,8 +732,7 @@ class MotionSchedule:
         entry = admission.entry
         if entry is None or progress >= entry.motion.trajectory.duration:
             return
-        cut = TimedMotion(_cut(entry.motion.trajectory, max(progress, 0.0)),
-                          entry.motion.start, entry.motion.label)
+        cut = replace(entry.motion, trajectory=_cut(entry.motion.trajectory, max(progress, 0.0)))
         self.committed = [replace(c, motion=cut, progress=None) if c is entry
                           else c for c in self.committed]
         self.stops.pop(id(entry), None)
