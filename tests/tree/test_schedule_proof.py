@@ -27,6 +27,8 @@ from taskrunner.tree.expect import record_lanes
 
 TASKS = DATA_ROOT / "tasks"
 HANDOFF_OVERLAP = Path(__file__).parent / "fixtures" / "handoff_overlap.yaml"
+# The left arm carries a bar past the right arm: the least clearance is the bar's.
+HELD_BAR = Path(__file__).parent / "fixtures" / "held_bar_carried.yaml"
 MILLIMETRE = 1e-3
 
 
@@ -54,8 +56,8 @@ def body_distance(scene, lanes, bodies, t: float) -> float:
 
 
 @pytest.mark.parametrize("path", [TASKS / "tray_pair.yaml", TASKS / "assembly_panda.yaml",
-                                  HANDOFF_OVERLAP],
-                         ids=["tray_pair", "assembly_panda", "handoff_overlap"])
+                                  HANDOFF_OVERLAP, HELD_BAR],
+                         ids=["tray_pair", "assembly_panda", "handoff_overlap", "held_bar"])
 def test_the_check_s_least_clearance_is_the_verifier_s_on_the_run_s_record(path, tmp_path,
                                                                            capsys):
     # The check as `run-task check --json` prints it (the run that follows in this
@@ -83,6 +85,12 @@ def test_the_check_s_least_clearance_is_the_verifier_s_on_the_run_s_record(path,
         assert tuple(least["steps"]) == found.motions
         assert schedule["overlaps"]  # the branches do move at once
         assert all(o["end"] > o["start"] for o in schedule["overlaps"])
+    if path == HELD_BAR:
+        # The bar the left arm holds while it goes back to Candle (line 13), as the
+        # record's verifier measures it: the arms' links alone keep 7 cm apart.
+        least = report["schedules"][0]["least_clearance"]
+        assert least["links"][0] == "bar" and least["steps"][0].endswith(":13")
+        assert least["distance"] < 0.06
     if path == HANDOFF_OVERLAP:
         # The right arm's go (line 22) would meet the left arm's pick (line 21): it starts
         # a little later, to pass behind it while it still moves (0.34 s later, where
