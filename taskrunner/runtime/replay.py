@@ -147,8 +147,17 @@ def scene_data(snapshot: SceneSnapshot) -> dict[str, Any]:
 
 
 def motion_data(trajectory: JointTrajectory, snapshot: SceneSnapshot) -> dict[str, Any]:
-    """The data of a ``motion`` event: the ``trajectory`` and the ``scene`` it starts in."""
-    return {"trajectory": trajectory_data(trajectory), "scene": scene_data(snapshot)}
+    """The data of a ``motion`` event: the ``trajectory``, the ``scene`` it starts in and,
+    where an object is attached then, ``touch``: per attached object the bodies it may
+    touch (its touch links, and the scene's allowances naming it), which the record's
+    verifier allows as the run did (:func:`taskrunner.tree.expect.record_lanes`)."""
+    data = {"trajectory": trajectory_data(trajectory), "scene": scene_data(snapshot)}
+    touch = {o.name: sorted({*o.touch_links, *(b if a == o.name else a
+                                               for a, b in snapshot.allowed if o.name in (a, b))})
+             for o in snapshot.objects if o.attached}
+    if touch:
+        data["touch"] = touch
+    return data
 
 
 @dataclass(frozen=True)

@@ -276,7 +276,8 @@ def record_lanes(model: RobotModel, events: list[RunEvent],
                                      np.zeros_like(positions))
         start = event.data.get("sent", event.data.get("start"))  # when it really started
         motion = TimedMotion(trajectory, float(start or 0.0), event.location or event.node,
-                             _held(event.data.get("scene") or {}, shapes or {}))
+                             _held(model, event.data.get("scene") or {},
+                                   event.data.get("touch") or {}, shapes or {}))
         key = tuple((int(a), int(b)) for a, b in lane)
         listed = instances.setdefault(key[0][0], {}).setdefault(key, [])
         sent[(event.node, event.location)] = (listed, len(listed))
@@ -291,9 +292,11 @@ def record_lanes(model: RobotModel, events: list[RunEvent],
     return out
 
 
-def _held(scene: dict[str, Any], shapes: Mapping[str, Shape]) -> tuple[SceneObject, ...] | None:
+def _held(model: RobotModel, scene: dict[str, Any], touch: dict[str, list[str]],
+          shapes: Mapping[str, Shape]) -> tuple[SceneObject, ...] | None:
     """The attached objects of a recorded scene (None: the record has no ``objects``),
-    a mesh recorded by its file name resolved from ``shapes`` (by object name)."""
+    each with the links ``touch`` says it may touch, a mesh recorded by its file name
+    resolved from ``shapes`` (by object name)."""
     if "objects" not in scene:
         return None
     held = []
@@ -301,6 +304,9 @@ def _held(scene: dict[str, Any], shapes: Mapping[str, Shape]) -> tuple[SceneObje
         if not data.get("attached_to"):
             continue
         obj = object_of(data)
+        links = tuple(n for n in touch.get(obj.name, ()) if model.has_link(n)
+                      and n != obj.attached_to)
+        obj = SceneObject(obj.name, obj.shape, obj.pose, obj.attached_to, links)
         if isinstance(obj.shape, Mesh) and not obj.shape.path.is_file():
             known = shapes.get(obj.name)
             if not (isinstance(known, Mesh) and known.path.name == obj.shape.path.name):

@@ -61,14 +61,17 @@ def swung(sign: float) -> list[float]:
     return q
 
 
-def swing_beside_candle(scene: Scene, holding: bool) -> list[RunEvent]:
-    """The two branches' motion events, the left arm holding the rod or not."""
+def swing_beside_candle(scene: Scene, holding: bool, touching: tuple[str, ...] = ()
+                        ) -> list[RunEvent]:
+    """The two branches' motion events, the left arm holding the rod (allowed to touch
+    ``touching``) or not."""
     start = at(scene, swung(-1), CANDLE)
     if holding:  # placed where it meets the right arm at the middle of the swing
         rod = at(scene, MIDDLE, CANDLE).add_object(
             "rod", Box((0.25, 0.03, 0.03)), Pose((0.15, 0.0, 0.95)),
             attach_to="left_gripper_base_1")
-        start.add_object("rod", rod.shape, rod.pose, attach_to=rod.attached_to)
+        start.add_object("rod", rod.shape, rod.pose, attach_to=rod.attached_to,
+                         touch_links=touching)
     return [event(1, start, "left", [swung(-1), swung(1)], 0, "task.yaml:7"),
             event(2, start, "right", [CANDLE, CANDLE], 1, "task.yaml:8")]
 
@@ -82,6 +85,17 @@ def test_a_held_object_through_the_other_arm_is_a_contact_of_the_record(scene):
     held = lanes[0].motions[0].held
     assert held is not None and [o.name for o in held] == ["rod"]
     assert held[0].attached_to == "left_gripper_base_1"
+
+
+def test_what_the_run_allowed_the_held_object_to_touch_the_verifier_allows(scene):
+    right = tuple(n for n in scene.robot.link_names if n.startswith("right_"))
+    events = swing_beside_candle(scene, holding=True, touching=right)
+    assert events[0].data["touch"] == {"rod": sorted(right)}
+    assert arm_conflicts(scene.robot, events) == []
+    # Allowed to touch the fingers only, it still meets the arm.
+    fingers = ("right_finger_left_1", "right_finger_right_1")
+    (miss,) = arm_conflicts(scene.robot, swing_beside_candle(scene, True, fingers))
+    assert "rod (task.yaml:7) and right_" in miss and "finger" not in miss
 
 
 def test_the_same_swing_holding_nothing_passes(scene):
