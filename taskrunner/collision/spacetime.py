@@ -42,7 +42,8 @@ says so, the common clock is cut where what a lane holds changes, and each stret
 verified (or measured) on its own, in a copy of the scene holding what each lane holds
 then: during a motion, what it says; at rest between two motions, what either says (the
 object is where the arm rests, in its hand or just set down or taken: one place); before
-a lane's first motion, that one's, after its last, that one's. The objects named are
+a lane's first motion, that one's, after its last, that one's, and at both what the
+scene has attached to the lane's links (what it holds now). The objects named are
 taken out of the scene otherwise (a world object of no lane is never checked in time);
 the scene's allowances naming them are kept. Motions that say nothing (``held`` None)
 leave the scene's objects as they are: the walk is then the one above, unchanged.
@@ -385,8 +386,8 @@ def _held_spans(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float]
     same, in time order, each with a copy of ``scene`` holding it (module text); None
     where no motion says what it holds (or nothing moves)."""
     motions = [m for lane in lanes for m in lane.motions]
-    if not any(m.held is not None for m in motions) or len(lanes) < 2:
-        return None
+    if not any(m.held for m in motions) or len(lanes) < 2:
+        return None  # nothing held: the scene as it is (the same, without copies)
     model = scene.robot
     pin_model = model.model
     columns = [model.indices(sorted({n for m in lane.motions for n in m.trajectory.names}))
@@ -404,13 +405,21 @@ def _held_spans(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float]
                 if o.attached_to is not None and owner(o.attached_to) == index}
 
     ordered = [sorted(lane.motions, key=lambda m: m.start) for lane in lanes]
+    # What the scene has attached to each lane's links: held at rest before the lane's
+    # first motion and after its last, too (an arm that has just picked an object up
+    # holds it until its next motion, which is not on the schedule yet).
+    resting = [{o.name: o for o in scene.attached_objects()
+                if o.attached_to is not None and owner(o.attached_to) == index}
+               for index in range(len(lanes))]
 
     def holding(index: int, t: float) -> dict[str, SceneObject]:
         mine = ordered[index]
         if not mine:
             return {}
         i = max((k for k, m in enumerate(mine) if m.start <= t), default=0)
-        if mine[i].start > t or t <= mine[i].end or i + 1 == len(mine):
+        if mine[i].start > t or (t > mine[i].end and i + 1 == len(mine)):
+            return {**resting[index], **own(index, mine[i])}  # before the first, after the last
+        if t <= mine[i].end:
             return own(index, mine[i])
         return {**own(index, mine[i + 1]), **own(index, mine[i])}  # at rest between two
 

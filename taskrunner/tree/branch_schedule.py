@@ -18,6 +18,7 @@ import numpy as np
 
 from taskrunner.errors import TaskrunnerError
 from taskrunner.planning.timing import parameterize_path
+from taskrunner.robot import RobotModel
 from taskrunner.scene import Scene, SceneObject
 from taskrunner.tasks.waits import FINISHED
 from taskrunner.tree.behaviours import MoveToGoal
@@ -106,6 +107,11 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                                  planned=isinstance(leaf, MoveToGoal), held=carried))
     notes: list[str] = []
     made: dict[tuple[SceneObject, ...], Scene] = {}  # the scenes holding what motions held
+    # Each lane's links (those its joints carry): an object attached to one is its arm's.
+    links = {lane: _carried_links(model, {n for q in queue if q.trajectory is not None
+                                          for n in q.trajectory.names})
+             for lane, queue in queues.items()}
+    last: dict[LaneKey, tuple[SceneObject, ...] | None] = {}  # of its last motion admitted
     while any(queues.values()):
         progressed = False
         for lane, queue in queues.items():
@@ -134,7 +140,12 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
             location, motion = item.where, item.trajectory
             assert motion is not None
             try:
-                found = schedule.admit(_holding(scene, item.held, made), lane, motion,
+                # What each arm holds now, as a run's scene has it: this motion's arm what
+                # it holds through it, another what its next motion starts with.
+                now = {other: next((q.held for q in rest if q.kind == "motion"),
+                                   last.get(other)) for other, rest in queues.items()}
+                now[lane] = item.held
+                found = schedule.admit(_holding(scene, now, links, made), lane, motion,
                                        location)
             except TaskrunnerError as exc:
                 return f"{location}: {exc}", notes
@@ -145,6 +156,7 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
                 schedule.holding[lane] = found.lane
                 continue
             schedule.holding.pop(lane, None)
+            last[lane] = item.held
             queue.pop(0)
             progressed = True
             notes += [wait.describe(location) for wait in found.waits]
@@ -162,20 +174,44 @@ def schedule_branches(scene: Scene, branches: list[list[Motion]],
     return None, notes
 
 
-def _holding(scene: Scene, held: tuple[SceneObject, ...] | None,
+def _carried_links(model: RobotModel, joints: set[str]) -> set[str]:
+    """The links a joint of ``joints`` carries."""
+    pin_model = model.model
+    ids = {int(pin_model.getJointId(name)) for name in joints}
+    out = set()
+    for frame in pin_model.frames:
+        jid = int(frame.parentJoint)
+        while jid > 0 and jid not in ids:
+            jid = int(pin_model.parents[jid])
+        if jid > 0:
+            out.add(str(frame.name))
+    return out
+
+
+def _holding(scene: Scene, now: dict[LaneKey, tuple[SceneObject, ...] | None],
+             links: dict[LaneKey, set[str]],
              made: dict[tuple[SceneObject, ...], Scene]) -> Scene:
-    """``scene`` with ``held`` the objects attached (None: ``scene`` itself); the scene's
-    allowances naming them kept. Kept in ``made``."""
-    if held is None or held == scene.attached_objects():
+    """``scene`` with each lane's arm holding what ``now`` says (its objects attached to
+    the lane's ``links``; None: as in ``scene``), the scene's allowances naming them kept.
+    Kept in ``made``."""
+    attached = scene.attached_objects()
+    every = set().union(*links.values())
+    objects = [o for o in attached if o.attached_to not in every]  # no lane's: as they are
+    for lane, held in now.items():
+        objects += [o for o in (attached if held is None else held)
+                    if o.attached_to in links[lane]]
+    holding = tuple(objects)
+    if holding == attached:
         return scene
-    if held in made:
-        return made[held]
+    if holding in made:
+        return made[holding]
     snapshot = scene.snapshot()
-    names = {o.name for o in held}
-    objects = (*(o for o in snapshot.objects if o.name not in names and not o.attached), *held)
-    bodies = {o.name for o in objects} | set(scene.robot.link_names)
+    names = {o.name for o in holding}
+    kept = (o for o in snapshot.objects if o.name not in names and not o.attached)
+    every_object = (*kept, *holding)
+    bodies = {o.name for o in every_object} | set(scene.robot.link_names)
     allowed = tuple(p for p in snapshot.allowed if p[0] in bodies and p[1] in bodies)
     copy = scene.copy()
-    copy.restore(replace(snapshot, objects=objects, allowed=allowed))
-    made[held] = copy
+    copy.restore(replace(snapshot, objects=every_object, allowed=allowed))
+    made[holding] = copy
     return copy

@@ -108,3 +108,21 @@ def test_a_held_object_of_the_other_lane_is_not_this_lane_s(scene, rod):
     right = Lane("right", (motion("right", [CANDLE, CANDLE], 0.0, "right rests", (rod,)),))
     left = Lane("left", (motion("left", [swung(-1), swung(1)], 0.0, "left swing", ()),))
     assert verify_lanes(scene, [left, right]).ok
+
+
+def test_an_arm_at_rest_after_its_last_motion_holds_what_the_scene_has_attached(scene, rod):
+    # The left arm reached the middle holding nothing, then took the rod (attached in the
+    # scene now, its next motion not on the schedule yet); the right arm comes back to
+    # Candle, its motion listing what the scene has attached (as a run's admission
+    # does): the rod, resting in the left hand, is in its way.
+    holding = scene.copy()
+    holding.add_object("rod", rod.shape, rod.pose, attach_to=rod.attached_to)
+    away = [-1.5708, -0.5, -1.0, -0.3, -1.5708]
+    left = Lane("left", (motion("left", [swung(-1), MIDDLE], 0.0, "to the middle", ()),))
+    right = Lane("right", (motion("right", [away, CANDLE], 1.0, "back up",
+                                  holding.attached_objects()),))
+    found = verify_lanes(holding, [left, right])
+    assert found.conflict is not None and found.conflict.bodies[0] == "rod"
+    assert found.conflict.motions == (None, "back up") and found.conflict.time > 1.0
+    # Holding nothing, the arms pass.
+    assert verify_lanes(scene, [left, right]).ok
