@@ -20,6 +20,7 @@ from taskrunner.scene.distance_bounds import (
     _FR_PLACED,
     _geometry_frame,
     _lower_bound,
+    _pieces_bound,
     _support_bound,
 )
 
@@ -237,9 +238,10 @@ def _measure(k: int, d: float, s: float, cumulative: np.ndarray, pair_i: np.ndar
 
 
 @jit_plain
-def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i: np.ndarray,
-          unit_i: np.ndarray, unit_levers: np.ndarray, members: np.ndarray, unit_from: np.ndarray,
-          unit_of: np.ndarray, states: np.ndarray, cumulative: np.ndarray, frames: np.ndarray,
+def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray,
+          pieces: np.ndarray | None, pair_i: np.ndarray, unit_i: np.ndarray,
+          unit_levers: np.ndarray, members: np.ndarray, unit_from: np.ndarray, unit_of: np.ndarray,
+          states: np.ndarray, cumulative: np.ndarray, frames: np.ndarray,
           walk: np.ndarray, schedule: np.ndarray, picked: np.ndarray, selected: np.ndarray,
           distances: np.ndarray, q: np.ndarray, settings: np.ndarray) -> int:
     """Walk the path through ``states`` until some pairs need an exact distance: returns
@@ -256,7 +258,11 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
     unit_from[u + 1]]``, ``unit_of`` the reverse): a unit's measurement is the least of
     its pairs' lower bounds. Pairs whose cheap lower bound is at least ``settings[4]``
     take it as their measurement. Every distance and bound is taken less the clearance
-    ``settings[_S_CLEARANCE]`` (a contact: a pair closer than it)."""
+    ``settings[_S_CLEARANCE]`` (a contact: a pair closer than it).
+
+    ``pieces``: per geometry, the first record of its mesh's convex pieces and their count
+    (:func:`~taskrunner.scene.distance_bounds._pieces_bound`); None where no geometry has
+    any: numba then compiles the walk without the pieces' code (a type of its own)."""
     nj = joints.shape[0]
     n, nq = states.shape
     if settings[_S_STARTED] == 0.0:
@@ -375,7 +381,11 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray, pair_i
                 a, b = pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND]
                 d = _lower_bound(a, b, geometries, frames, nj) - clearance
                 if d < cheap_from or not d > 0.0:
-                    bound = _support_bound(a, b, geometries, frames, points, nj) - clearance
+                    if pieces is None:  # (numba compiles the branch taken by the type)
+                        bound = _support_bound(a, b, geometries, frames, points, nj) - clearance
+                    else:
+                        bound = _pieces_bound(a, b, geometries, frames, points, nj, pieces, stamp,
+                                              exact_from + clearance) - clearance
                     if bound > d:
                         d = bound
                     if not (bound > -np.inf and d >= exact_from):
@@ -455,11 +465,12 @@ def _lower_bounds(pair_i: np.ndarray, geometries: np.ndarray, frames: np.ndarray
 
 @jit
 def _support_bounds(pair_i: np.ndarray, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
-                    nj: int, out: np.ndarray) -> None:
-    """Per pair, :func:`_support_bound` at the state of ``frames``."""
+                    pieces: np.ndarray, nj: int, out: np.ndarray) -> None:
+    """Per pair, :func:`_pieces_bound` at the state of ``frames`` (every geometry placed
+    there: :func:`~taskrunner.scene.distance_bounds._forward`)."""
     for k in range(pair_i.shape[0]):
-        out[k] = _support_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
-                                frames, points, nj)
+        out[k] = _pieces_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
+                               frames, points, nj, pieces, 0.0, -np.inf)
 
 
 def _group_pairs(pair_i: np.ndarray, pair_levers: np.ndarray, unit_of: np.ndarray,

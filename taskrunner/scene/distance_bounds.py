@@ -2,8 +2,9 @@
 verifier (:mod:`taskrunner.scene.path_verifier`): bounding spheres and boxes
 (:func:`_lower_bound`), and the separation of exact core shapes (boxes, cylinders,
 spheres, convex hulls) along their boxes' face normals and a few directions of Gilbert's
-iteration (:func:`_support_bound`); with the forward kinematics that places the
-geometries (:func:`_forward`).
+iteration (:func:`_support_bound`), the least of those over a mesh's convex pieces
+(:func:`_pieces_bound`); with the forward kinematics that places the geometries
+(:func:`_forward`).
 
 Each geometry is a record of :data:`taskrunner.collision.geometry.GEOMETRY`; the frames
 are the rows of :func:`taskrunner.collision.frames.joint_frames`, then one row per
@@ -304,3 +305,54 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
             t = 1.0
         vx, vy, vz = vx + t * dx, vy + t * dy, vz + t * dz
     return best - swept
+
+
+@inline
+def _pieces_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
+                  nj: int, pieces: np.ndarray, stamp: float, floor: float) -> float:
+    """:func:`_support_bound` of geometries ``a`` and ``b``, or where either is a mesh cut
+    into convex pieces (:mod:`taskrunner.scene.mesh_pieces`; ``pieces[g]``: the first of
+    geometry ``g``'s pieces' records and their count, 0 for none), the least over pairs of
+    its pieces (or the other geometry itself) of the better of that bound and their
+    bounding spheres' distance: each piece holds its part of the mesh, so this too is a
+    lower bound on the distance where positive. A pair of pieces whose spheres are no
+    nearer than the least so far is skipped; once the least is below ``floor`` the search
+    stops and returns -inf (no bound: the caller asks coal). The pieces' frames rows not
+    placed at ``stamp`` (their ``_FR_PLACED`` column below it) are placed here first (a
+    fixed one's: for good)."""
+    count_a, count_b = pieces[a, 1], pieces[b, 1]
+    if count_a == 0 and count_b == 0:
+        return _support_bound(a, b, geometries, frames, points, nj)
+    first_a, first_b = a, b
+    if count_a == 0:
+        count_a = 1
+    else:
+        first_a = pieces[a, 0]
+    if count_b == 0:
+        count_b = 1
+    else:
+        first_b = pieces[b, 0]
+    for side in range(2):
+        first, count = (first_a, count_a) if side == 0 else (first_b, count_b)
+        for g in range(first, first + count):
+            if frames[nj + g, _FR_PLACED] < stamp:
+                _geometry_frame(g, geometries, frames, nj)
+                frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
+    least = np.inf
+    for i in range(first_a, first_a + count_a):
+        for j in range(first_b, first_b + count_b):
+            spheres = 0.0
+            for c in range(3):
+                offset = frames[nj + i, _FR_CENTRE + c] - frames[nj + j, _FR_CENTRE + c]
+                spheres += offset * offset
+            spheres = math.sqrt(spheres) - geometries[i].radius - geometries[j].radius
+            if spheres >= least:
+                continue
+            bound = _support_bound(i, j, geometries, frames, points, nj)
+            if bound < spheres:
+                bound = spheres
+            if bound < least:
+                least = bound
+                if least < floor:
+                    return -np.inf
+    return least

@@ -29,6 +29,7 @@ from taskrunner.scene.distance_bounds import (
     _farthest_point_centre,
     _forward,
 )
+from taskrunner.scene.mesh_pieces import mesh_pieces
 
 
 @dataclass(frozen=True)
@@ -39,6 +40,7 @@ class _Record:
     levers: np.ndarray
     geometry: np.ndarray  # a GEOMETRY record (0-d); its points' place is the verifier's
     points: np.ndarray | None = None
+    pieces: tuple[np.ndarray, ...] = ()  # a mesh's convex pieces' points (its own frame)
 
 
 class _Tree(KinematicTree):
@@ -78,7 +80,7 @@ class _Tree(KinematicTree):
         if kept is not None:
             record = kept[1]
             return record if record.name == name else _Record(name, record.levers, record.geometry,
-                                                              record.points)
+                                                              record.points, record.pieces)
         record = self._build_record(geometry_object)
         if len(self._records) > 4096:
             self._records.clear()
@@ -106,6 +108,7 @@ class _Tree(KinematicTree):
         # centred on it; a convex hull from its vertices; each grown by its swept sphere
         # radius.
         shape, points = _SHAPE_NONE, None
+        pieces: tuple[np.ndarray, ...] = ()
         swept = float(geometry.getSweptSphereRadius()) \
             if hasattr(geometry, "getSweptSphereRadius") else 0.0
         kind = type(geometry)
@@ -132,13 +135,17 @@ class _Tree(KinematicTree):
             hull = _hull_vertices(np.asarray(geometry.vertices(), dtype=float))
             if hull is not None and len(hull) <= _MESH_HULL_POINTS:
                 shape, points = _SHAPE_HULL, hull
+                # Its convex pieces hold it more closely than that hull where it is concave.
+                cut = mesh_pieces(geometry)
+                if len(cut) > 1 and sum(len(p) for p in cut) <= _MESH_HULL_POINTS:
+                    pieces = cut
         row["swept"] = swept if math.isfinite(swept) and swept >= 0.0 else 0.0
         if not (math.isfinite(swept) and swept >= 0.0):
-            shape = _SHAPE_NONE
+            shape, pieces = _SHAPE_NONE, ()
         row["joint"] = int(geometry_object.parentJoint)
         row["has_box"] = int(has_box)
         row["shape"] = shape
-        return _Record(geometry_object.name, levers, row, points)
+        return _Record(geometry_object.name, levers, row, points, pieces)
 
 
 def _shape_key(geometry: coal.CollisionGeometry) -> tuple[float, ...] | None:

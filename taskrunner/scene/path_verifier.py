@@ -53,12 +53,14 @@ compiled code (bounding spheres, bounding boxes: see
 :func:`taskrunner.scene.distance_bounds._lower_bound`); below :data:`CHEAP_FROM`, a pair
 of boxes and convex hulls takes the separation of the shapes themselves along their
 boxes' face normals and a few directions of Gilbert's iteration (exact support functions:
-:func:`taskrunner.scene.distance_bounds._support_bound`) when that is at least
-:data:`EXACT_FROM`; only otherwise does the verifier ask coal for the exact distance of
-the scene checker's geometry. The walk runs compiled (numba, ``cache=True``: compiled
-once per machine), in one call until some pairs need coal's distance and again after each
-such round (:func:`taskrunner.scene.advancement._walk`). The robot's joint tree and the
-rows of its links' geometry (lever arms, bounding volumes) are kept per robot model, with
+:func:`taskrunner.scene.distance_bounds._support_bound`; a triangle mesh, whose one hull
+bridges its hollows, by the least over its convex pieces, which together hold its surface:
+:mod:`taskrunner.scene.mesh_pieces`) when that is at least :data:`EXACT_FROM`; only
+otherwise does the verifier ask coal for the exact distance of the scene checker's geometry.
+The walk runs compiled (numba, ``cache=True``: compiled once per machine), in one call
+until some pairs need coal's distance and again after each such round
+(:func:`taskrunner.scene.advancement._walk`). The robot's joint tree and the rows of its
+links' geometry (lever arms, bounding volumes) are kept per robot model, with
 those of primitive scene shapes, so that the verifier of a new scene revision builds only
 what changed (:mod:`taskrunner.scene.geometry_records`).
 
@@ -106,6 +108,7 @@ from taskrunner.scene.advancement import (
     _walk,
 )
 from taskrunner.scene.collision import VERIFY_MARGIN, CollisionChecker, RobotGeometry
+from taskrunner.scene.distance_bounds import _SHAPE_HULL, _farthest_point_centre
 from taskrunner.scene.geometry_records import _Kinematics, _Tree, _tree
 
 if TYPE_CHECKING:
@@ -209,10 +212,24 @@ class PathVerifier:
         rest = _rows(tree, [objects[g] for g in range(part.geometry_count, len(objects))])
         self._geometry_names = links.names + rest.names
         self._levers = np.vstack([links.levers, rest.levers])
-        geometries = np.concatenate([links.geometries, rest.geometries])
-        hulled = geometries["point_count"] > 0
-        geometries["first_point"][len(links.names):] += len(links.points)
-        geometries["first_point"][~hulled] = 0
+        # The scene's geometry objects' records (their indices are the collision model's),
+        # then their meshes' convex pieces' (each part's points and pieces were numbered
+        # from 0: moved to where its rows land here).
+        rest_rows = rest.geometries.copy()
+        rest_pieces = rest.pieces.copy()
+        for rows in (rest_rows, rest_pieces):
+            rows["first_point"][rows["point_count"] > 0] += len(links.points)
+        n_objects = len(links.names) + len(rest.names)
+        geometries = np.concatenate([links.geometries, rest_rows, links.pieces, rest_pieces])
+        ranges = np.vstack([links.ranges, rest.ranges,
+                            np.zeros((len(links.pieces) + len(rest.pieces), 2), dtype=np.int64)])
+        ranges[:len(links.names), 0] += n_objects
+        ranges[len(links.names):n_objects, 0] += n_objects + len(links.pieces)
+        ranges[ranges[:, 1] == 0, 0] = 0
+        # Per geometry, its pieces' first record and count; None without any (the kernels
+        # are then compiled without the pieces' code: see advancement._walk).
+        self._pieces: np.ndarray | None = ranges if ranges[:, 1].any() else None
+        self._objects = n_objects
         self._points = np.ascontiguousarray(np.vstack([links.points, rest.points]))
         self._geometries = geometries
         self._every = checker.pair_geometries
@@ -310,14 +327,16 @@ class PathVerifier:
     def support_bounds(self, q: np.ndarray) -> np.ndarray:
         """Per pair, the bound on its distance (m) at state ``q`` that the verifier takes
         from the shapes' support functions below :data:`CHEAP_FROM` (pairs of boxes and
-        convex hulls; ``-inf`` for other shapes or without compiled kinematics): where
-        positive, the pair is at least that far apart."""
+        convex hulls, a mesh's convex pieces; ``-inf`` for other shapes or without compiled
+        kinematics): where positive, the pair is at least that far apart."""
         out = np.full(len(self._first), -np.inf)
         if not self._tree.supported:
             return out
         kin = self._kinematics
         frames = kin.frames(np.asarray(q, dtype=float))
-        _support_bounds(self._pair_i, self._geometries, frames, self._points,
+        pieces = (self._pieces if self._pieces is not None
+                  else np.zeros((len(self._geometries), 2), dtype=np.int64))
+        _support_bounds(self._pair_i, self._geometries, frames, self._points, pieces,
                         kin.joints.shape[0], out)
         return out
 
@@ -366,7 +385,7 @@ class PathVerifier:
             if exact:
                 settings[4] = settings[_S_EXACT_FROM] = np.inf
             kin = self._kinematics
-            walked = (kin.joints, self._geometries, self._points,
+            walked = (kin.joints, self._geometries, self._points, self._pieces,
                       self._pair_i, self._unit_i, self._unit_levers, self._members,
                       self._unit_from, self._unit_of, states, cumulative, frames, walk,
                       schedule, picked, selected, distances, q, settings)
@@ -414,13 +433,17 @@ class PathVerifier:
 @dataclass(frozen=True)
 class _Rows:
     """Geometry rows of some geometry objects: names, lever arms ``(n, nq)``, records
-    (:data:`GEOMETRY`, ``first_point`` into ``points``) and hull points ``(m, 3)``."""
+    (:data:`GEOMETRY`, ``first_point`` into ``points``), hull points ``(m, 3)``, the
+    records of their meshes' convex pieces (their points in ``points`` too) and per object
+    the first of its pieces and their count ``(n, 2)``."""
 
     tree: object
     names: list[str]
     levers: np.ndarray
     geometries: np.ndarray
     points: np.ndarray
+    pieces: np.ndarray
+    ranges: np.ndarray
 
 
 # Per robot geometry (immutable once built; kept while it lives): its links' rows.
@@ -499,9 +522,40 @@ def _rows(tree: _Tree, objects: list[pin.GeometryObject]) -> _Rows:
             geometries["point_count"][g] = len(r.points)
             start += len(r.points)
             hulls.append(r.points)
+    pieces = np.zeros(sum(len(r.pieces) for r in records), dtype=GEOMETRY)
+    ranges = np.zeros((len(records), 2), dtype=np.int64)
+    p = 0
+    for g, r in enumerate(records):
+        ranges[g] = (p, len(r.pieces))
+        for points in r.pieces:
+            pieces[p] = _piece_record(geometries[g], points, start)
+            start += len(points)
+            hulls.append(points)
+            p += 1
     levers = np.array([r.levers for r in records]).reshape(len(records), tree.nq)
     return _Rows(tree, [r.name for r in records], levers, geometries,
-                 np.vstack(hulls) if hulls else np.zeros((0, 3)))
+                 np.vstack(hulls) if hulls else np.zeros((0, 3)), pieces, ranges)
+
+
+def _piece_record(parent: np.ndarray, points: np.ndarray, first_point: int) -> np.ndarray:
+    """The record of a convex piece of mesh ``parent`` (its record): the hull of
+    ``points`` (the mesh's frame), on the mesh's joint and placement, with its own
+    bounding sphere and box; its vertices are rows ``first_point`` on of the points."""
+    row = np.zeros((), dtype=GEOMETRY)
+    row["joint"] = parent["joint"]
+    row["placement"] = parent["placement"]
+    row["shape"] = _SHAPE_HULL
+    row["first_point"] = first_point
+    row["point_count"] = len(points)
+    low, high = points.min(axis=0), points.max(axis=0)
+    row["has_box"] = 1
+    row["half"] = 0.5 * (high - low)
+    row["box"] = 0.5 * (high + low)
+    centre = np.ascontiguousarray(row["box"], dtype=float).copy()
+    reach = _farthest_point_centre(np.ascontiguousarray(points), centre, 100)
+    row["centre"] = centre
+    row["radius"] = reach * (1.0 + 1e-12) + 1e-12  # rounding: never inside a vertex
+    return row
 
 
 def full_states(states: np.ndarray, nq: int) -> np.ndarray:

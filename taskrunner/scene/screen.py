@@ -17,7 +17,11 @@ their sphere and their box), so clearing a pair never hides a contact. Geometrie
 do not move (world objects, the robot's fixed links) have their spheres placed once per
 scan and their boxes the first time a pair needs one; the others' spheres at every state,
 their boxes when a pair needs them. The pairs' reaches (the sum of the two radii) are
-squared once per screen.
+squared once per screen. Last, a pair with a triangle mesh whose volumes overlap (two UR5
+links a joint apart, in nearly every folded state) is cleared where the mesh's convex
+pieces (:mod:`taskrunner.scene.mesh_pieces`: hulls that together hold its surface) are all
+apart from the other geometry (its pieces, or itself), by the path verifier's support
+bound (:func:`taskrunner.scene.distance_bounds._pieces_bound`).
 
 The screen is built from a :class:`~taskrunner.scene.path_verifier.PathVerifier` (the same
 geometry records: bounding spheres, boxes, the joint tree) and runs on robots whose joints
@@ -54,6 +58,7 @@ from taskrunner.scene.distance_bounds import (
     _FR_PLACED,
     _box_gap,
     _geometry_frame,
+    _pieces_bound,
     _sphere_to_box,
 )
 from taskrunner.scene.path_verifier import PathVerifier
@@ -83,6 +88,11 @@ _I_JOINT, _I_BOX, _I_EXACT = 0, 1, 2
 # every state and the rest, with the box, when a pair needs it), then two rows whose centre
 # columns hold the pair's inner spheres' centres.
 
+
+# The scan kernel's arguments after the states (StateScreen._tail): joints, geometries,
+# points, pieces (None without any), gi, geo, pairs, reach2, moving, work, found.
+_Tail = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray | None, np.ndarray, np.ndarray,
+              np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
 
 _INNER: dict[int, tuple[object, tuple[float, float, float, float, float]]] = {}
 
@@ -156,26 +166,30 @@ class StateScreen:
         self.supported = bool(verifier._tree.supported)
         kin = verifier._kinematics
         self._joints = kin.joints
+        # The records of the scene's geometry objects, then of their meshes' convex pieces.
         geometries = verifier._geometries
-        n = len(geometries)
+        n = verifier._objects
         objects = verifier._geometry.geometryObjects
         inner = np.array([_inner_sphere(objects[g].geometry) for g in range(n)]).reshape(n, 5)
         self._gi = np.zeros((n, 3), dtype=np.int64)
-        self._gi[:, _I_JOINT] = geometries["joint"]
-        self._gi[:, _I_BOX] = geometries["has_box"]
+        self._gi[:, _I_JOINT] = geometries["joint"][:n]
+        self._gi[:, _I_BOX] = geometries["has_box"][:n]
         self._gi[:, _I_EXACT] = inner[:, 4]
         # Each geometry's sphere centres in its joint's frame (the records give them in
         # the geometry's own frame, and its placement on the joint).
-        placement = geometries["placement"]
+        placement = geometries["placement"][:n]
         rot = placement[:, :9].reshape(n, 3, 3)
         trans = placement[:, 9:]
         geo = np.zeros((n, _G_COLUMNS))
-        geo[:, _G_CENTRE:_G_CENTRE + 3] = np.einsum("gij,gj->gi", rot, geometries["centre"]) + trans
-        geo[:, _G_RADIUS] = geometries["radius"]
+        geo[:, _G_CENTRE:_G_CENTRE + 3] = (np.einsum("gij,gj->gi", rot, geometries["centre"][:n])
+                                           + trans)
+        geo[:, _G_RADIUS] = geometries["radius"][:n]
         geo[:, _G_INNER:_G_INNER + 3] = np.einsum("gij,gj->gi", rot, inner[:, :3]) + trans
         geo[:, _G_INNER_RADIUS] = inner[:, 3]
         self._geo = geo
         self._geometries = geometries
+        self._points = verifier._points
+        self._pieces = verifier._pieces
         self._pairs = np.ascontiguousarray(
             np.column_stack([verifier._first, verifier._second]), dtype=np.int64).reshape(-1, 2)
         reach = geo[self._pairs[:, 0], _G_RADIUS] + geo[self._pairs[:, 1], _G_RADIUS] + CLEAR
@@ -183,14 +197,15 @@ class StateScreen:
         self._moving = np.ascontiguousarray(np.flatnonzero(self._gi[:, 0] != 0), dtype=np.int64)
 
     def _new_buffers(self) -> tuple[np.ndarray, np.ndarray]:
-        nj, ng = len(self._joints), len(self._gi)
+        nj, ng = len(self._joints), len(self._geometries)
         work = np.zeros((nj + ng + 2, _FR_COLUMNS))
         return work, np.zeros(len(self._pairs), dtype=np.int64)
 
-    def _tail(self, work: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, ...]:
-        """The kernels' arguments after the states: this screen's arrays and the work ones."""
-        return (self._joints, self._geometries, self._gi, self._geo, self._pairs,
-                self._reach2, self._moving, work, found)
+    def _tail(self, work: np.ndarray, found: np.ndarray) -> _Tail:
+        """The kernels' arguments after the states: this screen's arrays (``pieces``: None
+        without any) and the work ones."""
+        return (self._joints, self._geometries, self._points, self._pieces, self._gi, self._geo,
+                self._pairs, self._reach2, self._moving, work, found)
 
     def scanner(self) -> Callable[[np.ndarray], int]:
         """:meth:`first_in_collision` with work arrays of its own, for one thread: what a
@@ -289,7 +304,7 @@ class StateScreen:
 
 def _line_until_collision(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                           first: int, begin: int, steps: int, resolution: float,
-                          tail: tuple[np.ndarray, ...], found: np.ndarray,
+                          tail: _Tail, found: np.ndarray,
                           collide: Callable[[np.ndarray, Sequence[int] | np.ndarray], bool],
                           to_pin: Callable[[np.ndarray], np.ndarray]) -> tuple[int, int]:
     """Run :func:`_first_uncleared_on_line` from row ``begin`` on, asking coal about the
@@ -383,7 +398,8 @@ def _compile_alone() -> None:
 @jit_plain
 def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray, b: np.ndarray,
                              first: int, begin: int, steps: int, resolution: float,
-                             joints: np.ndarray, geometries: np.ndarray, gi: np.ndarray,
+                             joints: np.ndarray, geometries: np.ndarray, points: np.ndarray,
+                             pieces: np.ndarray | None, gi: np.ndarray,
                              geo: np.ndarray, pairs: np.ndarray, reach2: np.ndarray,
                              moving: np.ndarray, work: np.ndarray, found: np.ndarray
                              ) -> tuple[int, int, int]:
@@ -423,10 +439,12 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
             return -2, 0, steps
         fractions = table[steps]
     nj = joints.shape[0]
-    ng = gi.shape[0]
-    inner_a, inner_b = nj + ng, nj + ng + 1  # the pair's inner sphere centres
-    for g in range(ng):  # no geometry placed yet; the fixed ones' sphere centres placed
+    ng = gi.shape[0]  # the geometry objects; their meshes' pieces' records follow theirs
+    inner_a = nj + geometries.shape[0]  # two rows: the pair's inner sphere centres
+    inner_b = inner_a + 1
+    for g in range(geometries.shape[0]):  # no geometry placed yet
         work[nj + g, _FR_PLACED] = -1.0
+    for g in range(ng):  # the fixed ones' sphere centres placed
         if gi[g, _I_JOINT] == 0:
             for i in range(3):
                 work[nj + g, _FR_CENTRE + i] = geo[g, _G_CENTRE + i]
@@ -499,6 +517,13 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
                         proven = True
                 if proven:
                     return s, -1, steps
+            # A mesh's convex pieces apart from the other's (or the other itself). Without
+            # pieces (None), numba compiles the scan without this code (a type of its own).
+            if pieces is not None:
+                if ((pieces[ga, 1] != 0 or pieces[gb, 1] != 0)
+                        and _pieces_bound(ga, gb, geometries, work, points, nj, pieces, stamp,
+                                          CLEAR) > CLEAR):
+                    continue
             found[count] = k
             count += 1
         if count != 0:
