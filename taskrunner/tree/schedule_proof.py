@@ -4,13 +4,16 @@ time, which steps move at once, and where waits were inserted.
 :func:`prove_schedule` reads a :class:`~taskrunner.tree.schedule.MotionSchedule` once its
 motions are all committed (``run-task check`` schedules a parallel's branches by the run's
 own rule) and measures the committed motions again with
-:func:`~taskrunner.collision.spacetime.least_clearance`: the robots' links alone (as the
-record's verifier, :func:`~taskrunner.tree.expect.arm_conflicts`, measures them), each
+:func:`~taskrunner.collision.spacetime.least_clearance`: the robots' links and the objects
+each motion holds (what was attached as it started,
+:attr:`~taskrunner.collision.spacetime.TimedMotion.held`), as the record's verifier,
+:func:`~taskrunner.tree.expect.arm_conflicts`, measures them, each
 lane resting between its motions, the least distance bracketed within
 :data:`~taskrunner.collision.spacetime.LEAST_TOLERANCE`. The admission's own
 measurements only prove the schedule's clearance (5 mm); this is the distance itself,
-with the two links, the instant, and each link's step (file:line) then, so that the
-check's number can be compared with the verifier's on the run's record.
+with the two bodies (links or held objects), the instant, and each body's step
+(file:line) then, so that the check's number can be compared with the verifier's on the
+run's record.
 """
 
 from __future__ import annotations
@@ -154,8 +157,9 @@ def prove_schedule(scene: Scene, schedule: MotionSchedule) -> ScheduleProof:
 
     Args:
         scene: the situation the schedule started from: its robot state sets the joints
-            no lane moves and each lane's joints before its first motion. Only its
-            robots' links are measured (objects, held or not, are not).
+            no lane moves and each lane's joints before its first motion. Its robots'
+            links are measured, and the objects each committed motion holds (its
+            world objects, and what it has attached, are not).
     """
     robots = Scene(scene.robot)
     robots.set_state(scene.state)
