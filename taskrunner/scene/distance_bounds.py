@@ -217,7 +217,7 @@ def _support(g: int, dx: float, dy: float, dz: float, geometries: np.ndarray, fr
 
 @inline
 def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
-                   nj: int) -> float:
+                   nj: int, enough: float) -> float:
     """A lower bound on the distance of geometries ``a`` and ``b`` where positive, from
     their support functions (boxes and convex hulls; -inf for other shapes).
 
@@ -228,8 +228,8 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
     axis and the direction from its axis towards the other's centre, the centres' offset,
     then the best of those refined by Gilbert's iteration on the difference ``A - B`` (its point
     closest to the origin, approached over segments), until the bound is within
-    ``_SUPPORT_TOLERANCE`` of the distance estimate or after ``_SUPPORT_STEPS``. Each swept
-    sphere radius is subtracted."""
+    ``_SUPPORT_TOLERANCE`` of the distance estimate or after ``_SUPPORT_STEPS``, or once the
+    bound is at least ``enough`` (inf: never). Each swept sphere radius is subtracted."""
     if geometries[a].shape == _SHAPE_NONE or geometries[b].shape == _SHAPE_NONE:
         return -np.inf
     ra, rb = nj + a, nj + b
@@ -282,7 +282,8 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
     # origin's nearest; the directions v/|v|.
     for _ in range(_SUPPORT_STEPS):
         length = math.sqrt(vx * vx + vy * vy + vz * vz)
-        if not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length:
+        if (not length > 0.0 or length - best <= _SUPPORT_TOLERANCE * length
+                or best - swept >= enough):
             break
         ux, uy, uz = vx / length, vy / length, vz / length
         ax, ay, az = _support(a, ux, uy, uz, geometries, frames, points, nj)
@@ -309,7 +310,7 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
 
 @inline
 def _pieces_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
-                  nj: int, pieces: np.ndarray, stamp: float, floor: float) -> float:
+                  nj: int, pieces: np.ndarray, stamp: float, floor: float, enough: float) -> float:
     """:func:`_support_bound` of geometries ``a`` and ``b``, or where either is a mesh cut
     into convex pieces (:mod:`taskrunner.scene.mesh_pieces`; ``pieces[g]``: the first of
     geometry ``g``'s pieces' records and their count, 0 for none), the least over pairs of
@@ -317,12 +318,15 @@ def _pieces_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, po
     bounding spheres' distance: each piece holds its part of the mesh, so this too is a
     lower bound on the distance where positive. A pair of pieces whose spheres are no
     nearer than the least so far is skipped; once the least is below ``floor`` the search
-    stops and returns -inf (no bound: the caller asks coal). The pieces' frames rows not
+    stops and returns -inf (no bound: the caller asks coal); a pair's bound is refined only
+    while it is below the least so far and ``enough`` (the least found is then at least
+    ``enough`` where it is not the bound itself: the screen only asks whether the pieces
+    are apart, ``enough`` 1 µm). The pieces' frames rows not
     placed at ``stamp`` (their ``_FR_PLACED`` column below it) are placed here first (a
     fixed one's: for good)."""
     count_a, count_b = pieces[a, 1], pieces[b, 1]
     if count_a == 0 and count_b == 0:
-        return _support_bound(a, b, geometries, frames, points, nj)
+        return _support_bound(a, b, geometries, frames, points, nj, np.inf)
     first_a, first_b = a, b
     if count_a == 0:
         count_a = 1
@@ -338,21 +342,44 @@ def _pieces_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, po
             if frames[nj + g, _FR_PLACED] < stamp:
                 _geometry_frame(g, geometries, frames, nj)
                 frames[nj + g, _FR_PLACED] = np.inf if geometries[g].joint == 0 else stamp
-    least = np.inf
+    # The pair of pieces whose spheres are nearest first (its bound prunes the others),
+    # then the rest; each pair's bound: the better of its spheres' and boxes' separation,
+    # and where that is below the least so far, its support bound.
+    near_i, near_j, nearest = first_a, first_b, np.inf
     for i in range(first_a, first_a + count_a):
         for j in range(first_b, first_b + count_b):
-            spheres = 0.0
+            gap = 0.0
             for c in range(3):
                 offset = frames[nj + i, _FR_CENTRE + c] - frames[nj + j, _FR_CENTRE + c]
-                spheres += offset * offset
-            spheres = math.sqrt(spheres) - geometries[i].radius - geometries[j].radius
-            if spheres >= least:
+                gap += offset * offset
+            if gap < nearest:
+                near_i, near_j, nearest = i, j, gap
+    least = np.inf
+    for t in range(-1, count_a * count_b):
+        if t < 0:
+            i, j = near_i, near_j
+        else:
+            i, j = first_a + t // count_b, first_b + t % count_b
+            if i == near_i and j == near_j:
                 continue
-            bound = _support_bound(i, j, geometries, frames, points, nj)
-            if bound < spheres:
-                bound = spheres
-            if bound < least:
-                least = bound
-                if least < floor:
-                    return -np.inf
+        spheres = 0.0
+        for c in range(3):
+            offset = frames[nj + i, _FR_CENTRE + c] - frames[nj + j, _FR_CENTRE + c]
+            spheres += offset * offset
+        spheres = math.sqrt(spheres) - geometries[i].radius - geometries[j].radius
+        if spheres < least and geometries[i].has_box != 0 and geometries[j].has_box != 0:
+            boxes = _box_gap(i, j, geometries, frames, nj)
+            if boxes > spheres:
+                spheres = boxes
+        if spheres >= least:
+            continue
+        # Refined only while it could lower the least (or stay below ``enough``).
+        bound = _support_bound(i, j, geometries, frames, points, nj,
+                               least if least < enough else enough)
+        if bound < spheres:
+            bound = spheres
+        if bound < least:
+            least = bound
+            if least < floor:
+                return -np.inf
     return least
