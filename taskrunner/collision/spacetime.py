@@ -36,30 +36,26 @@ scene only, so a run record can be verified after the fact
 (:mod:`taskrunner.tree.expect`).
 
 *Held objects.* A motion may say what its arm holds while it runs
-(:attr:`TimedMotion.held`: the objects attached to a link of its lane, each posed in that
-link's frame); a pick attaches between two motions, a place releases. Where any motion
-says so, the common clock is cut where what a lane holds changes, and each stretch is
-verified (or measured) on its own, in a copy of the scene holding what each lane holds
-then: during a motion, what it says; at rest between two motions, what either says (the
-object is where the arm rests, in its hand or just set down or taken: one place); before
-a lane's first motion, that one's, after its last, that one's, and at both what the
-scene has attached to the lane's links (what it holds now). The objects named are
-taken out of the scene otherwise (a world object of no lane is never checked in time);
-the scene's allowances naming them are kept. Motions that say nothing (``held`` None)
-leave the scene's objects as they are: the walk is then the one above, unchanged.
+(:attr:`TimedMotion.held`). The objects any motion holds are then verified where they are
+at each instant: held, set down or not taken yet (:mod:`taskrunner.collision.held`); the
+pairs involving them stretch by stretch of the clock where that changes, every other pair
+once over the whole window in the scene as it is. Motions that say nothing (``held``
+None) leave the scene's objects as they are: the walk is then the one above, unchanged.
 """
 
 from __future__ import annotations
 
+import copy
 import math
 import time
 import weakref
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
 
+from taskrunner.collision.held import HeldObjects, held_objects, lanes_state
 from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.types import JointTrajectory
 
@@ -215,60 +211,77 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
     """
     started = time.perf_counter()
     options = options or SpacetimeOptions()
-    spans = _held_spans(scene, lanes, window)
-    if spans is None:
-        return _verify(scene, lanes, window, options, started)
-    least: SpacetimeVerification | None = None
-    queries = 0
-    for held_scene, span in spans:  # in time order: the first conflict is the first
-        found = _verify(held_scene, lanes, span, options, started)
-        queries += found.distance_queries
-        if least is None or found.min_distance < least.min_distance:
-            least = found
-        if found.conflict is not None:
-            break
-    if least is None:
-        return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
-    return replace(least, conflict=found.conflict, distance_queries=queries,
-                   seconds=time.perf_counter() - started)
-
-
-def _verify(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None,
-            options: SpacetimeOptions, started: float) -> SpacetimeVerification:
-    """:func:`verify_lanes` on ``scene`` as it is (held objects not looked at)."""
     timeline = _Timeline(scene, lanes, window)
     if timeline.empty:
         return SpacetimeVerification(None, math.inf, None, None, 0, time.perf_counter() - started)
-    walk = _Walk(scene, timeline, options)
-    conflict = walk.run()
-    return SpacetimeVerification(conflict, walk.least, walk.least_pair, walk.least_time,
-                                 walk.queries, time.perf_counter() - started)
+    held = _held(scene, lanes, timeline)
+    if held is None:
+        conflict, walks = _walk_apart(scene, timeline, options)
+    else:
+        # Every pair of no object that changes over the whole window, then those of one,
+        # stretch by stretch (module text).
+        conflict, walks = _walk_apart(scene, timeline, options, None, held.changing,
+                                      held.resting)
+        for stretch in held.stretches:  # in time order
+            end = stretch.end if conflict is None else min(stretch.end, conflict.time)
+            if end < stretch.start or (conflict is not None and stretch.start >= conflict.time):
+                break
+            found, more = _walk_apart(stretch.scene, timeline.cut(stretch.start, end), options,
+                                      (held.changing,), frozenset(), stretch.lanes)
+            walks += more
+            if found is not None:  # before the other pairs' first conflict, if any
+                conflict = found
+                break
+    least = min(walks, key=lambda w: w.least)
+    return SpacetimeVerification(conflict, least.least, least.least_pair, least.least_time,
+                                 sum(w.queries for w in walks), time.perf_counter() - started)
 
 
+def _walk_apart(scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
+                only: tuple[frozenset[str], ...] | None = None,
+                without: frozenset[str] = frozenset(), lying: Mapping[str, int] | None = None
+                ) -> tuple[Conflict | None, list[_Walk]]:
+    """Walk the pairs of :class:`_Walk`'s ``only`` and ``without``: those of the objects
+    ``lying`` in the world (of their lanes) with no clearance (not to be touched, as a
+    plan keeps off the world; their distances not in :attr:`_Walk.least`), the others
+    with the clearance. The first conflict, and the walks."""
+    names = frozenset(lying or ())
+    walks = [_Walk(scene, timeline, options, only, without | names, lying)]
+    if names:
+        walks.append(_Walk(scene, timeline, replace(options, clearance=0.0),
+                           (*(only or ()), names), without, lying, uncounted=names))
+    conflict = None
+    for walk in walks:
+        conflict = _earlier(conflict, walk.run())
+    return conflict, walks
 
-def lanes_state(scene: Scene, lanes: Sequence[Lane], t: float) -> np.ndarray:
-    """The full state at ``t`` (s, the lanes' clock): each lane's joints where its
-    motions put them then (before a motion starts, where it starts; after it ends, where
-    it ended), every other joint at ``scene.state``."""
+
+def _earlier(a: Conflict | None, b: Conflict | None) -> Conflict | None:
+    """The earlier of two conflicts (None: none)."""
+    return b if a is None or (b is not None and b.time < a.time) else a
+
+
+def _held(scene: Scene, lanes: Sequence[Lane], timeline: _Timeline) -> HeldObjects | None:
+    """The objects the lanes' motions hold, and the stretches where that changes
+    (:func:`~taskrunner.collision.held.held_objects`)."""
     model = scene.robot
-    q = scene.state.copy()
-    for lane in lanes:
-        placed: set[str] = set()
-        for motion in sorted(lane.motions, key=lambda m: m.start):
-            trajectory = motion.trajectory
-            if motion.start > t:
-                # Not started yet: its joints rest where it starts, unless an earlier
-                # motion placed them.
-                names = [n for n in trajectory.names if n not in placed]
-                at = 0.0
-            else:
-                names = list(trajectory.names)
-                at = min(t - motion.start, trajectory.duration)
-            columns = [trajectory.names.index(n) for n in names]
-            q[model.indices(names)] = [np.interp(at, trajectory.times,
-                                                 trajectory.positions[:, j]) for j in columns]
-            placed.update(names)
-    return model.apply_mimic(q)
+    pin_model = model.model
+    moved_at, carried_at = _joint_lanes(model, scene.checker, timeline.columns)
+
+    owners: dict[str, int] = {}
+    t0, t1 = float(timeline.times[0]), float(timeline.times[-1])
+
+    def owner(link: str) -> int:
+        found = owners.get(link)
+        if found is None:
+            jid = (int(pin_model.frames[pin_model.getFrameId(link)].parentJoint)
+                   if pin_model.existFrame(link) else 0)
+            found = owners[link] = (-1 if jid == 0 else int(moved_at[jid]) if moved_at[jid] >= 0
+                                    else int(carried_at[jid]))
+        return found
+
+    return held_objects(scene, lanes, (t0, t1), owner, lambda t: timeline.state(t)
+                        if t0 <= t <= t1 else lanes_state(scene, lanes, t))
 
 
 @dataclass(frozen=True)
@@ -321,10 +334,22 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
         raise ArgumentError(f"'tolerance' must be a positive number of metres "
                             f"(got {tolerance!r})")
     started = time.perf_counter()
-    spans = _held_spans(scene, lanes, window)
-    pieces = [(scene, _Timeline(scene, lanes, window))] if spans is None else \
-        [(held, _Timeline(held, lanes, span)) for held, span in spans]
-    pieces = [(s, t) for s, t in pieces if not t.empty]
+    whole = _Timeline(scene, lanes, window)
+    held = None if whole.empty else _held(scene, lanes, whole)
+    # The pairs of the arms and what they hold (what lies in the world is not measured):
+    # those of no object that changes over the whole window, those of one stretch by
+    # stretch (module text).
+    pieces: list[tuple[Scene, _Timeline, tuple[frozenset[str], ...] | None,
+                       frozenset[str], Mapping[str, int]]] = []
+    if not whole.empty:
+        pieces.append((scene, whole, None, held.named - held.steady if held else frozenset(),
+                       {}))
+    for s in held.stretches if held else ():
+        assert held is not None
+        lies = frozenset(s.lanes)
+        if held.changing - lies:
+            pieces.append((s.scene, whole.cut(s.start, s.end), (held.changing - lies,),
+                           lies, s.lanes))
     queries = 0
     best: _Walk | None = None  # the walk that measured the least distance so far
     timeline: _Timeline | None = None  # its timeline
@@ -333,8 +358,9 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
         # Each piece of the timeline (one, unless what the lanes hold changes), in time
         # order: the first conflict stops the round.
         walked = conflict = False
-        for piece_scene, piece in pieces:
-            walk = _Walk(piece_scene, piece, SpacetimeOptions(clearance=clearance, exact=True))
+        for piece_scene, piece, only, without, lying in pieces:
+            walk = _Walk(piece_scene, piece, SpacetimeOptions(clearance=clearance, exact=True),
+                         only=only, without=without, lying=lying)
             if not walk.pair_count:
                 continue
             walked = True
@@ -370,97 +396,6 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
                            timeline.motion_label(owners[1], at)),
                           (timeline.lanes[owners[0]].name, timeline.lanes[owners[1]].name),
                           queries, time.perf_counter() - started)
-
-
-# Per scene (kept while it lives): its copies holding what lanes hold, by the scene's
-# revision and what is held, the latest few (a schedule verifies many times with one
-# scene); a copy is given the scene's state when it is taken.
-_HELD_SCENES: weakref.WeakKeyDictionary[Scene, dict[tuple[object, ...], Scene]] = \
-    weakref.WeakKeyDictionary()
-_HELD_SCENES_KEPT = 16
-
-
-def _held_spans(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float] | None
-                ) -> list[tuple[Scene, tuple[float, float]]] | None:
-    """The stretches of the common clock over which what each lane holds stays the
-    same, in time order, each with a copy of ``scene`` holding it (module text); None
-    where no motion says what it holds (or nothing moves)."""
-    motions = [m for lane in lanes for m in lane.motions]
-    if not any(m.held for m in motions) or len(lanes) < 2:
-        return None  # nothing held: the scene as it is (the same, without copies)
-    model = scene.robot
-    pin_model = model.model
-    columns = [model.indices(sorted({n for m in lane.motions for n in m.trajectory.names}))
-               for lane in lanes]
-    moved_at, carried_at = _joint_lanes(model, scene.checker, columns)
-
-    def owner(link: str) -> int:
-        if not pin_model.existFrame(link):
-            return -1
-        jid = int(pin_model.frames[pin_model.getFrameId(link)].parentJoint)
-        return int(moved_at[jid]) if moved_at[jid] >= 0 else int(carried_at[jid])
-
-    def own(index: int, motion: TimedMotion) -> dict[str, SceneObject]:
-        return {o.name: o for o in motion.held or ()
-                if o.attached_to is not None and owner(o.attached_to) == index}
-
-    ordered = [sorted(lane.motions, key=lambda m: m.start) for lane in lanes]
-    # What the scene has attached to each lane's links: held at rest before the lane's
-    # first motion and after its last, too (an arm that has just picked an object up
-    # holds it until its next motion, which is not on the schedule yet).
-    resting = [{o.name: o for o in scene.attached_objects()
-                if o.attached_to is not None and owner(o.attached_to) == index}
-               for index in range(len(lanes))]
-
-    def holding(index: int, t: float) -> dict[str, SceneObject]:
-        mine = ordered[index]
-        if not mine:
-            return {}
-        i = max((k for k, m in enumerate(mine) if m.start <= t), default=0)
-        if mine[i].start > t or (t > mine[i].end and i + 1 == len(mine)):
-            return {**resting[index], **own(index, mine[i])}  # before the first, after the last
-        if t <= mine[i].end:
-            return own(index, mine[i])
-        return {**own(index, mine[i + 1]), **own(index, mine[i])}  # at rest between two
-
-    t0 = min(m.start for m in motions) if window is None else window[0]
-    t1 = max(m.end for m in motions) if window is None else window[1]
-    points = sorted({t0, t1} | {t for m in motions for t in (m.start, m.end) if t0 < t < t1})
-    spans: list[tuple[tuple[object, ...], list[SceneObject], float, float]] = []
-    for a, b in zip(points, points[1:] + ([] if len(points) > 1 else [t1])):
-        held = [o for i in range(len(lanes)) for o in holding(i, 0.5 * (a + b)).values()]
-        key = tuple((o.name, o.attached_to, o.pose.xyz, o.pose.quat, repr(o.shape))
-                    for o in held)
-        if spans and spans[-1][0] == key:
-            spans[-1] = (key, held, spans[-1][2], b)
-        else:
-            spans.append((key, held, a, b))
-    named = {o.name for m in motions for o in m.held or ()}
-    return [(_held_scene(scene, named, key, held), (a, b)) for key, held, a, b in spans]
-
-
-def _held_scene(scene: Scene, named: set[str], key: tuple[object, ...],
-                held: list[SceneObject]) -> Scene:
-    """A copy of ``scene`` without the objects ``named``, holding ``held`` (kept)."""
-    kept = _HELD_SCENES.get(scene)
-    if kept is None:
-        kept = _HELD_SCENES[scene] = {}
-    full = (scene.revision, tuple(sorted(named)), key)
-    found = kept.get(full)
-    if found is not None:
-        if not np.array_equal(found.state, scene.state):
-            found.set_state(scene.state)
-        return found
-    snapshot = scene.snapshot()
-    objects = (*(o for o in snapshot.objects if o.name not in named), *held)
-    bodies = {o.name for o in objects} | set(scene.robot.link_names)
-    allowed = tuple(p for p in snapshot.allowed if p[0] in bodies and p[1] in bodies)
-    copy = scene.copy()
-    copy.restore(replace(snapshot, objects=objects, allowed=allowed))
-    if len(kept) >= _HELD_SCENES_KEPT:
-        kept.pop(next(iter(kept)))
-    kept[full] = copy
-    return copy
 
 
 class _Timeline:
@@ -528,6 +463,17 @@ class _Timeline:
                                                        trajectory.positions[:, j])
         self.states = model.apply_mimic(states)
 
+    def cut(self, a: float, b: float) -> _Timeline:
+        """The timeline from ``a`` to ``b`` (s, within this one's): its rows between,
+        the states at both ends."""
+        piece = copy.copy(self)
+        inside = (self.times > a) & (self.times < b)
+        piece.times = np.unique(np.concatenate([[a, b], self.times[inside]]))
+        rows = np.flatnonzero(inside)
+        piece.states = np.vstack([self.state(a)[None, :], self.states[rows],
+                                  self.state(b)[None, :]]) if b > a else self.state(a)[None, :]
+        return piece
+
     def prefix(self, position: float) -> tuple[np.ndarray, Callable[[float], float]]:
         """The rows of :attr:`states` up to ``position`` (as :meth:`time_at`), the state
         there last, and what a position along them is along the whole."""
@@ -580,11 +526,20 @@ class _Walk:
     """Every pair of two lanes' bodies along the timeline, on the path verifier's
     compiled walk (module text)."""
 
-    def __init__(self, scene: Scene, timeline: _Timeline, options: SpacetimeOptions) -> None:
+    def __init__(self, scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
+                 only: Sequence[frozenset[str]] | None = None,
+                 without: frozenset[str] = frozenset(),
+                 lying: Mapping[str, int] | None = None,
+                 uncounted: frozenset[str] = frozenset()) -> None:
+        """``only``: the pairs with an object of each of these (default: every pair),
+        none with one of ``without``; ``lying``: world objects of a lane (by name);
+        ``uncounted``: objects whose distances are not kept in :attr:`least`."""
         model = scene.robot
         self.scene, self.model, self.timeline, self.options = scene, model, timeline, options
         self.checker = checker = scene.checker
-        owners = _lane_owners(model, checker, timeline.columns)
+        owners = _lane_owners(model, checker, timeline.columns, only, without, lying or {},
+                              uncounted)
+        self.uncounted = owners.uncounted
         self.owner = owners.owner
         # The checker's pairs walked (ascending), and each one's bodies, the first of
         # the lower lane.
@@ -668,6 +623,8 @@ class _Walk:
         if the least so far."""
         if not len(distances):
             return
+        if self.uncounted is not None:
+            distances = np.where(self.uncounted[pairs], np.inf, distances)
         i = int(np.argmin(distances))
         if distances[i] < self.least:
             p = self.local(int(pairs[i]))
@@ -704,6 +661,7 @@ class _Owners:
     pair_ids: np.ndarray
     firsts: np.ndarray
     seconds: np.ndarray
+    uncounted: np.ndarray | None = None  # per checker pair: its distance not kept
 
 
 # Per robot geometry (one per robot model, shared by the checkers of every scene
@@ -759,21 +717,73 @@ def _joint_lanes(model: RobotModel, checker: CollisionChecker,
     return found
 
 
-def _lane_owners(model: RobotModel, checker: CollisionChecker,
-                 columns: Sequence[np.ndarray]) -> _Owners:
+def _lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[np.ndarray],
+                 only: Sequence[frozenset[str]] | None = None,
+                 without: frozenset[str] = frozenset(),
+                 lying: Mapping[str, int] | None = None,
+                 uncounted: frozenset[str] = frozenset()) -> _Owners:
     """The :class:`_Owners` of lanes moving the state columns ``columns`` (one array a
-    lane) for ``checker``'s bodies and pairs."""
+    lane) for ``checker``'s bodies and pairs: the objects ``lying`` of their lanes, the
+    pairs those of :class:`_Walk`'s ``only`` and ``without``. Kept per checker."""
     moved_at, carried_at = _joint_lanes(model, checker, columns)
+    key = (id(moved_at), only, without, tuple(sorted((lying or {}).items())), uncounted)
+    kept = _OWNERS.get(checker)
+    if kept is None:
+        kept = _OWNERS[checker] = {}
+    found = kept.get(key)
+    if found is not None and found[0] is moved_at:
+        return found[1]
     joints = checker.geometry_joints
     # A body is of the lane whose moved joint is nearest above it; a body no lane's
     # joint moves, of the lane that carries it (a gripper lane: its arm's links).
     owner = np.where(moved_at[joints] >= 0, moved_at[joints], carried_at[joints])
     every = checker.pair_geometries
+    keep = np.ones(len(every), dtype=bool)
+    skipped = None
+    if only is not None or without or lying or uncounted:
+        bodies = _object_bodies(checker, model)
+        first = checker.robot_geometry.geometry_count
+        for g, body in enumerate(bodies, first):
+            if lying and body in lying:
+                owner[g] = lying[body]
+
+        def touching(names: frozenset[str]) -> np.ndarray:
+            mask = np.zeros(len(owner), dtype=bool)
+            mask[first:] = [body in names for body in bodies]
+            return mask[every[:, 0]] | mask[every[:, 1]]
+
+        if without:
+            keep &= ~touching(without)
+        for names in only or ():
+            keep &= touching(names)
+        skipped = touching(uncounted) if uncounted else None
     oa, ob = owner[every[:, 0]], owner[every[:, 1]]
-    ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob))
+    ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob) & keep)
     swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
-    return _Owners(owner, ids, np.where(swap, every[ids, 1], every[ids, 0]),
-                   np.where(swap, every[ids, 0], every[ids, 1]))
+    owners = _Owners(owner, ids, np.where(swap, every[ids, 1], every[ids, 0]),
+                     np.where(swap, every[ids, 0], every[ids, 1]), skipped)
+    if len(kept) >= _JOINT_LANES_KEPT:
+        kept.pop(next(iter(kept)))
+    kept[key] = (moved_at, owners)
+    return owners
+
+# Per checker (kept while it lives): the owners of the latest few walks (:func:`_lane_owners`).
+_OWNERS: weakref.WeakKeyDictionary[object, dict[tuple[object, ...], tuple[np.ndarray, _Owners]]] \
+    = weakref.WeakKeyDictionary()
+# Per checker (kept while it lives): the bodies of its objects' geometries, in order.
+_OBJECT_BODIES: weakref.WeakKeyDictionary[object, list[str]] = weakref.WeakKeyDictionary()
+
+
+def _object_bodies(checker: CollisionChecker, model: RobotModel) -> list[str]:
+    """The body (object name) of each of ``checker``'s geometries after the robot's."""
+    found = _OBJECT_BODIES.get(checker)
+    if found is None:
+        objects = checker.geometry_model.geometryObjects
+        found = _OBJECT_BODIES[checker] = [
+            _body_name(objects[g], model.model)
+            for g in range(checker.robot_geometry.geometry_count, len(objects))]
+    return found
+
 
 def _body_name(obj: pin.GeometryObject, pin_model: pin.Model) -> str:
     """A geometry's body: its link's name for a robot link, else the object's name."""
