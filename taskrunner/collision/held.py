@@ -92,15 +92,16 @@ class HeldObjects:
 
 @dataclass(frozen=True)
 class _Hold:
-    """An object held by lane ``lane`` from ``start`` to ``end`` (s): during the motions
-    ``first`` to ``last`` of it (None: at rest, after the lane's last motion)."""
+    """An object held by lane ``lane`` from ``start`` to ``end`` (s); ``taken`` and
+    ``released``: the motion of the lane and its row (sample) where the lane is as it
+    takes it and as it lets it go (None: not known; the lanes' state then)."""
 
     lane: int
     start: float
     end: float
     obj: SceneObject
-    first: TimedMotion | None
-    last: TimedMotion | None
+    taken: tuple[TimedMotion, int] | None
+    released: tuple[TimedMotion, int] | None
 
 
 # Per thread, per robot geometry (one per robot model: kept while it lives): the scenes of
@@ -139,21 +140,23 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
         (as ``scene`` has it where it lies there too: :func:`_as_in`)."""
         link = hold.obj.attached_to
         assert link is not None
-        motion = hold.last if at_end else hold.first
+        motion, row = (hold.released if at_end else hold.taken) or (None, 0)
         names = motion.trajectory.names if motion is not None else ()
         chain, columns, rest = _chain(model, link, names)
         key: tuple[object, ...]
-        if motion is not None and not moving.difference(names).intersection(chain):
-            # The link moves with this motion's joints alone, the others the scene's.
-            key = (id(motion.trajectory), at_end, hold.obj, scene.state[rest].tobytes())
+        own = lanes[hold.lane].motions
+        if motion is not None and not (moving - _joints(own)).intersection(chain):
+            # Its lane's joints alone move the link: where its motions leave them.
+            q = np.array(scene.state, dtype=float)
+            _lane_rest(model, own, motion, q, rest)
+            key = (id(motion.trajectory), row, hold.obj, q[rest].tobytes())
             found = poses.get(key)
             if found is not None and found[0] is motion.trajectory:
                 return _as_in(scene, found[1])
-            q = np.array(scene.state, dtype=float)
         else:  # other lanes' joints carry it: the state then
             q = np.array(state_at(hold.end if at_end else hold.start), dtype=float)
         if motion is not None:
-            q[model.indices(names)] = motion.trajectory.positions[-1 if at_end else 0]
+            q[model.indices(names)] = motion.trajectory.positions[row]
             q = model.apply_mimic(q)
         if motion is None or moving.difference(names).intersection(chain):
             key = (link, q[columns].tobytes(), hold.obj)
@@ -277,6 +280,29 @@ def _kept(part: object) -> dict[tuple[object, ...], Scene]:
     return kept
 
 
+def _joints(motions: Sequence[TimedMotion]) -> set[str]:
+    """The joints ``motions`` move."""
+    return {n for m in motions for n in m.trajectory.names}
+
+
+def _lane_rest(model: RobotModel, motions: Sequence[TimedMotion], motion: TimedMotion,
+               q: np.ndarray, columns: np.ndarray) -> None:
+    """Set the state ``columns`` of ``q`` that ``motion`` does not move where the other
+    ``motions`` of its lane leave them while it runs (the latest to move one before it
+    ends there, else the first after starts there; else as they are)."""
+    if not len(columns):
+        return
+    names = [model.joint_names[c] for c in columns]
+    earlier = sorted((m for m in motions if m.start <= motion.start and m is not motion),
+                     key=lambda m: m.start, reverse=True)
+    later = sorted((m for m in motions if m.start > motion.start), key=lambda m: m.start)
+    for column, name in zip(columns, names):
+        for other, row in [*((m, -1) for m in earlier), *((m, 0) for m in later)]:
+            if name in other.trajectory.names:
+                q[column] = other.trajectory.positions[row, other.trajectory.names.index(name)]
+                break
+
+
 def _chain(model: RobotModel, link: str, names: Sequence[str]
            ) -> tuple[frozenset[str], np.ndarray, np.ndarray]:
     """The joints that move ``link`` (by name), their state columns, and those of them
@@ -320,7 +346,7 @@ def _poses(part: object) -> dict[tuple[object, ...], tuple[object, SceneObject]]
 def _holds(scene: Scene, lanes: Sequence[Lane], owner: Callable[[str], int]
            ) -> dict[str, list[_Hold]]:
     """Per named object, when which lane holds it, in time order (module text)."""
-    # Per object: [lane, start, end, object, first motion, last motion].
+    # Per object: [lane, start, end, object, taken, released, last motion].
     rows: dict[str, list[list[Any]]] = {}
     lasts: list[TimedMotion | None] = []
     for index, lane in enumerate(lanes):
@@ -331,11 +357,13 @@ def _holds(scene: Scene, lanes: Sequence[Lane], owner: Callable[[str], int]
                     continue  # another lane's: only its own lane's say counts
                 found = rows.setdefault(obj.name, [])
                 last = found[-1] if found else None
-                if (last is not None and previous is not None and last[5] is previous
+                if (last is not None and previous is not None and last[6] is previous
                         and last[0] == index and (last[3] is obj or last[3] == obj)):
-                    last[2], last[5] = motion.end, motion  # in its hand between the two
+                    # In its hand between the two.
+                    last[2], last[5], last[6] = motion.end, (motion, -1), motion
                 else:
-                    found.append([index, motion.start, motion.end, obj, motion, motion])
+                    found.append([index, motion.start, motion.end, obj, (motion, 0),
+                                  (motion, -1), motion])
             previous = motion
         lasts.append(previous)
     # After its last motion an arm holds what the scene has attached to its links.
@@ -348,15 +376,16 @@ def _holds(scene: Scene, lanes: Sequence[Lane], owner: Callable[[str], int]
         found = rows.setdefault(obj.name, [])
         last = found[-1] if found else None
         final = lasts[index]
-        if last is not None and final is not None and last[5] is final and last[3] == obj:
+        if last is not None and final is not None and last[6] is final and last[3] == obj:
             last[2] = np.inf
-        else:
+        else:  # taken where the lane rests
+            resting = (final, -1) if final is not None else None
             found.append([index, final.end if final is not None else -np.inf, np.inf, obj,
-                          None, None])
+                          resting, resting, final])
     holds: dict[str, list[_Hold]] = {}
     for name, found in rows.items():
         found.sort(key=lambda h: h[1])
         for k in range(len(found) - 1):  # a hold at rest ends where another one begins
             found[k][2] = min(found[k][2], found[k + 1][1])
-        holds[name] = [_Hold(*row) for row in found]
+        holds[name] = [_Hold(*row[:6]) for row in found]
     return holds
