@@ -61,12 +61,18 @@ class Stretch:
         scene: the robot and the named objects as they are then (held: attached to their
             links; set down or not taken yet: in the world), kept: read, never edited.
         lanes: the lane (index) of each named object in the world then.
+        frozen: state columns and their values: ``scene`` is the scene verified, in
+            which the objects lying then are attached as their lane held them; with its
+            joints there (the lane resting where it set them down or takes them), they
+            lie where they do (only their pairs are walked: that lane's other bodies are
+            not). None: ``scene`` holds them as they are.
     """
 
     start: float
     end: float
     scene: Scene
     lanes: Mapping[str, int]
+    frozen: tuple[np.ndarray, np.ndarray] | None = None
 
 
 @dataclass(frozen=True)
@@ -104,6 +110,10 @@ class _Hold:
     released: tuple[TimedMotion, int] | None
 
 
+# An object lying where its lane leaves it: that lane, the state columns of the joints
+# moving its link and their values there, the object as its lane held it.
+_Freeze = tuple[int, np.ndarray, np.ndarray, "SceneObject"]
+
 # Per thread, per robot geometry (one per robot model: kept while it lives): the scenes of
 # the stretches, by what they hold, the latest few (a checker is one thread's at a time).
 _LOCAL = threading.local()
@@ -113,17 +123,32 @@ _SAME = 1e-7  # m, and in quaternion components: where an object set down lies, 
 
 
 def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float],
-                 owner: Callable[[str], int],
+                 joint_lanes: tuple[np.ndarray, np.ndarray],
                  state_at: Callable[[float], np.ndarray]) -> HeldObjects | None:
     """The named objects of ``lanes`` and the stretches of ``times`` (s, the window
     verified) with their scenes (module text); None where no object is named.
 
     Args:
-        owner: the lane (index) of a link by name (-1: of none).
+        joint_lanes: per pinocchio joint, the lane that moves it, and the lane that
+            carries it (-1: none), as the verifier takes a body's lane.
         state_at: the full state at a time of the common clock (the lanes' motions).
     """
     if len(lanes) < 2 or not any(m.held for lane in lanes for m in lane.motions):
         return None
+    pin_model = scene.robot.model
+    moved_at, carried_at = joint_lanes
+    owners: dict[str, int] = {}
+
+    def owner(link: str) -> int:
+        """The lane of ``link`` (-1: of none)."""
+        found = owners.get(link)
+        if found is None:
+            jid = (int(pin_model.frames[pin_model.getFrameId(link)].parentJoint)
+                   if pin_model.existFrame(link) else 0)
+            found = owners[link] = (-1 if jid == 0 else int(moved_at[jid]) if moved_at[jid] >= 0
+                                    else int(carried_at[jid]))
+        return found
+
     holds = _holds(scene, lanes, owner)
     if not holds:
         return None
@@ -149,34 +174,42 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
             # Its lane's joints alone move the link: where its motions leave them.
             q = np.array(scene.state, dtype=float)
             _lane_rest(model, own, motion, q, rest)
+            q[model.indices(names)] = motion.trajectory.positions[row]
+            q = model.apply_mimic(q)
+            # Its lane resting so, the object held as the scene has it lies there.
+            freezes[hold.obj.name] = (hold.lane, columns, q[columns], hold.obj)
             key = (id(motion.trajectory), row, hold.obj, q[rest].tobytes())
             found = poses.get(key)
             if found is not None and found[0] is motion.trajectory:
                 return _as_in(scene, found[1])
         else:  # other lanes' joints carry it: the state then
             q = np.array(state_at(hold.end if at_end else hold.start), dtype=float)
-        if motion is not None:
-            q[model.indices(names)] = motion.trajectory.positions[row]
-            q = model.apply_mimic(q)
+            if motion is not None:
+                q[model.indices(names)] = motion.trajectory.positions[row]
+                q = model.apply_mimic(q)
         if motion is None or moving.difference(names).intersection(chain):
             key = (link, q[columns].tobytes(), hold.obj)
             found = poses.get(key)
             if found is not None:
                 return _as_in(scene, found[1])
-        data = model.model.createData()
-        pin.framesForwardKinematics(model.model, data, model.to_pin(q))
-        pose = Pose.from_se3(pin.SE3(data.oMf[model.frame_id(link)]) * hold.obj.pose.se3)
+        data = _data(model)
+        frame = model.frame_id(link)
+        pin.forwardKinematics(model.model, data, model.to_pin(q))
+        pose = Pose.from_se3(pin.updateFramePlacement(model.model, data, frame)
+                             * hold.obj.pose.se3)
         lying = _as_in(scene, replace(hold.obj, pose=pose, attached_to=None, touch_links=()))
         if len(poses) >= _KEPT_POSES:
             poses.pop(next(iter(poses)))
         poses[key] = (motion.trajectory if motion is not None else None, lying)
         return lying
 
-    spans: list[tuple[tuple[object, ...], list[SceneObject], dict[str, int], float, float]] = []
+    spans: list[tuple[tuple[object, ...], list[SceneObject], dict[str, int], float, float,
+                      dict[str, _Freeze]]] = []
     for a, b in zip(points, points[1:] if len(points) > 1 else [t1]):
         mid = 0.5 * (a + b)
         objects: list[SceneObject] = []
         lying: dict[str, int] = {}
+        freezes: dict[str, _Freeze] = {}
         for name, found in holds.items():
             now = [h for h in found if h.start <= mid <= h.end]
             if now:
@@ -188,9 +221,9 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
             lying[name] = hold.lane
         key: tuple[object, ...] = tuple((o, lying.get(o.name)) for o in objects)
         if spans and spans[-1][0] == key:
-            spans[-1] = (*spans[-1][:4], b)
+            spans[-1] = (*spans[-1][:4], b, spans[-1][5])
         else:
-            spans.append((key, objects, lying, a, b))
+            spans.append((key, objects, lying, a, b, freezes))
     # An object as the scene verified has it in every stretch: steady (walked once over
     # the whole window in that scene); the others change.
     steady = {name for name in holds
@@ -202,10 +235,15 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
     kept = _kept(scene.checker.robot_geometry)
     stretches = []
     snapshot = None
-    for key, objects, lying, a, b in spans:
-        if all(o.name in scene and scene.object(o.name) == o for o in objects):
-            # The scene verified holds them so (at the run's present, mostly): itself.
-            stretches.append(Stretch(a, b, scene, lying))
+    changing = set(holds) - steady
+    for key, objects, lying, a, b, freezes in spans:
+        differ = {o.name for o in objects if o.name not in scene or scene.object(o.name) != o}
+        frozen = _frozen(scene, differ, changing, freezes)
+        if not differ or frozen is not None:
+            # The scene verified holds them so (at the run's present, mostly), or holds
+            # those that lie as their lane holds them where it rests: itself (that lane
+            # resting there, its joints frozen).
+            stretches.append(Stretch(a, b, scene, lying, frozen))
             continue
         if snapshot is None:
             snapshot = scene.snapshot()
@@ -251,6 +289,28 @@ def lanes_state(scene: Scene, lanes: Sequence[Lane], t: float) -> np.ndarray:
     return model.apply_mimic(q)
 
 
+def _frozen(scene: Scene, differ: set[str], changing: set[str],
+            freezes: Mapping[str, _Freeze]) -> tuple[np.ndarray, np.ndarray] | None:
+    """The state columns and values at which the lane of the objects ``differ`` (those
+    not as ``scene`` has them) holds them, as the scene has them attached, where they lie
+    (:class:`Stretch`); None where that is not so for all, or other objects change."""
+    found = [freezes.get(name) for name in differ]
+    if not differ or differ != changing or any(f is None for f in found):
+        return None
+    held = [f for f in found if f is not None]
+    if len({f[0] for f in held}) != 1 or any(
+            f[3].name not in scene or scene.object(f[3].name) != f[3] for f in held):
+        return None
+    columns = np.concatenate([f[1] for f in held])
+    values = np.concatenate([f[2] for f in held])
+    order = np.argsort(columns, kind="stable")
+    columns, values = columns[order], values[order]
+    same = columns[1:] == columns[:-1]
+    if np.any(values[1:][same] != values[:-1][same]):
+        return None  # two of its states
+    return columns, values
+
+
 def _as_in(scene: Scene, obj: SceneObject) -> SceneObject:
     """World object ``obj`` as ``scene`` has it where it lies there too (to rounding: it
     was set down there), else ``obj``."""
@@ -278,6 +338,14 @@ def _kept(part: object) -> dict[tuple[object, ...], Scene]:
     if kept is None:
         kept = found[part] = {}
     return kept
+
+
+def _data(model: RobotModel) -> pin.Data:
+    """This thread's pinocchio data of ``model`` (kept)."""
+    found: tuple[RobotModel, pin.Data] | None = getattr(_LOCAL, "data", None)
+    if found is None or found[0] is not model:
+        found = _LOCAL.data = (model, model.model.createData())
+    return found[1]
 
 
 def _joints(motions: Sequence[TimedMotion]) -> set[str]:

@@ -226,8 +226,9 @@ def verify_lanes(scene: Scene, lanes: Sequence[Lane], window: tuple[float, float
             end = stretch.end if conflict is None else min(stretch.end, conflict.time)
             if end < stretch.start or (conflict is not None and stretch.start >= conflict.time):
                 break
-            found, more = _walk_apart(stretch.scene, timeline.cut(stretch.start, end), options,
-                                      (held.changing,), frozenset(), stretch.lanes)
+            found, more = _walk_apart(stretch.scene,
+                                      timeline.cut(stretch.start, end, stretch.frozen),
+                                      options, (held.changing,), frozenset(), stretch.lanes)
             walks += more
             if found is not None:  # before the other pairs' first conflict, if any
                 conflict = found
@@ -264,24 +265,11 @@ def _earlier(a: Conflict | None, b: Conflict | None) -> Conflict | None:
 def _held(scene: Scene, lanes: Sequence[Lane], timeline: _Timeline) -> HeldObjects | None:
     """The objects the lanes' motions hold, and the stretches where that changes
     (:func:`~taskrunner.collision.held.held_objects`)."""
-    model = scene.robot
-    pin_model = model.model
-    moved_at, carried_at = _joint_lanes(model, scene.checker, timeline.columns)
-
-    owners: dict[str, int] = {}
     t0, t1 = float(timeline.times[0]), float(timeline.times[-1])
-
-    def owner(link: str) -> int:
-        found = owners.get(link)
-        if found is None:
-            jid = (int(pin_model.frames[pin_model.getFrameId(link)].parentJoint)
-                   if pin_model.existFrame(link) else 0)
-            found = owners[link] = (-1 if jid == 0 else int(moved_at[jid]) if moved_at[jid] >= 0
-                                    else int(carried_at[jid]))
-        return found
-
-    return held_objects(scene, lanes, (t0, t1), owner, lambda t: timeline.state(t)
-                        if t0 <= t <= t1 else lanes_state(scene, lanes, t))
+    return held_objects(scene, lanes, (t0, t1),
+                        _joint_lanes(scene.robot, scene.checker, timeline.columns),
+                        lambda t: timeline.state(t) if t0 <= t <= t1
+                        else lanes_state(scene, lanes, t))
 
 
 @dataclass(frozen=True)
@@ -348,7 +336,7 @@ def least_clearance(scene: Scene, lanes: Sequence[Lane],
         assert held is not None
         lies = frozenset(s.lanes)
         if held.changing - lies:
-            pieces.append((s.scene, whole.cut(s.start, s.end), (held.changing - lies,),
+            pieces.append((s.scene, whole.cut(s.start, s.end, s.frozen), (held.changing - lies,),
                            lies, s.lanes))
     queries = 0
     best: _Walk | None = None  # the walk that measured the least distance so far
@@ -404,7 +392,7 @@ class _Timeline:
     def __init__(self, scene: Scene, lanes: Sequence[Lane],
                  window: tuple[float, float] | None) -> None:
         model = scene.robot
-        self.lanes = list(lanes)
+        self.lanes, self.model = list(lanes), model
         self.columns: list[np.ndarray] = []
         seen: dict[str, str] = {}
         # Per lane, its motions in time order, each with its joints' state columns.
@@ -463,15 +451,19 @@ class _Timeline:
                                                        trajectory.positions[:, j])
         self.states = model.apply_mimic(states)
 
-    def cut(self, a: float, b: float) -> _Timeline:
+    def cut(self, a: float, b: float,
+            frozen: tuple[np.ndarray, np.ndarray] | None = None) -> _Timeline:
         """The timeline from ``a`` to ``b`` (s, within this one's): its rows between,
-        the states at both ends."""
+        the states at both ends; ``frozen``: state columns kept at these values."""
         piece = copy.copy(self)
         inside = (self.times > a) & (self.times < b)
         piece.times = np.unique(np.concatenate([[a, b], self.times[inside]]))
         rows = np.flatnonzero(inside)
         piece.states = np.vstack([self.state(a)[None, :], self.states[rows],
                                   self.state(b)[None, :]]) if b > a else self.state(a)[None, :]
+        if frozen is not None:
+            piece.states[:, frozen[0]] = frozen[1]
+            piece.states = self.model.apply_mimic(piece.states)
         return piece
 
     def prefix(self, position: float) -> tuple[np.ndarray, Callable[[float], float]]:
@@ -670,6 +662,7 @@ class _Owners:
 _JOINT_LANES: weakref.WeakKeyDictionary[object, dict[bytes, tuple[np.ndarray, np.ndarray]]] = \
     weakref.WeakKeyDictionary()
 _JOINT_LANES_KEPT = 8
+_LAST_JOINT_LANES: list[tuple[object, object, tuple[np.ndarray, np.ndarray]] | None] = [None]
 
 
 def _joint_lanes(model: RobotModel, checker: CollisionChecker,
@@ -678,14 +671,18 @@ def _joint_lanes(model: RobotModel, checker: CollisionChecker,
     (one array a lane): the lane of the nearest joint at or above it that a lane moves,
     and the first lane (in order) moving a joint at or below it (that it carries), else
     that of its parent (-1: none). Kept per robot model (its checkers' shared geometry)."""
+    part = checker.robot_geometry
+    last = _LAST_JOINT_LANES[0]  # one timeline's walks ask with its very columns
+    if last is not None and last[0] is columns and last[1] is part:
+        return last[2]
     key = b"".join(np.int64(len(c)).tobytes() + np.asarray(c, dtype=np.int64).tobytes()
                    for c in columns)
-    part = checker.robot_geometry
     kept = _JOINT_LANES.get(part)
     if kept is None:
         kept = _JOINT_LANES[part] = {}
     found = kept.get(key)
     if found is not None:
+        _LAST_JOINT_LANES[0] = (columns, part, found)
         return found
     pin_model = model.model
     parents = list(pin_model.parents)  # parents come before children
@@ -714,6 +711,7 @@ def _joint_lanes(model: RobotModel, checker: CollisionChecker,
     if len(kept) >= _JOINT_LANES_KEPT:
         kept.pop(next(iter(kept)))
     found = kept[key] = (moved_at, carried_at)
+    _LAST_JOINT_LANES[0] = (columns, part, found)
     return found
 
 

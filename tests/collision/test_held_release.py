@@ -162,3 +162,23 @@ def test_admission_does_not_let_a_motion_through_an_object_set_down(scene, rod):
     assert refused is None or isinstance(refused, Blocked), refused
     aside = admitted(ASIDE)
     assert not isinstance(aside, Blocked) and aside.start == 0.0 and not aside.waits
+
+
+def test_an_object_just_taken_lies_at_its_old_place_until_its_arm_got_there(scene, rod):
+    # The scene has the rod attached to the left gripper (just taken: the left arm's
+    # next motion is not on the schedule yet); before the left arm's reach to it ends,
+    # it lies at the middle, where the right arm's Candle passes.
+    holding = scene.copy()
+    holding.add_object("rod", rod.shape, rod.pose, attach_to=rod.attached_to)
+    reach = Lane("left", (TimedMotion(trajectory("left", [ASIDE, MIDDLE]), 0.0, "reach", ()),))
+
+    def right(rows: list[list[float]]) -> Lane:  # (listing what is attached: admission)
+        attached = holding.attached_objects()
+        return Lane("right", (TimedMotion(trajectory("right", rows[:2]), -0.5, "up", ()),
+                              TimedMotion(trajectory("right", rows[1:]), 0.5, "down",
+                                          attached)))
+
+    found = verify_lanes(holding, [reach, right([AWAY, CANDLE, AWAY])])
+    assert found.conflict is not None and found.conflict.bodies[0] == "rod"
+    assert found.conflict.motions == ("reach", "up") and found.conflict.time <= 0.5
+    assert verify_lanes(holding, [reach, right([AWAY, AWAY, AWAY])]).ok
