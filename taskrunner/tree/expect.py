@@ -26,9 +26,11 @@ What is measured, and how:
   (:func:`taskrunner.collision.spacetime.verify_lanes`, no clearance asked: any contact
   is a miss): robot links and the objects each arm held during each motion (the
   attached objects of the scene the motion started in, as the record has them: each
-  moves with its link) against the other arm's. A record that does not say what was
-  held (its ``motion`` events' ``scene`` without ``objects``) is verified on the links
-  alone, and :func:`arm_conflicts` says so.
+  moves with its link) against the other arm's, and an object an arm set down (or took)
+  in the ``parallel`` where it lay then (:mod:`taskrunner.collision.held`): one put down
+  in the other arm's way is a miss. A record that does not say what was held (its
+  ``motion`` events' ``scene`` without ``objects``) is verified on the links alone, and
+  :func:`arm_conflicts` says so.
 """
 
 from __future__ import annotations
