@@ -21,14 +21,22 @@ instant:
 Between two motions of one lane, the arm at rest, an object in its hand and one it has
 just set down or is about to take are in one place: the same body either way.
 
-The common clock is cut where any named object starts or stops being held; each stretch
-gets a scene holding the named objects as they are then (:class:`Stretch`): the robot
-and those objects only, with the allowances of the scene verified that name them. The
-verifier walks the pairs that involve a named object stretch by stretch in these, and
-every other pair once over the whole window in the scene as it is (the named objects
-left out of it). The scenes are kept per robot model and thread by what they hold, so
-that the verifications of one schedule, which mostly see the same stretches again, build
-each once.
+An object lying in the world is not to be touched by another lane's bodies (no
+clearance, as a plan keeps off the world's objects), and its distances are not the
+lanes' clearance; held ones keep the clearance.
+
+A named object held, or lying, as the scene verified has it over the whole window is
+*steady* (:attr:`HeldObjects.steady`, :attr:`HeldObjects.resting`): its pairs are walked
+once over the window in that scene, with every pair of no named object. The common
+clock is cut where another one (it *changes*) starts or stops being held; each stretch
+gets a scene holding the named objects as they are then (:class:`Stretch`), and the
+pairs of the changing ones are walked stretch by stretch in it: the scene verified where
+it has them so; where the only difference is that objects lie where their lane, resting,
+holds them in it (just taken, or about to be set down), that scene with the lane's joints
+kept there; else a copy of it with the robot and the named objects only, with the
+allowances of the scene verified that name them. The copies are kept per robot model and
+thread by what they hold, so that the verifications of one schedule, which mostly see
+the same stretches again, build each once.
 """
 
 from __future__ import annotations
