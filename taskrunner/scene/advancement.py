@@ -386,7 +386,8 @@ def _walk(joints: np.ndarray, geometries: np.ndarray, points: np.ndarray,
                                  - clearance)
                     else:
                         bound = _pieces_bound(a, b, geometries, frames, points, nj, pieces, stamp,
-                                              exact_from + clearance, np.inf) - clearance
+                                              exact_from + clearance, np.inf,
+                                              cheap_from + clearance) - clearance
                     if bound > d:
                         d = bound
                     if not (bound > -np.inf and d >= exact_from):
@@ -471,7 +472,7 @@ def _support_bounds(pair_i: np.ndarray, geometries: np.ndarray, frames: np.ndarr
     there: :func:`~taskrunner.scene.distance_bounds._forward`)."""
     for k in range(pair_i.shape[0]):
         out[k] = _pieces_bound(pair_i[k, _PI_FIRST], pair_i[k, _PI_SECOND], geometries,
-                               frames, points, nj, pieces, 0.0, -np.inf, np.inf)
+                               frames, points, nj, pieces, 0.0, -np.inf, np.inf, np.inf)
 
 
 def _group_pairs(pair_i: np.ndarray, pair_levers: np.ndarray, unit_of: np.ndarray,

@@ -310,23 +310,28 @@ def _support_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, p
 
 @inline
 def _pieces_bound(a: int, b: int, geometries: np.ndarray, frames: np.ndarray, points: np.ndarray,
-                  nj: int, pieces: np.ndarray, stamp: float, floor: float, enough: float) -> float:
+                  nj: int, pieces: np.ndarray, stamp: float, floor: float, enough: float,
+                  whole: float) -> float:
     """:func:`_support_bound` of geometries ``a`` and ``b``, or where either is a mesh cut
     into convex pieces (:mod:`taskrunner.scene.mesh_pieces`; ``pieces[g]``: the first of
-    geometry ``g``'s pieces' records and their count, 0 for none), the least over pairs of
-    its pieces (or the other geometry itself) of the better of that bound and their
-    bounding spheres' distance: each piece holds its part of the mesh, so this too is a
-    lower bound on the distance where positive. A pair of pieces whose spheres are no
-    nearer than the least so far is skipped; once the least is below ``floor`` the search
-    stops and returns -inf (no bound: the caller asks coal); a pair's bound is refined only
-    while it is below the least so far and ``enough`` (the least found is then at least
-    ``enough`` where it is not the bound itself: the screen only asks whether the pieces
-    are apart, ``enough`` 1 µm). The pieces' frames rows not
-    placed at ``stamp`` (their ``_FR_PLACED`` column below it) are placed here first (a
-    fixed one's: for good)."""
+    geometry ``g``'s pieces' records and their count, 0 for none), unless that bound is at
+    least ``whole`` (inf: not tried), the least over pairs of its pieces (or the other
+    geometry itself) of the better of that bound and their bounding spheres' distance: each
+    piece holds its part of the mesh, so this too is a lower bound on the distance where
+    positive. A pair of pieces whose spheres are no nearer than the least so far is
+    skipped; once the least is below ``floor`` the search stops and returns -inf (no bound:
+    the caller asks coal); a pair's bound is refined only while it is below the least so
+    far and ``enough`` (the least found is then at least ``enough`` where it is not the
+    bound itself: the screen only asks whether the pieces are apart). The pieces' frames
+    rows not placed at ``stamp`` (their ``_FR_PLACED`` column below it) are placed here
+    first (a fixed one's: for good)."""
     count_a, count_b = pieces[a, 1], pieces[b, 1]
     if count_a == 0 and count_b == 0:
         return _support_bound(a, b, geometries, frames, points, nj, np.inf)
+    if whole < np.inf:  # the meshes' own hulls first: where they are that far apart, it serves
+        hulls = _support_bound(a, b, geometries, frames, points, nj, whole)
+        if hulls >= whole:
+            return hulls
     first_a, first_b = a, b
     if count_a == 0:
         count_a = 1

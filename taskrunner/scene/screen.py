@@ -522,7 +522,7 @@ def _first_uncleared_on_line(rows: np.ndarray, table: np.ndarray, a: np.ndarray,
             if pieces is not None:
                 if ((pieces[ga, 1] != 0 or pieces[gb, 1] != 0)
                         and _pieces_bound(ga, gb, geometries, work, points, nj, pieces, stamp,
-                                          CLEAR, 2.0 * CLEAR) > CLEAR):
+                                          CLEAR, 2.0 * CLEAR, np.inf) > CLEAR):
                     continue
             found[count] = k
             count += 1
