@@ -127,6 +127,7 @@ _Freeze = tuple[int, np.ndarray, np.ndarray, "SceneObject"]
 _LOCAL = threading.local()
 _KEPT = 24
 _KEPT_POSES = 64
+_INSTANT = 1e-9  # s
 _SAME = 1e-7  # m, and in quaternion components: where an object set down lies, to rounding
 
 
@@ -161,8 +162,12 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
     if not holds:
         return None
     t0, t1 = times
-    points = sorted({t0, t1} | {t for found in holds.values() for h in found
-                                for t in (h.start, h.end) if t0 < t < t1})
+    # Where an object is taken or let go it is where it was held: a stretch shorter than
+    # rounding (two lanes' motions starting together) is its neighbour's.
+    points = sorted({t for found in holds.values() for h in found for t in (h.start, h.end)
+                     if t0 + _INSTANT < t < t1 - _INSTANT})
+    points = [t0, *(t for k, t in enumerate(points)
+                    if k == 0 or t - points[k - 1] > _INSTANT), t1]
     model = scene.robot
     moving = {n for lane in lanes for m in lane.motions for n in m.trajectory.names}
     poses = _poses(scene.checker.robot_geometry)
