@@ -15,6 +15,8 @@ Layout of ``taskrunner/data/``::
 
 from __future__ import annotations
 
+import functools
+import hashlib
 import importlib.resources
 import json
 import os
@@ -32,7 +34,9 @@ __all__ = ["merge_json_cache",
     "example_tasks",
     "firmware_dir",
     "is_bare_name",
+    "KERNEL_PACKAGES",
     "kernel_cache_dir",
+    "kernel_sources_digest",
     "resolve_cell",
     "resolve_task",
     "robots_dir",
@@ -110,12 +114,46 @@ def merge_json_cache(path: Path, entries: Mapping[str, object], prefix: str) -> 
         raise
 
 
+# The packages whose sources the compiled kernels are made of: the kernels themselves, the
+# helpers they call across modules, and the constants and record layouts they freeze in.
+KERNEL_PACKAGES = ("collision", "scene")
+
+
+def kernel_sources_digest(root: Path | None = None) -> str:
+    """A hash of the compiled kernels' sources (every module of :data:`KERNEL_PACKAGES`
+    under ``root``, by default this package, whose hash is computed once): what
+    :func:`kernel_cache_dir` is named by.
+
+    numba checks a cached kernel against its own source file only: a kernel whose helper
+    (in another module) changed would be loaded from the cache as it was, silently. A
+    folder per version of the sources cannot be stale."""
+    return _package_digest() if root is None else _sources_digest(root)
+
+
+@functools.cache
+def _package_digest() -> str:
+    return _sources_digest(Path(__file__).parent)
+
+
+def _sources_digest(root: Path) -> str:
+    digest = hashlib.sha256()
+    for package in KERNEL_PACKAGES:
+        for path in sorted((root / package).glob("*.py")):
+            digest.update(f"{package}/{path.name}\0".encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
 def kernel_cache_dir() -> Path:
     """Where numba keeps the planner's compiled kernels: ``$NUMBA_CACHE_DIR`` when set
-    (numba's own setting), else ``numba`` in :func:`user_cache_dir` (an installed
-    package's own folder may be read-only)."""
+    (numba's own setting: then clear it after changing taskrunner's sources), else
+    ``numba/kernels-HASH`` in :func:`user_cache_dir` (an installed package's own folder
+    may be read-only), one folder per version of the kernels' sources
+    (:func:`kernel_sources_digest`); older folders may be removed at any time."""
     configured = os.environ.get("NUMBA_CACHE_DIR")
-    return Path(configured) if configured else user_cache_dir() / "numba"
+    if configured:
+        return Path(configured)
+    return user_cache_dir() / "numba" / f"kernels-{kernel_sources_digest()}"
 
 
 def example_tasks() -> dict[str, Path]:

@@ -9,7 +9,8 @@ The path verifier (:mod:`taskrunner.scene.path_verifier`) and the search's state
 geometry with :func:`compose`.
 
 The functions are numba kernels compiled on first use and cached on disk
-(``cache=True``, in ``NUMBA_CACHE_DIR``, by default ``user_cache_dir()/numba``; the
+(``cache=True``, in ``NUMBA_CACHE_DIR``, by default
+:func:`~taskrunner.resources.kernel_cache_dir`, a folder per version of their sources; the
 helpers inside the kernels that call them);
 :data:`inline` ones are helpers the other kernels call (compiled once each, not inlined
 at numba's IR level: inlining them cost 38 % more first compilation, 10.5 against 6.6 s
@@ -28,11 +29,12 @@ from typing import Any, ParamSpec, TypeVar, cast
 import numpy as np
 
 from taskrunner.collision.tree import JointKind, KinematicTree
-from taskrunner.resources import user_cache_dir
+from taskrunner.resources import kernel_cache_dir
 
 if not os.environ.get("NUMBA_CACHE_DIR"):
-    # Before numba's import: an installed package's own folder may be read-only.
-    os.environ["NUMBA_CACHE_DIR"] = str(user_cache_dir() / "numba")
+    # Before numba's import: an installed package's own folder may be read-only; a folder
+    # per version of the kernels' sources (numba would load a kernel whose helper changed).
+    os.environ["NUMBA_CACHE_DIR"] = str(kernel_cache_dir())
 # Plain compiler messages: with colorama installed, numba's colour set-up registers an exit
 # handler that writes a terminal reset (ESC[0m) to stdout after the command's own output.
 os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")

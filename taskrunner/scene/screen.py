@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import hashlib
 import math
-import os
 import subprocess
 import sys
 from collections.abc import Callable, Sequence
@@ -48,7 +47,7 @@ import numpy as np
 from taskrunner.collision import frames as collision_frames
 from taskrunner.collision.frames import ORIGIN, ZERO, jit_plain, joint_frames
 from taskrunner.errors import ArgumentError
-from taskrunner.resources import user_cache_dir
+from taskrunner.resources import kernel_cache_dir
 from taskrunner.scene import advancement, distance_bounds, geometry_records, path_verifier
 from taskrunner.scene.coalpath import exact_line_scanner
 from taskrunner.scene.collision import CollisionChecker
@@ -378,8 +377,7 @@ def _warm_mark() -> Path:
     import numba  # loaded by then (through frames, above)
 
     digest.update(f"{numba.__version__} {sys.version}".encode())
-    cache = os.environ.get("NUMBA_CACHE_DIR") or str(user_cache_dir() / "numba")
-    return Path(cache) / f"warm-{digest.hexdigest()[:16]}"
+    return kernel_cache_dir() / f"warm-{digest.hexdigest()[:16]}"
 
 
 def _compile_alone() -> None:
