@@ -50,6 +50,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pinocchio as pin
 
+from taskrunner.collision.samples import state_columns
 from taskrunner.types import Pose
 
 if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, not imported
@@ -146,7 +147,10 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
         return None
     pin_model = scene.robot.model
     moved_at, carried_at = joint_lanes
-    owners: dict[str, int] = {}
+    last = getattr(_LOCAL, "owners", None)  # the lanes of links, kept for these lanes
+    if last is None or last[0] is not moved_at or last[1] is not pin_model:
+        last = _LOCAL.owners = (moved_at, pin_model, {})
+    owners: dict[str, int] = last[2]
 
     def owner(link: str) -> int:
         """The lane of ``link`` (-1: of none)."""
@@ -187,7 +191,7 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
             # Its lane's joints alone move the link: where its motions leave them.
             q = np.array(scene.state, dtype=float)
             _lane_rest(model, own, motion, q, rest)
-            q[model.indices(names)] = motion.trajectory.positions[row]
+            q[state_columns(model, names)] = motion.trajectory.positions[row]
             q = model.apply_mimic(q)
             # Its lane resting so, the object held as the scene has it lies there.
             freezes[hold.obj.name] = (hold.lane, columns, q[columns], hold.obj)
@@ -198,7 +202,7 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
         else:  # other lanes' joints carry it: the state then
             q = np.array(state_at(hold.end if at_end else hold.start), dtype=float)
             if motion is not None:
-                q[model.indices(names)] = motion.trajectory.positions[row]
+                q[state_columns(model, names)] = motion.trajectory.positions[row]
                 q = model.apply_mimic(q)
         if motion is None or moving.difference(names).intersection(chain):
             key = (link, q[columns].tobytes(), hold.obj)

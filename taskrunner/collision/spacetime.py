@@ -56,6 +56,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from taskrunner.collision.held import HeldObjects, held_objects, lanes_state
+from taskrunner.collision.samples import state_columns
 from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.types import JointTrajectory
 
@@ -411,9 +412,8 @@ class _Timeline:
                                             f"starts at {b.start:.3f} s, before "
                                             f"{a.label or 'the one before'} ends "
                                             f"({a.end:.3f} s)")
-            self.columns.append(model.indices(tuple(names)) if names else
-                                np.zeros(0, dtype=np.int64))
-            placed.append([(m, model.indices(m.trajectory.names)) for m in ordered])
+            self.columns.append(state_columns(model, names))
+            placed.append([(m, state_columns(model, m.trajectory.names)) for m in ordered])
         motions = [m for lane in self.lanes for m in lane.motions]
         moving = sum(1 for lane in self.lanes if lane.motions)
         self.empty = moving == 0 or len(self.lanes) < 2
@@ -446,7 +446,7 @@ class _Timeline:
                 first = int(np.searchsorted(times, motion.start, side="left"))
                 local = times[first:] - motion.start
                 trajectory = motion.trajectory
-                for j, column in enumerate(idx):
+                for j, column in enumerate(idx.tolist()):
                     states[first:, column] = np.interp(local, trajectory.times,
                                                        trajectory.positions[:, j])
         self.states = model.apply_mimic(states)
@@ -658,11 +658,11 @@ class _Owners:
 
 # Per robot geometry (one per robot model, shared by the checkers of every scene
 # revision; kept while it lives): the lanes of each joint (:func:`_joint_lanes`), by the
-# lanes' joint sets, the latest few.
-_JOINT_LANES: weakref.WeakKeyDictionary[object, dict[bytes, tuple[np.ndarray, np.ndarray]]] = \
-    weakref.WeakKeyDictionary()
+# lanes' state columns (the arrays themselves: the same joints, the same kept array), the
+# latest few.
+_JOINT_LANES: weakref.WeakKeyDictionary[object, dict[tuple[int, ...], tuple[
+    tuple[np.ndarray, ...], tuple[np.ndarray, np.ndarray]]]] = weakref.WeakKeyDictionary()
 _JOINT_LANES_KEPT = 8
-_LAST_JOINT_LANES: list[tuple[object, object, tuple[np.ndarray, np.ndarray]] | None] = [None]
 
 
 def _joint_lanes(model: RobotModel, checker: CollisionChecker,
@@ -672,18 +672,13 @@ def _joint_lanes(model: RobotModel, checker: CollisionChecker,
     and the first lane (in order) moving a joint at or below it (that it carries), else
     that of its parent (-1: none). Kept per robot model (its checkers' shared geometry)."""
     part = checker.robot_geometry
-    last = _LAST_JOINT_LANES[0]  # one timeline's walks ask with its very columns
-    if last is not None and last[0] is columns and last[1] is part:
-        return last[2]
-    key = b"".join(np.int64(len(c)).tobytes() + np.asarray(c, dtype=np.int64).tobytes()
-                   for c in columns)
+    key = tuple(map(id, columns))
     kept = _JOINT_LANES.get(part)
     if kept is None:
         kept = _JOINT_LANES[part] = {}
     found = kept.get(key)
-    if found is not None:
-        _LAST_JOINT_LANES[0] = (columns, part, found)
-        return found
+    if found is not None and all(a is b for a, b in zip(found[0], columns)):
+        return found[1]
     pin_model = model.model
     parents = list(pin_model.parents)  # parents come before children
     none = len(columns)
@@ -710,9 +705,8 @@ def _joint_lanes(model: RobotModel, checker: CollisionChecker,
     carried_at[carried_at == none] = -1
     if len(kept) >= _JOINT_LANES_KEPT:
         kept.pop(next(iter(kept)))
-    found = kept[key] = (moved_at, carried_at)
-    _LAST_JOINT_LANES[0] = (columns, part, found)
-    return found
+    kept[key] = (tuple(columns), (moved_at, carried_at))
+    return moved_at, carried_at
 
 
 def _lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[np.ndarray],
