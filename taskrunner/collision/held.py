@@ -21,9 +21,10 @@ instant:
 Between two motions of one lane, the arm at rest, an object in its hand and one it has
 just set down or is about to take are in one place: the same body either way.
 
-An object lying in the world is not to be touched by another lane's bodies (no
+An object lying in the world is not to be touched by another lane's links (no
 clearance, as a plan keeps off the world's objects), and its distances are not the
-lanes' clearance; held ones keep the clearance.
+lanes' clearance; held ones keep the clearance. An object another lane holds may touch
+it: a place may set one on it (a stack), as that lane's own plan has it.
 
 A named object held, or lying, as the scene verified has it over the whole window is
 *steady* (:attr:`HeldObjects.steady`, :attr:`HeldObjects.resting`): its pairs are walked

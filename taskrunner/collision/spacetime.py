@@ -738,6 +738,13 @@ def _lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence
         for g, body in enumerate(bodies, first):
             if lying and body in lying:
                 owner[g] = lying[body]
+        if lying:
+            # An object lying in the world against another lane's links only: an object
+            # the other lane holds may be set on it (a stack), as that lane's plan has it.
+            put = np.zeros(len(owner), dtype=bool)
+            put[first:] = [body in lying for body in bodies]
+            a, b = every[:, 0], every[:, 1]
+            keep &= ~((put[a] & (b >= first)) | (put[b] & (a >= first)))
 
         def touching(names: frozenset[str]) -> np.ndarray:
             mask = np.zeros(len(owner), dtype=bool)
