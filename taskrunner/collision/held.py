@@ -348,10 +348,17 @@ def _as_in(scene: Scene, obj: SceneObject) -> SceneObject:
 
 def _kept(part: object) -> dict[tuple[object, ...], Scene]:
     """This thread's stretch scenes of a robot (``part``: its checkers' robot geometry)."""
-    found: weakref.WeakKeyDictionary[object, dict[tuple[object, ...], Scene]] | None = \
-        getattr(_LOCAL, "scenes", None)
+    return _per_thread("scenes", part)
+
+
+def _per_thread(attr: str, part: object) -> dict[tuple[object, ...], Any]:
+    """This thread's table ``attr`` of a robot (``part``: its checkers' robot geometry),
+    kept while ``part`` lives."""
+    found: weakref.WeakKeyDictionary[object, dict[tuple[object, ...], Any]] | None = \
+        getattr(_LOCAL, attr, None)
     if found is None:
-        found = _LOCAL.scenes = weakref.WeakKeyDictionary()
+        found = weakref.WeakKeyDictionary()
+        setattr(_LOCAL, attr, found)
     kept = found.get(part)
     if kept is None:
         kept = found[part] = {}
@@ -418,15 +425,7 @@ def _poses(part: object) -> dict[tuple[object, ...], tuple[object, SceneObject]]
     """This thread's objects set down or taken (:func:`held_objects`), of a robot
     (``part``: its checkers' robot geometry), by their motion's trajectory (kept with
     it) or their link's joints' state, and the object held."""
-    found: weakref.WeakKeyDictionary[object, dict[tuple[object, ...],
-                                                  tuple[object, SceneObject]]] | None = \
-        getattr(_LOCAL, "poses", None)
-    if found is None:
-        found = _LOCAL.poses = weakref.WeakKeyDictionary()
-    kept = found.get(part)
-    if kept is None:
-        kept = found[part] = {}
-    return kept
+    return _per_thread("poses", part)
 
 
 def _holds(scene: Scene, lanes: Sequence[Lane], owner: Callable[[str], int]
