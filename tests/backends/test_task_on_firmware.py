@@ -92,20 +92,30 @@ def test_pick_place_runs_on_the_firmware_and_the_servos_follow_the_plan(firmware
     assert distance.max() < 1.0, f"a tick strays {distance.max():.2f}° from the commanded motion"
 
 
-def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
+def _start_firmware_sim() -> subprocess.Popen[bytes]:
+    """``run-task firmware-sim --speedup 10``, its address lines to be read."""
     import sys
 
-    proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
+    return subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
                              "--speedup", "10"], stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, cwd=ROOT)
+
+
+def _only_child(proc: subprocess.Popen[bytes]) -> int:
+    """The one child process of ``proc`` (its firmware)."""
+    children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
+    assert len(children) == 1
+    return int(children[0])
+
+
+def test_run_task_firmware_sim_prints_the_pty_then_the_url(host_binary):
+    proc = _start_firmware_sim()
     firmware = None
     try:
         pty, url = read_address_lines(proc, timeout=20.0)
         assert pty.startswith("/dev/pts/") and url.startswith("http://127.0.0.1:")
         assert status(url)["status"] == "ok"
-        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
-        assert len(children) == 1
-        firmware = int(children[0])
+        firmware = _only_child(proc)
     finally:
         stop_process(proc, signal.SIGINT)  # to the command alone, as `kill -INT PID` does
     # It passed the SIGINT on: no firmware is left behind.
@@ -129,18 +139,12 @@ def _ended(pid: int, within: float = 20.0) -> bool:
 def test_run_task_firmware_sim_killed_leaves_no_firmware_behind(host_binary):
     """A SIGKILL cannot be passed on: the firmware is sent SIGTERM by the kernel when the
     command ends (it would otherwise keep its pty and port open, orphaned)."""
-    import sys
-
-    proc = subprocess.Popen([sys.executable, "-m", "taskrunner.cli", "firmware-sim",
-                             "--speedup", "10"], stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL, cwd=ROOT)
+    proc = _start_firmware_sim()
     firmware = None
     try:
         pty, url = read_address_lines(proc, timeout=20.0)
         assert status(url)["status"] == "ok"
-        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()
-        assert len(children) == 1
-        firmware = int(children[0])
+        firmware = _only_child(proc)
         proc.kill()
         proc.wait(10)
         assert _ended(firmware), f"firmware {firmware} outlived its killed command"
