@@ -109,7 +109,8 @@ def run(robot_dir: Path, problem: Path, seeds: int) -> dict[str, Any]:
                                          "seeds": seeds}
 
 
-def run_sets(per_class: int, problems: Path | None, robot: str = "panda") -> dict[str, Any]:
+def run_sets(per_class: int, problems: Path | None, robot: str = "panda",
+             classes: list[str] | None = None) -> dict[str, Any]:
     import make_problems
 
     folder = problems
@@ -118,9 +119,12 @@ def run_sets(per_class: int, problems: Path | None, robot: str = "panda") -> dic
         make_problems.generate(folder, per_class, 0, make_problems.CLASSES, robot_name=robot)
     model = load_robot(make_problems.robot_spec(robot).robot_dir)
     base = Scene(model)
-    plan_once(model, base, folder / make_problems.CLASSES[0] / "0001", 0)  # warm-up
+    first = next(c for c in make_problems.CLASSES if not classes or c in classes)
+    plan_once(model, base, folder / first / "0001", 0)  # warm-up
     out: dict[str, Any] = _header() | {"classes": {}}
     for k, c in enumerate(make_problems.CLASSES):
+        if classes and c not in classes:
+            continue
         rows = [plan_once(model, base, folder / c / f"{i + 1:04d}", k * 1000 + i)
                 for i in range(per_class)]
         out["classes"][c] = _summary(rows)
@@ -165,10 +169,12 @@ def main(argv: list[str] | None = None) -> int:
                         help="the problem sets of make_problems.py for this robot instead")
     parser.add_argument("--per-class", type=int, default=10)
     parser.add_argument("--problems", type=Path, help="with --panda-sets / --sets: read them from here")
+    parser.add_argument("--classes", nargs="+", metavar="CLASS",
+                        help="with --panda-sets / --sets: only these classes (seeds unchanged)")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
     if args.panda_sets or args.sets:
-        sets = run_sets(args.per_class, args.problems, args.sets or "panda")
+        sets = run_sets(args.per_class, args.problems, args.sets or "panda", args.classes)
         print(f"{sets['robot']}; {sets['date']}; {sets['machine']}; load {sets['load']} "
               f"(at the start)")
         print(sets["vamp"])
