@@ -48,7 +48,6 @@ from __future__ import annotations
 import copy
 import math
 import time
-import weakref
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
@@ -56,16 +55,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from taskrunner.collision.held import HeldObjects, held_objects, lanes_state
+from taskrunner.collision.owners import body_name, joint_lanes, lane_owners
 from taskrunner.collision.samples import state_columns
 from taskrunner.errors import ArgumentError, InvalidStateError
 from taskrunner.types import JointTrajectory
 
 if TYPE_CHECKING:  # the planning scene is above the collision core: passed in, not imported
-    import pinocchio as pin
-
-    from taskrunner.robot import RobotModel
     from taskrunner.scene import Scene, SceneObject
-    from taskrunner.scene.collision import CollisionChecker
 
 __all__ = ["LEAST_TOLERANCE", "TIME_TOLERANCE", "Conflict", "Lane", "LeastClearance",
            "SpacetimeOptions", "SpacetimeVerification", "TimedMotion", "lanes_state",
@@ -248,6 +244,15 @@ def _walk_apart(scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
     plan keeps off the world; their distances not in :attr:`_Walk.least`), the others
     with the clearance. The first conflict, and the walks."""
     names = frozenset(lying or ())
+    tried = None
+    if names:
+        # First every pair in one walk, the lying objects' with the clearance too (their
+        # distances not counted): where it finds no conflict, the two walks below find
+        # none either (a pair kept at the clearance is kept at none). Where it does, they
+        # are walked as they are, for the first conflict in time.
+        tried = _Walk(scene, timeline, options, only, without, lying, uncounted=names)
+        if tried.run() is None:
+            return None, [tried]
     walks = [_Walk(scene, timeline, options, only, without | names, lying)]
     if names:
         walks.append(_Walk(scene, timeline, replace(options, clearance=0.0),
@@ -255,6 +260,8 @@ def _walk_apart(scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
     conflict = None
     for walk in walks:
         conflict = _earlier(conflict, walk.run())
+    if tried is not None:
+        walks[0].queries += tried.queries  # (its least distance is not kept)
     return conflict, walks
 
 
@@ -268,7 +275,7 @@ def _held(scene: Scene, lanes: Sequence[Lane], timeline: _Timeline) -> HeldObjec
     (:func:`~taskrunner.collision.held.held_objects`)."""
     t0, t1 = float(timeline.times[0]), float(timeline.times[-1])
     return held_objects(scene, lanes, (t0, t1),
-                        _joint_lanes(scene.robot, scene.checker, timeline.columns),
+                        joint_lanes(scene.robot, scene.checker, timeline.columns),
                         lambda t: timeline.state(t) if t0 <= t <= t1
                         else lanes_state(scene, lanes, t))
 
@@ -421,8 +428,9 @@ class _Timeline:
             return
         t0 = min(m.start for m in motions) if window is None else window[0]
         t1 = max(m.end for m in motions) if window is None else window[1]
-        stamps = np.concatenate([m.start + np.asarray(m.trajectory.times, dtype=float)
-                                 for m in motions])
+        # The sample times inside the window: of the motions running in it only.
+        stamps = np.concatenate([np.zeros(0), *(m.start + m.trajectory.times for m in motions
+                                                 if m.start < t1 and m.end > t0)])
         self.times = times = np.unique(
             np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
         base = scene.state.copy()
@@ -446,6 +454,11 @@ class _Timeline:
                 first = int(np.searchsorted(times, motion.start, side="left"))
                 local = times[first:] - motion.start
                 trajectory = motion.trajectory
+                if not len(local):
+                    continue
+                if local[0] >= trajectory.times[-1]:  # ended before them: where it ends
+                    states[first:, idx] = trajectory.positions[-1]
+                    continue
                 for j, column in enumerate(idx.tolist()):
                     states[first:, column] = np.interp(local, trajectory.times,
                                                        trajectory.positions[:, j])
@@ -529,8 +542,8 @@ class _Walk:
         model = scene.robot
         self.scene, self.model, self.timeline, self.options = scene, model, timeline, options
         self.checker = checker = scene.checker
-        owners = _lane_owners(model, checker, timeline.columns, only, without, lying or {},
-                              uncounted)
+        owners = lane_owners(model, checker, timeline.columns, only, without, lying or {},
+                             uncounted)
         self.uncounted = owners.uncounted
         self.owner = owners.owner
         # The checker's pairs walked (ascending), and each one's bodies, the first of
@@ -558,7 +571,7 @@ class _Walk:
 
     def name(self, g: int) -> str:
         """The body of geometry ``g`` (its link's name, or the object's)."""
-        return _body_name(self.checker.geometry_model.geometryObjects[g], self.model.model)
+        return body_name(self.checker.geometry_model.geometryObjects[g], self.model.model)
 
     def run(self) -> Conflict | None:
         """Walk the pairs over the timeline: the first conflict, or None. With the
@@ -597,7 +610,8 @@ class _Walk:
 
     def _observe(self, position: float, pairs: np.ndarray, distances: np.ndarray) -> None:
         """A round of the verifier's exact distances, at a timeline position."""
-        self._observe_at(self.timeline.time_at(position), pairs, distances)
+        if len(distances) and (self.uncounted is not None or distances.min() < self.least):
+            self._observe_at(self.timeline.time_at(position), pairs, distances)
 
     def measure(self, t: float, pairs: Sequence[int]) -> np.ndarray:
         """The exact distances of ``pairs`` (indices into :attr:`pairs`) at ``t`` (m,
@@ -641,156 +655,3 @@ class _Walk:
         return Conflict(bad, (self.name(a), self.name(b)), (lanes[la].name, lanes[lb].name),
                         (self.timeline.motion_label(la, bad), self.timeline.motion_label(lb, bad)),
                         distance)
-
-
-@dataclass(frozen=True)
-class _Owners:
-    """Which lane each body is of (:attr:`owner`, per geometry object; -1: none), and
-    the checker's pairs of bodies of two different lanes: their indices (ascending) and
-    each one's two geometries, the first of the lower lane. Read, never written."""
-
-    owner: np.ndarray
-    pair_ids: np.ndarray
-    firsts: np.ndarray
-    seconds: np.ndarray
-    uncounted: np.ndarray | None = None  # per checker pair: its distance not kept
-
-
-# Per robot geometry (one per robot model, shared by the checkers of every scene
-# revision; kept while it lives): the lanes of each joint (:func:`_joint_lanes`), by the
-# lanes' state columns (the arrays themselves: the same joints, the same kept array), the
-# latest few.
-_JOINT_LANES: weakref.WeakKeyDictionary[object, dict[tuple[int, ...], tuple[
-    tuple[np.ndarray, ...], tuple[np.ndarray, np.ndarray]]]] = weakref.WeakKeyDictionary()
-_JOINT_LANES_KEPT = 8
-
-
-def _joint_lanes(model: RobotModel, checker: CollisionChecker,
-                 columns: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """Per pinocchio joint of ``model``, for lanes moving the state columns ``columns``
-    (one array a lane): the lane of the nearest joint at or above it that a lane moves,
-    and the first lane (in order) moving a joint at or below it (that it carries), else
-    that of its parent (-1: none). Kept per robot model (its checkers' shared geometry)."""
-    part = checker.robot_geometry
-    key = tuple(map(id, columns))
-    kept = _JOINT_LANES.get(part)
-    if kept is None:
-        kept = _JOINT_LANES[part] = {}
-    found = kept.get(key)
-    if found is not None and all(a is b for a, b in zip(found[0], columns)):
-        return found[1]
-    pin_model = model.model
-    parents = list(pin_model.parents)  # parents come before children
-    none = len(columns)
-    moved = [-1] * len(parents)
-    carried = [none] * len(parents)
-    for lane_index, lane_columns in enumerate(columns):
-        for index in lane_columns.tolist():
-            jid = int(pin_model.getJointId(model.joint_names[index]))
-            moved[jid] = lane_index
-            carried[jid] = min(carried[jid], lane_index)
-    for jid in range(len(parents) - 1, 0, -1):  # children first: up the tree
-        parent = parents[jid]
-        if carried[jid] < carried[parent]:
-            carried[parent] = carried[jid]
-    carried[0] = none  # the world is of no lane
-    for jid in range(1, len(parents)):  # parents first: down the tree
-        parent = parents[jid]
-        if moved[jid] < 0:
-            moved[jid] = moved[parent]
-        if carried[jid] == none:
-            carried[jid] = carried[parent]
-    moved_at = np.array(moved, dtype=np.int64)
-    carried_at = np.array(carried, dtype=np.int64)
-    carried_at[carried_at == none] = -1
-    if len(kept) >= _JOINT_LANES_KEPT:
-        kept.pop(next(iter(kept)))
-    kept[key] = (tuple(columns), (moved_at, carried_at))
-    return moved_at, carried_at
-
-
-def _lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[np.ndarray],
-                 only: Sequence[frozenset[str]] | None = None,
-                 without: frozenset[str] = frozenset(),
-                 lying: Mapping[str, int] | None = None,
-                 uncounted: frozenset[str] = frozenset()) -> _Owners:
-    """The :class:`_Owners` of lanes moving the state columns ``columns`` (one array a
-    lane) for ``checker``'s bodies and pairs: the objects ``lying`` of their lanes, the
-    pairs those of :class:`_Walk`'s ``only`` and ``without``. Kept per checker."""
-    moved_at, carried_at = _joint_lanes(model, checker, columns)
-    key = (id(moved_at), only, without, tuple(sorted((lying or {}).items())), uncounted)
-    kept = _OWNERS.get(checker)
-    if kept is None:
-        kept = _OWNERS[checker] = {}
-    found = kept.get(key)
-    if found is not None and found[0] is moved_at:
-        return found[1]
-    joints = checker.geometry_joints
-    # A body is of the lane whose moved joint is nearest above it; a body no lane's
-    # joint moves, of the lane that carries it (a gripper lane: its arm's links).
-    owner = np.where(moved_at[joints] >= 0, moved_at[joints], carried_at[joints])
-    every = checker.pair_geometries
-    keep = np.ones(len(every), dtype=bool)
-    skipped = None
-    if only is not None or without or lying or uncounted:
-        bodies = _object_bodies(checker, model)
-        first = checker.robot_geometry.geometry_count
-        for g, body in enumerate(bodies, first):
-            if lying and body in lying:
-                owner[g] = lying[body]
-        if lying:
-            # An object lying in the world against another lane's links only: an object
-            # the other lane holds may be set on it (a stack), as that lane's plan has it.
-            put = np.zeros(len(owner), dtype=bool)
-            put[first:] = [body in lying for body in bodies]
-            a, b = every[:, 0], every[:, 1]
-            keep &= ~((put[a] & (b >= first)) | (put[b] & (a >= first)))
-
-        def touching(names: frozenset[str]) -> np.ndarray:
-            mask = np.zeros(len(owner), dtype=bool)
-            mask[first:] = [body in names for body in bodies]
-            return mask[every[:, 0]] | mask[every[:, 1]]
-
-        if without:
-            keep &= ~touching(without)
-        for names in only or ():
-            keep &= touching(names)
-        skipped = touching(uncounted) if uncounted else None
-    oa, ob = owner[every[:, 0]], owner[every[:, 1]]
-    ids = np.flatnonzero((oa >= 0) & (ob >= 0) & (oa != ob) & keep)
-    swap = oa[ids] > ob[ids]  # the first body of each pair: of the lower lane
-    owners = _Owners(owner, ids, np.where(swap, every[ids, 1], every[ids, 0]),
-                     np.where(swap, every[ids, 0], every[ids, 1]), skipped)
-    if len(kept) >= _JOINT_LANES_KEPT:
-        kept.pop(next(iter(kept)))
-    kept[key] = (moved_at, owners)
-    return owners
-
-# Per checker (kept while it lives): the owners of the latest few walks (:func:`_lane_owners`).
-_OWNERS: weakref.WeakKeyDictionary[object, dict[tuple[object, ...], tuple[np.ndarray, _Owners]]] \
-    = weakref.WeakKeyDictionary()
-# Per checker (kept while it lives): the bodies of its objects' geometries, in order.
-_OBJECT_BODIES: weakref.WeakKeyDictionary[object, list[str]] = weakref.WeakKeyDictionary()
-
-
-def _object_bodies(checker: CollisionChecker, model: RobotModel) -> list[str]:
-    """The body (object name) of each of ``checker``'s geometries after the robot's."""
-    found = _OBJECT_BODIES.get(checker)
-    if found is None:
-        objects = checker.geometry_model.geometryObjects
-        found = _OBJECT_BODIES[checker] = [
-            _body_name(objects[g], model.model)
-            for g in range(checker.robot_geometry.geometry_count, len(objects))]
-    return found
-
-
-def _body_name(obj: pin.GeometryObject, pin_model: pin.Model) -> str:
-    """A geometry's body: its link's name for a robot link, else the object's name."""
-    name = str(obj.name)
-    frame = int(obj.parentFrame)
-    if 0 <= frame < len(pin_model.frames):
-        link = str(pin_model.frames[frame].name)
-        if name.startswith(link):
-            return link
-    body, _, index = name.rpartition("/")  # an object's geometries: 'name/index'
-    return body if body and index.isdigit() else name

@@ -10,10 +10,19 @@ arms pass."""
 
 from __future__ import annotations
 
+import math
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from taskrunner.collision.spacetime import Lane, TimedMotion, least_clearance, verify_lanes
+from taskrunner.collision.spacetime import (
+    Lane,
+    SpacetimeOptions,
+    TimedMotion,
+    least_clearance,
+    verify_lanes,
+)
 from taskrunner.errors import ScheduleConflictError
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
@@ -90,6 +99,36 @@ def test_an_object_set_down_out_of_the_way_passes(scene, rod):
     least = least_clearance(scene, set_down(rod, ASIDE))
     assert least.bodies is not None and "rod" not in least.bodies
 
+
+def test_an_object_set_down_is_kept_from_touching_not_at_the_clearance(scene, rod):
+    # The rod set down over the middle; the right arm comes halfway up to Candle: its
+    # first link ends about 2 cm from where the rod lies. Held there, the rod would be
+    # closer than a 4 cm clearance; lying there, it is only to be kept from touching
+    # (the arms, and the rod while held, keep more than 5 cm apart).
+    half = list((np.array(AWAY) + np.array(CANDLE)) / 2)
+    up = TimedMotion(trajectory("right", [AWAY, half]), 2.0, "halfway up", ())
+    place = TimedMotion(trajectory("left", [ASIDE, MIDDLE]), 0.0, "place", (rod,))
+    set_down = [Lane("left", (place, TimedMotion(trajectory("left", [MIDDLE, ASIDE]), 1.0,
+                                                 "retreat", ()))), Lane("right", (up,))]
+    held = [Lane("left", (place, TimedMotion(trajectory("left", [MIDDLE, MIDDLE]), 1.0,
+                                             "hold", (rod,)),
+                          TimedMotion(trajectory("left", [MIDDLE, MIDDLE]), 2.0, "hold",
+                                      (rod,)))), Lane("right", (up,))]
+    options = SpacetimeOptions(clearance=0.04)
+    close = verify_lanes(scene, held, options=options).conflict
+    assert close is not None and close.bodies == ("rod", "right_arm_link_1"), close
+    assert close.distance > 0.0 and close.time > 2.0
+    assert verify_lanes(scene, set_down, options=options).ok
+    # Measured exactly throughout: what is counted (the arms, the rod held) keeps 4 cm.
+    exact = verify_lanes(scene, set_down, options=replace(options, exact=True))
+    assert exact.ok, exact.conflict
+    assert 0.04 < exact.min_distance < math.inf
+    # Brought all the way up, the right arm's link goes through it: a conflict.
+    through = [set_down[0], Lane("right", (replace(up, trajectory=trajectory(
+        "right", [AWAY, CANDLE])),))]
+    touched = verify_lanes(scene, through, options=options).conflict
+    assert touched is not None and touched.bodies == ("rod", "right_arm_link_1"), touched
+    assert touched.distance < 1e-3
 
 def test_an_object_taken_lies_at_its_old_place_until_its_motion_takes_it(scene, rod):
     # The rod lies out over the middle; the left arm reaches it (0-1 s), takes it and

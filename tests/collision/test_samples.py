@@ -1,13 +1,13 @@
 """The kept state columns of joint sets, and the lanes of joints kept by them
-(taskrunner.collision.samples, spacetime._joint_lanes)."""
+(taskrunner.collision.samples, owners.joint_lanes)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from taskrunner.collision.owners import joint_lanes as _joint_lanes
 from taskrunner.collision.samples import state_columns
-from taskrunner.collision.spacetime import _joint_lanes
 from taskrunner.resources import DATA_ROOT
 from taskrunner.robot.cell import load_cell
 from taskrunner.scene import Scene
