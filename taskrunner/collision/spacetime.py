@@ -244,15 +244,6 @@ def _walk_apart(scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
     plan keeps off the world; their distances not in :attr:`_Walk.least`), the others
     with the clearance. The first conflict, and the walks."""
     names = frozenset(lying or ())
-    tried = None
-    if names:
-        # First every pair in one walk, the lying objects' with the clearance too (their
-        # distances not counted): where it finds no conflict, the two walks below find
-        # none either (a pair kept at the clearance is kept at none). Where it does, they
-        # are walked as they are, for the first conflict in time.
-        tried = _Walk(scene, timeline, options, only, without, lying, uncounted=names)
-        if tried.run() is None:
-            return None, [tried]
     walks = [_Walk(scene, timeline, options, only, without | names, lying)]
     if names:
         walks.append(_Walk(scene, timeline, replace(options, clearance=0.0),
@@ -260,8 +251,6 @@ def _walk_apart(scene: Scene, timeline: _Timeline, options: SpacetimeOptions,
     conflict = None
     for walk in walks:
         conflict = _earlier(conflict, walk.run())
-    if tried is not None:
-        walks[0].queries += tried.queries  # (its least distance is not kept)
     return conflict, walks
 
 
