@@ -129,6 +129,7 @@ _Freeze = tuple[int, np.ndarray, np.ndarray, "SceneObject"]
 _LOCAL = threading.local()
 _KEPT = 24
 _KEPT_POSES = 64
+_KEPT_OWNERS = 8
 _INSTANT = 1e-9  # s
 _SAME = 1e-7  # m, and in quaternion components: where an object set down lies, to rounding
 
@@ -148,9 +149,17 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
         return None
     pin_model = scene.robot.model
     moved_at, carried_at = joint_lanes
-    last = getattr(_LOCAL, "owners", None)  # the lanes of links, kept for these lanes
+    # The lanes of links, kept per lanes' joints (the lane verified alternates between
+    # the arms: the latest few).
+    kept_owners: dict[int, tuple[np.ndarray, pin.Model, dict[str, int]]] | None = \
+        getattr(_LOCAL, "owners", None)
+    if kept_owners is None:
+        kept_owners = _LOCAL.owners = {}
+    last = kept_owners.get(id(moved_at))
     if last is None or last[0] is not moved_at or last[1] is not pin_model:
-        last = _LOCAL.owners = (moved_at, pin_model, {})
+        if len(kept_owners) >= _KEPT_OWNERS:
+            kept_owners.pop(next(iter(kept_owners)))
+        last = kept_owners[id(moved_at)] = (moved_at, pin_model, {})
     owners: dict[str, int] = last[2]
 
     def owner(link: str) -> int:

@@ -420,8 +420,8 @@ class _Timeline:
         # The sample times inside the window: of the motions running in it only.
         stamps = np.concatenate([np.zeros(0), *(m.start + m.trajectory.times for m in motions
                                                  if m.start < t1 and m.end > t0)])
-        self.times = times = np.unique(
-            np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
+        times = np.sort(np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
+        self.times = times = times[np.concatenate([[True], times[1:] != times[:-1]])]
         base = scene.state.copy()
         for ordered_lane in placed:  # before its first motion, a joint is where that one starts
             for motion, idx in reversed(ordered_lane):
