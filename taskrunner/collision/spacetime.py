@@ -598,8 +598,9 @@ class _Walk:
         return self.conflict(pair, free, bad, float(self.measure(bad, [pair])[0]))
 
     def _observe(self, position: float, pairs: np.ndarray, distances: np.ndarray) -> None:
-        """A round of the verifier's exact distances, at a timeline position."""
-        if len(distances) and (self.uncounted is not None or distances.min() < self.least):
+        """A round of the verifier's exact distances, at a timeline position (a few
+        pairs a round, mostly: their least taken as Python floats, cheaper than numpy's)."""
+        if len(distances) and min(distances.tolist()) < self.least:
             self._observe_at(self.timeline.time_at(position), pairs, distances)
 
     def measure(self, t: float, pairs: Sequence[int]) -> np.ndarray:
