@@ -197,15 +197,36 @@ def check_urdf(doc: XmlDocument, source: Path, packages: PackageMap) -> UrdfDesc
                 joint, f"link {child!r} is the child of two joints ({children[child]!r}, {name!r})"
             )
         children[child] = name
+        limit = joint.find("limit")
+        if limit is not None:
+            # URDF's parser (urdfdom, which MoveIt and pinocchio read with) refuses a <limit>
+            # without either: named here, not as pinocchio's "not a valid URDF model".
+            absent = [a for a in ("effort", "velocity") if limit.get(a) is None]
+            if absent:
+                raise doc.error(limit, f"joint {name!r}: <limit> needs "
+                                       f"{' and '.join(a + '=' for a in absent)} (URDF requires "
+                                       "effort and velocity; MoveIt refuses the file too)")
         if jtype in ("revolute", "prismatic"):
-            limit = joint.find("limit")
-            if limit is None or limit.get("lower") is None or limit.get("upper") is None:
-                raise doc.error(joint, f"joint {name!r} ({jtype}) needs <limit lower= upper=>")
+            if limit is None:
+                raise doc.error(joint, f"joint {name!r} ({jtype}) needs a <limit lower= upper= "
+                                       "effort= velocity=> (URDF requires one; MoveIt refuses "
+                                       "the file too)")
+            unset = [a for a in ("lower", "upper") if limit.get(a) is None]
+            for attribute in unset:
+                limit.set(attribute, "0")  # URDF's default, as MoveIt reads the file
             lower, upper = float(limit.get("lower", 0)), float(limit.get("upper", 0))
             if lower > upper:
                 raise doc.error(
                     joint, f"joint {name!r}: lower limit {lower} is above upper limit {upper}"
-                )
+                           + (f" (URDF's default for the missing {' and '.join(unset)}=)"
+                              if unset else ""))
+            if unset:
+                warnings.append(LoadWarning(
+                    f"joint {name!r} ({jtype}): its <limit> has no "
+                    f"{' or '.join(a + '=' for a in unset)}; URDF's default is 0, so its range "
+                    f"is [{lower:g}, {upper:g}]" + (" (it cannot move)" if lower == upper else "")
+                    + ", as MoveIt reads it, unless joint_limits.yaml gives its min_position "
+                      "and max_position", source, doc.line(limit)))
         joints[name] = (jtype, parent, child)
 
     for joint in root.findall("joint"):

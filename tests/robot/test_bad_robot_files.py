@@ -41,6 +41,24 @@ def test_mimic_of_an_unknown_joint_is_a_warning_and_the_joint_moves_on_its_own(m
     assert m.joint("j3").mimic is None
 
 
+def test_a_limit_without_lower_and_upper_takes_urdf_s_zero_with_a_located_warning(make_mini):
+    """URDF's <limit> defaults lower= and upper= to 0 (urdfdom, which MoveIt reads with):
+    example-robot-data's centauro and quadruped give only effort= and velocity=. Loaded as
+    MoveIt loads them, loudly; mini's joint_limits.yaml replaces j2's range, as MoveIt's
+    does."""
+    robot = make_mini({"mini.urdf": ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>',
+                                     '<limit effort="10" velocity="1.0"/>')})
+    m = robot.load()
+    line = robot.line("mini.urdf", "<limit", after='<joint name="j2"')
+    assert m.warnings == [f"{robot.path('mini.urdf')}:{line}: joint 'j2' (revolute): its <limit> "
+                          "has no lower= or upper=; URDF's default is 0, so its range is [0, 0] "
+                          "(it cannot move), as MoveIt reads it, unless joint_limits.yaml gives "
+                          "its min_position and max_position"]
+    assert (m.joint("j2").lower, m.joint("j2").upper) == (-1.0, 1.0)  # joint_limits.yaml's
+    with pytest.raises(RobotDescriptionError, match=r"has no lower= or upper="):
+        robot.load(strict=True)
+
+
 def test_a_negative_mesh_scale_mirrors_and_a_zero_scale_is_an_error(make_mini, located):
     mirrored = make_mini({"mini.urdf": ('scale="5 5 5"', 'scale="-5 5 5"')})
     assert mirrored.load().warnings == []
@@ -241,10 +259,35 @@ URDF_CASES = [
         id="bad-joint-type",
     ),
     pytest.param(
-        ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>', '<limit effort="10" velocity="1.0"/>'),
+        ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>', ''),
         '<joint name="j2"', None,
-        "joint 'j2' (revolute) needs <limit lower= upper=>",
-        id="revolute-without-limits",
+        "joint 'j2' (revolute) needs a <limit lower= upper= effort= velocity=> (URDF requires "
+        "one; MoveIt refuses the file too)",
+        id="revolute-without-limit",
+    ),
+    pytest.param(
+        ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>',
+         '<limit effort="10" lower="-1.5" upper="1.5"/>'),
+        '<limit', '<joint name="j2"',
+        "joint 'j2': <limit> needs velocity= (URDF requires effort and velocity; MoveIt refuses "
+        "the file too)",
+        id="limit-without-velocity",
+    ),
+    pytest.param(
+        ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>',
+         '<limit lower="-1.5" upper="1.5"/>'),
+        '<limit', '<joint name="j2"',
+        "joint 'j2': <limit> needs effort= and velocity= (URDF requires effort and velocity; "
+        "MoveIt refuses the file too)",
+        id="limit-without-effort-and-velocity",
+    ),
+    pytest.param(
+        ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>',
+         '<limit effort="10" lower="1.5" velocity="1.0"/>'),
+        '<joint name="j2"', None,
+        "joint 'j2': lower limit 1.5 is above upper limit 0.0 (URDF's default for the missing "
+        "upper=)",
+        id="limit-without-upper-below-lower",
     ),
     pytest.param(
         ('<parent link="link2"/>', '<parent link="link3"/>'),

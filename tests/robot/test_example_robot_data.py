@@ -125,11 +125,11 @@ SRDF_URDF = {
     "xarm_description/srdf/xarm7.srdf": "xarm_description/urdf/xarm7.urdf",
     "z1_description/srdf/z1.srdf": "z1_description/urdf/z1.urdf",
 }
-# Robots MoveIt cannot load either: urdfdom refuses a revolute joint without <limit>.
-REFUSED = {
-    "centauro_description/srdf/centauro.srdf":
-        "joint 'j_wheel_1' (revolute) needs <limit lower= upper=>",
-}
+# Robots MoveIt cannot load either (urdfdom refuses a revolute joint without <limit>, or a
+# <limit> without effort= and velocity=): none in the package. Centauro's wheels give a
+# <limit> with no lower= or upper=: URDF's default 0 for both, so they cannot move (a
+# located warning each), as MoveIt loads them.
+REFUSED: dict[str, str] = {}
 # Ships its SRDF with an SDF model only (no URDF).
 WITHOUT_URDF = {"cassie_description/srdf/cassie_v2.srdf"}
 # URDFs without a single <collision> (dynamics models): refused unless explicitly allowed.
