@@ -55,7 +55,9 @@ def convex_hull(mesh: coal.BVHModelBase) -> coal.Convex:
     (``coal.WITH_QHULL`` is false, so ``buildConvexHull`` would keep every vertex).
 
     Raises:
-        SceneError: the mesh is flat or degenerate (no 3-D hull).
+        SceneError: the mesh is flat or degenerate (no 3-D hull), or coal refuses the hull
+            (its polytopes allow at most 255 neighbours a vertex: a wheel's flat face of
+            hundreds of rim vertices, triangulated as a fan, has one vertex with more).
     """
     from scipy.spatial import ConvexHull, QhullError  # here: 40-80 ms to import, often unused
 
@@ -71,7 +73,12 @@ def convex_hull(mesh: coal.BVHModelBase) -> coal.Convex:
     triangles = coal.StdVec_Triangle()
     for a, b, c in hull.simplices:
         triangles.append(coal.Triangle(renumber[int(a)], renumber[int(b)], renumber[int(c)]))
-    return coal.Convex(points, triangles)
+    try:
+        return coal.Convex(points, triangles)
+    except RuntimeError as exc:  # coal's own checks of the polytope ("Too many neighbors.")
+        reason = str(exc).strip().splitlines()[-1].removeprefix("message: ")
+        raise SceneError(f"coal cannot use the mesh's convex hull ({len(hull.vertices)} "
+                         f"vertices): {reason}") from None
 
 
 def measure_hull_excess(mesh: coal.BVHModelBase, samples: int = _SAMPLES) -> float:
@@ -185,7 +192,9 @@ def hull_excess(meshes: list[coal.BVHModelBase]) -> list[float]:
 
 def shared_convex_hull(mesh: coal.BVHModelBase) -> coal.Convex | None:
     """:func:`convex_hull` of ``mesh``, computed once per process for equal meshes (two
-    copies of an arm share their hulls), or None for a flat mesh. Never edit the result."""
+    copies of an arm share their hulls), or None where there is none coal can use (a flat
+    mesh, or a vertex of too many faces): the mesh is then checked as it is. Never edit
+    the result."""
     key = _key(mesh)
     with _lock:
         if key not in _hulls:

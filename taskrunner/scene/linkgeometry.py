@@ -191,7 +191,8 @@ def _cache(robot: RobotModel) -> _RobotCache:
 
 def link_hull(robot: RobotModel, index: int) -> coal.Convex | None:
     """The convex hull of the robot's collision geometry object ``index`` (a mesh), or
-    None for a flat mesh with no 3-D hull; computed once per model."""
+    None where coal can use none (a flat mesh; see :func:`shared_convex_hull`); computed
+    once per model."""
     cache = _cache(robot)
     with _lock:
         if index not in cache.hulls:
@@ -244,7 +245,8 @@ def plan_link_geometry(robot: RobotModel, collision: str | Mapping[str, str] | N
         elif choice == CollisionChoice.EXACT:
             links[link] = LinkChoice(link, MESH, choice, "collision: exact")
         elif any(link_hull(robot, i) is None for i in meshes):
-            links[link] = LinkChoice(link, MESH, choice, "flat mesh, no 3-D hull")
+            links[link] = LinkChoice(link, MESH, choice, "no convex hull coal can use (a flat "
+                                                         "mesh, or a vertex of over 255 faces)")
         elif choice == CollisionChoice.CONVEX:
             links[link] = LinkChoice(link, HULL, choice, "collision: convex")
         else:

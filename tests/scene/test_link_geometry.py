@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from taskrunner.errors import InputError, StartInCollisionError, YamlError
+from taskrunner.errors import InputError, SceneError, StartInCollisionError, YamlError
 from taskrunner.planning.planner import MotionPlanner
 from taskrunner.planning.request import JointGoal, PlanRequest
 from taskrunner.robot import RobotModel, load_robot
@@ -91,6 +91,60 @@ def make_u_robot(folder: Path, collision: str | None = None) -> Path:
         manifest += f"collision: {collision}\n"
     (folder / "robot.yaml").write_text(manifest)
     return folder
+
+
+def _wheel_triangles(rim: int, radius: float = 0.1, half: float = 0.02) -> list:
+    """A wheel (a flat cylinder) of ``rim`` vertices a side, its caps fans."""
+    angle = np.linspace(0.0, 2.0 * np.pi, rim, endpoint=False)
+    top = np.c_[radius * np.cos(angle), radius * np.sin(angle), np.full(rim, half)]
+    bottom = top * [1.0, 1.0, -1.0]
+    triangles = []
+    for i in range(rim):
+        j = (i + 1) % rim
+        triangles += [[top[i], top[j], bottom[i]], [top[j], bottom[j], bottom[i]]]
+    for i in range(1, rim - 1):
+        triangles += [[top[0], top[i], top[i + 1]], [bottom[0], bottom[i + 1], bottom[i]]]
+    return triangles
+
+
+def test_a_hull_coal_refuses_is_an_error_of_ours_and_its_mesh_is_checked_as_it_is(
+        tmp_path: Path) -> None:
+    """coal's polytopes allow a vertex at most 255 neighbours; Qhull's triangulated caps of
+    a wheel of 300 rim vertices give one more (example-robot-data's centauro wheels). The
+    hull is refused with our error, not coal's RuntimeError from deep inside, and the link
+    keeps its mesh whatever the collision choice; the scene checks it."""
+    folder = tmp_path / "wheel"
+    folder.mkdir()
+    _write_stl(folder / "wheel.stl", _wheel_triangles(300))
+    _write_stl(folder / "hub.stl", _wheel_triangles(64))
+    (folder / "w.urdf").write_text(f"""<?xml version="1.0"?>
+<robot name="w">
+  <link name="base_link">
+    <collision><geometry><mesh filename="{folder / 'hub.stl'}"/></geometry></collision>
+  </link>
+  <link name="wheel">
+    <collision><geometry><mesh filename="{folder / 'wheel.stl'}"/></geometry></collision>
+  </link>
+  <joint name="spin" type="continuous">
+    <parent link="base_link"/><child link="wheel"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/>
+  </joint>
+</robot>
+""")
+    for choice in ("auto", "convex"):
+        (folder / "robot.yaml").write_text(f"name: w\nurdf: w.urdf\ncollision: {choice}\n")
+        robot = load_robot(folder)
+        links = plan_link_geometry(robot).links
+        assert links["wheel"].kind == MESH, choice
+        assert links["wheel"].reason.startswith("no convex hull coal can use"), links["wheel"]
+        assert links["base_link"].kind == HULL, choice  # 64 rim vertices: coal takes its hull
+        scene = Scene(robot)
+        assert not scene.in_collision(scene.state)
+        scene.add_object("block", Box((0.05, 0.05, 0.05)), Pose((0.1, 0.0, 0.3)))
+        assert scene.in_collision(scene.state)  # the wheel's rim reaches x = 0.1
+    wheel = robot.collision_model.geometryObjects[1].geometry
+    with pytest.raises(SceneError, match=r"coal cannot use the mesh's convex hull \(\d+ "
+                                         r"vertices\): Too many neighbors"):
+        hullfit.convex_hull(wheel)
 
 
 def _kinds(robot: RobotModel, **kwargs: object) -> dict[str, str]:
