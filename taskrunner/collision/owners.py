@@ -97,20 +97,14 @@ def lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[
                 uncounted: frozenset[str] = frozenset()) -> Owners:
     """The :class:`Owners` of lanes moving the state columns ``columns`` (one array a
     lane) for ``checker``'s bodies and pairs: the objects ``lying`` of their lanes, the
-    pairs those of the space-time walk's ``only`` and ``without``. Kept per robot model
-    by the checker's layout (its pairs' geometries, their joints and bodies): the
-    checkers of scene revisions that differ only in where objects are share them."""
+    pairs those of the space-time walk's ``only`` and ``without``. Kept per checker."""
     moved_at, carried_at = joint_lanes(model, checker, columns)
-    layout, bodies = _layout(checker, model)
-    key = (layout, id(moved_at), only, without, tuple(sorted((lying or {}).items())),
-           uncounted)
-    part = checker.robot_geometry
-    kept = _OWNERS.get(part)
+    key = (id(moved_at), only, without, tuple(sorted((lying or {}).items())), uncounted)
+    kept = _OWNERS.get(checker)
     if kept is None:
-        kept = _OWNERS[part] = {}
-    found = kept.pop(key, None)
+        kept = _OWNERS[checker] = {}
+    found = kept.get(key)
     if found is not None and found[0] is moved_at:
-        kept[key] = found  # the latest last
         return found[1]
     joints = checker.geometry_joints
     # A body is of the lane whose moved joint is nearest above it; a body no lane's
@@ -120,6 +114,7 @@ def lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[
     keep = np.ones(len(every), dtype=bool)
     skipped = None
     if only is not None or without or lying or uncounted:
+        bodies = _object_bodies(checker, model)
         first = checker.robot_geometry.geometry_count
         for g, body in enumerate(bodies, first):
             if lying and body in lying:
@@ -153,29 +148,22 @@ def lane_owners(model: RobotModel, checker: CollisionChecker, columns: Sequence[
     return owners
 
 
-# Per robot geometry (kept while it lives): the owners of the latest walks
-# (:func:`lane_owners`), by the checker's layout and the walk's lanes and pairs.
+# Per checker (kept while it lives): the owners of the latest few walks (:func:`lane_owners`).
 _OWNERS: weakref.WeakKeyDictionary[object, dict[tuple[object, ...], tuple[np.ndarray, Owners]]] \
     = weakref.WeakKeyDictionary()
-_OWNERS_KEPT = 32
-# Per checker (kept while it lives): its layout (:func:`_layout`) and the bodies of its
-# objects' geometries, in order.
-_LAYOUTS: weakref.WeakKeyDictionary[object, tuple[tuple[object, ...], list[str]]] = \
-    weakref.WeakKeyDictionary()
+_OWNERS_KEPT = 8
+# Per checker (kept while it lives): the bodies of its objects' geometries, in order.
+_OBJECT_BODIES: weakref.WeakKeyDictionary[object, list[str]] = weakref.WeakKeyDictionary()
 
 
-def _layout(checker: CollisionChecker, model: RobotModel) -> tuple[tuple[object, ...], list[str]]:
-    """What the owners of ``checker``'s bodies and pairs depend on (its pairs' geometries,
-    each geometry's joint, the body of each object geometry), and the body (object name)
-    of each of its geometries after the robot's. Kept per checker."""
-    found = _LAYOUTS.get(checker)
+def _object_bodies(checker: CollisionChecker, model: RobotModel) -> list[str]:
+    """The body (object name) of each of ``checker``'s geometries after the robot's."""
+    found = _OBJECT_BODIES.get(checker)
     if found is None:
         objects = checker.geometry_model.geometryObjects
-        bodies = [body_name(objects[g], model.model)
-                  for g in range(checker.robot_geometry.geometry_count, len(objects))]
-        layout = (checker.pair_geometries.tobytes(), checker.geometry_joints.tobytes(),
-                  tuple(bodies))
-        found = _LAYOUTS[checker] = (layout, bodies)
+        found = _OBJECT_BODIES[checker] = [
+            body_name(objects[g], model.model)
+            for g in range(checker.robot_geometry.geometry_count, len(objects))]
     return found
 
 
