@@ -185,6 +185,7 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
     model = scene.robot
     moving = {n for lane in lanes for m in lane.motions for n in m.trajectory.names}
     poses = _poses(scene.checker.robot_geometry)
+    lane_joints: dict[int, set[str]] = {}  # the joints each lane's motions move
 
     def world(hold: _Hold, at_end: bool) -> SceneObject:
         """``hold``'s object where it lies when it is set down (``at_end``) or taken:
@@ -197,7 +198,9 @@ def held_objects(scene: Scene, lanes: Sequence[Lane], times: tuple[float, float]
         chain, columns, rest = _chain(model, link, names)
         key: tuple[object, ...]
         own = lanes[hold.lane].motions
-        if motion is not None and not (moving - _joints(own)).intersection(chain):
+        if hold.lane not in lane_joints:
+            lane_joints[hold.lane] = _joints(own)
+        if motion is not None and not (moving - lane_joints[hold.lane]).intersection(chain):
             # Its lane's joints alone move the link: where its motions leave them.
             q = np.array(scene.state, dtype=float)
             _lane_rest(model, own, motion, q, rest)
@@ -394,15 +397,19 @@ def _lane_rest(model: RobotModel, motions: Sequence[TimedMotion], motion: TimedM
     ends there, else the first after starts there; else as they are)."""
     if not len(columns):
         return
-    names = [model.joint_names[c] for c in columns]
+    todo = {model.joint_names[c]: c for c in columns.tolist()}  # the columns not set yet
     earlier = sorted((m for m in motions if m.start <= motion.start and m is not motion),
                      key=lambda m: m.start, reverse=True)
     later = sorted((m for m in motions if m.start > motion.start), key=lambda m: m.start)
-    for column, name in zip(columns, names):
-        for other, row in [*((m, -1) for m in earlier), *((m, 0) for m in later)]:
-            if name in other.trajectory.names:
-                q[column] = other.trajectory.positions[row, other.trajectory.names.index(name)]
-                break
+    for other, row in [*((m, -1) for m in earlier), *((m, 0) for m in later)]:
+        names = other.trajectory.names
+        found = [(k, todo.pop(n)) for k, n in enumerate(names) if n in todo]
+        if found:
+            positions = other.trajectory.positions[row]
+            for k, column in found:
+                q[column] = positions[k]
+            if not todo:
+                return
 
 
 def _chain(model: RobotModel, link: str, names: Sequence[str]
