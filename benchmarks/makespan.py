@@ -1,6 +1,6 @@
 """Makespan benchmark: two arms at once against one after the other.
 
-    python benchmarks/makespan.py [--runs N] [--seed S] [--json]
+    python benchmarks/makespan.py [--runs N] [--seed S] [--pairs NAME,...] [--json]
 
 For each pair below, the parallel task and its sequential version (the same steps, one
 arm after the other; the versions not shipped in taskrunner/data/tasks are in
@@ -186,12 +186,23 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=3, help="runs of each task (3)")
     parser.add_argument("--seed", type=int, default=0, help="first planner seed (0)")
     parser.add_argument("--json", action="store_true", help="print one JSON line at the end")
+    parser.add_argument("--pairs", default=None, metavar="NAME,...",
+                        help="only these pairs (" + ", ".join(n for n, _, _ in PAIRS)
+                        + "; default: all)")
     parser.add_argument("--generated", type=int, default=0, metavar="N",
                         help="also the first N generated two-arm tasks, with and without "
                              "delays (0)")
     args = parser.parse_args(argv)
+    chosen = PAIRS
+    if args.pairs is not None:
+        names = [n.strip() for n in args.pairs.split(",") if n.strip()]
+        unknown = sorted(set(names) - {n for n, _, _ in PAIRS})
+        if unknown:
+            parser.error(f"--pairs: no pair named {', '.join(unknown)} (known: "
+                         f"{', '.join(n for n, _, _ in PAIRS)})")
+        chosen = [p for p in PAIRS if p[0] in names]
     rows = []
-    for name, parallel, sequential in PAIRS:
+    for name, parallel, sequential in chosen:
         par, seq = bench_pair(parallel, sequential, args.runs, args.seed)
         speedup = overhead = None
         if par["makespan_s_median"] and seq["makespan_s_median"]:
