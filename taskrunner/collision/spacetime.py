@@ -392,8 +392,7 @@ class _Timeline:
         self.lanes, self.model = list(lanes), model
         self.columns: list[np.ndarray] = []
         seen: dict[str, str] = {}
-        # Per lane, its motions in time order, each with its joints' state columns.
-        placed: list[list[tuple[TimedMotion, np.ndarray]]] = []
+        placed: list[list[TimedMotion]] = []  # per lane, its motions in time order
         for lane in self.lanes:
             names = sorted({n for m in lane.motions for n in m.trajectory.names})
             for name in names:
@@ -409,7 +408,7 @@ class _Timeline:
                                             f"{a.label or 'the one before'} ends "
                                             f"({a.end:.3f} s)")
             self.columns.append(state_columns(model, names))
-            placed.append([(m, state_columns(model, m.trajectory.names)) for m in ordered])
+            placed.append(ordered)
         motions = [m for lane in self.lanes for m in lane.motions]
         moving = sum(1 for lane in self.lanes if lane.motions)
         self.empty = moving == 0 or len(self.lanes) < 2
@@ -423,20 +422,25 @@ class _Timeline:
         times = np.sort(np.concatenate([[t0, t1], stamps[(stamps > t0) & (stamps < t1)]]))
         self.times = times = times[np.concatenate([[True], times[1:] != times[:-1]])]
         base = scene.state.copy()
-        for ordered_lane in placed:  # before its first motion, a joint is where that one starts
-            for motion, idx in reversed(ordered_lane):
-                base[idx] = motion.trajectory.positions[0]
-        states = np.repeat(base[None, :], len(times), axis=0)
+        lanes_kept = []
         for ordered_lane in placed:
             # A motion whose joints a later one sets from the timeline's first row on
             # leaves nothing in it (the lane's motions before the window, mostly).
             settled: set[str] = set()
-            kept = []
-            for motion, idx in reversed(ordered_lane):
-                if not settled.issuperset(motion.trajectory.names):
-                    kept.append((motion, idx))
+            kept = []  # latest first, with its joints' state columns
+            for motion in reversed(ordered_lane):
+                moved = motion.trajectory.names
+                if not settled.issuperset(moved):
+                    kept.append((motion, state_columns(model, moved)))
                 if motion.start <= times[0]:
-                    settled.update(motion.trajectory.names)
+                    settled.update(moved)
+            # Before its first motion, a joint is where that one starts (one a motion
+            # left out moves is set from the first row on).
+            for motion, idx in kept:
+                base[idx] = motion.trajectory.positions[0]
+            lanes_kept.append(kept)
+        states = np.repeat(base[None, :], len(times), axis=0)
+        for kept in lanes_kept:
             for motion, idx in reversed(kept):
                 # From its start on (held at its end after), each where the last left it:
                 # the times are sorted, so the rows from its start on are a tail.
