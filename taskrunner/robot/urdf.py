@@ -286,6 +286,11 @@ def _check_numbers(doc: XmlDocument) -> None:
                         problem = "must be non-zero"
                     if problem is not None:
                         shown = f" (got {value!r})" if count > 1 else ""
+                        if element.tag == "limit" and attribute in ("lower", "upper") \
+                                and abs(number) >= high:
+                            # Gazebo's SDF-to-URDF export writes +-1e16 for "no limit".
+                            shown += ("; a joint that turns without limit is "
+                                      "type=\"continuous\"")
                         raise doc.error(
                             element,
                             f"{owner.tag} {owner.get('name')!r}: <{element.tag}> "

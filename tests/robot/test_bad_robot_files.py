@@ -259,6 +259,13 @@ URDF_CASES = [
         id="bad-joint-type",
     ),
     pytest.param(
+        ('lower="-1.5" upper="1.5"', 'lower="-1e+16" upper="1e+16"'),
+        '<limit', '<joint name="j2"',
+        "joint 'j2': <limit> 'lower' must be a finite number within ±1e+09 (got -1e+16); a "
+        'joint that turns without limit is type="continuous"',
+        id="gazebo-export-no-limit",
+    ),
+    pytest.param(
         ('<limit effort="10" lower="-1.5" upper="1.5" velocity="1.0"/>', ''),
         '<joint name="j2"', None,
         "joint 'j2' (revolute) needs a <limit lower= upper= effort= velocity=> (URDF requires "
