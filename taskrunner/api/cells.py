@@ -31,6 +31,8 @@ from taskrunner.taught import apply_taught
 
 __all__ = ["BACKENDS", "CellNotFoundError", "CellRegistry", "CellSession", "PoseConflictError"]
 
+_CLOSE_WAIT = 1.0  # s: a new worker's start looks again for idle ones this often
+
 log = logging.getLogger(__name__)
 
 BACKENDS = tuple(kind.value for kind in BackendKind)
@@ -70,6 +72,13 @@ class CellSession:
     servo_url: str | None = None
     firmware_speedup: float = 1.0
     options: LoadOptions | None = None
+    # Idle workers being closed now (:meth:`reap_planners`), and the condition (on ``lock``)
+    # a new worker's start waits on until they have ended.
+    closing: int = 0
+    closed: threading.Condition = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.closed = threading.Condition(self.lock)
 
     def teach(self, group: str, name: str, joints: dict[str, float]) -> None:
         """Make ``name`` a named pose of ``group`` in this cell's model (runs compiled from
@@ -130,12 +139,20 @@ class CellSession:
 
             return InProcessPlanner()
         with self.lock:
-            if self.idle_planners:
-                worker, _ = self.idle_planners.pop()
-                # The worker sends a scene snapshot when (id(scene), revision) changes; a
-                # new run's scene may reuse a freed scene's id: make it send one.
-                worker._sent_scene = None
-                return worker
+            # Not one process more than the workers in use and idle: where idle ones are
+            # being closed, a new one starts once they have ended (a close takes a few
+            # ms; up to 10 s for a worker that does not stop).
+            while True:
+                if self.idle_planners:
+                    worker, _ = self.idle_planners.pop()
+                    # The worker sends a scene snapshot when (id(scene), revision)
+                    # changes; a new run's scene may reuse a freed scene's id: make it
+                    # send one.
+                    worker._sent_scene = None
+                    return worker
+                if not self.closing:
+                    break
+                self.closed.wait(timeout=_CLOSE_WAIT)
         from taskrunner.planning.worker import PlanningWorker
 
         return PlanningWorker(self.key, wait_ready=False, nice=self.planner_nice,
@@ -147,6 +164,7 @@ class CellSession:
             return
         with self.lock:
             self.idle_planners.append((planner, time.monotonic()))
+            self.closed.notify_all()  # a start waiting on a close takes this one instead
 
     def reap_planners(self, idle_s: float) -> int:
         """Close the planning workers idle for ``idle_s`` or longer; how many."""
@@ -155,8 +173,14 @@ class CellSession:
             old = [p for p, since in self.idle_planners if now - since >= idle_s]
             self.idle_planners = [(p, since) for p, since in self.idle_planners
                                   if now - since < idle_s]
-        for planner in old:
-            planner.close()
+            self.closing += len(old)
+        try:
+            for planner in old:
+                planner.close()
+        finally:
+            with self.lock:
+                self.closing -= len(old)
+                self.closed.notify_all()
         return len(old)
 
     def close(self) -> None:
