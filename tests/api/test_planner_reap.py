@@ -27,6 +27,17 @@ class _SlowToClose:
         assert self.release.wait(30.0)
 
 
+def _reaping() -> tuple[CellSession, _SlowToClose, threading.Thread]:
+    """A cell session whose one idle worker the reaper is closing now (until released)."""
+    session = CellSession(Path("cell.yaml"), None, {}, "worker")  # type: ignore[arg-type]
+    old = _SlowToClose()
+    session.idle_planners.append((old, time.monotonic() - 10.0))
+    reaper = threading.Thread(target=session.reap_planners, args=(1.0,))
+    reaper.start()
+    assert old.closing.wait(30.0)
+    return session, old, reaper
+
+
 def test_a_new_worker_starts_only_once_the_reaped_ones_have_ended(monkeypatch) -> None:
     started: list[float] = []
 
@@ -35,12 +46,7 @@ def test_a_new_worker_starts_only_once_the_reaped_ones_have_ended(monkeypatch) -
             started.append(time.monotonic())
 
     monkeypatch.setattr(worker_module, "PlanningWorker", NewWorker)
-    session = CellSession(Path("cell.yaml"), None, {}, "worker")  # type: ignore[arg-type]
-    old = _SlowToClose()
-    session.idle_planners.append((old, time.monotonic() - 10.0))
-    reaper = threading.Thread(target=session.reap_planners, args=(1.0,))
-    reaper.start()
-    assert old.closing.wait(30.0)
+    session, old, reaper = _reaping()
     taken: list[object] = []
     taker = threading.Thread(target=lambda: taken.append(session.take_planner()))
     try:
@@ -59,12 +65,7 @@ def test_a_new_worker_starts_only_once_the_reaped_ones_have_ended(monkeypatch) -
 def test_an_idle_worker_given_back_meanwhile_is_taken_instead(monkeypatch) -> None:
     monkeypatch.setattr(worker_module, "PlanningWorker",
                         lambda *a, **k: pytest.fail("no new worker while one is idle"))
-    session = CellSession(Path("cell.yaml"), None, {}, "worker")  # type: ignore[arg-type]
-    old = _SlowToClose()
-    session.idle_planners.append((old, time.monotonic() - 10.0))
-    reaper = threading.Thread(target=session.reap_planners, args=(1.0,))
-    reaper.start()
-    assert old.closing.wait(30.0)
+    session, old, reaper = _reaping()
     taken: list[object] = []
     taker = threading.Thread(target=lambda: taken.append(session.take_planner()))
     taker.start()
